@@ -1,0 +1,82 @@
+//! # tinyfractal
+//!
+//! A `no_std`, heap-free, fixed-point fractal renderer for embedded-graphics displays.
+//!
+//! The L-system engine reads Fractint `.l` files or ABOP-style rules, walks the derivation
+//! with a bounded stack (never building the derived string), moves a fixed-point turtle and
+//! draws into any [`DrawTarget`](embedded_graphics::draw_target::DrawTarget).
+//!
+//! ```
+//! use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+//! use tinyfractal::{Angle, Dialect, Grammar, LSystem};
+//!
+//! // The Koch snowflake, fitted into a 64×64 display.
+//! let grammar = Grammar::new(Dialect::Abop, "F--F--F", Angle::Divisions(6))?
+//!     .with_rule('F', "F+F--F+F")?;
+//! let mut display = MockDisplay::<BinaryColor>::new();
+//! display.set_allow_overdraw(true);
+//! let snowflake = LSystem::new(&grammar, 2).fit(display.bounding_box(), &[BinaryColor::On])?;
+//! let stats = snowflake.draw(&mut display)?;
+//! assert_eq!(stats.segments, 3 * 4 * 4);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! Reading a Fractint file:
+//!
+//! ```
+//! use tinyfractal::LFile;
+//!
+//! let file = LFile::new(include_str!("../tests/data/small.l"));
+//! let dragon = file.find("dragon")?; // names are case-insensitive
+//! assert_eq!(dragon.rule_count(), 3);
+//! # Ok::<(), tinyfractal::Error>(())
+//! ```
+//!
+//! ## Memory
+//! Nothing is allocated. A [`Grammar`] is about 0.9 KiB on a 32-bit MCU; a walk
+//! ([`Segments`]) is at most 0.8 KiB with the default capacities, whatever the order.
+//!
+//! ## Numbers
+//! The turtle works in [`Real`] (I32F32) with sines and cosines in Q30 computed by integer
+//! maths, so a picture is bit-identical on every target.
+
+#![no_std]
+#![deny(
+    missing_docs,
+    missing_debug_implementations,
+    missing_copy_implementations,
+    trivial_casts,
+    trivial_numeric_casts,
+    unsafe_code,
+    unstable_features,
+    unused_import_braces,
+    unused_qualifications,
+    rustdoc::broken_intra_doc_links,
+    rustdoc::private_intra_doc_links
+)]
+#![doc(test(attr(deny(warnings))))]
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::indexing_slicing,
+        clippy::unreachable,
+        clippy::todo
+    )
+)]
+
+mod error;
+mod lsystem;
+mod real;
+mod trig;
+
+pub use error::{DrawError, Error, Location};
+pub use lsystem::alphabet::Dialect;
+pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement, DEFAULT_MARGIN};
+pub use lsystem::fractint::{Entries, Entry, LFile};
+pub use lsystem::grammar::{Angle, Grammar, MAX_ANGLE_DIVISIONS, MAX_BODY_LEN, MAX_RULES};
+pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
+pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
+pub use real::Real;

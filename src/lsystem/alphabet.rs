@@ -1,0 +1,315 @@
+//! What the symbols mean: scanning one token (a symbol and its number, if any) from a body,
+//! and decoding a token into a turtle [`Command`] for each [`Dialect`].
+
+use crate::error::{Error, Location};
+use crate::real::Real;
+
+/// Which rules of notation a system follows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Dialect {
+    /// Fractint's `.l` notation: case-insensitive; `F`/`D` draw, `G`/`M` move, and the
+    /// commands `| ! \nn /nn @nn Cnn <nn >nn`.
+    #[default]
+    Fractint,
+    /// *The Algorithmic Beauty of Plants*: case-sensitive; `F` (and any extra drawing
+    /// symbols) draw, `f` moves; `+ - | [ ]`.
+    Abop,
+}
+
+/// One symbol of a body, with its numeric argument (empty when it takes none).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Token<'a> {
+    /// The symbol, lower-cased in the Fractint dialect.
+    pub(crate) symbol: u8,
+    /// The digits after a numeric command (and `I`/`Q` prefixes after `@`).
+    pub(crate) argument: &'a [u8],
+}
+
+/// What the turtle does for one token.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Command {
+    /// Step along the main heading, drawing.
+    Draw,
+    /// Step along the main heading without drawing.
+    Move,
+    /// Step along the free (degree) heading, drawing (Fractint `D`).
+    DrawFree,
+    /// Step along the free heading without drawing (Fractint `M`).
+    MoveFree,
+    /// Turn counter-clockwise by the system's angle (clockwise when reversed).
+    Left,
+    /// Turn clockwise by the system's angle (counter-clockwise when reversed).
+    Right,
+    /// Turn clockwise by half a turn (Angle div 2 steps).
+    Around,
+    /// Swap the meanings of `+`/`-` and `\`/`/`.
+    Reverse,
+    /// Turn the free heading counter-clockwise by the given degrees (Q32 bits).
+    FreeLeft(i64),
+    /// Turn the free heading clockwise by the given degrees (Q32 bits).
+    FreeRight(i64),
+    /// Multiply the step.
+    Scale(Real),
+    /// Set the colour index.
+    SetColor(u8),
+    /// Raise the colour index.
+    RaiseColor(u8),
+    /// Lower the colour index.
+    LowerColor(u8),
+    /// Save the turtle.
+    Push,
+    /// Restore the turtle.
+    Pop,
+    /// Nothing (a symbol that only drives the derivation).
+    Nothing,
+}
+
+impl Dialect {
+    /// The symbol as rules and commands see it.
+    pub(crate) const fn normalize(self, byte: u8) -> u8 {
+        match self {
+            Self::Fractint => byte.to_ascii_lowercase(),
+            Self::Abop => byte,
+        }
+    }
+
+    /// Symbols that cannot have rules.
+    pub(crate) fn is_reserved(self, symbol: u8) -> bool {
+        match self {
+            Self::Fractint => b"+-/\\@|!c<>[]".contains(&symbol),
+            Self::Abop => matches!(symbol, b'[' | b']'),
+        }
+    }
+
+    fn takes_number(self, symbol: u8) -> bool {
+        self == Self::Fractint && matches!(symbol, b'\\' | b'/' | b'@' | b'c' | b'<' | b'>')
+    }
+
+    /// Reads the token at `position` of `body`; returns it and the position after it, or
+    /// `None` at the end. The argument is scanned, not checked: [`Dialect::decode`] checks it.
+    pub(crate) fn scan<'a>(self, body: &'a [u8], position: usize) -> Option<(Token<'a>, usize)> {
+        let symbol = self.normalize(*body.get(position)?);
+        let start = position + 1;
+        let mut end = start;
+        if self.takes_number(symbol) {
+            if symbol == b'@' {
+                while body
+                    .get(end)
+                    .is_some_and(|b| matches!(b.to_ascii_lowercase(), b'i' | b'q'))
+                {
+                    end += 1;
+                }
+            }
+            while body
+                .get(end)
+                .is_some_and(|b| b.is_ascii_digit() || *b == b'.')
+            {
+                end += 1;
+            }
+        }
+        let argument = body.get(start..end).unwrap_or_default();
+        Some((Token { symbol, argument }, end))
+    }
+
+    /// What a token makes the turtle do. `extra_draw` is the set of extra drawing symbols
+    /// (ABOP only). Errors carry the column of the token within its body (`at`).
+    pub(crate) fn decode(
+        self,
+        token: Token<'_>,
+        extra_draw: SymbolSet,
+        at: Location,
+    ) -> Result<Command, Error> {
+        let symbol = token.symbol;
+        let command = match self {
+            Self::Fractint => match symbol {
+                b'f' => Command::Draw,
+                b'g' => Command::Move,
+                b'd' => Command::DrawFree,
+                b'm' => Command::MoveFree,
+                b'+' => Command::Left,
+                b'-' => Command::Right,
+                b'|' => Command::Around,
+                b'!' => Command::Reverse,
+                b'[' => Command::Push,
+                b']' => Command::Pop,
+                b'\\' => Command::FreeLeft(degrees(token, at)?),
+                b'/' => Command::FreeRight(degrees(token, at)?),
+                b'@' => Command::Scale(scale(token, at)?),
+                b'c' => Command::SetColor(color(token, at)?),
+                b'<' => Command::RaiseColor(color(token, at)?),
+                b'>' => Command::LowerColor(color(token, at)?),
+                _ => Command::Nothing,
+            },
+            Self::Abop => match symbol {
+                b'F' => Command::Draw,
+                b'f' => Command::Move,
+                b'+' => Command::Left,
+                b'-' => Command::Right,
+                b'|' => Command::Around,
+                b'[' => Command::Push,
+                b']' => Command::Pop,
+                _ if extra_draw.contains(symbol) => Command::Draw,
+                _ => Command::Nothing,
+            },
+        };
+        Ok(command)
+    }
+}
+
+fn missing(token: Token<'_>, at: Location) -> Error {
+    Error::MissingNumber {
+        symbol: char::from(token.symbol),
+        at,
+    }
+}
+
+fn out_of_range(token: Token<'_>, at: Location) -> Error {
+    Error::NumberOutOfRange {
+        symbol: char::from(token.symbol),
+        at,
+    }
+}
+
+fn number(token: Token<'_>, digits: &[u8], at: Location) -> Result<Real, Error> {
+    if digits.is_empty() {
+        return Err(missing(token, at));
+    }
+    core::str::from_utf8(digits)
+        .ok()
+        .and_then(Real::parse_decimal)
+        .ok_or(out_of_range(token, at))
+}
+
+/// Degrees for `\` and `/`, as Q32 bits.
+fn degrees(token: Token<'_>, at: Location) -> Result<i64, Error> {
+    Ok(number(token, token.argument, at)?.to_bits())
+}
+
+/// The factor of `@`: `[I][Q]number` in either order, inverse and square root.
+fn scale(token: Token<'_>, at: Location) -> Result<Real, Error> {
+    let prefix = token
+        .argument
+        .iter()
+        .take_while(|b| matches!(b.to_ascii_lowercase(), b'i' | b'q'))
+        .count();
+    let (flags, digits) = token.argument.split_at(prefix);
+    let inverse = flags
+        .iter()
+        .filter(|b| b.eq_ignore_ascii_case(&b'i'))
+        .count();
+    let root = flags
+        .iter()
+        .filter(|b| b.eq_ignore_ascii_case(&b'q'))
+        .count();
+    if inverse > 1 || root > 1 {
+        return Err(out_of_range(token, at));
+    }
+    let mut factor = number(token, digits, at)?;
+    if root == 1 {
+        factor = factor.checked_sqrt().ok_or(out_of_range(token, at))?;
+    }
+    if inverse == 1 {
+        factor = Real::ONE
+            .checked_div(factor)
+            .ok_or(out_of_range(token, at))?;
+    }
+    // A factor of 0 would collapse the turtle; beyond 2^16 either way is surely a typo.
+    let limit = Real::from_int(1 << 16);
+    let floor = Real::from_bits(1 << 16);
+    if factor < floor || factor > limit {
+        return Err(out_of_range(token, at));
+    }
+    Ok(factor)
+}
+
+/// A colour index or increment, 0 to 255.
+fn color(token: Token<'_>, at: Location) -> Result<u8, Error> {
+    if token.argument.is_empty() {
+        return Err(missing(token, at));
+    }
+    let mut value: u32 = 0;
+    for &digit in token.argument {
+        if !digit.is_ascii_digit() || value > 255 {
+            return Err(out_of_range(token, at));
+        }
+        value = value * 10 + u32::from(digit - b'0');
+    }
+    u8::try_from(value).map_err(|_| out_of_range(token, at))
+}
+
+/// A set of ASCII symbols.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct SymbolSet(u128);
+
+impl SymbolSet {
+    pub(crate) fn insert(&mut self, symbol: u8) {
+        if symbol < 128 {
+            self.0 |= 1 << symbol;
+        }
+    }
+
+    pub(crate) fn contains(self, symbol: u8) -> bool {
+        symbol < 128 && self.0 & (1 << symbol) != 0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn decode(dialect: Dialect, text: &str) -> Result<Command, Error> {
+        let (token, _) = dialect.scan(text.as_bytes(), 0).ok_or(Error::EmptyAxiom)?;
+        dialect.decode(token, SymbolSet::default(), Location::column(1))
+    }
+
+    #[test]
+    fn fractint_commands_are_case_insensitive() {
+        assert_eq!(decode(Dialect::Fractint, "f"), Ok(Command::Draw));
+        assert_eq!(decode(Dialect::Fractint, "F"), Ok(Command::Draw));
+        assert_eq!(decode(Dialect::Fractint, "C12"), Ok(Command::SetColor(12)));
+        assert_eq!(decode(Dialect::Fractint, "<1"), Ok(Command::RaiseColor(1)));
+        assert_eq!(
+            decode(Dialect::Fractint, "\\22.5"),
+            Ok(Command::FreeLeft(22 << 32 | 1 << 31))
+        );
+    }
+
+    #[test]
+    fn scale_prefixes_in_either_order() {
+        let expected = 1.0 / 3f64.sqrt();
+        for text in ["@IQ3", "@QI3", "@iq3", "@qi3"] {
+            match decode(Dialect::Fractint, text) {
+                Ok(Command::Scale(f)) => assert!((f.to_f64() - expected).abs() < 1e-9, "{text}"),
+                other => panic!("{text}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn numbers_are_checked() {
+        let at = Location::column(1);
+        assert_eq!(
+            decode(Dialect::Fractint, "C256"),
+            Err(Error::NumberOutOfRange { symbol: 'c', at })
+        );
+        assert_eq!(
+            decode(Dialect::Fractint, "@"),
+            Err(Error::MissingNumber { symbol: '@', at })
+        );
+        assert_eq!(
+            decode(Dialect::Fractint, "@0"),
+            Err(Error::NumberOutOfRange { symbol: '@', at })
+        );
+        assert_eq!(
+            decode(Dialect::Fractint, "@1.2.3"),
+            Err(Error::NumberOutOfRange { symbol: '@', at })
+        );
+    }
+
+    #[test]
+    fn abop_is_case_sensitive() {
+        assert_eq!(decode(Dialect::Abop, "F"), Ok(Command::Draw));
+        assert_eq!(decode(Dialect::Abop, "f"), Ok(Command::Move));
+        assert_eq!(decode(Dialect::Abop, "C12"), Ok(Command::Nothing));
+    }
+}

@@ -1,0 +1,324 @@
+//! L-systems as embedded-graphics drawables: fit to a target (or place explicitly), then draw.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::grammar::Grammar;
+use super::raster;
+use super::turtle::{Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
+use super::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
+use crate::error::{DrawError, Error};
+use crate::real::Real;
+
+/// Pixels left free around a fitted picture by default.
+pub const DEFAULT_MARGIN: u32 = 2;
+
+/// An L-system at an order, ready to be fitted or placed on a target.
+///
+/// `DEPTH` and `STACK` are the walker's and the turtle's capacities (see [`Segments`]).
+#[derive(Debug, Clone, Copy)]
+pub struct LSystem<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH, const STACK: usize = DEFAULT_STACK> {
+    grammar: &'g Grammar<'a>,
+    order: u32,
+    budget: u64,
+    margin: u32,
+}
+
+/// Where an L-system goes on the target, when it is not fitted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Placement {
+    /// The pixel the turtle starts on.
+    pub origin: Point,
+    /// One step, in pixels.
+    pub step: Real,
+    /// The first heading in turns of the system's angle, counter-clockwise from +x.
+    pub turns: i32,
+}
+
+/// The extent of a drawing in turtle space.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Bounds {
+    /// Smallest x and y of any segment end.
+    pub min: TurtlePoint,
+    /// Largest x and y of any segment end.
+    pub max: TurtlePoint,
+}
+
+impl<'g, 'a> LSystem<'g, 'a> {
+    /// `grammar` derived `order` times, with the default capacities (orders up to 16,
+    /// branches 20 deep).
+    pub const fn new(grammar: &'g Grammar<'a>, order: u32) -> Self {
+        Self::with_capacity(grammar, order)
+    }
+}
+
+impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STACK> {
+    /// `grammar` derived `order` times, with the capacities in the type:
+    /// `LSystem::<'_, '_, 40, 64>::with_capacity(..)`.
+    pub const fn with_capacity(grammar: &'g Grammar<'a>, order: u32) -> Self {
+        Self {
+            grammar,
+            order,
+            budget: DEFAULT_BUDGET,
+            margin: DEFAULT_MARGIN,
+        }
+    }
+
+    /// Caps every walk at `symbols` symbols ([`Error::BudgetExhausted`] beyond).
+    #[must_use]
+    pub const fn with_budget(mut self, symbols: u64) -> Self {
+        self.budget = symbols;
+        self
+    }
+
+    /// Pixels left free on each side when fitting.
+    #[must_use]
+    pub const fn with_margin(mut self, pixels: u32) -> Self {
+        self.margin = pixels;
+        self
+    }
+
+    /// The segments, with an explicit start.
+    pub fn segments(&self, start: Start) -> Result<Segments<'g, 'a, DEPTH, STACK>, Error> {
+        Ok(Segments::starting(self.grammar, self.order, start)?.with_budget(self.budget))
+    }
+
+    /// Walks once in turtle units and returns the bounding box of what is drawn.
+    pub fn bounds(&self) -> Result<Bounds, Error> {
+        self.bounds_from(Start::default())
+    }
+
+    fn bounds_from(&self, start: Start) -> Result<Bounds, Error> {
+        let mut bounds: Option<Bounds> = None;
+        self.segments(start)?.try_for_each_segment(|segment| {
+            for p in [segment.start, segment.end] {
+                let b = bounds.get_or_insert(Bounds { min: p, max: p });
+                b.min.x = b.min.x.min(p.x);
+                b.min.y = b.min.y.min(p.y);
+                b.max.x = b.max.x.max(p.x);
+                b.max.y = b.max.y.max(p.y);
+            }
+            Ok(())
+        })?;
+        bounds.ok_or(Error::EmptyDrawing)
+    }
+
+    /// Scales and centres the drawing into `area` (less the margin), colours from `palette`.
+    ///
+    /// A sizing pass measures the drawing in turtle units; a second pass at the chosen scale
+    /// checks it and measures its pixel bounding box, so that drawing cannot fail.
+    /// If turtle units overflow (steps growing through `@`), sizing is retried at 2⁻¹⁰.
+    pub fn fit<'p, C: PixelColor>(
+        &self,
+        area: Rectangle,
+        palette: &'p [C],
+    ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::ZeroSizeTarget);
+        }
+        let unit_steps = [Real::ONE, Real::from_bits(1 << 22)];
+        let mut sized = Err(Error::Overflow);
+        for step in unit_steps {
+            sized = self
+                .bounds_from(Start {
+                    step,
+                    ..Start::default()
+                })
+                .map(|bounds| (step, bounds));
+            if sized != Err(Error::Overflow) {
+                break;
+            }
+        }
+        let (unit, bounds) = sized?;
+        // Pixel centres span size - 1; keep the margin only if the area can afford it.
+        let span = |size: u32| {
+            let inner = size.saturating_sub(1);
+            let margin = if inner > 2 * self.margin {
+                self.margin
+            } else {
+                0
+            };
+            Real::from_int(i32::try_from(inner - 2 * margin).unwrap_or(i32::MAX))
+        };
+        let extent_x = bounds
+            .max
+            .x
+            .checked_sub(bounds.min.x)
+            .ok_or(Error::Overflow)?;
+        let extent_y = bounds
+            .max
+            .y
+            .checked_sub(bounds.min.y)
+            .ok_or(Error::Overflow)?;
+        // Pixels per sizing unit: the tighter of the two axes.
+        let per_unit = [
+            span(area.size.width).checked_div(extent_x),
+            span(area.size.height).checked_div(extent_y),
+        ]
+        .into_iter()
+        .flatten()
+        .min()
+        .unwrap_or(Real::ONE);
+        let step = unit.checked_mul(per_unit).ok_or(Error::Overflow)?;
+        let half = |a: Real, b: Real| -> Result<Real, Error> {
+            let sum = a.checked_add(b).ok_or(Error::Overflow)?;
+            Ok(Real::from_bits(sum.to_bits() / 2))
+        };
+        let centre = |start: i32, size: u32| {
+            Real::from_ratio(2 * i64::from(start) + i64::from(size) - 1, 2).unwrap_or(Real::ZERO)
+        };
+        let mid_x = half(bounds.min.x, bounds.max.x)?
+            .checked_mul(per_unit)
+            .ok_or(Error::Overflow)?;
+        let mid_y = half(bounds.min.y, bounds.max.y)?
+            .checked_mul(per_unit)
+            .ok_or(Error::Overflow)?;
+        // Screen y grows down: the turtle draws at (X, -Y) on screen.
+        let position = TurtlePoint {
+            x: centre(area.top_left.x, area.size.width)
+                .checked_sub(mid_x)
+                .ok_or(Error::Overflow)?,
+            y: Real::ZERO
+                .checked_sub(centre(area.top_left.y, area.size.height))
+                .and_then(|y| y.checked_sub(mid_y))
+                .ok_or(Error::Overflow)?,
+        };
+        self.prepared(
+            Start {
+                position,
+                step,
+                turns: 0,
+            },
+            palette,
+        )
+    }
+
+    /// Draws from an explicit placement, colours from `palette`. The drawing is walked once
+    /// here to check it and to measure its bounding box.
+    pub fn place<'p, C: PixelColor>(
+        &self,
+        placement: Placement,
+        palette: &'p [C],
+    ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
+        let position = TurtlePoint {
+            x: Real::from_int(placement.origin.x),
+            y: Real::from_int(placement.origin.y.saturating_neg()),
+        };
+        self.prepared(
+            Start {
+                position,
+                step: placement.step,
+                turns: placement.turns,
+            },
+            palette,
+        )
+    }
+
+    fn prepared<'p, C: PixelColor>(
+        &self,
+        start: Start,
+        palette: &'p [C],
+    ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
+        if palette.is_empty() {
+            return Err(Error::EmptyPalette);
+        }
+        let pixels = self.bounds_from(start)?;
+        let top_left = to_screen(TurtlePoint {
+            x: pixels.min.x,
+            y: pixels.max.y,
+        });
+        let bottom_right = to_screen(TurtlePoint {
+            x: pixels.max.x,
+            y: pixels.min.y,
+        });
+        Ok(LSystemDrawing {
+            system: *self,
+            start,
+            palette,
+            bounding_box: Rectangle::with_corners(top_left, bottom_right),
+        })
+    }
+}
+
+/// The pixel for a point of a drawing pass (whose turtle works in pixels, y up).
+fn to_screen(p: TurtlePoint) -> Point {
+    Point::new(p.x.round_to_i32(), p.y.round_to_i32().saturating_neg())
+}
+
+/// A fitted or placed L-system with its palette: an embedded-graphics [`Drawable`].
+///
+/// Colour index `i` of the system is drawn as `palette[i % palette.len()]`. Lines go to the
+/// target as horizontal and vertical runs through `fill_solid`; clipping is the target's.
+#[derive(Debug, Clone, Copy)]
+pub struct LSystemDrawing<
+    'g,
+    'a,
+    'p,
+    C,
+    const DEPTH: usize = DEFAULT_DEPTH,
+    const STACK: usize = DEFAULT_STACK,
+> {
+    system: LSystem<'g, 'a, DEPTH, STACK>,
+    start: Start,
+    palette: &'p [C],
+    bounding_box: Rectangle,
+}
+
+impl<C: PixelColor, const DEPTH: usize, const STACK: usize>
+    LSystemDrawing<'_, '_, '_, C, DEPTH, STACK>
+{
+    /// Where the turtle starts and its step, in pixels (y up: the screen row is `-y`).
+    pub const fn start(&self) -> Start {
+        self.start
+    }
+
+    /// Draws, reporting the engine's errors too (there are none once constructed: the same
+    /// walk was checked when fitting or placing).
+    pub fn try_draw<D>(&self, target: &mut D) -> Result<WalkStats, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let clip = target.bounding_box();
+        let mut segments = self.system.segments(self.start)?;
+        let mut last_end = None;
+        for segment in segments.by_ref() {
+            let segment = segment?;
+            let (from, to) = (to_screen(segment.start), to_screen(segment.end));
+            let index = usize::from(segment.color) % self.palette.len().max(1);
+            if let Some(&color) = self.palette.get(index) {
+                // A continuing line does not draw its first pixel twice.
+                raster::draw_line(target, from, to, last_end == Some(from), color, &clip)
+                    .map_err(DrawError::Target)?;
+            }
+            last_end = Some(to);
+        }
+        Ok(segments.stats())
+    }
+}
+
+impl<C: PixelColor, const DEPTH: usize, const STACK: usize> Drawable
+    for LSystemDrawing<'_, '_, '_, C, DEPTH, STACK>
+{
+    type Color = C;
+    type Output = WalkStats;
+
+    fn draw<D>(&self, target: &mut D) -> Result<WalkStats, D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        match self.try_draw(target) {
+            Ok(stats) => Ok(stats),
+            Err(DrawError::Target(error)) => Err(error),
+            // Unreachable: construction walked the same derivation without error.
+            Err(DrawError::Fractal(_)) => Ok(WalkStats::default()),
+        }
+    }
+}
+
+impl<C, const DEPTH: usize, const STACK: usize> Dimensions
+    for LSystemDrawing<'_, '_, '_, C, DEPTH, STACK>
+{
+    fn bounding_box(&self) -> Rectangle {
+        self.bounding_box
+    }
+}

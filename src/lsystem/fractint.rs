@@ -1,0 +1,274 @@
+//! Fractint's `.l` files: entries `Name { ... }`, read straight from a `&str`.
+//!
+//! As Fractint reads them: an entry's name ends at a space, tab, `(`, `;` or `{`; entries
+//! named `comment`, or with no name, are not systems; text after `;` is a comment; the line
+//! holding `{` is otherwise skipped; lines are case-insensitive and split on spaces, tabs
+//! and `=`; `Angle n`, `Axiom s` and `c=s` lines (repeated rule lines append); `}` ends it.
+
+use super::alphabet::Dialect;
+use super::grammar::{Angle, Grammar};
+use crate::error::{Error, Location};
+
+/// A `.l` file's text.
+#[derive(Debug, Clone, Copy)]
+pub struct LFile<'a> {
+    text: &'a str,
+}
+
+impl<'a> LFile<'a> {
+    /// Wraps the text of a `.l` file; nothing is read until asked.
+    pub const fn new(text: &'a str) -> Self {
+        Self { text }
+    }
+
+    /// The entries, in file order. An entry without its closing `}` ends the iteration
+    /// with an error.
+    pub fn entries(&self) -> Entries<'a> {
+        Entries {
+            text: self.text,
+            position: 0,
+            line: 1,
+        }
+    }
+
+    /// The grammar of the entry called `name` (case-insensitive).
+    pub fn find(&self, name: &str) -> Result<Grammar<'a>, Error> {
+        for entry in self.entries() {
+            let entry = entry?;
+            if entry.name.eq_ignore_ascii_case(name) {
+                return entry.grammar();
+            }
+        }
+        Err(Error::UnknownSystem)
+    }
+}
+
+/// One entry of a `.l` file: a name and the text between its braces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Entry<'a> {
+    name: &'a str,
+    /// The line the name is on.
+    line: u32,
+    body: &'a str,
+    /// The line the body starts on.
+    body_line: u32,
+}
+
+impl<'a> Entry<'a> {
+    /// The entry's name as written.
+    pub const fn name(&self) -> &'a str {
+        self.name
+    }
+
+    /// The 1-based line the entry starts on.
+    pub const fn line(&self) -> u32 {
+        self.line
+    }
+
+    /// Reads the entry into a grammar (Fractint dialect).
+    pub fn grammar(&self) -> Result<Grammar<'a>, Error> {
+        let mut axiom = None;
+        let mut angle = None;
+        for (line, words) in self.lines() {
+            let mut words = words;
+            let Some((keyword, keyword_at)) = words.next() else {
+                continue;
+            };
+            let at = |column: u32| Location { line, column };
+            if keyword.eq_ignore_ascii_case("axiom") {
+                axiom = Some(
+                    words
+                        .next()
+                        .map_or(("", at(keyword_at)), |(w, c)| (w, at(c))),
+                );
+            } else if keyword.eq_ignore_ascii_case("angle") {
+                let (value, column) = words.next().ok_or(Error::MissingAngle)?;
+                let parsed = value.parse::<i64>().ok();
+                let divisions = parsed.and_then(|v| u16::try_from(v).ok());
+                angle = Some(
+                    divisions
+                        .map(Angle::Divisions)
+                        .ok_or(Error::AngleOutOfRange {
+                            value: parsed.unwrap_or(0),
+                            at: at(column),
+                        })?,
+                );
+            } else if keyword.len() != 1 {
+                return Err(Error::UnknownLine { at: at(keyword_at) });
+            } else {
+                words.next();
+            }
+            if let Some((_, column)) = words.next() {
+                return Err(Error::ExtraText { at: at(column) });
+            }
+        }
+        let angle = angle.ok_or(Error::MissingAngle)?;
+        let (axiom, axiom_at) = axiom.ok_or(Error::EmptyAxiom)?;
+        let mut grammar = Grammar::new_at(Dialect::Fractint, axiom, angle, axiom_at)?;
+        for (line, mut words) in self.lines() {
+            let Some((symbol, symbol_at)) = words.next() else {
+                continue;
+            };
+            let mut chars = symbol.chars();
+            if let (Some(c), None) = (chars.next(), chars.next()) {
+                let (body, column) = words.next().unwrap_or(("", symbol_at + 2));
+                grammar.add_rule(c, body, Location { line, column })?;
+            }
+        }
+        Ok(grammar)
+    }
+
+    /// The body's lines, comments removed, as words with their 1-based columns.
+    fn lines(&self) -> impl Iterator<Item = (u32, Words<'a>)> + 'a {
+        let first = self.body_line;
+        self.body.split('\n').enumerate().map(move |(index, line)| {
+            let code = line.split(';').next().unwrap_or_default();
+            let number = first.saturating_add(u32::try_from(index).unwrap_or(u32::MAX));
+            (
+                number,
+                Words {
+                    text: code,
+                    position: 0,
+                },
+            )
+        })
+    }
+}
+
+/// The words of one line and their columns; separators are spaces, tabs, `\r` and `=`.
+#[derive(Debug, Clone)]
+struct Words<'a> {
+    text: &'a str,
+    position: usize,
+}
+
+impl<'a> Iterator for Words<'a> {
+    type Item = (&'a str, u32);
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let is_separator = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'=');
+        let bytes = self.text.as_bytes();
+        let start = self.position
+            + bytes
+                .get(self.position..)?
+                .iter()
+                .position(|&b| !is_separator(b))?;
+        let length = bytes
+            .get(start..)?
+            .iter()
+            .position(|&b| is_separator(b))
+            .unwrap_or(bytes.len() - start);
+        self.position = start + length;
+        let word = self.text.get(start..start + length)?;
+        Some((word, u32::try_from(start + 1).unwrap_or(u32::MAX)))
+    }
+}
+
+/// Iterator over the entries of a [`LFile`].
+#[derive(Debug, Clone)]
+pub struct Entries<'a> {
+    text: &'a str,
+    position: usize,
+    line: u32,
+}
+
+impl<'a> Entries<'a> {
+    fn peek(&self) -> Option<u8> {
+        self.text.as_bytes().get(self.position).copied()
+    }
+
+    fn bump(&mut self) {
+        if self.peek() == Some(b'\n') {
+            self.line += 1;
+        }
+        self.position += 1;
+    }
+
+    fn skip_comment(&mut self) {
+        while self.peek().is_some_and(|b| b != b'\n') {
+            self.bump();
+        }
+    }
+
+    /// Moves past the next `target` outside comments; false at the end of the text.
+    fn skip_past(&mut self, target: u8) -> bool {
+        while let Some(byte) = self.peek() {
+            if byte == b';' {
+                self.skip_comment();
+                continue;
+            }
+            self.bump();
+            if byte == target {
+                return true;
+            }
+        }
+        false
+    }
+}
+
+impl<'a> Iterator for Entries<'a> {
+    type Item = Result<Entry<'a>, Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            // Skip blank space and comments up to a name.
+            while let Some(byte) = self.peek() {
+                match byte {
+                    b';' => self.skip_comment(),
+                    b' ' | b'\t' | b'\r' | b'\n' | 0x1a => self.bump(),
+                    _ => break,
+                }
+            }
+            self.peek()?;
+            let line = self.line;
+            let name_start = self.position;
+            while self
+                .peek()
+                .is_some_and(|b| !matches!(b, b' ' | b'\t' | b'(' | b';' | b'{' | b'\r' | b'\n'))
+            {
+                self.bump();
+            }
+            let name = self.text.get(name_start..self.position).unwrap_or_default();
+            let unterminated = Error::UnterminatedEntry {
+                at: Location { line, column: 1 },
+            };
+            if !self.skip_past(b'{') {
+                self.position = self.text.len();
+                return Some(Err(unterminated));
+            }
+            // The rest of the `{` line is not read (Fractint skips it), unless it closes.
+            let brace_line_end = self.text.get(self.position..).and_then(|rest| {
+                let end = rest.find('\n').unwrap_or(rest.len());
+                rest.get(..end)
+            });
+            let closes_at_once = brace_line_end.is_some_and(|rest| {
+                rest.split(';')
+                    .next()
+                    .is_some_and(|code| code.contains('}'))
+            });
+            if !closes_at_once {
+                self.skip_comment();
+                self.bump();
+            }
+            let body_start = self.position;
+            let body_line = self.line;
+            if !self.skip_past(b'}') {
+                self.position = self.text.len();
+                return Some(Err(unterminated));
+            }
+            let body = self
+                .text
+                .get(body_start..self.position.saturating_sub(1))
+                .unwrap_or_default();
+            if name.is_empty() || name.eq_ignore_ascii_case("comment") {
+                continue;
+            }
+            return Some(Ok(Entry {
+                name,
+                line,
+                body,
+                body_line,
+            }));
+        }
+    }
+}

@@ -1,0 +1,323 @@
+//! A grammar borrowed from text: axiom, single-symbol rules and the turn angle.
+//!
+//! Nothing is copied: the axiom and the rule bodies are slices of the caller's `&str`. Every
+//! body is checked once here (brackets balanced within it, numbers well-formed and in
+//! range), so the walker never meets malformed text and its errors are only about size.
+
+use heapless::Vec;
+
+use super::alphabet::{Dialect, SymbolSet, Token};
+use crate::error::{Error, Location};
+use crate::real::Real;
+use crate::trig;
+
+/// Most rule lines a grammar holds (Fractint allowed 25); lines for one symbol append.
+pub const MAX_RULES: usize = 32;
+
+/// Most divisions of a full turn for `Angle n` (Fractint allowed 50).
+pub const MAX_ANGLE_DIVISIONS: u16 = 64;
+
+/// Longest axiom or rule body, in bytes: the walker keeps positions in 16 bits.
+pub const MAX_BODY_LEN: usize = u16::MAX as usize;
+
+const NO_RULE: u8 = u8::MAX;
+
+/// How far `+` and `-` turn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Angle {
+    /// `n` equal divisions of a full turn (Fractint's `Angle n`), exact for every heading.
+    Divisions(u16),
+    /// A free angle in degrees (ABOP's δ); headings use a 1024-point quarter-wave table with
+    /// interpolation (error below 3·10⁻⁷).
+    Degrees(Real),
+}
+
+/// One rule line: a symbol and its replacement. Lines for the same symbol are chained.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Rule<'a> {
+    pub(crate) body: &'a [u8],
+    /// The index of the next line for the same symbol, or `NO_RULE`.
+    pub(crate) next: u8,
+}
+
+/// An L-system: axiom, rules and angle, borrowed from text and checked.
+///
+/// Worst-case RAM: `MAX_RULES` rule slices (two words and a byte each), a 128-byte lookup
+/// table and the sine/cosine table for up to `MAX_ANGLE_DIVISIONS / 2 + 1` headings
+/// (264 bytes): about 0.9 KiB on a 32-bit MCU.
+#[derive(Debug, Clone)]
+pub struct Grammar<'a> {
+    dialect: Dialect,
+    axiom: &'a [u8],
+    angle: Angle,
+    rules: Vec<Rule<'a>, MAX_RULES>,
+    /// First rule line for each ASCII symbol.
+    first: [u8; 128],
+    extra_draw: SymbolSet,
+    headings: Headings,
+}
+
+impl<'a> Grammar<'a> {
+    /// A grammar with an axiom and an angle, and no rules yet.
+    pub fn new(dialect: Dialect, axiom: &'a str, angle: Angle) -> Result<Self, Error> {
+        Self::new_at(dialect, axiom, angle, Location::column(1))
+    }
+
+    /// Like [`new`](Self::new), with the axiom's place in a file for error messages.
+    pub(crate) fn new_at(
+        dialect: Dialect,
+        axiom: &'a str,
+        angle: Angle,
+        at: Location,
+    ) -> Result<Self, Error> {
+        let axiom = axiom.trim();
+        if axiom.is_empty() {
+            return Err(Error::EmptyAxiom);
+        }
+        let headings = Headings::new(angle, at)?;
+        let grammar = Self {
+            dialect,
+            axiom: axiom.as_bytes(),
+            angle,
+            rules: Vec::new(),
+            first: [NO_RULE; 128],
+            extra_draw: SymbolSet::default(),
+            headings,
+        };
+        grammar.check_body(axiom.as_bytes(), at)?;
+        Ok(grammar)
+    }
+
+    /// Adds a rule `symbol → body`. A second rule for the same symbol appends to the first,
+    /// as repeated lines do in Fractint files.
+    pub fn with_rule(mut self, symbol: char, body: &'a str) -> Result<Self, Error> {
+        self.add_rule(symbol, body, Location::column(1))?;
+        Ok(self)
+    }
+
+    /// Adds a rule; `at` is where the body starts (for error messages).
+    pub(crate) fn add_rule(
+        &mut self,
+        symbol: char,
+        body: &'a str,
+        at: Location,
+    ) -> Result<(), Error> {
+        let rule_at = Location {
+            line: at.line,
+            column: at.column.saturating_sub(2).max(1),
+        };
+        let symbol = u8::try_from(symbol)
+            .ok()
+            .filter(u8::is_ascii)
+            .ok_or(Error::NonAsciiSymbol { at: rule_at })?;
+        let symbol = self.dialect.normalize(symbol);
+        if self.dialect.is_reserved(symbol) {
+            return Err(Error::ReservedRule {
+                symbol: char::from(symbol),
+                at: rule_at,
+            });
+        }
+        self.check_body(body.as_bytes(), at)?;
+        let index = u8::try_from(self.rules.len()).unwrap_or(NO_RULE);
+        self.rules
+            .push(Rule {
+                body: body.as_bytes(),
+                next: NO_RULE,
+            })
+            .map_err(|_| Error::TooManyRules {
+                max: MAX_RULES,
+                at: rule_at,
+            })?;
+        // Chain it after the last line for the same symbol.
+        match self.first_rule(symbol) {
+            None => {
+                if let Some(first) = self.first.get_mut(usize::from(symbol)) {
+                    *first = index;
+                }
+            }
+            Some(mut last) => {
+                while let Some(next) = self.rule(last).map(|rule| rule.next) {
+                    if next == NO_RULE {
+                        break;
+                    }
+                    last = next;
+                }
+                if let Some(rule) = self.rules.get_mut(usize::from(last)) {
+                    rule.next = index;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Makes more symbols draw (ABOP edge-rewriting systems, e.g. `A` and `B` in the Gosper
+    /// curve). Ignored by the Fractint dialect, where `F` and `D` draw.
+    pub fn with_draw_symbols(mut self, symbols: &str) -> Result<Self, Error> {
+        for (index, c) in symbols.char_indices() {
+            let at = Location::column(u32::try_from(index + 1).unwrap_or(u32::MAX));
+            let byte = u8::try_from(c)
+                .ok()
+                .filter(u8::is_ascii)
+                .ok_or(Error::NonAsciiSymbol { at })?;
+            self.extra_draw.insert(byte);
+        }
+        Ok(self)
+    }
+
+    /// The notation this grammar follows.
+    pub const fn dialect(&self) -> Dialect {
+        self.dialect
+    }
+
+    /// The turn angle.
+    pub const fn angle(&self) -> Angle {
+        self.angle
+    }
+
+    /// The axiom as written.
+    pub fn axiom(&self) -> &'a str {
+        core::str::from_utf8(self.axiom).unwrap_or_default()
+    }
+
+    /// Number of rule lines.
+    pub fn rule_count(&self) -> usize {
+        self.rules.len()
+    }
+
+    pub(crate) fn axiom_bytes(&self) -> &'a [u8] {
+        self.axiom
+    }
+
+    pub(crate) fn rule(&self, index: u8) -> Option<&Rule<'a>> {
+        self.rules.get(usize::from(index))
+    }
+
+    /// The first rule line for a (normalized) symbol.
+    pub(crate) fn first_rule(&self, symbol: u8) -> Option<u8> {
+        self.first
+            .get(usize::from(symbol))
+            .copied()
+            .filter(|&index| index != NO_RULE)
+    }
+
+    pub(crate) const fn headings(&self) -> &Headings {
+        &self.headings
+    }
+
+    /// Checks one body: ASCII, balanced brackets, every number decodes.
+    fn check_body(&self, body: &[u8], at: Location) -> Result<(), Error> {
+        let located = |offset: usize| Location {
+            line: at.line,
+            column: at
+                .column
+                .saturating_add(u32::try_from(offset).unwrap_or(u32::MAX)),
+        };
+        if body.len() > MAX_BODY_LEN {
+            return Err(Error::BodyTooLong { at });
+        }
+        // Where the outermost open `[` is, for the message if it is never closed.
+        let mut outermost_open = 0;
+        let mut depth = 0usize;
+        let mut position = 0;
+        while let Some((token, next)) = self.dialect.scan(body, position) {
+            let here = located(position);
+            if !token.symbol.is_ascii() {
+                return Err(Error::NonAsciiSymbol { at: here });
+            }
+            match token.symbol {
+                b'[' => {
+                    if depth == 0 {
+                        outermost_open = position;
+                    }
+                    depth += 1;
+                }
+                b']' => {
+                    depth = depth
+                        .checked_sub(1)
+                        .ok_or(Error::UnbalancedBracket { at: here })?;
+                }
+                _ => {}
+            }
+            self.dialect.decode(token, self.extra_draw, here)?;
+            position = next;
+        }
+        if depth > 0 {
+            return Err(Error::UnclosedBracket {
+                at: located(outermost_open),
+            });
+        }
+        Ok(())
+    }
+
+    /// Decodes a token of a body already checked by `check_body`.
+    pub(crate) fn decode(&self, token: Token<'_>) -> Result<super::alphabet::Command, Error> {
+        self.dialect
+            .decode(token, self.extra_draw, Location::default())
+    }
+}
+
+/// The turtle's direction vectors: for `Angle n`, cos and sin of each heading in Q30;
+/// for a free angle, the turn as a binary angle.
+#[derive(Debug, Clone)]
+pub(crate) struct Headings {
+    /// Headings 0..=n/2; the rest mirror them exactly.
+    half_table: Vec<(i32, i32), { MAX_ANGLE_DIVISIONS as usize / 2 + 1 }>,
+    divisions: u16,
+    free_turn: trig::BinaryAngle,
+}
+
+impl Headings {
+    fn new(angle: Angle, at: Location) -> Result<Self, Error> {
+        let mut headings = Self {
+            half_table: Vec::new(),
+            divisions: 0,
+            free_turn: trig::BinaryAngle::default(),
+        };
+        match angle {
+            Angle::Divisions(n) => {
+                if n == 0 || n > MAX_ANGLE_DIVISIONS {
+                    return Err(Error::AngleOutOfRange {
+                        value: i64::from(n),
+                        at,
+                    });
+                }
+                headings.divisions = n;
+                for k in 0..=n / 2 {
+                    let _ = headings
+                        .half_table
+                        .push(trig::sin_cos(u64::from(k), u64::from(n)));
+                }
+            }
+            Angle::Degrees(degrees) => {
+                headings.free_turn = trig::BinaryAngle::from_degrees_bits(degrees.to_bits());
+            }
+        }
+        Ok(headings)
+    }
+
+    /// Number of divisions, or 0 for a free angle.
+    pub(crate) const fn divisions(&self) -> u16 {
+        self.divisions
+    }
+
+    /// The binary-angle turn of `+` for a free angle.
+    pub(crate) const fn free_turn(&self) -> trig::BinaryAngle {
+        self.free_turn
+    }
+
+    /// Cosine and sine of heading `k` (0..n), exact mirror images for `k` and `n - k`.
+    pub(crate) fn cos_sin(&self, k: u16) -> (i32, i32) {
+        let mirrored = k > self.divisions / 2;
+        let index = if mirrored { self.divisions - k } else { k };
+        let (c, s) = self
+            .half_table
+            .get(usize::from(index))
+            .copied()
+            .unwrap_or((trig::ONE_Q30, 0));
+        if mirrored {
+            (c, -s)
+        } else {
+            (c, s)
+        }
+    }
+}

@@ -1,0 +1,214 @@
+//! Lines to pixels, in runs: each horizontal or vertical run of a line is one `fill_solid`.
+//!
+//! On SPI displays a `draw_iter` pixel costs a whole address-window command, while a run
+//! costs one window for all its pixels, so runs are what make lines cheap there.
+//! The pixel at major-axis step `t` of a line from `(x0, y0)` to `(x1, y1)` (x-major) is
+//! `y0 + round(t·dy/dx)` with halves rounded up: the nearest pixel to the ideal line.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+/// The runs of a line, clipped on its major axis to `clip` (rows or columns outside it are
+/// never visited, so a segment far off-screen costs nothing).
+#[derive(Debug, Clone)]
+pub(crate) struct Runs {
+    /// Start on the major axis, and its direction (+1 or -1).
+    major: i64,
+    major_dir: i64,
+    minor: i64,
+    minor_dir: i64,
+    /// Steps left, including the current one.
+    remaining: i64,
+    /// Twice the minor and major lengths, and the Bresenham remainder.
+    twice_minor: i64,
+    twice_major: i64,
+    remainder: i64,
+    x_major: bool,
+}
+
+impl Runs {
+    /// The runs of the line `from`–`to` (both ends included, unless `skip_first`).
+    pub(crate) fn new(from: Point, to: Point, skip_first: bool, clip: &Rectangle) -> Self {
+        let (dx, dy) = (
+            i64::from(to.x) - i64::from(from.x),
+            i64::from(to.y) - i64::from(from.y),
+        );
+        let x_major = dx.abs() >= dy.abs();
+        let (major0, minor0, d_major, d_minor) = if x_major {
+            (i64::from(from.x), i64::from(from.y), dx, dy)
+        } else {
+            (i64::from(from.y), i64::from(from.x), dy, dx)
+        };
+        let (low, high) = clip_range(clip, x_major);
+        let major_dir = if d_major < 0 { -1 } else { 1 };
+        let length = d_major.abs();
+        // Steps t in [first, last] keep the major coordinate inside the clip range.
+        let (first, last) = if major_dir > 0 {
+            ((low - major0).max(0), (high - major0).min(length))
+        } else {
+            ((major0 - high).max(0), (major0 - low).min(length))
+        };
+        let first = if skip_first { first.max(1) } else { first };
+        let twice_major = 2 * length.max(1);
+        let twice_minor = 2 * d_minor.abs();
+        // Closed form at t = first: offset = floor((t·2|d_minor| + |d_major|) / 2|d_major|).
+        let numerator = i128::from(first) * i128::from(twice_minor) + i128::from(length);
+        let offset = numerator / i128::from(twice_major);
+        let remainder = numerator % i128::from(twice_major);
+        let minor_dir = if d_minor < 0 { -1 } else { 1 };
+        Self {
+            major: major0 + major_dir * first,
+            major_dir,
+            minor: minor0 + minor_dir * i64::try_from(offset).unwrap_or(0),
+            minor_dir,
+            remaining: (last - first + 1).max(0),
+            twice_minor,
+            twice_major,
+            remainder: i64::try_from(remainder).unwrap_or(0),
+            x_major,
+        }
+    }
+}
+
+/// The inclusive range of the major axis inside `clip` (empty if `clip` is).
+fn clip_range(clip: &Rectangle, x_major: bool) -> (i64, i64) {
+    let (start, length) = if x_major {
+        (clip.top_left.x, clip.size.width)
+    } else {
+        (clip.top_left.y, clip.size.height)
+    };
+    let start = i64::from(start);
+    (start, start + i64::from(length) - 1)
+}
+
+impl Iterator for Runs {
+    type Item = Rectangle;
+
+    fn next(&mut self) -> Option<Rectangle> {
+        if self.remaining <= 0 {
+            return None;
+        }
+        let run_start = self.major;
+        let minor = self.minor;
+        let mut length: i64 = 0;
+        while self.remaining > 0 && self.minor == minor {
+            length += 1;
+            self.remaining -= 1;
+            self.major += self.major_dir;
+            self.remainder += self.twice_minor;
+            if self.remainder >= self.twice_major {
+                self.remainder -= self.twice_major;
+                self.minor += self.minor_dir;
+            }
+        }
+        let low = if self.major_dir > 0 {
+            run_start
+        } else {
+            run_start - (length - 1)
+        };
+        let (low, minor) = (
+            i32::try_from(low).unwrap_or(i32::MAX),
+            i32::try_from(minor).unwrap_or(i32::MAX),
+        );
+        let length = u32::try_from(length).unwrap_or(0);
+        Some(if self.x_major {
+            Rectangle::new(Point::new(low, minor), Size::new(length, 1))
+        } else {
+            Rectangle::new(Point::new(minor, low), Size::new(1, length))
+        })
+    }
+}
+
+/// Draws the line `from`–`to` in `color`, one `fill_solid` per run.
+pub(crate) fn draw_line<D: DrawTarget>(
+    target: &mut D,
+    from: Point,
+    to: Point,
+    skip_first: bool,
+    color: D::Color,
+    clip: &Rectangle,
+) -> Result<(), D::Error> {
+    for run in Runs::new(from, to, skip_first, clip) {
+        target.fill_solid(&run, color)?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec::Vec;
+
+    use super::*;
+
+    fn pixels(from: Point, to: Point, clip: &Rectangle) -> Vec<Point> {
+        Runs::new(from, to, false, clip)
+            .flat_map(|run| run.points().collect::<Vec<_>>())
+            .collect()
+    }
+
+    /// Every pixel is the nearest to the ideal line on its major-axis step, there is exactly
+    /// one per step, and the ends are the endpoints: checked with f64 geometry.
+    #[test]
+    fn runs_are_the_nearest_pixels() {
+        let clip = Rectangle::new(Point::new(-100, -100), Size::new(400, 400));
+        let ends = [-37, -5, -1, 0, 1, 2, 7, 19, 64];
+        for &x0 in &ends {
+            for &y0 in &ends {
+                for &(x1, y1) in &[(3, 50), (50, 3), (-20, 9), (9, -20), (64, 64), (x0, y0)] {
+                    let (from, to) = (Point::new(x0, y0), Point::new(x1, y1));
+                    let got = pixels(from, to, &clip);
+                    let (dx, dy) = (f64::from(x1 - x0), f64::from(y1 - y0));
+                    let steps = dx.abs().max(dy.abs()) as usize;
+                    assert_eq!(got.len(), steps + 1, "{from:?}-{to:?}");
+                    for p in &got {
+                        let (major_t, minor_err) = if dx.abs() >= dy.abs() {
+                            let t = if dx == 0.0 {
+                                0.0
+                            } else {
+                                f64::from(p.x - x0) / dx
+                            };
+                            (t, (f64::from(y0) + t * dy - f64::from(p.y)).abs())
+                        } else {
+                            let t = f64::from(p.y - y0) / dy;
+                            (t, (f64::from(x0) + t * dx - f64::from(p.x)).abs())
+                        };
+                        assert!(minor_err <= 0.5 + 1e-9, "{p:?} on {from:?}-{to:?}");
+                        assert!((-1e-9..=1.0 + 1e-9).contains(&major_t));
+                    }
+                    assert!(got.contains(&from) && got.contains(&to));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn clipping_keeps_exactly_the_inside_pixels() {
+        let everything = Rectangle::new(Point::new(-1000, -1000), Size::new(3000, 3000));
+        let clip = Rectangle::new(Point::new(10, 5), Size::new(30, 20));
+        for &(x0, y0, x1, y1) in &[(-500, -7, 900, 60), (25, -300, 31, 400), (0, 0, 45, 30)] {
+            let (from, to) = (Point::new(x0, y0), Point::new(x1, y1));
+            let inside: Vec<Point> = pixels(from, to, &everything)
+                .into_iter()
+                .filter(|p| clip.contains(*p))
+                .collect();
+            let clipped: Vec<Point> = pixels(from, to, &clip)
+                .into_iter()
+                .filter(|p| clip.contains(*p))
+                .collect();
+            assert_eq!(inside, clipped);
+        }
+    }
+
+    #[test]
+    fn a_segment_far_away_visits_nothing() {
+        let clip = Rectangle::new(Point::zero(), Size::new(320, 240));
+        let runs = Runs::new(
+            Point::new(i32::MIN, 5),
+            Point::new(i32::MIN + 2_000_000_000, 6),
+            false,
+            &clip,
+        );
+        assert_eq!(runs.count(), 0);
+    }
+}

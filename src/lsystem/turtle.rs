@@ -1,0 +1,334 @@
+//! The fixed-point turtle, and [`Segments`]: the walker's symbols turned into line segments.
+
+use heapless::Vec;
+
+use super::alphabet::{Command, Dialect};
+use super::grammar::{Grammar, Headings};
+use super::walker::{Walker, DEFAULT_DEPTH};
+use crate::error::Error;
+use crate::real::Real;
+use crate::trig::BinaryAngle;
+
+/// Branches the turtle stack holds by default.
+pub const DEFAULT_STACK: usize = 20;
+
+/// The smallest step, as a fraction of a unit: 2⁻²⁰. Below it a step keeps fewer than 12
+/// significant bits and the picture would be silently wrong, so it is an error instead.
+const MIN_STEP: Real = Real::from_bits(1 << 12);
+
+/// A point in turtle space: y up, `+` turns counter-clockwise.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct TurtlePoint {
+    /// Horizontal coordinate.
+    pub x: Real,
+    /// Vertical coordinate (up).
+    pub y: Real,
+}
+
+/// One drawn line, in turtle space.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Segment {
+    /// Where the line starts.
+    pub start: TurtlePoint,
+    /// Where it ends.
+    pub end: TurtlePoint,
+    /// The colour index (`C`, `<`, `>` in Fractint files; 0 unless set).
+    pub color: u8,
+}
+
+/// Where the turtle starts, how long a step is, and where it heads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Start {
+    /// The first position.
+    pub position: TurtlePoint,
+    /// The length of one step.
+    pub step: Real,
+    /// The first heading, in turns of the system's angle counter-clockwise from +x (as if
+    /// the axiom began with that many `+`).
+    pub turns: i32,
+}
+
+impl Default for Start {
+    /// At the origin, step 1, heading along +x: turtle units.
+    fn default() -> Self {
+        Self {
+            position: TurtlePoint::default(),
+            step: Real::ONE,
+            turns: 0,
+        }
+    }
+}
+
+/// Everything `[` saves.
+#[derive(Debug, Clone, Copy)]
+struct State {
+    position: TurtlePoint,
+    step: Real,
+    /// The heading for `Angle n`, in divisions (0..n).
+    heading: u16,
+    /// The free heading (`\`, `/`, `D`, `M`; and every turn for a free angle).
+    free: BinaryAngle,
+    color: u8,
+    reversed: bool,
+}
+
+/// The turtle: a state and a stack of saved states (`STACK` deep).
+#[derive(Debug, Clone)]
+struct Turtle<'g, const STACK: usize> {
+    headings: &'g Headings,
+    dialect: Dialect,
+    state: State,
+    stack: Vec<State, STACK>,
+    max_stack: usize,
+}
+
+impl<'g, const STACK: usize> Turtle<'g, STACK> {
+    fn new(grammar: &'g Grammar<'_>, start: Start) -> Result<Self, Error> {
+        if start.step.abs() < MIN_STEP {
+            return Err(Error::StepUnderflow);
+        }
+        let mut turtle = Self {
+            headings: grammar.headings(),
+            dialect: grammar.dialect(),
+            state: State {
+                position: start.position,
+                step: start.step,
+                heading: 0,
+                free: BinaryAngle::default(),
+                color: 0,
+                reversed: false,
+            },
+            stack: Vec::new(),
+            max_stack: 0,
+        };
+        let left = start.turns >= 0;
+        for _ in 0..start.turns.unsigned_abs() % 65_536 {
+            turtle.turn(left);
+        }
+        Ok(turtle)
+    }
+
+    /// One turn by the system's angle, counter-clockwise if `left`.
+    fn turn(&mut self, left: bool) {
+        let n = self.headings.divisions();
+        let state = &mut self.state;
+        if n == 0 {
+            let delta = self.headings.free_turn().0;
+            state.free.0 = if left {
+                state.free.0.wrapping_add(delta)
+            } else {
+                state.free.0.wrapping_sub(delta)
+            };
+        } else {
+            state.heading = if left {
+                (state.heading + 1) % n
+            } else {
+                (state.heading + n - 1) % n
+            };
+        }
+    }
+
+    /// Moves one step along `(cos, sin)` and returns the segment it covered.
+    fn advance(&mut self, (cos, sin): (i32, i32)) -> Result<Segment, Error> {
+        let start = self.state.position;
+        let step = self.state.step;
+        let end = TurtlePoint {
+            x: start
+                .x
+                .checked_add(step.mul_q30(cos))
+                .ok_or(Error::Overflow)?,
+            y: start
+                .y
+                .checked_add(step.mul_q30(sin))
+                .ok_or(Error::Overflow)?,
+        };
+        self.state.position = end;
+        Ok(Segment {
+            start,
+            end,
+            color: self.state.color,
+        })
+    }
+
+    fn main_direction(&self) -> (i32, i32) {
+        if self.headings.divisions() == 0 {
+            self.state.free.cos_sin()
+        } else {
+            self.headings.cos_sin(self.state.heading)
+        }
+    }
+
+    /// Carries out one command; returns the segment if it drew one.
+    fn execute(&mut self, command: Command) -> Result<Option<Segment>, Error> {
+        let state = &mut self.state;
+        match command {
+            Command::Draw => return self.advance(self.main_direction()).map(Some),
+            Command::DrawFree => return self.advance(self.state.free.cos_sin()).map(Some),
+            Command::Move => {
+                self.advance(self.main_direction())?;
+            }
+            Command::MoveFree => {
+                self.advance(self.state.free.cos_sin())?;
+            }
+            Command::Left => {
+                let left = !state.reversed;
+                self.turn(left);
+            }
+            Command::Right => {
+                let left = state.reversed;
+                self.turn(left);
+            }
+            Command::Around => {
+                let n = self.headings.divisions();
+                if n == 0 {
+                    state.free.0 = state.free.0.wrapping_add(1 << 31);
+                } else {
+                    state.heading = (state.heading + n - n / 2) % n;
+                }
+            }
+            Command::Reverse => state.reversed = !state.reversed,
+            Command::FreeLeft(degrees) | Command::FreeRight(degrees) => {
+                let delta = BinaryAngle::from_degrees_bits(degrees).0;
+                let left = matches!(command, Command::FreeLeft(_)) != state.reversed;
+                state.free.0 = if left {
+                    state.free.0.wrapping_add(delta)
+                } else {
+                    state.free.0.wrapping_sub(delta)
+                };
+            }
+            Command::Scale(factor) => {
+                state.step = state.step.checked_mul(factor).ok_or(Error::Overflow)?;
+                if state.step.abs() < MIN_STEP {
+                    return Err(Error::StepUnderflow);
+                }
+            }
+            Command::SetColor(color) => state.color = color,
+            Command::RaiseColor(by) => state.color = state.color.wrapping_add(by),
+            Command::LowerColor(by) => state.color = state.color.wrapping_sub(by),
+            Command::Push => {
+                self.stack
+                    .push(*state)
+                    .map_err(|_| Error::StackTooDeep { capacity: STACK })?;
+                self.max_stack = self.max_stack.max(self.stack.len());
+            }
+            Command::Pop => {
+                let saved = self.stack.pop().ok_or(Error::UnbalancedBracket {
+                    at: crate::Location::default(),
+                })?;
+                // Fractint's `]` restores everything but the colour; ABOP's restores all.
+                let color = state.color;
+                *state = saved;
+                if self.dialect == Dialect::Fractint {
+                    state.color = color;
+                }
+            }
+            Command::Nothing => {}
+        }
+        Ok(None)
+    }
+}
+
+/// What a walk did, for statistics.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WalkStats {
+    /// Segments drawn.
+    pub segments: u64,
+    /// Symbols read (expanded and interpreted).
+    pub symbols: u64,
+    /// The deepest the turtle stack got (bracket nesting).
+    pub max_stack: usize,
+    /// The deepest expansion (levels, the axiom is 1).
+    pub max_depth: usize,
+}
+
+/// The segments an L-system draws at an order, in drawing order, computed on the fly.
+///
+/// This is the raw layer under [`LSystem`](crate::LSystem): no colours, no pixels. A main loop
+/// can pull a few segments at a time. Worst-case RAM is the walker (`DEPTH` × 4 bytes), the
+/// turtle state and its stack (`STACK` × 32 bytes) and two references: 0.8 KiB with the
+/// defaults, whatever the order.
+///
+/// After an `Err` the iterator ends.
+#[derive(Debug, Clone)]
+pub struct Segments<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH, const STACK: usize = DEFAULT_STACK>
+{
+    walker: Walker<'g, 'a, DEPTH>,
+    turtle: Turtle<'g, STACK>,
+    segments: u64,
+    failed: bool,
+}
+
+impl<'g, 'a> Segments<'g, 'a> {
+    /// The segments of `grammar` at `order`, in turtle units from the origin along +x,
+    /// with the default capacities.
+    pub fn new(grammar: &'g Grammar<'a>, order: u32) -> Result<Self, Error> {
+        Self::starting(grammar, order, Start::default())
+    }
+}
+
+impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STACK> {
+    /// The segments with an explicit start: position, step and heading.
+    pub fn starting(grammar: &'g Grammar<'a>, order: u32, start: Start) -> Result<Self, Error> {
+        Ok(Self {
+            walker: Walker::with_capacity(grammar, order)?,
+            turtle: Turtle::new(grammar, start)?,
+            segments: 0,
+            failed: false,
+        })
+    }
+
+    /// Ends the walk with [`Error::BudgetExhausted`] after `symbols` symbols.
+    #[must_use]
+    pub fn with_budget(mut self, symbols: u64) -> Self {
+        self.walker = self.walker.with_budget(symbols);
+        self
+    }
+
+    /// What the walk has done so far.
+    pub fn stats(&self) -> WalkStats {
+        WalkStats {
+            segments: self.segments,
+            symbols: self.walker.symbols_read(),
+            max_stack: self.turtle.max_stack,
+            max_depth: self.walker.max_depth(),
+        }
+    }
+
+    /// Walks to the end, calling `f` for each segment; the first error stops it.
+    pub fn try_for_each_segment(
+        &mut self,
+        mut f: impl FnMut(Segment) -> Result<(), Error>,
+    ) -> Result<WalkStats, Error> {
+        for segment in self.by_ref() {
+            f(segment?)?;
+        }
+        Ok(self.stats())
+    }
+}
+
+impl<const DEPTH: usize, const STACK: usize> Iterator for Segments<'_, '_, DEPTH, STACK> {
+    type Item = Result<Segment, Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.failed {
+            return None;
+        }
+        loop {
+            let step = self.walker.next_token()?.and_then(|token| {
+                let command = self.walker.grammar().decode(token)?;
+                self.turtle.execute(command)
+            });
+            match step {
+                Ok(None) => {}
+                Ok(Some(segment)) => {
+                    self.segments += 1;
+                    return Some(Ok(segment));
+                }
+                Err(error) => {
+                    self.failed = true;
+                    return Some(Err(error));
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,169 @@
+//! The derivation walker: an iterator over the symbols of the derived string, in order,
+//! without ever building that string.
+//!
+//! The walker keeps one frame per expansion level: which rule line it is reading and where.
+//! A symbol with a rule is expanded (a frame is pushed) while order remains; any other symbol
+//! is handed out to be interpreted. Memory is `DEPTH` frames of 4 bytes, whatever the order.
+
+use heapless::Vec;
+
+use super::alphabet::Token;
+use super::grammar::Grammar;
+use crate::error::Error;
+
+/// Frames a walker holds by default: orders 0 to 16.
+pub const DEFAULT_DEPTH: usize = 17;
+
+/// Symbols a walk may read by default before it stops with [`Error::BudgetExhausted`].
+pub const DEFAULT_BUDGET: u64 = 1 << 28;
+
+/// Marks the axiom in `Frame::rule`.
+const AXIOM: u8 = u8::MAX;
+
+/// One expansion level: a rule line (or the axiom) and the read position in it.
+#[derive(Debug, Clone, Copy)]
+struct Frame {
+    rule: u8,
+    position: u16,
+}
+
+/// Iterates over the symbols of an L-system's derivation of a given order.
+///
+/// `DEPTH` is the number of expansion levels it can hold: the highest order is `DEPTH - 1`.
+/// Yields `Err` once (budget exhausted) and then ends.
+#[derive(Debug, Clone)]
+pub struct Walker<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH> {
+    grammar: &'g Grammar<'a>,
+    order: u32,
+    frames: Vec<Frame, DEPTH>,
+    read: u64,
+    budget: u64,
+    max_depth: usize,
+}
+
+impl<'g, 'a> Walker<'g, 'a> {
+    /// A walk of `grammar` at `order` with the default depth (orders up to 16).
+    pub fn new(grammar: &'g Grammar<'a>, order: u32) -> Result<Self, Error> {
+        Self::with_capacity(grammar, order)
+    }
+}
+
+impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
+    /// A walk of `grammar` at `order`; fails if the order needs more than `DEPTH` levels.
+    pub fn with_capacity(grammar: &'g Grammar<'a>, order: u32) -> Result<Self, Error> {
+        let too_high = Error::OrderTooHigh {
+            order,
+            max: u32::try_from(DEPTH.saturating_sub(1)).unwrap_or(u32::MAX),
+        };
+        if usize::try_from(order).map_or(true, |order| order >= DEPTH) {
+            return Err(too_high);
+        }
+        let mut frames = Vec::new();
+        frames
+            .push(Frame {
+                rule: AXIOM,
+                position: 0,
+            })
+            .map_err(|_| too_high)?;
+        Ok(Self {
+            grammar,
+            order,
+            frames,
+            read: 0,
+            budget: DEFAULT_BUDGET,
+            max_depth: 1,
+        })
+    }
+
+    /// Stops the walk with [`Error::BudgetExhausted`] after `symbols` symbols are read
+    /// (expanded or interpreted), so no order can hang a device.
+    #[must_use]
+    pub fn with_budget(mut self, symbols: u64) -> Self {
+        self.budget = symbols;
+        self
+    }
+
+    /// Symbols read so far.
+    pub const fn symbols_read(&self) -> u64 {
+        self.read
+    }
+
+    /// The deepest expansion reached so far, in levels (the axiom is level 1).
+    pub const fn max_depth(&self) -> usize {
+        self.max_depth
+    }
+
+    /// The grammar being walked.
+    pub const fn grammar(&self) -> &'g Grammar<'a> {
+        self.grammar
+    }
+
+    fn body(&self, rule: u8) -> &'a [u8] {
+        if rule == AXIOM {
+            self.grammar.axiom_bytes()
+        } else {
+            self.grammar.rule(rule).map_or(&[], |rule| rule.body)
+        }
+    }
+
+    /// The next symbol to interpret.
+    pub(crate) fn next_token(&mut self) -> Option<Result<Token<'a>, Error>> {
+        loop {
+            let depth = self.frames.len();
+            let frame = *self.frames.last()?;
+            let body = self.body(frame.rule);
+            let Some((token, next)) = self
+                .grammar
+                .dialect()
+                .scan(body, usize::from(frame.position))
+            else {
+                // End of this line: go on with the next line for the same symbol, if any.
+                let next_line = self.grammar.rule(frame.rule).map(|rule| rule.next);
+                match (next_line, self.frames.last_mut()) {
+                    (Some(next), Some(top)) if self.grammar.rule(next).is_some() => {
+                        *top = Frame {
+                            rule: next,
+                            position: 0,
+                        };
+                    }
+                    _ => {
+                        self.frames.pop();
+                    }
+                }
+                continue;
+            };
+            if self.read >= self.budget {
+                self.frames.clear();
+                return Some(Err(Error::BudgetExhausted {
+                    budget: self.budget,
+                }));
+            }
+            self.read += 1;
+            if let Some(top) = self.frames.last_mut() {
+                // Bodies are at most 65,535 bytes (checked by the grammar).
+                top.position = u16::try_from(next).unwrap_or(u16::MAX);
+            }
+            let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
+            if level < self.order {
+                if let Some(rule) = self.grammar.first_rule(token.symbol) {
+                    // Cannot fail: `new` checked that order + 1 <= DEPTH.
+                    if self.frames.push(Frame { rule, position: 0 }).is_ok() {
+                        self.max_depth = self.max_depth.max(depth + 1);
+                        continue;
+                    }
+                }
+            }
+            return Some(Ok(token));
+        }
+    }
+}
+
+/// The symbols to interpret, in order, as `char`s (lower-cased in the Fractint dialect).
+impl<const DEPTH: usize> Iterator for Walker<'_, '_, DEPTH> {
+    type Item = Result<char, Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.next_token()
+            .map(|token| token.map(|token| char::from(token.symbol)))
+    }
+}

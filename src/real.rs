@@ -1,0 +1,216 @@
+//! `Real`: the turtle's number, signed fixed point with 32 integer and 32 fractional bits.
+//!
+//! Why I32F32: a sizing pass walks in turtle units (step 1), and deep curves reach millions
+//! of units (the Koch curve at order 16 spans 3¹⁶ ≈ 4.3·10⁷), so 16 integer bits are too few;
+//! 32 fractional bits keep the rounding of one step below 2⁻³², so even 2³¹ steps drift by
+//! at most half a unit. Every operation is integer arithmetic, so results are bit-identical
+//! on every target.
+
+use core::fmt;
+
+use fixed::types::I32F32;
+
+/// A signed fixed-point number with 32 integer and 32 fractional bits.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
+pub struct Real(I32F32);
+
+impl Real {
+    /// Zero.
+    pub const ZERO: Self = Self(I32F32::ZERO);
+    /// One.
+    pub const ONE: Self = Self(I32F32::ONE);
+    /// Number of fractional bits.
+    pub const FRAC_BITS: u32 = 32;
+
+    /// From the raw bits (the value times 2³²).
+    pub const fn from_bits(bits: i64) -> Self {
+        Self(I32F32::from_bits(bits))
+    }
+
+    /// The raw bits (the value times 2³²).
+    pub const fn to_bits(self) -> i64 {
+        self.0.to_bits()
+    }
+
+    /// An integer, exactly.
+    pub const fn from_int(value: i32) -> Self {
+        Self::from_bits((value as i64) << 32)
+    }
+
+    /// The ratio `numerator / denominator`, rounded to the nearest representable value;
+    /// `None` if the denominator is 0 or the result is out of range.
+    pub fn from_ratio(numerator: i64, denominator: i64) -> Option<Self> {
+        if denominator == 0 {
+            return None;
+        }
+        let scaled = i128::from(numerator) << 32;
+        let bits = div_round(scaled, i128::from(denominator));
+        i64::try_from(bits).ok().map(Self::from_bits)
+    }
+
+    /// Parses an unsigned decimal number such as `1.618034` or `.5`, exactly rounded.
+    pub fn parse_decimal(text: &str) -> Option<Self> {
+        let (int_part, frac_part) = match text.split_once('.') {
+            Some((i, f)) => (i, f),
+            None => (text, ""),
+        };
+        if int_part.is_empty() && frac_part.is_empty() {
+            return None;
+        }
+        let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+        if !all_digits(int_part) || !all_digits(frac_part) {
+            return None;
+        }
+        let mut int: i64 = 0;
+        for digit in int_part.bytes() {
+            int = int.checked_mul(10)?.checked_add(i64::from(digit - b'0'))?;
+        }
+        // The fraction: digits beyond 38 cannot change an I32F32 value, so they are only checked.
+        let mut numerator: i128 = 0;
+        let mut denominator: i128 = 1;
+        for digit in frac_part.bytes().take(30) {
+            numerator = numerator * 10 + i128::from(digit - b'0');
+            denominator *= 10;
+        }
+        let frac_bits = div_round(numerator << 32, denominator);
+        let bits = i128::from(int)
+            .checked_mul(1 << 32)?
+            .checked_add(frac_bits)?;
+        i64::try_from(bits).ok().map(Self::from_bits)
+    }
+
+    /// Checked addition.
+    pub fn checked_add(self, other: Self) -> Option<Self> {
+        self.0.checked_add(other.0).map(Self)
+    }
+
+    /// Checked subtraction.
+    pub fn checked_sub(self, other: Self) -> Option<Self> {
+        self.0.checked_sub(other.0).map(Self)
+    }
+
+    /// Checked multiplication, rounded to nearest.
+    pub fn checked_mul(self, other: Self) -> Option<Self> {
+        let product = i128::from(self.to_bits()) * i128::from(other.to_bits());
+        i64::try_from(shift_round(product, 32))
+            .ok()
+            .map(Self::from_bits)
+    }
+
+    /// Checked division, rounded to nearest; `None` on division by zero or overflow.
+    pub fn checked_div(self, other: Self) -> Option<Self> {
+        if other.to_bits() == 0 {
+            return None;
+        }
+        let quotient = div_round(
+            i128::from(self.to_bits()) << 32,
+            i128::from(other.to_bits()),
+        );
+        i64::try_from(quotient).ok().map(Self::from_bits)
+    }
+
+    /// The square root of a non-negative value (`None` for negatives), rounded down.
+    pub fn checked_sqrt(self) -> Option<Self> {
+        let bits = u128::try_from(self.to_bits()).ok()?;
+        let root = (bits << 32).isqrt();
+        i64::try_from(root).ok().map(Self::from_bits)
+    }
+
+    /// Times a Q30 factor (a sine or cosine), rounded half away from zero so that
+    /// `x.mul_q30(-c) == -x.mul_q30(c)` exactly: symmetric headings give exactly opposite steps.
+    pub(crate) fn mul_q30(self, factor: i32) -> Self {
+        let product = i128::from(self.to_bits()) * i128::from(factor);
+        // |self| < 2^63 and |factor| <= 2^30, so the shifted product fits in i64 again.
+        Self::from_bits(shift_round(product, 30) as i64)
+    }
+
+    /// Rounds to the nearest integer, half away from zero (saturating at the i32 range).
+    pub fn round_to_i32(self) -> i32 {
+        let rounded = shift_round(i128::from(self.to_bits()), 32);
+        rounded.clamp(i128::from(i32::MIN), i128::from(i32::MAX)) as i32
+    }
+
+    /// The value as `f64` (exact to 53 significant bits); for tests and host output.
+    pub fn to_f64(self) -> f64 {
+        self.to_bits() as f64 / 4_294_967_296.0
+    }
+
+    /// The nearest value to an `f64`; `None` if out of range or not finite. Set-up only.
+    pub fn from_f64(value: f64) -> Option<Self> {
+        I32F32::checked_from_num(value).map(Self)
+    }
+
+    /// The absolute value, saturating.
+    pub fn abs(self) -> Self {
+        Self(self.0.saturating_abs())
+    }
+}
+
+impl fmt::Debug for Real {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+/// Exact decimal; trailing digits are as many as the value needs to round-trip.
+impl fmt::Display for Real {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+/// `value / 2^shift`, rounded half away from zero.
+pub(crate) const fn shift_round(value: i128, shift: u32) -> i128 {
+    let half = 1i128 << (shift - 1);
+    if value >= 0 {
+        (value + half) >> shift
+    } else {
+        -((-value + half) >> shift)
+    }
+}
+
+/// `numerator / denominator` rounded half away from zero; the denominator must not be 0.
+pub(crate) const fn div_round(numerator: i128, denominator: i128) -> i128 {
+    let negative = (numerator < 0) != (denominator < 0);
+    let n = numerator.unsigned_abs();
+    let d = denominator.unsigned_abs();
+    let q = (n + d / 2) / d;
+    if negative {
+        -(q as i128)
+    } else {
+        q as i128
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_decimals_exactly_rounded() {
+        assert_eq!(Real::parse_decimal("0.5"), Some(Real::from_bits(1 << 31)));
+        assert_eq!(Real::parse_decimal(".25"), Some(Real::from_bits(1 << 30)));
+        assert_eq!(Real::parse_decimal("3"), Some(Real::from_int(3)));
+        let golden = Real::parse_decimal("1.618034").map(Real::to_f64);
+        assert!((golden.unwrap_or(0.0) - 1.618034).abs() < 1e-9);
+        for bad in ["", ".", "1.2.3", "-1", "1e5", "99999999999"] {
+            assert_eq!(Real::parse_decimal(bad), None, "{bad}");
+        }
+    }
+
+    #[test]
+    fn q30_products_are_symmetric() {
+        let step = Real::from_bits(0x1_2345_6789);
+        for c in [1 << 30, -(1 << 30), 123_456_789, 7, -7] {
+            assert_eq!(step.mul_q30(c).to_bits(), -step.mul_q30(-c).to_bits());
+        }
+    }
+
+    #[test]
+    fn sqrt_and_div() {
+        let nine = Real::from_int(9);
+        assert_eq!(nine.checked_sqrt(), Some(Real::from_int(3)));
+        assert_eq!(Real::ONE.checked_div(Real::ZERO), None);
+        assert_eq!(nine.checked_div(Real::from_int(3)), Some(Real::from_int(3)));
+    }
+}

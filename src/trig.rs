@@ -1,0 +1,171 @@
+//! Sines and cosines in Q30 (2³⁰ = 1.0), computed with integer maths only.
+//!
+//! [`sin_cos`] evaluates a Taylor series in Q62 on the first octant and unfolds it by
+//! symmetry, so headings that mirror each other get exactly mirrored values (a snowflake
+//! closes bit-exactly). It is a `const fn`: the quarter-wave table for free angles is built
+//! at compile time, and the table for `Angle n` once at set-up; nothing is computed per step.
+
+/// 1.0 in Q30.
+pub(crate) const ONE_Q30: i32 = 1 << 30;
+
+/// π/4 in Q62.
+const FRAC_PI_4_Q62: i128 = 3_622_009_729_038_561_421;
+
+/// Cosine and sine of `numerator / denominator` of a full turn, in Q30, rounded to nearest.
+/// `denominator` must be positive.
+pub(crate) const fn sin_cos(numerator: u64, denominator: u64) -> (i32, i32) {
+    let d = denominator as u128;
+    let eighths = (numerator as u128 % d) * 8;
+    let octant = eighths / d;
+    let rest = eighths % d;
+    // The angle from the nearest multiple of π/2, in [0, π/4], as Q62 radians.
+    let within = if octant % 2 == 0 { rest } else { d - rest };
+    let x = FRAC_PI_4_Q62 * within as i128 / d as i128;
+    let (c, s) = octant_cos_sin(x);
+    match octant {
+        0 => (c, s),
+        1 => (s, c),
+        2 => (-s, c),
+        3 => (-c, s),
+        4 => (-c, -s),
+        5 => (-s, -c),
+        6 => (s, -c),
+        _ => (c, -s),
+    }
+}
+
+/// Cosine and sine of `x` in [0, π/4] (Q62 radians), rounded to Q30.
+const fn octant_cos_sin(x: i128) -> (i32, i32) {
+    const ONE_Q62: i128 = 1 << 62;
+    let x2 = (x * x) >> 62;
+    // sin: x - x³/3! + ...; cos: 1 - x²/2! + ...; 14 terms put the error far below 2⁻³⁰.
+    let mut sin = 0;
+    let mut cos = 0;
+    let mut sin_term = x;
+    let mut cos_term = ONE_Q62;
+    let mut k: i128 = 1;
+    while k <= 14 {
+        sin += sin_term;
+        cos += cos_term;
+        sin_term = -((sin_term * x2) >> 62) / ((2 * k) * (2 * k + 1));
+        cos_term = -((cos_term * x2) >> 62) / ((2 * k - 1) * (2 * k));
+        k += 1;
+    }
+    (round_q62_to_q30(cos), round_q62_to_q30(sin))
+}
+
+const fn round_q62_to_q30(value: i128) -> i32 {
+    crate::real::shift_round(value, 32) as i32
+}
+
+/// Points per quarter turn in [`QUARTER_SINE`].
+const QUARTER_STEPS: usize = 1024;
+
+/// sin(i/1024 · π/2) in Q30 for i = 0..=1024: 4 KiB of flash, built by the compiler.
+// Indexing runs at compile time only: an out-of-range index would fail the build, not panic.
+#[allow(clippy::indexing_slicing)]
+static QUARTER_SINE: [i32; QUARTER_STEPS + 1] = {
+    let mut table = [0; QUARTER_STEPS + 1];
+    let mut i = 0;
+    while i <= QUARTER_STEPS {
+        table[i] = sin_cos(i as u64, 4 * QUARTER_STEPS as u64).1;
+        i += 1;
+    }
+    table
+};
+
+/// A binary angle: the full turn is 2³², so turning wraps for free.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct BinaryAngle(pub(crate) u32);
+
+impl BinaryAngle {
+    const QUARTER: u32 = 1 << 30;
+
+    /// From decimal degrees given as Q32 bits (any sign, any size), rounded to nearest.
+    pub(crate) fn from_degrees_bits(degrees_q32: i64) -> Self {
+        let turns = crate::real::div_round(i128::from(degrees_q32), 360);
+        // Wrapping to u32 is the reduction modulo one full turn.
+        Self(turns as u32)
+    }
+
+    /// Cosine and sine in Q30: table lookup with linear interpolation (error < 3·10⁻⁷).
+    pub(crate) fn cos_sin(self) -> (i32, i32) {
+        let sin = |angle: u32| -> i32 {
+            let within = angle & (Self::QUARTER - 1);
+            let magnitude = match (angle >> 30) & 1 {
+                0 => quarter_sine(within),
+                _ => quarter_sine(Self::QUARTER - within),
+            };
+            if angle >> 31 == 0 {
+                magnitude
+            } else {
+                -magnitude
+            }
+        };
+        (sin(self.0.wrapping_add(Self::QUARTER)), sin(self.0))
+    }
+}
+
+/// sin of `position / 2³⁰` of a quarter turn, `position` in 0..=2³⁰.
+fn quarter_sine(position: u32) -> i32 {
+    const FRACTION_BITS: u32 = 20; // 2^30 / QUARTER_STEPS = 2^20 positions between points
+    let index = (position >> FRACTION_BITS) as usize;
+    let fraction = i64::from(position & ((1 << FRACTION_BITS) - 1));
+    let low = QUARTER_SINE.get(index).copied().unwrap_or(ONE_Q30);
+    let high = QUARTER_SINE.get(index + 1).copied().unwrap_or(ONE_Q30);
+    let delta = i64::from(high - low) * fraction;
+    low + crate::real::shift_round(i128::from(delta), FRACTION_BITS) as i32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q30(v: f64) -> f64 {
+        v * f64::from(ONE_Q30)
+    }
+
+    #[test]
+    fn exact_divisions_match_f64() {
+        for n in 1..=64u64 {
+            for k in 0..n {
+                let (c, s) = sin_cos(k, n);
+                let angle = core::f64::consts::TAU * k as f64 / n as f64;
+                assert!(
+                    (f64::from(c) - q30(angle.cos())).abs() <= 1.0,
+                    "cos {k}/{n}"
+                );
+                assert!(
+                    (f64::from(s) - q30(angle.sin())).abs() <= 1.0,
+                    "sin {k}/{n}"
+                );
+            }
+        }
+        assert_eq!(sin_cos(1, 6), (1 << 29, sin_cos(1, 6).1));
+        assert_eq!(sin_cos(1, 12).1, 1 << 29);
+    }
+
+    #[test]
+    fn mirrored_headings_are_exact_negatives() {
+        for n in [3u64, 5, 6, 7, 10, 12, 34, 49] {
+            for k in 0..n {
+                let (c, s) = sin_cos(k, n);
+                let (c2, s2) = sin_cos(n - k, n);
+                assert_eq!((c, -s), (c2, s2));
+            }
+        }
+    }
+
+    #[test]
+    fn binary_angles_interpolate_closely() {
+        for degrees in [
+            0.0f64, 1.0, 22.5, 25.7, 45.0, 89.99, 90.0, 137.5, 196.5, 270.0, 359.9,
+        ] {
+            let bits = (degrees * 4_294_967_296.0) as i64;
+            let (c, s) = BinaryAngle::from_degrees_bits(bits).cos_sin();
+            let r = degrees.to_radians();
+            assert!((f64::from(c) - q30(r.cos())).abs() < 400.0, "cos {degrees}");
+            assert!((f64::from(s) - q30(r.sin())).abs() < 400.0, "sin {degrees}");
+        }
+    }
+}
