@@ -74,7 +74,9 @@ mod trig;
 
 pub use error::{DrawError, Error, Location};
 pub use lsystem::alphabet::Dialect;
-pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement, DEFAULT_MARGIN};
+pub use lsystem::drawing::{
+    Bounds, LSystem, LSystemDrawing, Orientation, Placement, DEFAULT_MARGIN,
+};
 pub use lsystem::fractint::{Entries, Entry, LFile};
 pub use lsystem::grammar::{Angle, Grammar, MAX_ANGLE_DIVISIONS, MAX_BODY_LEN, MAX_RULES};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};

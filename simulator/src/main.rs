@@ -1,1 +1,156 @@
-fn main() {}
+//! `tinyfractal`: the host front end. Renders scenes to PNG without any display or SDL;
+//! with the `window` feature, `--window` also shows them.
+
+mod args;
+mod gallery;
+mod output;
+mod palette;
+mod scene;
+
+use std::path::Path;
+use std::process::ExitCode;
+
+use args::{Command, InlineAngle, LSystemArgs, Source};
+use tinyfractal::{Angle, Grammar, LFile, Real};
+
+fn main() -> ExitCode {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let command = match args::parse(&arguments) {
+        Ok(command) => command,
+        Err(error) => {
+            eprintln!("tinyfractal: {error}");
+            return ExitCode::from(2);
+        }
+    };
+    let result = match command {
+        Command::Help => {
+            print!("{}", args::HELP);
+            Ok(())
+        }
+        Command::List(path) => list(&path),
+        Command::Gallery { out } => {
+            if gallery::run(&out) {
+                Ok(())
+            } else {
+                Err("the gallery is incomplete".to_string())
+            }
+        }
+        Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("tinyfractal: error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn read_text(path: &Path) -> Result<String, String> {
+    let bytes = std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    // Fractint files are 8-bit text: read every byte as its Latin-1 character.
+    Ok(match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(error) => error.into_bytes().iter().map(|&b| char::from(b)).collect(),
+    })
+}
+
+fn list(path: &Path) -> Result<(), String> {
+    let text = read_text(path)?;
+    for entry in LFile::new(&text).entries() {
+        let entry = entry.map_err(|e| format!("{}: {e}", path.display()))?;
+        println!("{}", entry.name());
+    }
+    Ok(())
+}
+
+fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
+    let file_text;
+    let (grammar, name) = match &arguments.source {
+        Source::File { path, name } => {
+            file_text = read_text(path)?;
+            let grammar = LFile::new(&file_text)
+                .find(name)
+                .map_err(|e| format!("{name} in {}: {e}", path.display()))?;
+            (grammar, name.clone())
+        }
+        Source::Inline {
+            axiom,
+            rules,
+            angle,
+            draw_symbols,
+            dialect,
+        } => {
+            let angle = match angle {
+                InlineAngle::Divisions(n) => Angle::Divisions(*n),
+                InlineAngle::Degrees(text) => Angle::Degrees(
+                    Real::parse_decimal(text)
+                        .or_else(|| {
+                            let positive = text.strip_prefix('-')?;
+                            let value = Real::parse_decimal(positive)?;
+                            Real::ZERO.checked_sub(value)
+                        })
+                        .ok_or_else(|| format!("--angle-deg: `{text}` is not a number"))?,
+                ),
+            };
+            let label = "inline system";
+            let with = |e: tinyfractal::Error| format!("{label}: {e}");
+            let mut grammar = Grammar::new(*dialect, axiom, angle)
+                .map_err(with)?
+                .with_draw_symbols(draw_symbols)
+                .map_err(with)?;
+            for (symbol, body) in rules {
+                grammar = grammar
+                    .with_rule(*symbol, body)
+                    .map_err(|e| format!("{label}: rule {symbol}={body}: {e}"))?;
+            }
+            (grammar, "lsystem".to_string())
+        }
+    };
+    let common = &arguments.common;
+    let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);
+    // Everything is computed before anything is written: an error leaves no file behind.
+    let rendered =
+        scene::render(&grammar, arguments.order, common.width, common.height).map_err(failed)?;
+    let segments = match &common.segments {
+        Some(_) => Some(scene::segments_text(&grammar, arguments.order).map_err(failed)?),
+        None => None,
+    };
+    let out = common
+        .out
+        .clone()
+        .unwrap_or_else(|| Path::new(&format!("{}.png", name.to_lowercase())).to_path_buf());
+    output::save_png(&rendered.display, &out)
+        .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+    if let (Some(path), Some(text)) = (&common.segments, &segments) {
+        output::save_text(path, text)
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    if common.stats {
+        println!("{}", scene::stats_line(&rendered));
+    }
+    if common.window {
+        show(&rendered.display)?;
+    }
+    Ok(())
+}
+
+#[cfg(feature = "window")]
+fn show(
+    display: &embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>,
+) -> Result<(), String> {
+    use embedded_graphics_simulator::{OutputSettingsBuilder, Window};
+    Window::new(
+        "tinyfractal",
+        &OutputSettingsBuilder::new().scale(2).build(),
+    )
+    .show_static(display);
+    Ok(())
+}
+
+#[cfg(not(feature = "window"))]
+fn show(
+    _: &embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>,
+) -> Result<(), String> {
+    Err("built without a window: run with `cargo run --release --features window -- ...` (needs SDL2)".into())
+}

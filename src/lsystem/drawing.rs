@@ -22,6 +22,52 @@ pub struct LSystem<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH, const STACK: usiz
     order: u32,
     budget: u64,
     margin: u32,
+    orientation: Orientation,
+}
+
+/// Which way on screen the turtle's first heading (+x in turtle space) points.
+///
+/// Fractint draws heading right; *The Algorithmic Beauty of Plants* heading up, so plants
+/// grow upward. Quarter turns are exact: they only swap and negate coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Orientation {
+    /// Heading right (Fractint).
+    #[default]
+    Right,
+    /// Heading up (ABOP).
+    Up,
+    /// Heading left.
+    Left,
+    /// Heading down.
+    Down,
+}
+
+impl Orientation {
+    /// Turtle space (y up) to screen space (y down), same units.
+    fn to_screen(self, p: TurtlePoint) -> (Real, Real) {
+        let (x, y) = (p.x, p.y);
+        match self {
+            Self::Right => (x, neg(y)),
+            Self::Up => (neg(y), neg(x)),
+            Self::Left => (neg(x), y),
+            Self::Down => (y, x),
+        }
+    }
+
+    /// Screen space back to turtle space.
+    fn to_turtle(self, (sx, sy): (Real, Real)) -> TurtlePoint {
+        let (x, y) = match self {
+            Self::Right => (sx, neg(sy)),
+            Self::Up => (neg(sy), neg(sx)),
+            Self::Left => (neg(sx), sy),
+            Self::Down => (sy, sx),
+        };
+        TurtlePoint { x, y }
+    }
+}
+
+fn neg(value: Real) -> Real {
+    Real::from_bits(value.to_bits().saturating_neg())
 }
 
 /// Where an L-system goes on the target, when it is not fitted.
@@ -61,7 +107,15 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             order,
             budget: DEFAULT_BUDGET,
             margin: DEFAULT_MARGIN,
+            orientation: Orientation::Right,
         }
+    }
+
+    /// Which way the first heading points on screen (default: right).
+    #[must_use]
+    pub const fn with_orientation(mut self, orientation: Orientation) -> Self {
+        self.orientation = orientation;
+        self
     }
 
     /// Caps every walk at `symbols` symbols ([`Error::BudgetExhausted`] beyond).
@@ -129,7 +183,14 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
                 break;
             }
         }
-        let (unit, bounds) = sized?;
+        let (unit, turtle_bounds) = sized?;
+        // The bounds as they will lie on screen.
+        let corners = [
+            self.orientation.to_screen(turtle_bounds.min),
+            self.orientation.to_screen(turtle_bounds.max),
+        ];
+        let (min_x, max_x) = min_max(corners[0].0, corners[1].0);
+        let (min_y, max_y) = min_max(corners[0].1, corners[1].1);
         // Pixel centres span size - 1; keep the margin only if the area can afford it.
         let span = |size: u32| {
             let inner = size.saturating_sub(1);
@@ -140,16 +201,8 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             };
             Real::from_int(i32::try_from(inner - 2 * margin).unwrap_or(i32::MAX))
         };
-        let extent_x = bounds
-            .max
-            .x
-            .checked_sub(bounds.min.x)
-            .ok_or(Error::Overflow)?;
-        let extent_y = bounds
-            .max
-            .y
-            .checked_sub(bounds.min.y)
-            .ok_or(Error::Overflow)?;
+        let extent_x = max_x.checked_sub(min_x).ok_or(Error::Overflow)?;
+        let extent_y = max_y.checked_sub(min_y).ok_or(Error::Overflow)?;
         // Pixels per sizing unit: the tighter of the two axes.
         let per_unit = [
             span(area.size.width).checked_div(extent_x),
@@ -160,32 +213,20 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         .min()
         .unwrap_or(Real::ONE);
         let step = unit.checked_mul(per_unit).ok_or(Error::Overflow)?;
-        let half = |a: Real, b: Real| -> Result<Real, Error> {
-            let sum = a.checked_add(b).ok_or(Error::Overflow)?;
-            Ok(Real::from_bits(sum.to_bits() / 2))
+        // Start where the scaled picture's middle lands on the area's middle.
+        let placed_middle = |low: Real, high: Real, start: i32, size: u32| -> Option<Real> {
+            let middle = Real::from_bits(low.checked_add(high)?.to_bits() / 2);
+            let centre = Real::from_ratio(2 * i64::from(start) + i64::from(size) - 1, 2)?;
+            centre.checked_sub(middle.checked_mul(per_unit)?)
         };
-        let centre = |start: i32, size: u32| {
-            Real::from_ratio(2 * i64::from(start) + i64::from(size) - 1, 2).unwrap_or(Real::ZERO)
-        };
-        let mid_x = half(bounds.min.x, bounds.max.x)?
-            .checked_mul(per_unit)
-            .ok_or(Error::Overflow)?;
-        let mid_y = half(bounds.min.y, bounds.max.y)?
-            .checked_mul(per_unit)
-            .ok_or(Error::Overflow)?;
-        // Screen y grows down: the turtle draws at (X, -Y) on screen.
-        let position = TurtlePoint {
-            x: centre(area.top_left.x, area.size.width)
-                .checked_sub(mid_x)
+        let start_on_screen = (
+            placed_middle(min_x, max_x, area.top_left.x, area.size.width).ok_or(Error::Overflow)?,
+            placed_middle(min_y, max_y, area.top_left.y, area.size.height)
                 .ok_or(Error::Overflow)?,
-            y: Real::ZERO
-                .checked_sub(centre(area.top_left.y, area.size.height))
-                .and_then(|y| y.checked_sub(mid_y))
-                .ok_or(Error::Overflow)?,
-        };
+        );
         self.prepared(
             Start {
-                position,
+                position: self.orientation.to_turtle(start_on_screen),
                 step,
                 turns: 0,
             },
@@ -200,10 +241,10 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         placement: Placement,
         palette: &'p [C],
     ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
-        let position = TurtlePoint {
-            x: Real::from_int(placement.origin.x),
-            y: Real::from_int(placement.origin.y.saturating_neg()),
-        };
+        let position = self.orientation.to_turtle((
+            Real::from_int(placement.origin.x),
+            Real::from_int(placement.origin.y),
+        ));
         self.prepared(
             Start {
                 position,
@@ -223,14 +264,15 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             return Err(Error::EmptyPalette);
         }
         let pixels = self.bounds_from(start)?;
-        let top_left = to_screen(TurtlePoint {
-            x: pixels.min.x,
-            y: pixels.max.y,
-        });
-        let bottom_right = to_screen(TurtlePoint {
-            x: pixels.max.x,
-            y: pixels.min.y,
-        });
+        let corners = [self.to_screen(pixels.min), self.to_screen(pixels.max)];
+        let top_left = Point::new(
+            corners[0].x.min(corners[1].x),
+            corners[0].y.min(corners[1].y),
+        );
+        let bottom_right = Point::new(
+            corners[0].x.max(corners[1].x),
+            corners[0].y.max(corners[1].y),
+        );
         Ok(LSystemDrawing {
             system: *self,
             start,
@@ -238,11 +280,16 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             bounding_box: Rectangle::with_corners(top_left, bottom_right),
         })
     }
+
+    /// The pixel for a point of a drawing pass (whose turtle works in pixels).
+    fn to_screen(&self, p: TurtlePoint) -> Point {
+        let (x, y) = self.orientation.to_screen(p);
+        Point::new(x.round_to_i32(), y.round_to_i32())
+    }
 }
 
-/// The pixel for a point of a drawing pass (whose turtle works in pixels, y up).
-fn to_screen(p: TurtlePoint) -> Point {
-    Point::new(p.x.round_to_i32(), p.y.round_to_i32().saturating_neg())
+fn min_max(a: Real, b: Real) -> (Real, Real) {
+    (a.min(b), a.max(b))
 }
 
 /// A fitted or placed L-system with its palette: an embedded-graphics [`Drawable`].
@@ -267,7 +314,7 @@ pub struct LSystemDrawing<
 impl<C: PixelColor, const DEPTH: usize, const STACK: usize>
     LSystemDrawing<'_, '_, '_, C, DEPTH, STACK>
 {
-    /// Where the turtle starts and its step, in pixels (y up: the screen row is `-y`).
+    /// Where the turtle starts and its step, in pixels (turtle space: y up).
     pub const fn start(&self) -> Start {
         self.start
     }
@@ -283,7 +330,10 @@ impl<C: PixelColor, const DEPTH: usize, const STACK: usize>
         let mut last_end = None;
         for segment in segments.by_ref() {
             let segment = segment?;
-            let (from, to) = (to_screen(segment.start), to_screen(segment.end));
+            let (from, to) = (
+                self.system.to_screen(segment.start),
+                self.system.to_screen(segment.end),
+            );
             let index = usize::from(segment.color) % self.palette.len().max(1);
             if let Some(&color) = self.palette.get(index) {
                 // A continuing line does not draw its first pixel twice.

@@ -1,0 +1,331 @@
+//! Command-line parsing, by hand: the contract is small and the messages are ours.
+
+use std::fmt;
+use std::path::PathBuf;
+
+/// What the user asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Command {
+    /// `render lsystem ...`
+    RenderLSystem(LSystemArgs),
+    /// `list PATH.l`
+    List(PathBuf),
+    /// `gallery [--out DIR]`
+    Gallery { out: PathBuf },
+    /// `help`, `--help`
+    Help,
+}
+
+/// Where the system comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Source {
+    /// `--file PATH --name NAME`
+    File { path: PathBuf, name: String },
+    /// `--axiom STR --rule C=STR ... (--angle N | --angle-deg DEG)`
+    Inline {
+        axiom: String,
+        rules: Vec<(char, String)>,
+        angle: InlineAngle,
+        draw_symbols: String,
+        dialect: tinyfractal::Dialect,
+    },
+}
+
+/// `--angle N` or `--angle-deg DEG`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum InlineAngle {
+    Divisions(u16),
+    Degrees(String),
+}
+
+/// Options every render takes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Common {
+    pub width: u32,
+    pub height: u32,
+    pub out: Option<PathBuf>,
+    pub segments: Option<PathBuf>,
+    pub stats: bool,
+    pub window: bool,
+}
+
+/// `render lsystem`'s arguments.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LSystemArgs {
+    pub source: Source,
+    pub order: u32,
+    pub common: Common,
+}
+
+/// A usage mistake, with what to do about it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct UsageError(pub String);
+
+impl fmt::Display for UsageError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} (see `tinyfractal help`)", self.0)
+    }
+}
+
+fn usage(message: impl Into<String>) -> UsageError {
+    UsageError(message.into())
+}
+
+pub const HELP: &str = "\
+tinyfractal: fixed-point fractals for small displays, rendered on the host
+
+USAGE:
+  tinyfractal render lsystem --file PATH.l --name NAME --order N [common options]
+  tinyfractal render lsystem --axiom STR --rule C=STR [--rule ...] (--angle N | --angle-deg DEG)
+                             [--draw-symbols CHARS] [--dialect fractint|abop] --order N [common]
+  tinyfractal list PATH.l            the systems in a file, one name a line
+  tinyfractal gallery [--out DIR]    render the gallery (what `cargo run --release` does)
+
+COMMON OPTIONS:
+  --size WxH        picture size in pixels (default 320x240)
+  --out PNG         write the picture there (default: NAME.png)
+  --segments TXT    write every drawn segment, `x0 y0 x1 y1` in turtle units
+  --stats           print one line of statistics
+  --window          show the picture in a window (needs the `window` feature)
+";
+
+/// Parses the arguments after the program name.
+pub fn parse(args: &[String]) -> Result<Command, UsageError> {
+    let mut words = args.iter().map(String::as_str);
+    match words.next() {
+        None => Ok(Command::Gallery {
+            out: PathBuf::from("gallery"),
+        }),
+        Some("help" | "--help" | "-h") => Ok(Command::Help),
+        Some("list") => {
+            let path = words
+                .next()
+                .ok_or_else(|| usage("`list` needs a .l file"))?;
+            if let Some(extra) = words.next() {
+                return Err(usage(format!("unexpected `{extra}` after the file")));
+            }
+            Ok(Command::List(PathBuf::from(path)))
+        }
+        Some("gallery") => {
+            let mut out = PathBuf::from("gallery");
+            let rest: Vec<&str> = words.collect();
+            let mut options = Options::new(&rest);
+            while let Some(flag) = options.next_flag()? {
+                match flag {
+                    "--out" => out = PathBuf::from(options.value(flag)?),
+                    _ => return Err(usage(format!("unknown option `{flag}` for `gallery`"))),
+                }
+            }
+            Ok(Command::Gallery { out })
+        }
+        Some("render") => match words.next() {
+            Some("lsystem") => {
+                let rest: Vec<&str> = words.collect();
+                parse_lsystem(&rest).map(Command::RenderLSystem)
+            }
+            Some(other) => Err(usage(format!(
+                "unknown scene `{other}`: this version renders `lsystem`"
+            ))),
+            None => Err(usage("`render` needs a scene: `render lsystem ...`")),
+        },
+        Some(other) => Err(usage(format!("unknown command `{other}`"))),
+    }
+}
+
+/// Walks `--flag value` pairs.
+struct Options<'s> {
+    words: &'s [&'s str],
+    position: usize,
+}
+
+impl<'s> Options<'s> {
+    fn new(words: &'s [&'s str]) -> Self {
+        Self { words, position: 0 }
+    }
+
+    fn next_flag(&mut self) -> Result<Option<&'s str>, UsageError> {
+        let Some(&word) = self.words.get(self.position) else {
+            return Ok(None);
+        };
+        self.position += 1;
+        if word.starts_with("--") {
+            Ok(Some(word))
+        } else {
+            Err(usage(format!("unexpected `{word}`: options start with --")))
+        }
+    }
+
+    fn value(&mut self, flag: &str) -> Result<&'s str, UsageError> {
+        let value = self
+            .words
+            .get(self.position)
+            .copied()
+            .ok_or_else(|| usage(format!("{flag} needs a value")))?;
+        self.position += 1;
+        Ok(value)
+    }
+}
+
+fn parse_number<T: std::str::FromStr>(flag: &str, text: &str) -> Result<T, UsageError> {
+    text.parse()
+        .map_err(|_| usage(format!("{flag}: `{text}` is not a valid number")))
+}
+
+fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
+    let (w, h) = text
+        .split_once(['x', 'X'])
+        .ok_or_else(|| usage(format!("--size: `{text}` is not WxH, e.g. 320x240")))?;
+    Ok((parse_number("--size", w)?, parse_number("--size", h)?))
+}
+
+fn parse_lsystem(words: &[&str]) -> Result<LSystemArgs, UsageError> {
+    let mut file = None;
+    let mut name = None;
+    let mut axiom = None;
+    let mut rules = Vec::new();
+    let mut angle = None;
+    let mut draw_symbols = String::new();
+    let mut dialect = None;
+    let mut order = None;
+    let mut common = Common {
+        width: 320,
+        height: 240,
+        out: None,
+        segments: None,
+        stats: false,
+        window: false,
+    };
+    let mut options = Options::new(words);
+    while let Some(flag) = options.next_flag()? {
+        match flag {
+            "--file" => file = Some(PathBuf::from(options.value(flag)?)),
+            "--name" => name = Some(options.value(flag)?.to_string()),
+            "--axiom" => axiom = Some(options.value(flag)?.to_string()),
+            "--rule" => {
+                let text = options.value(flag)?;
+                let (symbol, body) = text
+                    .split_once('=')
+                    .ok_or_else(|| usage(format!("--rule: `{text}` is not C=STR")))?;
+                let mut chars = symbol.chars();
+                let (Some(c), None) = (chars.next(), chars.next()) else {
+                    return Err(usage(format!(
+                        "--rule: `{symbol}` must be exactly one symbol before `=`"
+                    )));
+                };
+                rules.push((c, body.to_string()));
+            }
+            "--angle" => {
+                angle = Some(InlineAngle::Divisions(parse_number(
+                    flag,
+                    options.value(flag)?,
+                )?))
+            }
+            "--angle-deg" => angle = Some(InlineAngle::Degrees(options.value(flag)?.to_string())),
+            "--draw-symbols" => draw_symbols = options.value(flag)?.to_string(),
+            "--dialect" => {
+                dialect = Some(match options.value(flag)? {
+                    "fractint" => tinyfractal::Dialect::Fractint,
+                    "abop" => tinyfractal::Dialect::Abop,
+                    other => {
+                        return Err(usage(format!(
+                            "--dialect: `{other}` is not `fractint` or `abop`"
+                        )))
+                    }
+                })
+            }
+            "--order" => order = Some(parse_number(flag, options.value(flag)?)?),
+            "--size" => (common.width, common.height) = parse_size(options.value(flag)?)?,
+            "--out" => common.out = Some(PathBuf::from(options.value(flag)?)),
+            "--segments" => common.segments = Some(PathBuf::from(options.value(flag)?)),
+            "--stats" => common.stats = true,
+            "--window" => common.window = true,
+            _ => return Err(usage(format!("unknown option `{flag}`"))),
+        }
+    }
+    let order = order.ok_or_else(|| usage("--order N is required"))?;
+    let source = match (file, axiom) {
+        (Some(path), None) => {
+            if !rules.is_empty() || angle.is_some() || !draw_symbols.is_empty() {
+                return Err(usage(
+                    "--rule, --angle and --draw-symbols go with --axiom, not --file",
+                ));
+            }
+            if dialect.is_some() {
+                return Err(usage(
+                    "--dialect goes with --axiom: .l files are Fractint's",
+                ));
+            }
+            let name = name.ok_or_else(|| usage("--file needs --name NAME"))?;
+            Source::File { path, name }
+        }
+        (None, Some(axiom)) => {
+            if name.is_some() {
+                return Err(usage("--name goes with --file"));
+            }
+            let angle = angle
+                .ok_or_else(|| usage("an inline system needs --angle N or --angle-deg DEG"))?;
+            Source::Inline {
+                axiom,
+                rules,
+                angle,
+                draw_symbols,
+                dialect: dialect.unwrap_or(tinyfractal::Dialect::Abop),
+            }
+        }
+        (Some(_), Some(_)) => return Err(usage("give either --file or --axiom, not both")),
+        (None, None) => {
+            return Err(usage(
+                "give a system: --file PATH --name NAME, or --axiom STR",
+            ))
+        }
+    };
+    Ok(LSystemArgs {
+        source,
+        order,
+        common,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(text: &str) -> Vec<String> {
+        text.split_whitespace().map(String::from).collect()
+    }
+
+    #[test]
+    fn inline_defaults_to_abop() {
+        let parsed = parse(&args(
+            "render lsystem --axiom F --rule F=F+F --angle 4 --order 3 --size 64x48",
+        ));
+        let Ok(Command::RenderLSystem(a)) = parsed else {
+            panic!("{parsed:?}")
+        };
+        assert_eq!(a.order, 3);
+        assert_eq!((a.common.width, a.common.height), (64, 48));
+        assert!(matches!(
+            a.source,
+            Source::Inline {
+                dialect: tinyfractal::Dialect::Abop,
+                ..
+            }
+        ));
+    }
+
+    #[test]
+    fn mistakes_are_reported() {
+        for bad in [
+            "render lsystem --axiom F --angle 4",
+            "render lsystem --file x.l --order 2",
+            "render lsystem --axiom F --order 2",
+            "render lsystem --axiom F --angle 4 --order two",
+            "render lsystem --axiom F --rule FF=F --angle 4 --order 1",
+            "render lsystem --axiom F --angle 4 --order 1 --size 10",
+            "render mandelbrot",
+            "frobnicate",
+        ] {
+            assert!(parse(&args(bad)).is_err(), "{bad}");
+        }
+    }
+}
