@@ -264,7 +264,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             return Err(Error::EmptyPalette);
         }
         let pixels = self.bounds_from(start)?;
-        let corners = [self.to_screen(pixels.min), self.to_screen(pixels.max)];
+        let corners = [self.pixel_of(pixels.min), self.to_screen(pixels.max)];
         let top_left = Point::new(
             corners[0].x.min(corners[1].x),
             corners[0].y.min(corners[1].y),
@@ -282,7 +282,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     }
 
     /// The pixel for a point of a drawing pass (whose turtle works in pixels).
-    fn to_screen(&self, p: TurtlePoint) -> Point {
+    fn pixel_of(&self, p: TurtlePoint) -> Point {
         let (x, y) = self.orientation.to_screen(p);
         Point::new(x.round_to_i32(), y.round_to_i32())
     }
@@ -331,8 +331,8 @@ impl<C: PixelColor, const DEPTH: usize, const STACK: usize>
         for segment in segments.by_ref() {
             let segment = segment?;
             let (from, to) = (
-                self.system.to_screen(segment.start),
-                self.system.to_screen(segment.end),
+                self.system.pixel_of(segment.start),
+                self.system.pixel_of(segment.end),
             );
             let index = usize::from(segment.color) % self.palette.len().max(1);
             if let Some(&color) = self.palette.get(index) {
