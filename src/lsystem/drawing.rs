@@ -264,7 +264,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             return Err(Error::EmptyPalette);
         }
         let pixels = self.bounds_from(start)?;
-        let corners = [self.pixel_of(pixels.min), self.to_screen(pixels.max)];
+        let corners = [self.pixel_of(pixels.min), self.pixel_of(pixels.max)];
         let top_left = Point::new(
             corners[0].x.min(corners[1].x),
             corners[0].y.min(corners[1].y),
