@@ -161,7 +161,8 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     ///
     /// A sizing pass measures the drawing in turtle units; a second pass at the chosen scale
     /// checks it and measures its pixel bounding box, so that drawing cannot fail.
-    /// If turtle units overflow (steps growing through `@`), sizing is retried at 2⁻¹⁰.
+    /// A drawing wider than 2³¹ turtle units is [`Error::Overflow`]: fitted, its step would
+    /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
         &self,
         area: Rectangle,
@@ -170,20 +171,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::ZeroSizeTarget);
         }
-        let unit_steps = [Real::ONE, Real::from_bits(1 << 22)];
-        let mut sized = Err(Error::Overflow);
-        for step in unit_steps {
-            sized = self
-                .bounds_from(Start {
-                    step,
-                    ..Start::default()
-                })
-                .map(|bounds| (step, bounds));
-            if sized != Err(Error::Overflow) {
-                break;
-            }
-        }
-        let (unit, turtle_bounds) = sized?;
+        let turtle_bounds = self.bounds()?;
         // The bounds as they will lie on screen.
         let corners = [
             self.orientation.to_screen(turtle_bounds.min),
@@ -212,7 +200,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         .flatten()
         .min()
         .unwrap_or(Real::ONE);
-        let step = unit.checked_mul(per_unit).ok_or(Error::Overflow)?;
+        let step = per_unit;
         // Start where the scaled picture's middle lands on the area's middle.
         let placed_middle = |low: Real, high: Real, start: i32, size: u32| -> Option<Real> {
             let middle = Real::from_bits(low.checked_add(high)?.to_bits() / 2);

@@ -6,7 +6,7 @@
 //! and `=`; `Angle n`, `Axiom s` and `c=s` lines (repeated rule lines append); `}` ends it.
 
 use super::alphabet::Dialect;
-use super::grammar::{Angle, Grammar};
+use super::grammar::{Angle, Grammar, MAX_ANGLE_DIVISIONS};
 use crate::error::{Error, Location};
 
 /// A `.l` file's text.
@@ -65,6 +65,11 @@ impl<'a> Entry<'a> {
         self.line
     }
 
+    /// The text between the entry's braces (without the `{` line).
+    pub const fn body(&self) -> &'a str {
+        self.body
+    }
+
     /// Reads the entry into a grammar (Fractint dialect).
     pub fn grammar(&self) -> Result<Grammar<'a>, Error> {
         let mut axiom = None;
@@ -84,15 +89,15 @@ impl<'a> Entry<'a> {
             } else if keyword.eq_ignore_ascii_case("angle") {
                 let (value, column) = words.next().ok_or(Error::MissingAngle)?;
                 let parsed = value.parse::<i64>().ok();
-                let divisions = parsed.and_then(|v| u16::try_from(v).ok());
-                angle = Some(
-                    divisions
-                        .map(Angle::Divisions)
-                        .ok_or(Error::AngleOutOfRange {
-                            value: parsed.unwrap_or(0),
-                            at: at(column),
-                        })?,
-                );
+                let out_of_range = Error::AngleOutOfRange {
+                    value: parsed.unwrap_or(0),
+                    at: at(column),
+                };
+                let divisions = parsed
+                    .and_then(|v| u16::try_from(v).ok())
+                    .filter(|n| (1..=MAX_ANGLE_DIVISIONS).contains(n))
+                    .ok_or(out_of_range)?;
+                angle = Some(Angle::Divisions(divisions));
             } else if keyword.len() != 1 {
                 return Err(Error::UnknownLine { at: at(keyword_at) });
             } else {

@@ -1,0 +1,305 @@
+//! Helpers shared by the integration tests: an f64 model of the turtle language, written
+//! from the format's description and independent of the engine, and a plain framebuffer.
+
+#![allow(dead_code)]
+
+use std::collections::HashMap;
+use std::path::PathBuf;
+
+use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
+
+/// A system as the model sees it.
+#[derive(Debug, Clone)]
+pub struct ModelSystem {
+    pub fractint: bool,
+    pub axiom: String,
+    pub rules: HashMap<char, String>,
+    /// Divisions of a full turn, or degrees for a free angle.
+    pub divisions: Option<u32>,
+    pub degrees: f64,
+    pub draw_symbols: Vec<char>,
+}
+
+pub type ModelSegment = [f64; 4];
+
+impl ModelSystem {
+    /// Parses a `.l` entry body the simple way: strip `;` comments, lower-case, split on
+    /// spaces, tabs and `=`; repeated rules append.
+    pub fn from_fractint_body(body: &str) -> Self {
+        let mut system = Self {
+            fractint: true,
+            axiom: String::new(),
+            rules: HashMap::new(),
+            divisions: None,
+            degrees: 0.0,
+            draw_symbols: vec![],
+        };
+        for line in body.lines() {
+            let code = line.split(';').next().unwrap().to_lowercase();
+            let words: Vec<&str> = code
+                .split([' ', '\t', '=', '\r'])
+                .filter(|w| !w.is_empty())
+                .collect();
+            match words.as_slice() {
+                [] => {}
+                ["axiom", axiom, ..] => system.axiom = axiom.to_string(),
+                ["angle", n, ..] => system.divisions = Some(n.parse().unwrap()),
+                [symbol, rest @ ..] if symbol.chars().count() == 1 => {
+                    let c = symbol.chars().next().unwrap();
+                    system
+                        .rules
+                        .entry(c)
+                        .or_default()
+                        .push_str(rest.first().copied().unwrap_or(""));
+                }
+                other => panic!("model cannot read {other:?}"),
+            }
+        }
+        system
+    }
+
+    pub fn abop(axiom: &str, rules: &[(char, &str)], divisions: Option<u32>, degrees: f64) -> Self {
+        Self {
+            fractint: false,
+            axiom: axiom.into(),
+            rules: rules.iter().map(|&(c, s)| (c, s.to_string())).collect(),
+            divisions,
+            degrees,
+            draw_symbols: vec![],
+        }
+    }
+
+    /// The derived string, built in full (this is the model: memory is no concern).
+    /// `None` if it would exceed `limit` characters.
+    pub fn derive(&self, order: u32, limit: usize) -> Option<String> {
+        let normalize = |s: &str| {
+            if self.fractint {
+                s.to_lowercase()
+            } else {
+                s.to_string()
+            }
+        };
+        let mut text = normalize(&self.axiom);
+        for _ in 0..order {
+            let mut next = String::new();
+            let chars: Vec<char> = text.chars().collect();
+            let mut i = 0;
+            while i < chars.len() {
+                let c = chars[i];
+                let argument_length = self.argument_length(&chars[i..]);
+                if argument_length > 0 {
+                    next.extend(&chars[i..i + 1 + argument_length]);
+                    i += 1 + argument_length;
+                    continue;
+                }
+                match self.rules.get(&c) {
+                    Some(body) => next.push_str(&normalize(body)),
+                    None => next.push(c),
+                }
+                if next.len() > limit {
+                    return None;
+                }
+                i += 1;
+            }
+            text = next;
+        }
+        Some(text)
+    }
+
+    /// Characters of the numeric argument after a command (Fractint only).
+    fn argument_length(&self, chars: &[char]) -> usize {
+        if !self.fractint || !matches!(chars[0], '\\' | '/' | '@' | 'c' | '<' | '>') {
+            return 0;
+        }
+        let mut n = 1;
+        if chars[0] == '@' {
+            while chars.get(n).is_some_and(|c| matches!(c, 'i' | 'q')) {
+                n += 1;
+            }
+        }
+        while chars
+            .get(n)
+            .is_some_and(|c| c.is_ascii_digit() || *c == '.')
+        {
+            n += 1;
+        }
+        n - 1
+    }
+
+    /// The drawn segments of the derived string with a float turtle: start at the origin,
+    /// heading +x, step 1, y up, `+` counter-clockwise.
+    pub fn segments(&self, derived: &str) -> Vec<ModelSegment> {
+        #[derive(Clone, Copy)]
+        struct T {
+            x: f64,
+            y: f64,
+            step: f64,
+            k: i64,
+            angle: f64,
+            free: f64,
+            reversed: bool,
+        }
+        let n = self.divisions.map(i64::from);
+        let mut t = T {
+            x: 0.0,
+            y: 0.0,
+            step: 1.0,
+            k: 0,
+            angle: 0.0,
+            free: 0.0,
+            reversed: false,
+        };
+        let mut stack = vec![];
+        let mut out = vec![];
+        let chars: Vec<char> = derived.chars().collect();
+        let mut i = 0;
+        while i < chars.len() {
+            let c = chars[i];
+            let length = self.argument_length(&chars[i..]);
+            let argument: String = chars[i + 1..i + 1 + length].iter().collect();
+            i += 1 + length;
+            let main_heading = |t: &T| match n {
+                Some(n) => std::f64::consts::TAU * t.k as f64 / n as f64,
+                None => t.angle.to_radians(),
+            };
+            let mut walk = |t: &mut T, heading: f64, draw: bool| {
+                let (x, y) = (t.x + t.step * heading.cos(), t.y + t.step * heading.sin());
+                if draw {
+                    out.push([t.x, t.y, x, y]);
+                }
+                (t.x, t.y) = (x, y);
+            };
+            let turn = |t: &mut T, left: bool| match n {
+                Some(n) => t.k = (t.k + if left { 1 } else { -1 }).rem_euclid(n),
+                None => t.angle += if left { self.degrees } else { -self.degrees },
+            };
+            let number = |text: &str| -> f64 { text.parse().unwrap() };
+            let (main, free, reversed) = (main_heading(&t), t.free.to_radians(), t.reversed);
+            if self.fractint {
+                match c {
+                    'f' => walk(&mut t, main, true),
+                    'g' => walk(&mut t, main, false),
+                    'd' => walk(&mut t, free, true),
+                    'm' => walk(&mut t, free, false),
+                    '+' => turn(&mut t, !reversed),
+                    '-' => turn(&mut t, reversed),
+                    '|' => match n {
+                        Some(n) => t.k = (t.k - n / 2).rem_euclid(n),
+                        None => t.angle += 180.0,
+                    },
+                    '!' => t.reversed = !t.reversed,
+                    '\\' => t.free += if t.reversed { -1.0 } else { 1.0 } * number(&argument),
+                    '/' => t.free -= if t.reversed { -1.0 } else { 1.0 } * number(&argument),
+                    '@' => {
+                        let digits = argument.trim_start_matches(['i', 'q']);
+                        let mut factor = number(digits);
+                        if argument.contains('q') {
+                            factor = factor.sqrt();
+                        }
+                        if argument[..argument.len() - digits.len()].contains('i') {
+                            factor = 1.0 / factor;
+                        }
+                        t.step *= factor;
+                    }
+                    '[' => stack.push(t),
+                    ']' => t = stack.pop().expect("balanced"),
+                    _ => {}
+                }
+            } else {
+                match c {
+                    'F' => walk(&mut t, main, true),
+                    'f' => walk(&mut t, main, false),
+                    '+' => turn(&mut t, true),
+                    '-' => turn(&mut t, false),
+                    '|' => match n {
+                        Some(n) => t.k = (t.k - n / 2).rem_euclid(n),
+                        None => t.angle += 180.0,
+                    },
+                    '[' => stack.push(t),
+                    ']' => t = stack.pop().expect("balanced"),
+                    c if self.draw_symbols.contains(&c) => walk(&mut t, main, true),
+                    _ => {}
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The engine's segments as f64.
+pub fn engine_segments(grammar: &tinyfractal::Grammar<'_>, order: u32) -> Vec<ModelSegment> {
+    tinyfractal::Segments::new(grammar, order)
+        .unwrap()
+        .map(|s| {
+            let s = s.unwrap();
+            [
+                s.start.x.to_f64(),
+                s.start.y.to_f64(),
+                s.end.x.to_f64(),
+                s.end.y.to_f64(),
+            ]
+        })
+        .collect()
+}
+
+pub fn corpus_file(name: &str) -> String {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/corpus/fractint")
+        .join(name);
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    bytes.iter().map(|&b| char::from(b)).collect()
+}
+
+/// A plain 1-bit framebuffer of any size (MockDisplay stops at 64×64).
+pub struct Bitmap {
+    pub size: Size,
+    pub pixels: Vec<bool>,
+}
+
+impl Bitmap {
+    pub fn new(width: u32, height: u32) -> Self {
+        Self {
+            size: Size::new(width, height),
+            pixels: vec![false; (width * height) as usize],
+        }
+    }
+
+    pub fn get(&self, x: i32, y: i32) -> bool {
+        x >= 0
+            && y >= 0
+            && (x as u32) < self.size.width
+            && (y as u32) < self.size.height
+            && self.pixels[(y as u32 * self.size.width + x as u32) as usize]
+    }
+
+    pub fn lit(&self) -> usize {
+        self.pixels.iter().filter(|&&p| p).count()
+    }
+}
+
+impl OriginDimensions for Bitmap {
+    fn size(&self) -> Size {
+        self.size
+    }
+}
+
+impl DrawTarget for Bitmap {
+    type Color = BinaryColor;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        for Pixel(p, c) in pixels {
+            if p.x >= 0
+                && p.y >= 0
+                && (p.x as u32) < self.size.width
+                && (p.y as u32) < self.size.height
+            {
+                self.pixels[(p.y as u32 * self.size.width + p.x as u32) as usize] = c.is_on();
+            }
+        }
+        Ok(())
+    }
+}

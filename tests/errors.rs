@@ -1,0 +1,309 @@
+//! Bad input gives typed errors that say where and what, never a panic or a hang.
+
+mod common;
+
+use embedded_graphics::{
+    mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*, primitives::Rectangle,
+};
+use tinyfractal::{
+    Angle, Dialect, DrawError, Error, Grammar, LFile, LSystem, Location, Placement, Real, Segments,
+    MAX_RULES,
+};
+
+fn fixture(name: &str) -> String {
+    let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+fn read_bad(name: &str) -> Error {
+    LFile::new(&fixture(name))
+        .find("bad")
+        .map(|_| ())
+        .unwrap_err()
+}
+
+const fn at(line: u32, column: u32) -> Location {
+    Location { line, column }
+}
+
+#[test]
+fn file_errors_carry_their_place() {
+    let cases = [
+        (
+            "error-unbalanced.l",
+            Error::UnbalancedBracket { at: at(4, 6) },
+        ),
+        ("error-unclosed.l", Error::UnclosedBracket { at: at(4, 6) }),
+        ("error-empty-axiom.l", Error::EmptyAxiom),
+        ("error-missing-angle.l", Error::MissingAngle),
+        (
+            "error-angle.l",
+            Error::AngleOutOfRange {
+                value: 0,
+                at: at(2, 9),
+            },
+        ),
+        (
+            "error-number.l",
+            Error::NumberOutOfRange {
+                symbol: 'c',
+                at: at(4, 6),
+            },
+        ),
+        (
+            "error-missing-number.l",
+            Error::MissingNumber {
+                symbol: '@',
+                at: at(4, 6),
+            },
+        ),
+        (
+            "error-unterminated.l",
+            Error::UnterminatedEntry { at: at(1, 1) },
+        ),
+        (
+            "error-reserved.l",
+            Error::ReservedRule {
+                symbol: '+',
+                at: at(4, 3),
+            },
+        ),
+        ("error-extra-text.l", Error::ExtraText { at: at(4, 9) }),
+        ("error-unknown-line.l", Error::UnknownLine { at: at(4, 3) }),
+    ];
+    for (file, expected) in cases {
+        assert_eq!(read_bad(file), expected, "{file}");
+    }
+}
+
+#[test]
+fn messages_say_where_and_how_to_fix() {
+    let message = read_bad("error-unbalanced.l").to_string();
+    assert_eq!(
+        message,
+        "unbalanced `]` at line 4, column 6: remove it or add the matching `[` before it"
+    );
+    let message = read_bad("error-number.l").to_string();
+    assert!(message.contains("`c` at line 4, column 6"), "{message}");
+    let deep = Error::StackTooDeep { capacity: 20 }.to_string();
+    assert!(
+        deep.contains("20 levels") && deep.contains("raise the STACK capacity"),
+        "{deep}"
+    );
+}
+
+#[test]
+fn unknown_system_name() {
+    let text = fixture("small.l");
+    assert_eq!(
+        LFile::new(&text).find("nope").map(|_| ()),
+        Err(Error::UnknownSystem)
+    );
+    // `comment` blocks are not systems.
+    assert_eq!(
+        LFile::new(&text).find("comment").map(|_| ()),
+        Err(Error::UnknownSystem)
+    );
+}
+
+#[test]
+fn inline_grammar_errors() {
+    let new = |axiom| Grammar::new(Dialect::Abop, axiom, Angle::Divisions(4));
+    assert_eq!(new("  ").map(|_| ()), Err(Error::EmptyAxiom));
+    assert_eq!(
+        new("F]").map(|_| ()),
+        Err(Error::UnbalancedBracket {
+            at: Location::column(2)
+        })
+    );
+    assert_eq!(
+        new("Fé").map(|_| ()),
+        Err(Error::NonAsciiSymbol {
+            at: Location::column(2)
+        })
+    );
+    for divisions in [0, 65, 1000] {
+        assert!(matches!(
+            Grammar::new(Dialect::Abop, "F", Angle::Divisions(divisions)),
+            Err(Error::AngleOutOfRange { .. })
+        ));
+    }
+    let grammar = new("F").unwrap();
+    assert!(matches!(
+        grammar.clone().with_rule('[', "F"),
+        Err(Error::ReservedRule { .. })
+    ));
+    // One more rule line than fits.
+    let mut many = Ok(grammar);
+    for _ in 0..=MAX_RULES {
+        many = many.and_then(|g| g.with_rule('X', "F"));
+    }
+    assert!(matches!(
+        many,
+        Err(Error::TooManyRules { max: MAX_RULES, .. })
+    ));
+}
+
+#[test]
+fn too_deep_nesting_is_a_typed_error() {
+    let grammar = Grammar::new(Dialect::Abop, "F", Angle::Divisions(4))
+        .unwrap()
+        .with_rule('F', "[[F]]")
+        .unwrap();
+    // Each order nests two more branches: order 10 needs 20 levels, order 11 needs 22.
+    assert!(Segments::new(&grammar, 10).unwrap().all(|s| s.is_ok()));
+    let errors: Vec<Error> = Segments::new(&grammar, 11)
+        .unwrap()
+        .filter_map(Result::err)
+        .collect();
+    assert_eq!(errors, vec![Error::StackTooDeep { capacity: 20 }]);
+    // A larger stack in the type lifts the limit.
+    let deep: Segments<'_, '_, 17, 32> =
+        Segments::starting(&grammar, 11, Default::default()).unwrap();
+    assert!(deep.into_iter().all(|s| s.is_ok()));
+}
+
+#[test]
+fn absurd_orders_fail_fast() {
+    let grammar = Grammar::new(Dialect::Abop, "F", Angle::Divisions(4))
+        .unwrap()
+        .with_rule('F', "F+F-F-FF+F+F-F")
+        .unwrap();
+    assert_eq!(
+        Segments::new(&grammar, 1000).map(|_| ()),
+        Err(Error::OrderTooHigh {
+            order: 1000,
+            max: 16
+        })
+    );
+    // Order 16 would be 14^16 symbols; the budget stops it.
+    let started = std::time::Instant::now();
+    let result = LSystem::new(&grammar, 16).with_budget(1_000_000).fit(
+        Rectangle::new(Point::zero(), Size::new(64, 64)),
+        &[BinaryColor::On],
+    );
+    assert_eq!(
+        result.map(|_| ()),
+        Err(Error::BudgetExhausted { budget: 1_000_000 })
+    );
+    assert!(
+        started.elapsed().as_secs() < 5,
+        "the budget must bound the time"
+    );
+}
+
+#[test]
+fn zero_size_targets_and_empty_palettes() {
+    let grammar = Grammar::new(Dialect::Abop, "F+F", Angle::Divisions(4)).unwrap();
+    let system = LSystem::new(&grammar, 0);
+    for size in [Size::new(0, 10), Size::new(10, 0), Size::zero()] {
+        assert_eq!(
+            system
+                .fit(Rectangle::new(Point::zero(), size), &[BinaryColor::On])
+                .map(|_| ()),
+            Err(Error::ZeroSizeTarget)
+        );
+    }
+    let no_colours: &[BinaryColor] = &[];
+    assert_eq!(
+        system
+            .fit(Rectangle::new(Point::zero(), Size::new(8, 8)), no_colours)
+            .map(|_| ()),
+        Err(Error::EmptyPalette)
+    );
+    let nothing = Grammar::new(Dialect::Abop, "+-X", Angle::Divisions(4)).unwrap();
+    assert_eq!(
+        LSystem::new(&nothing, 3)
+            .fit(
+                Rectangle::new(Point::zero(), Size::new(8, 8)),
+                &[BinaryColor::On]
+            )
+            .map(|_| ()),
+        Err(Error::EmptyDrawing)
+    );
+}
+
+#[test]
+fn fixed_point_overflow_and_underflow_are_reported() {
+    let line = Grammar::new(Dialect::Abop, "FFFF", Angle::Divisions(4)).unwrap();
+    let huge = Placement {
+        origin: Point::zero(),
+        step: Real::from_int(1 << 30),
+        turns: 0,
+    };
+    assert_eq!(
+        LSystem::new(&line, 0)
+            .place(huge, &[BinaryColor::On])
+            .map(|_| ()),
+        Err(Error::Overflow)
+    );
+    let shrinking = Grammar::new(Dialect::Fractint, "F", Angle::Divisions(4))
+        .unwrap()
+        .with_rule('f', "@.1F")
+        .unwrap();
+    let errors: Vec<_> = Segments::new(&shrinking, 12)
+        .unwrap()
+        .filter_map(Result::err)
+        .collect();
+    assert_eq!(errors, vec![Error::StepUnderflow]);
+    // A step growing 8 times an order leaves I32F32 turtle units at order 11 (8^11 = 2^33):
+    // reported, not drawn wrong (Fractint's Island1 grows its moves like this).
+    let growing = Grammar::new(Dialect::Fractint, "F", Angle::Divisions(4))
+        .unwrap()
+        .with_rule('f', "@8F")
+        .unwrap();
+    assert_eq!(
+        Segments::new(&growing, 11).unwrap().find_map(Result::err),
+        Some(Error::Overflow)
+    );
+    let area = Rectangle::new(Point::zero(), Size::new(64, 64));
+    let fitted = LSystem::new(&growing, 11).fit(area, &[BinaryColor::On]);
+    assert_eq!(fitted.map(|_| ()), Err(Error::Overflow));
+    // At order 6 the first step is 2^-12 px: precise enough, drawn as one line across.
+    let fitted = LSystem::new(&growing, 6)
+        .fit(area, &[BinaryColor::On])
+        .unwrap();
+    // Margins of 2 leave x 2..=61; the centre row 31.5 rounds half away from zero to 32.
+    assert_eq!(
+        fitted.bounding_box(),
+        Rectangle::new(Point::new(2, 32), Size::new(60, 1))
+    );
+}
+
+/// A target that fails on its first write: the error comes back out, typed.
+struct FailingTarget;
+
+impl OriginDimensions for FailingTarget {
+    fn size(&self) -> Size {
+        Size::new(32, 32)
+    }
+}
+
+impl DrawTarget for FailingTarget {
+    type Color = BinaryColor;
+    type Error = &'static str;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(
+        &mut self,
+        _: I,
+    ) -> Result<(), &'static str> {
+        Err("bus error")
+    }
+}
+
+#[test]
+fn target_errors_propagate() {
+    let grammar = Grammar::new(Dialect::Abop, "F+F", Angle::Divisions(4)).unwrap();
+    let drawing = LSystem::new(&grammar, 0)
+        .fit(FailingTarget.bounding_box(), &[BinaryColor::On])
+        .unwrap();
+    assert_eq!(drawing.draw(&mut FailingTarget), Err("bus error"));
+    assert_eq!(
+        drawing.try_draw(&mut FailingTarget),
+        Err(DrawError::Target("bus error"))
+    );
+    // A mock display rejects nothing here: the same drawing succeeds.
+    let mut display = MockDisplay::<BinaryColor>::new();
+    display.set_allow_overdraw(true);
+    assert!(drawing.draw(&mut display).is_ok());
+}
