@@ -158,8 +158,7 @@ fn too_deep_nesting_is_a_typed_error() {
         .collect();
     assert_eq!(errors, vec![Error::StackTooDeep { capacity: 20 }]);
     // A larger stack in the type lifts the limit.
-    let deep: Segments<'_, '_, 17, 32> =
-        Segments::starting(&grammar, 11, Default::default()).unwrap();
+    let deep = Segments::<'_, '_, 17, 32>::with_capacity(&grammar, 11, Default::default()).unwrap();
     assert!(deep.into_iter().all(|s| s.is_ok()));
 }
 

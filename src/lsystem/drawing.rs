@@ -134,7 +134,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 
     /// The segments, with an explicit start.
     pub fn segments(&self, start: Start) -> Result<Segments<'g, 'a, DEPTH, STACK>, Error> {
-        Ok(Segments::starting(self.grammar, self.order, start)?.with_budget(self.budget))
+        Ok(Segments::with_capacity(self.grammar, self.order, start)?.with_budget(self.budget))
     }
 
     /// Walks once in turtle units and returns the bounding box of what is drawn.

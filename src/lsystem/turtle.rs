@@ -262,13 +262,23 @@ impl<'g, 'a> Segments<'g, 'a> {
     /// The segments of `grammar` at `order`, in turtle units from the origin along +x,
     /// with the default capacities.
     pub fn new(grammar: &'g Grammar<'a>, order: u32) -> Result<Self, Error> {
-        Self::starting(grammar, order, Start::default())
+        Self::with_capacity(grammar, order, Start::default())
+    }
+
+    /// The segments with an explicit start (position, step and heading), default capacities.
+    pub fn starting(grammar: &'g Grammar<'a>, order: u32, start: Start) -> Result<Self, Error> {
+        Self::with_capacity(grammar, order, start)
     }
 }
 
 impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STACK> {
-    /// The segments with an explicit start: position, step and heading.
-    pub fn starting(grammar: &'g Grammar<'a>, order: u32, start: Start) -> Result<Self, Error> {
+    /// The segments with an explicit start and the capacities in the type:
+    /// `Segments::<'_, '_, 33, 64>::with_capacity(&grammar, 32, Start::default())`.
+    pub fn with_capacity(
+        grammar: &'g Grammar<'a>,
+        order: u32,
+        start: Start,
+    ) -> Result<Self, Error> {
         Ok(Self {
             walker: Walker::with_capacity(grammar, order)?,
             turtle: Turtle::new(grammar, start)?,
