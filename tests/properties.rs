@@ -1,0 +1,72 @@
+//! Properties over random input: reading and drawing never panic, never run past their
+//! budget, and whatever is drawn stays inside the fitted bounding box.
+
+mod common;
+
+use common::Bitmap;
+use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+use proptest::prelude::*;
+use tinyfractal::{Angle, Dialect, Error, Grammar, LFile, LSystem, Segments};
+
+const ALPHABET: &str = "FfGgDdMmXYAB+-|!\\/@IQC<>[]0123456789.=; \n{}aXx";
+
+fn text(max: usize) -> impl Strategy<Value = String> {
+    proptest::collection::vec(
+        proptest::sample::select(ALPHABET.chars().collect::<Vec<_>>()),
+        0..max,
+    )
+    .prop_map(|chars| chars.into_iter().collect())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+
+    /// Any text read as a `.l` file, and every entry in it drawn, gives Ok or a typed error.
+    #[test]
+    fn any_l_file_reads_and_draws_without_panicking(body in text(120), name in "[a-z]{0,6}") {
+        let file = format!("{name} {{\n{body}\n}}\n");
+        for entry in LFile::new(&file).entries() {
+            let Ok(entry) = entry else { continue };
+            let Ok(grammar) = entry.grammar() else { continue };
+            for order in [0, 1, 3, 16] {
+                let _ = LSystem::new(&grammar, order)
+                    .with_budget(20_000)
+                    .fit(Rectangle::new(Point::zero(), Size::new(40, 30)), &[BinaryColor::On])
+                    .map(|drawing| drawing.draw(&mut Bitmap::new(40, 30)));
+            }
+        }
+    }
+
+    /// Random inline systems: the walk respects its budget exactly, and a fitted drawing
+    /// touches only pixels inside its bounding box, which lies inside the target.
+    #[test]
+    fn fitted_drawings_stay_inside(axiom in text(12), f_rule in text(16), x_rule in text(16),
+                                   divisions in 1u16..=64, order in 0u32..6) {
+        let grammar = Grammar::new(Dialect::Fractint, &axiom, Angle::Divisions(divisions))
+            .and_then(|g| g.with_rule('F', &f_rule))
+            .and_then(|g| g.with_rule('X', &x_rule));
+        let Ok(grammar) = grammar else { return Ok(()) };
+        let budget = 50_000;
+        let mut walk = Segments::new(&grammar, order).unwrap().with_budget(budget);
+        for step in walk.by_ref() {
+            if let Err(error) = step {
+                prop_assert!(!matches!(error, Error::UnbalancedBracket { .. }), "bodies were checked");
+            }
+        }
+        prop_assert!(walk.stats().symbols <= budget);
+
+        let area = Rectangle::new(Point::new(3, 2), Size::new(50, 40));
+        if let Ok(drawing) = LSystem::new(&grammar, order).with_budget(budget).fit(area, &[BinaryColor::On]) {
+            let mut bitmap = Bitmap::new(60, 50);
+            drawing.draw(&mut bitmap).unwrap();
+            let bounds = drawing.bounding_box();
+            prop_assert!(area.contains(bounds.top_left));
+            prop_assert!(area.contains(bounds.bottom_right().unwrap()));
+            for p in bitmap.bounding_box().points() {
+                if bitmap.get(p.x, p.y) {
+                    prop_assert!(bounds.contains(p), "{p:?} outside {bounds:?}");
+                }
+            }
+        }
+    }
+}
