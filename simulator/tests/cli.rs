@@ -1,0 +1,237 @@
+//! The command-line contract: outputs, formats, exit codes, and no partial files on error.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tinyfractal"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn small_l() -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../tests/data/small.l")
+        .display()
+        .to_string()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+#[test]
+fn renders_an_inline_system_with_segments_and_stats() {
+    let dir = scratch("inline");
+    let (png, txt) = (dir.join("koch.png"), dir.join("koch.txt"));
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--axiom",
+        "F--F--F",
+        "--rule",
+        "F=F+F--F+F",
+        "--angle",
+        "6",
+        "--order",
+        "2",
+        "--out",
+        png.to_str().unwrap(),
+        "--segments",
+        txt.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let stats = stdout(&output);
+    for key in ["segments=48 ", "max_stack=0 ", "elapsed_ms="] {
+        assert!(stats.contains(key), "{stats}");
+    }
+    let text = std::fs::read_to_string(&txt).unwrap();
+    let segments: Vec<[f64; 4]> = text
+        .lines()
+        .map(|line| {
+            let v: Vec<f64> = line.split(' ').map(|n| n.parse().unwrap()).collect();
+            [v[0], v[1], v[2], v[3]]
+        })
+        .collect();
+    assert_eq!(segments.len(), 3 * 4 * 4);
+    // Turtle units: from the origin along +x with step 1, `+` counter-clockwise (y up).
+    let h = 3f64.sqrt() / 2.0;
+    let expected_start = [
+        [0.0, 0.0, 1.0, 0.0],
+        [1.0, 0.0, 1.5, h],
+        [1.5, h, 2.0, 0.0],
+        [2.0, 0.0, 3.0, 0.0],
+    ];
+    for (got, want) in segments.iter().zip(expected_start) {
+        for k in 0..4 {
+            assert!((got[k] - want[k]).abs() < 1e-9, "{got:?} vs {want:?}");
+        }
+    }
+    // The snowflake closes.
+    let last = segments[segments.len() - 1];
+    assert!(last[2].abs() < 1e-9 && last[3].abs() < 1e-9, "{last:?}");
+    let image = std::fs::read(&png).unwrap();
+    assert_eq!(&image[1..4], b"PNG");
+    // Width and height in the IHDR chunk: the default size.
+    assert_eq!(u32::from_be_bytes(image[16..20].try_into().unwrap()), 320);
+    assert_eq!(u32::from_be_bytes(image[20..24].try_into().unwrap()), 240);
+}
+
+#[test]
+fn renders_from_a_file_by_case_insensitive_name() {
+    let dir = scratch("file");
+    let png = dir.join("dragon.png");
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--file",
+        &small_l(),
+        "--name",
+        "DRAGON",
+        "--order",
+        "6",
+        "--size",
+        "64x48",
+        "--out",
+        png.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let image = std::fs::read(&png).unwrap();
+    assert_eq!(u32::from_be_bytes(image[16..20].try_into().unwrap()), 64);
+    assert_eq!(u32::from_be_bytes(image[20..24].try_into().unwrap()), 48);
+}
+
+#[test]
+fn lists_the_systems_in_a_file() {
+    let output = run(&["list", &small_l()]);
+    assert!(output.status.success());
+    assert_eq!(stdout(&output), "Koch1\nDragon\n");
+}
+
+#[test]
+fn errors_name_the_system_and_leave_no_file() {
+    let dir = scratch("errors");
+    let out = dir.join("never.png");
+    let segments = dir.join("never.txt");
+    let out_arg = out.to_str().unwrap().to_string();
+    let seg_arg = segments.to_str().unwrap().to_string();
+    let small = small_l();
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["--file", &small, "--name", "nope", "--order", "2"],
+            "nope in",
+        ),
+        (
+            vec!["--axiom", "F]", "--angle", "4", "--order", "2"],
+            "unbalanced `]` at column 2",
+        ),
+        (
+            vec![
+                "--axiom",
+                "F",
+                "--rule",
+                "F=[[[F]]]",
+                "--angle",
+                "4",
+                "--order",
+                "7",
+            ],
+            "deeper than the turtle stack",
+        ),
+        (
+            vec!["--axiom", "F", "--angle", "4", "--order", "1000"],
+            "order 1000 is too high",
+        ),
+        (
+            vec![
+                "--axiom", "F", "--angle", "4", "--order", "1", "--size", "0x10",
+            ],
+            "zero width or height",
+        ),
+        (
+            vec!["--axiom", "F", "--angle", "0", "--order", "1"],
+            "angle 0",
+        ),
+        (
+            vec![
+                "--axiom",
+                "F",
+                "--rule",
+                "F=FC999F",
+                "--dialect",
+                "fractint",
+                "--angle",
+                "4",
+                "--order",
+                "1",
+            ],
+            "`c` at column 2",
+        ),
+        (
+            vec!["--file", "/no/such/file.l", "--name", "x", "--order", "1"],
+            "cannot read /no/such/file.l",
+        ),
+    ];
+    for (args, message) in cases {
+        let mut full = vec!["render", "lsystem"];
+        full.extend(args.iter().copied());
+        full.extend(["--out", &out_arg, "--segments", &seg_arg]);
+        let output = run(&full);
+        assert_eq!(output.status.code(), Some(1), "{full:?}");
+        let err = stderr(&output);
+        assert!(
+            err.starts_with("tinyfractal: error: ") && err.contains(message),
+            "{full:?}: {err}"
+        );
+        assert!(!err.contains("panicked"), "{err}");
+        assert!(!out.exists() && !segments.exists(), "{full:?} left a file");
+        assert!(
+            std::fs::read_dir(&dir).unwrap().next().is_none(),
+            "{full:?} left a partial file"
+        );
+    }
+}
+
+#[test]
+fn usage_mistakes_exit_with_2() {
+    for args in [
+        vec!["render"],
+        vec!["render", "lsystem", "--axiom", "F"],
+        vec!["bogus"],
+    ] {
+        let output = run(&args);
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert!(stderr(&output).contains("tinyfractal help"));
+    }
+}
+
+#[test]
+fn gallery_renders_every_scene() {
+    let dir = scratch("gallery");
+    let output = run(&["gallery", "--out", dir.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let table = stdout(&output);
+    for scene in [
+        "koch-snowflake",
+        "dragon",
+        "hilbert",
+        "sierpinski-arrowhead",
+        "plant",
+    ] {
+        assert!(table.contains(scene), "{table}");
+        assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");
+    }
+}
