@@ -32,7 +32,10 @@ impl DrawTarget for Framebuffer {
     type Color = Rgb565;
     type Error = core::convert::Infallible;
 
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
+    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
         for Pixel(p, c) in pixels {
             if let (Ok(x @ 0..320), Ok(y @ 0..240)) = (usize::try_from(p.x), usize::try_from(p.y)) {
                 self.pixels[y * 320 + x] = c;
