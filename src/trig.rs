@@ -19,7 +19,7 @@ pub(crate) const fn sin_cos(numerator: u64, denominator: u64) -> (i32, i32) {
     let octant = eighths / d;
     let rest = eighths % d;
     // The angle from the nearest multiple of π/2, in [0, π/4], as Q62 radians.
-    let within = if octant % 2 == 0 { rest } else { d - rest };
+    let within = if octant & 1 == 0 { rest } else { d - rest };
     let x = FRAC_PI_4_Q62 * within as i128 / d as i128;
     let (c, s) = octant_cos_sin(x);
     match octant {

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::Bitmap;
+use common::{koch_snowflake, pixel, Bitmap};
 use embedded_graphics::{
     mock_display::MockDisplay,
     pixelcolor::BinaryColor,
@@ -191,8 +191,6 @@ fn runs_match_per_pixel_lines() {
     let start = drawing.start();
     for segment in Segments::starting(&grammar, 5, start).unwrap() {
         let segment = segment.unwrap();
-        let pixel =
-            |p: tinyfractal::TurtlePoint| Point::new(p.x.round_to_i32(), -p.y.round_to_i32());
         Line::new(pixel(segment.start), pixel(segment.end))
             .into_styled(PrimitiveStyle::with_stroke(BinaryColor::On, 1))
             .draw(&mut slow)
@@ -206,10 +204,7 @@ fn runs_match_per_pixel_lines() {
 /// axis) of an f64 line through the same rounded ends, and each segment's ends are lit.
 #[test]
 fn diagonal_runs_stay_on_the_line() {
-    let snowflake = Grammar::new(Dialect::Fractint, "F--F--F", Angle::Divisions(6))
-        .unwrap()
-        .with_rule('F', "F+F--F+F")
-        .unwrap();
+    let snowflake = koch_snowflake();
     let mut target = Counting::new(200, 200);
     let drawing = LSystem::new(&snowflake, 3)
         .fit(target.bounding_box(), &[BinaryColor::On])
@@ -220,8 +215,6 @@ fn diagonal_runs_stay_on_the_line() {
         .unwrap()
         .map(|s| {
             let s = s.unwrap();
-            let pixel =
-                |p: tinyfractal::TurtlePoint| Point::new(p.x.round_to_i32(), -p.y.round_to_i32());
             (pixel(s.start), pixel(s.end))
         })
         .collect();

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{corpus_file, engine_segments, ModelSegment, ModelSystem};
+use common::{corpus_file, engine_segments, koch_snowflake, ModelSegment, ModelSystem};
 use tinyfractal::{Angle, Dialect, Grammar, LFile, Real, Segments};
 
 /// Asserts the engine's segments match the model's: same count, and every end within a
@@ -82,13 +82,6 @@ fn fractint_overflow_cases_are_right_at_high_orders() {
             1e-9,
         );
     }
-}
-
-fn koch_snowflake() -> Grammar<'static> {
-    Grammar::new(Dialect::Fractint, "F--F--F", Angle::Divisions(6))
-        .unwrap()
-        .with_rule('F', "F+F--F+F")
-        .unwrap()
 }
 
 #[test]

@@ -3,6 +3,8 @@
 //! `diff`). Regenerate after an intended change with `TINYFRACTAL_BLESS=1 cargo test`, then
 //! look at every changed picture before committing it.
 
+mod common;
+
 use std::path::PathBuf;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
@@ -59,11 +61,12 @@ fn check(name: &str, grammar: &Grammar<'_>, order: u32, orientation: Orientation
 
 #[test]
 fn koch_snowflake() {
-    let grammar = Grammar::new(Dialect::Fractint, "F--F--F", Angle::Divisions(6))
-        .unwrap()
-        .with_rule('F', "F+F--F+F")
-        .unwrap();
-    check("koch-snowflake-3", &grammar, 3, Orientation::Right);
+    check(
+        "koch-snowflake-3",
+        &common::koch_snowflake(),
+        3,
+        Orientation::Right,
+    );
 }
 
 #[test]

@@ -250,6 +250,23 @@ pub fn corpus_file(name: &str) -> String {
     bytes.iter().map(|&b| char::from(b)).collect()
 }
 
+/// The Koch snowflake (Fractint's Koch1): 3·4ⁿ segments at order n.
+pub fn koch_snowflake() -> tinyfractal::Grammar<'static> {
+    tinyfractal::Grammar::new(
+        tinyfractal::Dialect::Fractint,
+        "F--F--F",
+        tinyfractal::Angle::Divisions(6),
+    )
+    .unwrap()
+    .with_rule('F', "F+F--F+F")
+    .unwrap()
+}
+
+/// The pixel a drawing pass puts a turtle point on (orientation right: the row is -y).
+pub fn pixel(p: tinyfractal::TurtlePoint) -> Point {
+    Point::new(p.x.round_to_i32(), -p.y.round_to_i32())
+}
+
 /// A plain 1-bit framebuffer of any size (MockDisplay stops at 64×64).
 pub struct Bitmap {
     pub size: Size,
