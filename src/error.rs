@@ -144,6 +144,15 @@ pub enum Error {
     ZeroSizeTarget,
     /// The palette has no colours.
     EmptyPalette,
+    /// The iteration cap is 0 or above [`MAX_ITERATIONS`](crate::MAX_ITERATIONS).
+    IterationsOutOfRange {
+        /// The value given.
+        value: u32,
+    },
+    /// The view has no positive width, reaches beyond ±3.5, or a Julia parameter has |k| > 2.
+    ViewOutOfRange,
+    /// The pixel spacing is finer than the deepest tier resolves (2⁻⁵⁴).
+    ZoomTooDeep,
 }
 
 impl fmt::Display for Error {
@@ -223,6 +232,20 @@ impl fmt::Display for Error {
             Self::EmptyDrawing => write!(f, "the system draws nothing at this order"),
             Self::ZeroSizeTarget => write!(f, "the draw target has zero width or height"),
             Self::EmptyPalette => write!(f, "the palette is empty: give at least one colour"),
+            Self::IterationsOutOfRange { value } => write!(
+                f,
+                "max-iter {value} is out of range: use 1 to {}",
+                crate::MAX_ITERATIONS
+            ),
+            Self::ViewOutOfRange => write!(
+                f,
+                "the view is out of range: the width must be positive, every point within \
+                 ±3.5, and a Julia parameter at most 2 from 0"
+            ),
+            Self::ZoomTooDeep => write!(
+                f,
+                "the zoom is too deep: pixel spacing below 2^-54 is finer than the deepest tier"
+            ),
         }
     }
 }

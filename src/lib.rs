@@ -68,11 +68,16 @@
 )]
 
 mod error;
+mod escape;
 mod lsystem;
 mod real;
 mod trig;
 
 pub use error::{DrawError, Error, Location};
+pub use escape::drawing::{EscapeTime, Painter};
+pub use escape::palette::{Bands, Gradient, Palette, TwoColor};
+pub use escape::schedule::{Algorithm, DwellSink, Progress, Render, RenderStats, TILE};
+pub use escape::view::{Coord, Fractal, Tier, View, MAX_ITERATIONS};
 pub use lsystem::alphabet::Dialect;
 pub use lsystem::drawing::{
     Bounds, LSystem, LSystemDrawing, Orientation, Placement, DEFAULT_MARGIN,

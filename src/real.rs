@@ -48,34 +48,12 @@ impl Real {
         i64::try_from(bits).ok().map(Self::from_bits)
     }
 
-    /// Parses an unsigned decimal number such as `1.618034` or `.5`, exactly rounded.
+    /// Parses an unsigned decimal number such as `1.618034` or `.5`, rounded to nearest.
     pub fn parse_decimal(text: &str) -> Option<Self> {
-        let (int_part, frac_part) = match text.split_once('.') {
-            Some((i, f)) => (i, f),
-            None => (text, ""),
-        };
-        if int_part.is_empty() && frac_part.is_empty() {
+        if text.starts_with(['-', '+']) {
             return None;
         }
-        let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
-        if !all_digits(int_part) || !all_digits(frac_part) {
-            return None;
-        }
-        let mut int: i64 = 0;
-        for digit in int_part.bytes() {
-            int = int.checked_mul(10)?.checked_add(i64::from(digit - b'0'))?;
-        }
-        // The fraction: digits beyond 38 cannot change an I32F32 value, so they are only checked.
-        let mut numerator: i128 = 0;
-        let mut denominator: i128 = 1;
-        for digit in frac_part.bytes().take(30) {
-            numerator = numerator * 10 + i128::from(digit - b'0');
-            denominator *= 10;
-        }
-        let frac_bits = div_round(numerator << 32, denominator);
-        let bits = i128::from(int)
-            .checked_mul(1 << 32)?
-            .checked_add(frac_bits)?;
+        let bits = parse_fixed(text, Self::FRAC_BITS)?;
         i64::try_from(bits).ok().map(Self::from_bits)
     }
 
@@ -159,6 +137,42 @@ impl fmt::Display for Real {
     }
 }
 
+/// Parses a decimal number with an optional sign (`-0.75`, `.5`, `3`) into fixed point with
+/// `frac_bits` fractional bits (at most 62), rounded to nearest. Digits beyond the 19th
+/// after the point are checked but cannot matter at 62 bits or fewer (10⁻¹⁹ < 2⁻⁶²·2),
+/// so they are not used. `None` if malformed or beyond ±2⁶³.
+pub(crate) fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
+    let (negative, unsigned) = match text.as_bytes().first() {
+        Some(b'-') => (true, text.get(1..)?),
+        Some(b'+') => (false, text.get(1..)?),
+        _ => (false, text),
+    };
+    let (int_part, frac_part) = unsigned.split_once('.').unwrap_or((unsigned, ""));
+    let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    if (int_part.is_empty() && frac_part.is_empty())
+        || !all_digits(int_part)
+        || !all_digits(frac_part)
+    {
+        return None;
+    }
+    let mut int: i128 = 0;
+    for digit in int_part.bytes() {
+        int = int.checked_mul(10)?.checked_add(i128::from(digit - b'0'))?;
+        if int > i128::from(i64::MAX) {
+            return None;
+        }
+    }
+    let mut numerator: i128 = 0;
+    let mut denominator: i128 = 1;
+    for digit in frac_part.bytes().take(19) {
+        numerator = numerator * 10 + i128::from(digit - b'0');
+        denominator *= 10;
+    }
+    let magnitude =
+        (int << frac_bits).checked_add(div_round(numerator << frac_bits, denominator))?;
+    Some(if negative { -magnitude } else { magnitude })
+}
+
 /// `value / 2^shift`, rounded half away from zero.
 pub(crate) const fn shift_round(value: i128, shift: u32) -> i128 {
     let half = 1i128 << (shift - 1);
@@ -193,7 +207,7 @@ mod tests {
         assert_eq!(Real::parse_decimal("3"), Some(Real::from_int(3)));
         let golden = Real::parse_decimal("1.618034").map(Real::to_f64);
         assert!((golden.unwrap_or(0.0) - 1.618034).abs() < 1e-9);
-        for bad in ["", ".", "1.2.3", "-1", "1e5", "99999999999"] {
+        for bad in ["", ".", "1.2.3", "-1", "1e5", "99999999999", "-"] {
             assert_eq!(Real::parse_decimal(bad), None, "{bad}");
         }
     }

@@ -1,0 +1,192 @@
+//! The dwell of one pixel: z ← z² + c in the view's fixed-point tier.
+//!
+//! Overflow cannot happen, by invariant: an orbit is only squared while |z|² ≤ 4 (so |x|,
+//! |y| ≤ 2), and every c is within ±3.5 (checked by the view), so the next value is below
+//! 7.5 and its square below 57: inside every tier's range (Q12 in i32, Q28 in i32 with i64
+//! squares, Q60 in i64 with i128 squares). A Julia start outside radius 2 escapes at once
+//! (|z₁| ≥ |z₀|² − |k| > 2 because |k| ≤ 2) and is never squared.
+//!
+//! Mirrored points stay mirrored exactly: 2xy is truncated toward zero, the only product
+//! whose sign depends on y.
+
+use super::view::{Fractal, Tier, View};
+use crate::real::shift_round;
+
+/// How an orbit that repeats is recognised (Brent: compare with a point saved at
+/// iterations 1, 2, 4, 8, ...).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Periodicity {
+    /// Only an exact repeat of the fixed-point orbit: it can never change a dwell.
+    Exact,
+    /// Within a tolerance (Q60 bits), tied to the pixel spacing: faster, may differ.
+    Within(i64),
+}
+
+/// A pixel's result.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Orbit {
+    /// 1..=max; max means "did not escape".
+    pub(crate) dwell: u32,
+    /// z ← z² + c steps taken.
+    pub(crate) iterations: u32,
+}
+
+/// The dwell of pixel (i, j) of `view`.
+pub(crate) fn dwell(view: &View, i: i64, j: i64, periodicity: Periodicity) -> Orbit {
+    let point = view.point(i, j);
+    let max = view.max_iterations;
+    let (c, z0) = match view.fractal {
+        Fractal::Mandelbrot => {
+            if in_cardioid_or_bulb(point) {
+                return Orbit {
+                    dwell: max,
+                    iterations: 0,
+                };
+            }
+            (point, (0, 0))
+        }
+        Fractal::Julia { re, im } => ((i128::from(re.to_bits()), i128::from(im.to_bits())), point),
+    };
+    let tolerance = match periodicity {
+        Periodicity::Exact => 0,
+        Periodicity::Within(bits) => i128::from(bits),
+    };
+    match view.tier {
+        Tier::Narrow => narrow(c, z0, max, tolerance),
+        Tier::Standard => standard(c, z0, max, tolerance),
+        Tier::Deep => deep(c, z0, max, tolerance),
+    }
+}
+
+/// Q60 to `frac` fractional bits, rounded half away from zero (so negation commutes).
+const fn from_q60(bits: i128, frac: u32) -> i128 {
+    if frac >= 60 {
+        bits
+    } else {
+        shift_round(bits, 60 - frac)
+    }
+}
+
+/// One tier's iteration: value type `$v`, product type `$w`, `$frac` fractional bits.
+macro_rules! tier_kernel {
+    ($name:ident, $v:ty, $w:ty, $frac:expr) => {
+        // In the narrow tier products are as wide as values, so some casts are no-ops.
+        #[allow(trivial_numeric_casts)]
+        fn $name(c: (i128, i128), z0: (i128, i128), max: u32, tolerance: i128) -> Orbit {
+            const FRAC: u32 = $frac;
+            // Casts are exact: the view keeps |c|, |z0| ≤ 3.5 (see the module docs).
+            let to = |q60: i128| from_q60(q60, FRAC) as $v;
+            let (cr, ci) = (to(c.0), to(c.1));
+            let (mut x, mut y) = (to(z0.0), to(z0.1));
+            // A tolerance below one unit of this tier means exact comparison.
+            let tolerance = from_q60(tolerance, FRAC) as $v;
+            let four: $w = 4 << (2 * FRAC);
+            let mut x2 = <$w>::from(x) * <$w>::from(x);
+            let mut y2 = <$w>::from(y) * <$w>::from(y);
+            if x2 + y2 > four {
+                return Orbit {
+                    dwell: 1,
+                    iterations: 0,
+                };
+            }
+            let (mut saved_x, mut saved_y) = (x, y);
+            let mut next_save: u32 = 1;
+            for n in 1..=max {
+                let xy = <$w>::from(x) * <$w>::from(y);
+                // 2xy: division truncates toward zero, so a mirrored orbit stays exact.
+                y = (xy / (1 << (FRAC - 1))) as $v + ci;
+                x = ((x2 - y2) >> FRAC) as $v + cr;
+                x2 = <$w>::from(x) * <$w>::from(x);
+                y2 = <$w>::from(y) * <$w>::from(y);
+                if x2 + y2 > four {
+                    return Orbit {
+                        dwell: n,
+                        iterations: n,
+                    };
+                }
+                if (x - saved_x).abs() <= tolerance && (y - saved_y).abs() <= tolerance {
+                    return Orbit {
+                        dwell: max,
+                        iterations: n,
+                    };
+                }
+                if n == next_save {
+                    (saved_x, saved_y) = (x, y);
+                    next_save = next_save.saturating_mul(2);
+                }
+            }
+            Orbit {
+                dwell: max,
+                iterations: max,
+            }
+        }
+    };
+}
+
+tier_kernel!(narrow, i32, i32, 12);
+tier_kernel!(standard, i32, i64, 28);
+tier_kernel!(deep, i64, i128, 60);
+
+/// Inside the main cardioid or the period-2 bulb, decided exactly in Q60/Q120 integers with
+/// a margin of 2⁻⁵⁰, so a point on or next to the boundary is iterated instead.
+fn in_cardioid_or_bulb((x, y): (i128, i128)) -> bool {
+    const ONE: i128 = 1 << 60;
+    const MARGIN: i128 = 1 << 70; // 2^-50 in Q120
+                                  // Outside |re|, |im| < 2 nothing is inside, and the products below stay in range.
+    if x.abs() >= 2 * ONE || y.abs() >= 2 * ONE {
+        return false;
+    }
+    let y2 = y * y; // Q120
+                    // Period-2 bulb: (x + 1)² + y² < 1/16.
+    let x1 = x + ONE;
+    if x1 * x1 + y2 + MARGIN < 1 << 116 {
+        return true;
+    }
+    // Cardioid: q(q + x - 1/4) < y²/4 with q = (x - 1/4)² + y².
+    let xq = x - ONE / 4;
+    let q = (xq * xq + y2) >> 60; // Q60, rounded down: the margin covers it
+    q * (q + xq) + MARGIN < y2 / 4
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q60(v: f64) -> i128 {
+        (v * (1u64 << 60) as f64) as i128
+    }
+
+    #[test]
+    fn cardioid_and_bulb_contain_their_centres_only() {
+        for (re, im) in [
+            (0.0, 0.0),
+            (-0.5, 0.3),
+            (-1.0, 0.0),
+            (-1.2, 0.1),
+            (0.2, 0.0),
+        ] {
+            assert!(in_cardioid_or_bulb((q60(re), q60(im))), "{re},{im}");
+        }
+        for (re, im) in [
+            (0.3, 0.0),
+            (-0.75, 0.2),
+            (-1.3, 0.0),
+            (0.26, 0.0),
+            (-2.0, 0.0),
+            (1.9, 1.9),
+        ] {
+            assert!(!in_cardioid_or_bulb((q60(re), q60(im))), "{re},{im}");
+        }
+    }
+
+    #[test]
+    fn tiers_agree_on_simple_points() {
+        for (re, im, dwell) in [(1.0, 0.0, 3), (-0.1, 0.1, u32::MAX), (-2.1, 0.0, 1)] {
+            let c = (q60(re), q60(im));
+            let expected = if dwell == u32::MAX { 500 } else { dwell };
+            for kernel in [narrow, standard, deep] {
+                assert_eq!(kernel(c, (0, 0), 500, 0).dwell, expected, "{re},{im}");
+            }
+        }
+    }
+}

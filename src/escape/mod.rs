@@ -1,0 +1,8 @@
+//! The escape-time engine, one stage per module:
+//! view (and tier) → kernel → schedule → palette → drawable.
+
+pub(crate) mod drawing;
+pub(crate) mod kernel;
+pub(crate) mod palette;
+pub(crate) mod schedule;
+pub(crate) mod view;

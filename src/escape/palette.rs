@@ -1,0 +1,134 @@
+//! From dwell to colour, for any `PixelColor` that converts from `Rgb888` (every colour
+//! type of embedded-graphics does: `Rgb565`, `Rgb888`, `Gray8`, `Gray4`, `BinaryColor`...).
+//! Conversions happen when a palette is built, never per pixel.
+
+use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
+
+/// Maps a dwell to a colour; `max` means "did not escape" (inside).
+pub trait Palette {
+    /// The colour type.
+    type Color: PixelColor;
+
+    /// The colour of a pixel with this dwell.
+    fn color(&self, dwell: u16, max: u16) -> Self::Color;
+}
+
+impl<P: Palette> Palette for &P {
+    type Color = P::Color;
+
+    fn color(&self, dwell: u16, max: u16) -> Self::Color {
+        (**self).color(dwell, max)
+    }
+}
+
+/// Inside one colour, outside another.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct TwoColor<C> {
+    /// The colour of points that did not escape.
+    pub inside: C,
+    /// The colour of every escaping point.
+    pub outside: C,
+}
+
+impl<C: PixelColor> Palette for TwoColor<C> {
+    type Color = C;
+
+    fn color(&self, dwell: u16, max: u16) -> C {
+        if dwell >= max {
+            self.inside
+        } else {
+            self.outside
+        }
+    }
+}
+
+/// Ranges of dwell to colours: band `(up_to, colour)` covers dwells up to `up_to`; dwells
+/// beyond the last band take its colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Bands<'a, C> {
+    bands: &'a [(u16, C)],
+    inside: C,
+}
+
+impl<'a, C: PixelColor> Bands<'a, C> {
+    /// Bands sorted by `up_to`, and the inside colour. `None` if `bands` is empty.
+    pub fn new(bands: &'a [(u16, C)], inside: C) -> Option<Self> {
+        (!bands.is_empty()).then_some(Self { bands, inside })
+    }
+}
+
+impl<C: PixelColor> Palette for Bands<'_, C> {
+    type Color = C;
+
+    fn color(&self, dwell: u16, max: u16) -> C {
+        if dwell >= max {
+            return self.inside;
+        }
+        self.bands
+            .iter()
+            .find(|(up_to, _)| dwell <= *up_to)
+            .or(self.bands.last())
+            .map_or(self.inside, |&(_, color)| color)
+    }
+}
+
+/// A smooth gradient through key colours, as a lookup table of `N` colours built once;
+/// dwell `d` outside takes entry `(d + offset) % N`. Change the offset to cycle colours.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Gradient<C, const N: usize> {
+    table: [C; N],
+    inside: C,
+    offset: u16,
+}
+
+impl<C: PixelColor + From<Rgb888>, const N: usize> Gradient<C, N> {
+    /// Spreads `N` entries evenly through `keys` (a closed loop: the last key blends back
+    /// into the first, so cycling has no seam). `None` if `keys` is empty or `N` is 0.
+    pub fn new(keys: &[Rgb888], inside: C) -> Option<Self> {
+        let first = *keys.first()?;
+        if N == 0 {
+            return None;
+        }
+        let mut table = [C::from(first); N];
+        let segments = keys.len();
+        for (index, entry) in table.iter_mut().enumerate() {
+            // Position along the loop in 1/N steps, split into key and fraction (×256).
+            let position = index * segments * 256 / N;
+            let (key, fraction) = (position / 256, (position % 256) as u32);
+            let from = keys.get(key).copied().unwrap_or(first);
+            let to = keys.get((key + 1) % segments).copied().unwrap_or(first);
+            let mix = |a: u8, b: u8| -> u8 {
+                ((u32::from(a) * (256 - fraction) + u32::from(b) * fraction + 128) >> 8) as u8
+            };
+            *entry = C::from(Rgb888::new(
+                mix(from.r(), to.r()),
+                mix(from.g(), to.g()),
+                mix(from.b(), to.b()),
+            ));
+        }
+        Some(Self {
+            table,
+            inside,
+            offset: 0,
+        })
+    }
+
+    /// The same gradient shifted by `offset` entries (colour cycling).
+    #[must_use]
+    pub const fn with_offset(mut self, offset: u16) -> Self {
+        self.offset = offset;
+        self
+    }
+}
+
+impl<C: PixelColor, const N: usize> Palette for Gradient<C, N> {
+    type Color = C;
+
+    fn color(&self, dwell: u16, max: u16) -> C {
+        if dwell >= max {
+            return self.inside;
+        }
+        let index = (usize::from(dwell) + usize::from(self.offset)) % N.max(1);
+        self.table.get(index).copied().unwrap_or(self.inside)
+    }
+}

@@ -1,0 +1,375 @@
+//! Which pixels to compute, in what order, and how they leave: rows, tiles and uniform
+//! blocks handed to a [`DwellSink`], in steps with a work budget.
+//!
+//! `Exact` computes every pixel, a row at a time. `Fast` splits the picture into 32×32
+//! tiles and runs Mariani–Silver subdivision inside each: compute a rectangle's border;
+//! if it is one dwell, fill the rectangle; otherwise split it in four. A tile that comes out
+//! uniform leaves as one `uniform` block (`fill_solid`), any other as one `dwells` block
+//! (`fill_contiguous`): one address window per tile on an SPI display, each pixel sent once.
+//! When the view is symmetric, only the top half is computed and each tile is also sent,
+//! upside down, to the bottom half: mirrored for a Mandelbrot view centred on the real
+//! axis, turned half round for a Julia view centred on the origin (the kernel keeps both
+//! symmetries exactly).
+//!
+//! RAM: the tile's dwells (32×32×2 = 2 KiB) and a subdivision stack of 32 rectangles
+//! (256 bytes), whatever the view size; nothing is read back from the target.
+
+use embedded_graphics::{prelude::*, primitives::Rectangle};
+use heapless::Vec;
+
+use super::kernel::{dwell, Periodicity};
+use super::view::{Symmetry, Tier, View};
+
+/// Side of a fast-mode tile, in pixels.
+pub const TILE: u32 = 32;
+const CELLS: usize = (TILE * TILE) as usize;
+
+/// How the pixels are scheduled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Algorithm {
+    /// Every pixel computed (the cardioid/bulb test and exact periodicity never change a
+    /// dwell).
+    Exact,
+    /// Mariani–Silver subdivision, mirror symmetry and periodicity within 1/16 of a pixel.
+    #[default]
+    Fast,
+}
+
+/// Where dwells go: the raw layer under the palette (a display, or a buffer of numbers).
+pub trait DwellSink {
+    /// The sink's error.
+    type Error;
+
+    /// Dwells for every pixel of `area`, row by row (as `fill_contiguous`).
+    fn dwells<I: Iterator<Item = u16>>(
+        &mut self,
+        area: &Rectangle,
+        dwells: I,
+    ) -> Result<(), Self::Error>;
+
+    /// One dwell for every pixel of `area` (as `fill_solid`).
+    fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error>;
+}
+
+/// What a render did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RenderStats {
+    /// z ← z² + c steps, in total.
+    pub iterations: u64,
+    /// Pixels whose dwell was computed (the rest were filled or mirrored).
+    pub pixels: u32,
+    /// Calls into the sink (draw calls, for a display).
+    pub draw_calls: u32,
+    /// The tier computed in.
+    pub tier: Tier,
+}
+
+/// How far a render has come.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Progress {
+    /// Units (rows or tiles) done.
+    pub done: u32,
+    /// Units in all.
+    pub total: u32,
+}
+
+impl Progress {
+    /// Whether the picture is complete.
+    pub const fn is_complete(&self) -> bool {
+        self.done >= self.total
+    }
+}
+
+/// A render in progress: call [`step`](Self::step) from a main loop with a budget, or
+/// [`run`](Self::run) to finish in one go.
+#[derive(Debug, Clone)]
+pub struct Render {
+    view: View,
+    algorithm: Algorithm,
+    next: u32,
+    stats: RenderStats,
+    tile: [u16; CELLS],
+}
+
+/// A rectangle of a tile, corners inclusive, in tile coordinates.
+#[derive(Debug, Clone, Copy)]
+struct Block {
+    x0: u32,
+    y0: u32,
+    x1: u32,
+    y1: u32,
+}
+
+impl Render {
+    /// A render of `view`, nothing computed yet.
+    pub fn new(view: View, algorithm: Algorithm) -> Self {
+        Self {
+            view,
+            algorithm,
+            next: 0,
+            stats: RenderStats {
+                iterations: 0,
+                pixels: 0,
+                draw_calls: 0,
+                tier: view.tier(),
+            },
+            tile: [0; CELLS],
+        }
+    }
+
+    /// What has been done so far.
+    pub const fn stats(&self) -> RenderStats {
+        self.stats
+    }
+
+    /// How far the render is.
+    pub fn progress(&self) -> Progress {
+        Progress {
+            done: self.next,
+            total: self.units(),
+        }
+    }
+
+    /// Works until at least `iterations` z ← z² + c steps are spent (whole rows or tiles:
+    /// a row costs at most W × max-iter) or the picture is complete.
+    pub fn step<S: DwellSink>(
+        &mut self,
+        sink: &mut S,
+        iterations: u64,
+    ) -> Result<Progress, S::Error> {
+        let start = self.stats.iterations;
+        while self.next < self.units() && self.stats.iterations - start < iterations {
+            match self.algorithm {
+                Algorithm::Exact => self.exact_row(sink)?,
+                Algorithm::Fast => self.fast_tile(sink)?,
+            }
+            self.next += 1;
+        }
+        Ok(self.progress())
+    }
+
+    /// Finishes the render.
+    pub fn run<S: DwellSink>(&mut self, sink: &mut S) -> Result<RenderStats, S::Error> {
+        self.step(sink, u64::MAX)?;
+        Ok(self.stats)
+    }
+
+    fn periodicity(&self) -> Periodicity {
+        match self.algorithm {
+            Algorithm::Exact => Periodicity::Exact,
+            Algorithm::Fast => Periodicity::Within(self.view.spacing >> 4),
+        }
+    }
+
+    /// Rows to compute: the top half when mirrored (the middle row of an odd height is
+    /// its own mirror and is computed too).
+    fn computed_rows(&self) -> u32 {
+        let h = self.view.size.height;
+        if self.view.symmetry() != Symmetry::None {
+            h.div_ceil(2)
+        } else {
+            h
+        }
+    }
+
+    fn tiles_across(&self) -> u32 {
+        self.view.size.width.div_ceil(TILE)
+    }
+
+    fn units(&self) -> u32 {
+        match self.algorithm {
+            Algorithm::Exact => self.view.size.height,
+            Algorithm::Fast => self.tiles_across() * self.computed_rows().div_ceil(TILE),
+        }
+    }
+
+    fn compute(&mut self, i: u32, j: u32) -> u16 {
+        let orbit = dwell(&self.view, i64::from(i), i64::from(j), self.periodicity());
+        self.stats.iterations += u64::from(orbit.iterations);
+        self.stats.pixels += 1;
+        // max_iterations <= u16::MAX is checked by the view.
+        u16::try_from(orbit.dwell).unwrap_or(u16::MAX)
+    }
+
+    fn exact_row<S: DwellSink>(&mut self, sink: &mut S) -> Result<(), S::Error> {
+        let j = self.next;
+        let width = self.view.size.width;
+        let area = Rectangle::new(Point::new(0, coordinate(j)), Size::new(width, 1));
+        self.stats.draw_calls += 1;
+        let dwells = (0..width).map(|i| self.compute(i, j));
+        sink.dwells(&area, dwells)
+    }
+
+    fn fast_tile<S: DwellSink>(&mut self, sink: &mut S) -> Result<(), S::Error> {
+        let across = self.tiles_across();
+        let (x0, y0) = ((self.next % across) * TILE, (self.next / across) * TILE);
+        let w = TILE.min(self.view.size.width - x0);
+        let h = TILE.min(self.computed_rows() - y0);
+        self.tile = [0; CELLS];
+        self.subdivide(x0, y0, w, h);
+
+        let area = Rectangle::new(Point::new(coordinate(x0), coordinate(y0)), Size::new(w, h));
+        let first = self.cell(0, 0);
+        let uniform = (0..h)
+            .all(|ty| (0..w).all(|tx| self.cell(tx, ty) == first))
+            .then_some(first);
+        self.emit(sink, area, 0..h, w, false, uniform)?;
+        let symmetry = self.view.symmetry();
+        if symmetry != Symmetry::None {
+            // Row r mirrors to H-1-r. The middle row of an odd height is its own mirror and
+            // is not sent twice.
+            let size = self.view.size;
+            let mirror_top = size.height - y0 - h;
+            let overlap = (y0 + h).saturating_sub(mirror_top);
+            let half_turn = symmetry == Symmetry::HalfTurn;
+            // A half turn also mirrors columns: i to W-1-i.
+            let x = if half_turn { size.width - x0 - w } else { x0 };
+            if overlap < h {
+                let mirrored = Rectangle::new(
+                    Point::new(coordinate(x), coordinate(mirror_top + overlap)),
+                    Size::new(w, h - overlap),
+                );
+                self.emit(
+                    sink,
+                    mirrored,
+                    (0..h - overlap).rev(),
+                    w,
+                    half_turn,
+                    uniform,
+                )?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Sends tile rows `rows` (in that order; columns right to left if `reversed`) to
+    /// `area`, or one dwell if uniform.
+    fn emit<S: DwellSink>(
+        &mut self,
+        sink: &mut S,
+        area: Rectangle,
+        rows: impl Iterator<Item = u32>,
+        w: u32,
+        reversed: bool,
+        uniform: Option<u16>,
+    ) -> Result<(), S::Error> {
+        self.stats.draw_calls += 1;
+        match uniform {
+            Some(value) => sink.uniform(&area, value),
+            None => {
+                let tile = &self.tile;
+                let at = move |tx: u32, ty: u32| {
+                    tile.get((ty * TILE + tx) as usize).copied().unwrap_or(0)
+                };
+                let column = move |k: u32| if reversed { w - 1 - k } else { k };
+                sink.dwells(
+                    &area,
+                    rows.flat_map(move |ty| (0..w).map(move |k| at(column(k), ty))),
+                )
+            }
+        }
+    }
+
+    fn cell(&self, tx: u32, ty: u32) -> u16 {
+        self.tile
+            .get((ty * TILE + tx) as usize)
+            .copied()
+            .unwrap_or(0)
+    }
+
+    fn known(&mut self, origin: (u32, u32), tx: u32, ty: u32) -> u16 {
+        let index = (ty * TILE + tx) as usize;
+        match self.tile.get(index).copied() {
+            Some(0) => {
+                let value = self.compute(origin.0 + tx, origin.1 + ty);
+                if let Some(cell) = self.tile.get_mut(index) {
+                    *cell = value;
+                }
+                value
+            }
+            Some(value) => value,
+            None => 0,
+        }
+    }
+
+    /// Mariani–Silver over the tile at (x0, y0) of size w×h.
+    fn subdivide(&mut self, x0: u32, y0: u32, w: u32, h: u32) {
+        let origin = (x0, y0);
+        let mut stack: Vec<Block, 32> = Vec::new();
+        let _ = stack.push(Block {
+            x0: 0,
+            y0: 0,
+            x1: w - 1,
+            y1: h - 1,
+        });
+        while let Some(b) = stack.pop() {
+            // The border, and whether it is one dwell.
+            let mut border = None;
+            let mut uniform = true;
+            let mut note = |value: u16| match border {
+                None => border = Some(value),
+                Some(seen) => uniform &= seen == value,
+            };
+            for tx in b.x0..=b.x1 {
+                note(self.known(origin, tx, b.y0));
+                note(self.known(origin, tx, b.y1));
+            }
+            for ty in b.y0..=b.y1 {
+                note(self.known(origin, b.x0, ty));
+                note(self.known(origin, b.x1, ty));
+            }
+            let (bw, bh) = (b.x1 - b.x0, b.y1 - b.y0);
+            if uniform && bw >= 2 && bh >= 2 {
+                let value = border.unwrap_or(0);
+                for ty in b.y0 + 1..b.y1 {
+                    for tx in b.x0 + 1..b.x1 {
+                        if let Some(cell) = self.tile.get_mut((ty * TILE + tx) as usize) {
+                            *cell = value;
+                        }
+                    }
+                }
+            } else if bw < 4 || bh < 4 {
+                for ty in b.y0..=b.y1 {
+                    for tx in b.x0..=b.x1 {
+                        self.known(origin, tx, ty);
+                    }
+                }
+            } else {
+                let (xm, ym) = (b.x0 + bw / 2, b.y0 + bh / 2);
+                for block in [
+                    Block {
+                        x0: b.x0,
+                        y0: b.y0,
+                        x1: xm,
+                        y1: ym,
+                    },
+                    Block {
+                        x0: xm,
+                        y0: b.y0,
+                        x1: b.x1,
+                        y1: ym,
+                    },
+                    Block {
+                        x0: b.x0,
+                        y0: ym,
+                        x1: xm,
+                        y1: b.y1,
+                    },
+                    Block {
+                        x0: xm,
+                        y0: ym,
+                        x1: b.x1,
+                        y1: b.y1,
+                    },
+                ] {
+                    // Depth is at most 5 levels of 3 pending blocks: 32 never fills.
+                    let _ = stack.push(block);
+                }
+            }
+        }
+    }
+}
+
+fn coordinate(value: u32) -> i32 {
+    i32::try_from(value).unwrap_or(i32::MAX)
+}

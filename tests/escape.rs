@@ -1,0 +1,554 @@
+//! The escape-time engine against an f64 model written here from the definitions, plus its
+//! own promises: tiers, exact mirroring, safe cardioid test, typed errors, runs, steps.
+
+use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+use proptest::prelude::*;
+use tinyfractal::{
+    Algorithm, Coord, DwellSink, Error, EscapeTime, Fractal, Render, Tier, TwoColor, View,
+};
+
+/// Dwells in a plain buffer, row-major.
+struct Dwells {
+    width: u32,
+    values: Vec<u16>,
+    writes: Vec<u32>,
+}
+
+impl Dwells {
+    fn new(size: Size) -> Self {
+        let n = (size.width * size.height) as usize;
+        Self {
+            width: size.width,
+            values: vec![0; n],
+            writes: vec![0; n],
+        }
+    }
+    fn set(&mut self, p: Point, value: u16) {
+        let index = (p.y as u32 * self.width + p.x as u32) as usize;
+        self.values[index] = value;
+        self.writes[index] += 1;
+    }
+}
+
+impl DwellSink for Dwells {
+    type Error = core::convert::Infallible;
+
+    fn dwells<I: Iterator<Item = u16>>(
+        &mut self,
+        area: &Rectangle,
+        dwells: I,
+    ) -> Result<(), Self::Error> {
+        for (p, d) in area.points().zip(dwells) {
+            self.set(p, d);
+        }
+        Ok(())
+    }
+
+    fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error> {
+        for p in area.points() {
+            self.set(p, dwell);
+        }
+        Ok(())
+    }
+}
+
+fn render(view: View, algorithm: Algorithm) -> (Dwells, tinyfractal::RenderStats) {
+    let mut sink = Dwells::new(view.size());
+    let stats = Render::new(view, algorithm).run(&mut sink).unwrap();
+    assert!(
+        sink.writes.iter().all(|&w| w == 1),
+        "every pixel written exactly once"
+    );
+    (sink, stats)
+}
+
+/// The model: the definitions in f64.
+fn model(
+    fractal: Option<(f64, f64)>,
+    centre: (f64, f64),
+    width: f64,
+    size: Size,
+    max: u32,
+) -> Vec<u16> {
+    let (w, h) = (size.width as f64, size.height as f64);
+    let d = width / w;
+    let mut out = Vec::new();
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let re = centre.0 + (i as f64 + 0.5 - w / 2.0) * d;
+            let im = centre.1 - (j as f64 + 0.5 - h / 2.0) * d;
+            let (c, mut z) = match fractal {
+                None => ((re, im), (0.0, 0.0)),
+                Some(k) => (k, (re, im)),
+            };
+            let mut dwell = max;
+            for n in 1..=max {
+                z = (z.0 * z.0 - z.1 * z.1 + c.0, 2.0 * z.0 * z.1 + c.1);
+                if z.0 * z.0 + z.1 * z.1 > 4.0 {
+                    dwell = n;
+                    break;
+                }
+            }
+            out.push(dwell as u16);
+        }
+    }
+    out
+}
+
+struct Case {
+    name: &'static str,
+    julia: Option<(f64, f64)>,
+    centre: (&'static str, &'static str),
+    width: &'static str,
+    size: Size,
+    max: u32,
+    tier: Tier,
+}
+
+fn view_of(case: &Case) -> View {
+    let fractal = match case.julia {
+        None => Fractal::Mandelbrot,
+        Some((re, im)) => Fractal::Julia {
+            re: Coord::from_f64(re).unwrap(),
+            im: Coord::from_f64(im).unwrap(),
+        },
+    };
+    View::new(
+        fractal,
+        (
+            Coord::parse(case.centre.0).unwrap(),
+            Coord::parse(case.centre.1).unwrap(),
+        ),
+        Coord::parse(case.width).unwrap(),
+        case.size,
+        case.max,
+    )
+    .unwrap()
+}
+
+const CASES: &[Case] = &[
+    Case {
+        name: "full set",
+        julia: None,
+        centre: ("-0.75", "0"),
+        width: "3.5",
+        size: Size::new(320, 240),
+        max: 256,
+        tier: Tier::Standard,
+    },
+    Case {
+        name: "seahorse valley",
+        julia: None,
+        centre: ("-0.7435", "0.1314"),
+        width: "0.02",
+        size: Size::new(200, 150),
+        max: 512,
+        tier: Tier::Deep,
+    },
+    Case {
+        name: "julia",
+        julia: Some((-0.8, 0.156)),
+        centre: ("0", "0"),
+        width: "3.2",
+        size: Size::new(240, 180),
+        max: 300,
+        tier: Tier::Deep,
+    },
+    Case {
+        name: "small display",
+        julia: None,
+        centre: ("-0.75", "0"),
+        width: "3.5",
+        size: Size::new(128, 64),
+        max: 64,
+        tier: Tier::Standard,
+    },
+    Case {
+        name: "deep zoom",
+        julia: None,
+        centre: ("-0.743643887037151", "0.131825904205330"),
+        width: "0.0000001",
+        size: Size::new(160, 120),
+        max: 1000,
+        tier: Tier::Deep,
+    },
+];
+
+#[test]
+fn dwells_agree_with_the_f64_model() {
+    for case in &CASES[..4] {
+        let view = view_of(case);
+        assert_eq!(view.tier(), case.tier, "{}: tier", case.name);
+        let centre = (
+            case.centre.0.parse().unwrap(),
+            case.centre.1.parse().unwrap(),
+        );
+        let expected = model(
+            case.julia,
+            centre,
+            case.width.parse().unwrap(),
+            case.size,
+            case.max,
+        );
+        let (exact, exact_stats) = render(view, Algorithm::Exact);
+        let (fast, fast_stats) = render(view, Algorithm::Fast);
+        let n = expected.len() as f64;
+        let same =
+            |a: &[u16], b: &[u16]| a.iter().zip(b).filter(|(x, y)| x == y).count() as f64 / n;
+        let inside = |d: u16| u32::from(d) == case.max;
+        let side_disagree = exact
+            .values
+            .iter()
+            .zip(&expected)
+            .filter(|(a, b)| inside(**a) != inside(**b))
+            .count() as f64
+            / n;
+        let identical = same(&exact.values, &expected);
+        let fast_vs_exact = same(&fast.values, &exact.values);
+        println!(
+            "{:<16} {:?}: identical {:.4}, inside/outside differ {:.5}, fast = exact {:.5}, fast iterations {:.3} of exact",
+            case.name, view.tier(), identical, side_disagree, fast_vs_exact,
+            fast_stats.iterations as f64 / exact_stats.iterations as f64
+        );
+        assert!(identical >= 0.995, "{}: {identical}", case.name);
+        assert!(side_disagree <= 0.001, "{}: {side_disagree}", case.name);
+        assert!(fast_vs_exact >= 0.999, "{}: {fast_vs_exact}", case.name);
+        assert_eq!(exact_stats.pixels, case.size.width * case.size.height);
+    }
+}
+
+/// Double-double numbers (about 106 bits) from f64 pairs: the reference where f64 itself
+/// runs out of bits (at the deep zoom a pixel is 2^-41.5, and f64 keeps 2^-53).
+#[derive(Clone, Copy)]
+struct Dd(f64, f64);
+
+impl Dd {
+    fn from_q60(bits: i64) -> Self {
+        let scale = (1u64 << 60) as f64;
+        let hi = bits as f64 / scale;
+        let rest = bits - (hi * scale) as i64;
+        Dd(hi, rest as f64 / scale)
+    }
+    fn quick(a: f64, b: f64) -> Self {
+        let s = a + b;
+        Dd(s, b - (s - a))
+    }
+    fn add(self, o: Dd) -> Dd {
+        let s = self.0 + o.0;
+        let v = s - self.0;
+        let e = (self.0 - (s - v)) + (o.0 - v) + self.1 + o.1;
+        Dd::quick(s, e)
+    }
+    fn neg(self) -> Dd {
+        Dd(-self.0, -self.1)
+    }
+    fn mul(self, o: Dd) -> Dd {
+        let p = self.0 * o.0;
+        let e = self.0.mul_add(o.0, -p) + self.0 * o.1 + self.1 * o.0;
+        Dd::quick(p, e)
+    }
+    fn scale(self, k: f64) -> Dd {
+        self.mul(Dd(k, 0.0))
+    }
+}
+
+fn model_dd(centre: (Coord, Coord), spacing: Coord, size: Size, max: u32) -> Vec<u16> {
+    let (re0, im0, d) = (
+        Dd::from_q60(centre.0.to_bits()),
+        Dd::from_q60(centre.1.to_bits()),
+        Dd::from_q60(spacing.to_bits()),
+    );
+    let mut out = Vec::new();
+    for j in 0..size.height as i64 {
+        for i in 0..size.width as i64 {
+            let c = (
+                re0.add(d.scale((2 * i + 1 - size.width as i64) as f64 / 2.0)),
+                im0.add(d.scale((2 * j + 1 - size.height as i64) as f64 / 2.0).neg()),
+            );
+            let mut z = (Dd(0.0, 0.0), Dd(0.0, 0.0));
+            let mut dwell = max;
+            for n in 1..=max {
+                let (x2, y2) = (z.0.mul(z.0), z.1.mul(z.1));
+                z = (x2.add(y2.neg()).add(c.0), z.0.mul(z.1).scale(2.0).add(c.1));
+                let m = z.0.mul(z.0).add(z.1.mul(z.1));
+                if m.0 + m.1 > 4.0 {
+                    dwell = n;
+                    break;
+                }
+            }
+            out.push(dwell as u16);
+        }
+    }
+    out
+}
+
+#[test]
+fn a_view_too_deep_for_32_bits_switches_tier_and_agrees() {
+    let deep = &CASES[4];
+    let view = view_of(deep);
+    assert_eq!(view.tier(), Tier::Deep);
+    let centre = (
+        Coord::parse(deep.centre.0).unwrap(),
+        Coord::parse(deep.centre.1).unwrap(),
+    );
+    let expected = model_dd(centre, view.spacing(), deep.size, deep.max);
+    let agreement = |v: View, algorithm| {
+        let (got, _) = render(v, algorithm);
+        got.values
+            .iter()
+            .zip(&expected)
+            .filter(|(a, b)| a == b)
+            .count() as f64
+            / expected.len() as f64
+    };
+    let (exact, fast) = (
+        agreement(view, Algorithm::Exact),
+        agreement(view, Algorithm::Fast),
+    );
+    let forced = agreement(view.with_tier(Tier::Standard), Algorithm::Exact);
+    println!("deep zoom: exact {exact:.4}, fast {fast:.4}, forced 32-bit {forced:.4}");
+    assert!(exact >= 0.995 && fast >= 0.995, "{exact} {fast}");
+    assert!(
+        forced < 0.995,
+        "the 32-bit tier should fall short here ({forced})"
+    );
+}
+
+#[test]
+fn exact_renders_mirror_about_the_real_axis() {
+    for height in [120, 121] {
+        let view = View::new(
+            Fractal::Mandelbrot,
+            (Coord::parse("-0.6").unwrap(), Coord::default()),
+            Coord::parse("2.9").unwrap(),
+            Size::new(97, height),
+            200,
+        )
+        .unwrap();
+        let (exact, _) = render(view, Algorithm::Exact);
+        let w = 97usize;
+        for j in 0..height as usize {
+            let mirror = height as usize - 1 - j;
+            assert_eq!(
+                exact.values[j * w..(j + 1) * w],
+                exact.values[mirror * w..(mirror + 1) * w],
+                "row {j}"
+            );
+        }
+        // Fast computes only the top half (plus the middle row) and mirrors the rest.
+        let (_, fast) = render(view, Algorithm::Fast);
+        assert!(fast.pixels <= 97 * height.div_ceil(2));
+    }
+}
+
+#[test]
+fn exact_julia_renders_turn_half_round_about_the_origin() {
+    let k = Fractal::Julia {
+        re: Coord::parse("-0.8").unwrap(),
+        im: Coord::parse("0.156").unwrap(),
+    };
+    let (w, h) = (81usize, 61usize);
+    let view = View::new(
+        k,
+        (Coord::default(), Coord::default()),
+        Coord::parse("3.1").unwrap(),
+        Size::new(w as u32, h as u32),
+        150,
+    )
+    .unwrap();
+    let (exact, _) = render(view, Algorithm::Exact);
+    for j in 0..h {
+        for i in 0..w {
+            assert_eq!(
+                exact.values[j * w + i],
+                exact.values[(h - 1 - j) * w + (w - 1 - i)],
+                "({i}, {j})"
+            );
+        }
+    }
+    let (fast, stats) = render(view, Algorithm::Fast);
+    assert_eq!(fast.values, exact.values);
+    assert!(stats.pixels <= (w * h.div_ceil(2)) as u32);
+}
+
+#[test]
+fn bad_views_are_typed_errors() {
+    let c = (Coord::parse("-0.75").unwrap(), Coord::default());
+    let w = Coord::parse("3.5").unwrap();
+    let size = Size::new(32, 24);
+    let m = Fractal::Mandelbrot;
+    assert_eq!(
+        View::new(m, c, Coord::default(), size, 100),
+        Err(Error::ViewOutOfRange)
+    );
+    assert_eq!(
+        View::new(m, c, Coord::parse("-1").unwrap(), size, 100),
+        Err(Error::ViewOutOfRange)
+    );
+    assert_eq!(
+        View::new(m, c, w, Size::new(0, 5), 100),
+        Err(Error::ZeroSizeTarget)
+    );
+    assert_eq!(
+        View::new(m, c, w, size, 0),
+        Err(Error::IterationsOutOfRange { value: 0 })
+    );
+    assert_eq!(
+        View::new(m, c, w, size, 1_000_000),
+        Err(Error::IterationsOutOfRange { value: 1_000_000 })
+    );
+    assert_eq!(
+        View::new(m, c, Coord::parse("7.9").unwrap(), size, 100),
+        Err(Error::ViewOutOfRange)
+    );
+    assert_eq!(
+        View::new(m, c, Coord::from_bits(1), Size::new(320, 240), 100),
+        Err(Error::ZoomTooDeep)
+    );
+    let far = Fractal::Julia {
+        re: Coord::parse("1.5").unwrap(),
+        im: Coord::parse("1.5").unwrap(),
+    };
+    assert_eq!(View::new(far, c, w, size, 100), Err(Error::ViewOutOfRange));
+    assert_eq!(Coord::parse("8"), None);
+    assert_eq!(Coord::parse("1e-3"), None);
+    assert_eq!(Coord::from_f64(f64::NAN), None);
+    assert!(Error::ZoomTooDeep.to_string().contains("deepest tier"));
+}
+
+/// Counts what reaches a display.
+struct Counting {
+    draw_iter: usize,
+    fill_solid: usize,
+    fill_contiguous: usize,
+    pixels: usize,
+}
+
+impl OriginDimensions for Counting {
+    fn size(&self) -> Size {
+        Size::new(320, 240)
+    }
+}
+
+impl DrawTarget for Counting {
+    type Color = Gray8;
+    type Error = core::convert::Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Self::Error> {
+        self.draw_iter += pixels.into_iter().count();
+        Ok(())
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = Gray8>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Self::Error> {
+        self.fill_contiguous += 1;
+        self.pixels += colors
+            .into_iter()
+            .take(area.size.width as usize * area.size.height as usize)
+            .count();
+        Ok(())
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, _: Gray8) -> Result<(), Self::Error> {
+        self.fill_solid += 1;
+        self.pixels += (area.size.width * area.size.height) as usize;
+        Ok(())
+    }
+}
+
+#[test]
+fn output_goes_in_runs_never_pixel_by_pixel() {
+    let view = view_of(&CASES[0]);
+    let palette = TwoColor {
+        inside: Gray8::BLACK,
+        outside: Gray8::WHITE,
+    };
+    for algorithm in [Algorithm::Exact, Algorithm::Fast] {
+        let mut target = Counting {
+            draw_iter: 0,
+            fill_solid: 0,
+            fill_contiguous: 0,
+            pixels: 0,
+        };
+        let stats = EscapeTime::new(view, palette)
+            .with_algorithm(algorithm)
+            .draw(&mut target)
+            .unwrap();
+        assert_eq!(target.draw_iter, 0);
+        assert_eq!(target.pixels, 320 * 240, "each pixel sent once");
+        assert_eq!(
+            stats.draw_calls as usize,
+            target.fill_solid + target.fill_contiguous
+        );
+        match algorithm {
+            Algorithm::Exact => assert_eq!(stats.draw_calls, 240, "one call per row"),
+            // 10 × 4 tiles of the top half, each also mirrored.
+            Algorithm::Fast => assert_eq!(stats.draw_calls, 2 * 10 * 4),
+        }
+        println!(
+            "{algorithm:?}: {} fill_solid, {} fill_contiguous",
+            target.fill_solid, target.fill_contiguous
+        );
+    }
+}
+
+#[test]
+fn fast_full_view_does_under_a_tenth_of_the_naive_iterations() {
+    let case = &CASES[0];
+    let view = view_of(case);
+    let naive: u64 = model(None, (-0.75, 0.0), 3.5, case.size, case.max)
+        .iter()
+        .map(|&d| u64::from(d))
+        .sum();
+    let (_, fast) = render(view, Algorithm::Fast);
+    let fraction = fast.iterations as f64 / naive as f64;
+    println!(
+        "fast: {} iterations = {fraction:.4} of naive {naive}; {} pixels computed",
+        fast.iterations, fast.pixels
+    );
+    assert!(fraction < 0.10, "{fraction}");
+}
+
+#[test]
+fn rendering_in_steps_gives_the_same_picture() {
+    let view = view_of(&CASES[1]);
+    let (whole, _) = render(view, Algorithm::Fast);
+    let mut sink = Dwells::new(view.size());
+    let mut render = Render::new(view, Algorithm::Fast);
+    let mut steps = 0;
+    let mut last = 0;
+    loop {
+        let progress = render.step(&mut sink, 20_000).unwrap();
+        assert!(progress.done > last || progress.is_complete());
+        last = progress.done;
+        steps += 1;
+        if progress.is_complete() {
+            break;
+        }
+    }
+    assert!(steps > 3, "a small budget takes several steps ({steps})");
+    assert_eq!(sink.values, whole.values);
+}
+
+proptest! {
+    /// Whatever the cardioid/bulb test marks inside (a 1×1 exact render with no iterations)
+    /// does not escape in 20,000 f64 iterations.
+    #[test]
+    fn the_cardioid_test_never_marks_an_escaping_point(re in -2.0f64..0.5, im in 0.0f64..1.2) {
+        let view = View::new(Fractal::Mandelbrot, (Coord::from_f64(re).unwrap(), Coord::from_f64(im).unwrap()), Coord::parse("0.001").unwrap(), Size::new(1, 1), 50).unwrap();
+        let (dwell, stats) = render(view, Algorithm::Exact);
+        if stats.iterations == 0 && dwell.values[0] == 50 {
+            let (mut x, mut y) = (0.0f64, 0.0f64);
+            for _ in 0..20_000 {
+                (x, y) = (x * x - y * y + re, 2.0 * x * y + im);
+                prop_assert!(x * x + y * y <= 4.0, "{re},{im} escapes");
+            }
+        }
+    }
+}
