@@ -8,6 +8,8 @@ use std::path::PathBuf;
 pub enum Command {
     /// `render lsystem ...`
     RenderLSystem(LSystemArgs),
+    /// `render mandelbrot ...` and `render julia --c RE,IM ...`
+    RenderEscape(EscapeArgs),
     /// `list PATH.l`
     List(PathBuf),
     /// `gallery [--out DIR]`
@@ -57,6 +59,22 @@ pub struct LSystemArgs {
     pub common: Common,
 }
 
+/// `render mandelbrot` / `render julia`'s arguments, as text checked by the core.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EscapeArgs {
+    /// `None` for the Mandelbrot set, the parameter `(re, im)` for a Julia set.
+    pub julia: Option<(String, String)>,
+    pub centre: (String, String),
+    pub width: String,
+    pub max_iterations: u32,
+    pub algorithm: tinyfractal::Algorithm,
+    /// `None` for automatic.
+    pub tier: Option<tinyfractal::Tier>,
+    pub palette: String,
+    pub common: Common,
+    pub dwell: Option<PathBuf>,
+}
+
 /// A usage mistake, with what to do about it.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct UsageError(pub String);
@@ -78,15 +96,22 @@ USAGE:
   tinyfractal render lsystem --file PATH.l --name NAME --order N [common options]
   tinyfractal render lsystem --axiom STR --rule C=STR [--rule ...] (--angle N | --angle-deg DEG)
                              [--draw-symbols CHARS] [--dialect fractint|abop] --order N [common]
+  tinyfractal render mandelbrot [--center RE,IM] [--width W] [--max-iter N]
+      [--algorithm exact|fast] [--precision auto|narrow|standard|deep] [--palette NAME] [common]
+  tinyfractal render julia --c RE,IM [same options as mandelbrot]
   tinyfractal list PATH.l            the systems in a file, one name a line
   tinyfractal gallery [--out DIR]    render the gallery (what `cargo run --release` does)
 
 COMMON OPTIONS:
   --size WxH        picture size in pixels (default 320x240)
   --out PNG         write the picture there (default: NAME.png)
-  --segments TXT    write every drawn segment, `x0 y0 x1 y1` in turtle units
+  --segments TXT    (lsystem) write every drawn segment, `x0 y0 x1 y1` in turtle units
+  --dwell TXT       (mandelbrot, julia) write `W H MAXITER`, then H lines of W dwells
   --stats           print one line of statistics
   --window          show the picture in a window (needs the `window` feature)
+
+DEFAULTS (mandelbrot, julia): --center -0.75,0 --width 3.5 --max-iter 256 --algorithm fast
+  --precision auto --palette classic. Palettes: classic, fire, gray, bands, two-color.
 ";
 
 /// Parses the arguments after the program name.
@@ -123,10 +148,16 @@ pub fn parse(args: &[String]) -> Result<Command, UsageError> {
                 let rest: Vec<&str> = words.collect();
                 parse_lsystem(&rest).map(Command::RenderLSystem)
             }
+            Some(scene @ ("mandelbrot" | "julia")) => {
+                let rest: Vec<&str> = words.collect();
+                parse_escape(scene == "julia", &rest).map(Command::RenderEscape)
+            }
             Some(other) => Err(usage(format!(
-                "unknown scene `{other}`: this version renders `lsystem`"
+                "unknown scene `{other}`: use lsystem, mandelbrot or julia"
             ))),
-            None => Err(usage("`render` needs a scene: `render lsystem ...`")),
+            None => Err(usage(
+                "`render` needs a scene: lsystem, mandelbrot or julia",
+            )),
         },
         Some(other) => Err(usage(format!("unknown command `{other}`"))),
     }
@@ -286,6 +317,81 @@ fn parse_lsystem(words: &[&str]) -> Result<LSystemArgs, UsageError> {
     })
 }
 
+fn parse_pair(flag: &str, text: &str) -> Result<(String, String), UsageError> {
+    let (re, im) = text
+        .split_once(',')
+        .ok_or_else(|| usage(format!("{flag}: `{text}` is not RE,IM, e.g. -0.75,0")))?;
+    Ok((re.trim().to_string(), im.trim().to_string()))
+}
+
+fn parse_escape(julia: bool, words: &[&str]) -> Result<EscapeArgs, UsageError> {
+    let mut args = EscapeArgs {
+        julia: None,
+        centre: ("-0.75".into(), "0".into()),
+        width: "3.5".into(),
+        max_iterations: 256,
+        algorithm: tinyfractal::Algorithm::Fast,
+        tier: None,
+        palette: "classic".into(),
+        common: Common {
+            width: 320,
+            height: 240,
+            out: None,
+            segments: None,
+            stats: false,
+            window: false,
+        },
+        dwell: None,
+    };
+    let mut options = Options::new(words);
+    while let Some(flag) = options.next_flag()? {
+        match flag {
+            "--c" if julia => args.julia = Some(parse_pair(flag, options.value(flag)?)?),
+            "--center" | "--centre" => args.centre = parse_pair(flag, options.value(flag)?)?,
+            "--width" => args.width = options.value(flag)?.to_string(),
+            "--max-iter" => args.max_iterations = parse_number(flag, options.value(flag)?)?,
+            "--algorithm" => {
+                args.algorithm = match options.value(flag)? {
+                    "exact" => tinyfractal::Algorithm::Exact,
+                    "fast" => tinyfractal::Algorithm::Fast,
+                    other => {
+                        return Err(usage(format!(
+                            "--algorithm: `{other}` is not `exact` or `fast`"
+                        )))
+                    }
+                }
+            }
+            "--precision" => {
+                let name = options.value(flag)?;
+                args.tier = match name {
+                    "auto" => None,
+                    _ => Some(
+                        tinyfractal::Tier::ALL
+                            .into_iter()
+                            .find(|tier| tier.name() == name)
+                            .ok_or_else(|| {
+                                usage(format!(
+                                    "--precision: `{name}` is not auto, narrow, standard or deep"
+                                ))
+                            })?,
+                    ),
+                }
+            }
+            "--palette" => args.palette = options.value(flag)?.to_string(),
+            "--size" => (args.common.width, args.common.height) = parse_size(options.value(flag)?)?,
+            "--out" => args.common.out = Some(PathBuf::from(options.value(flag)?)),
+            "--dwell" => args.dwell = Some(PathBuf::from(options.value(flag)?)),
+            "--stats" => args.common.stats = true,
+            "--window" => args.common.window = true,
+            _ => return Err(usage(format!("unknown option `{flag}`"))),
+        }
+    }
+    if julia && args.julia.is_none() {
+        return Err(usage("`render julia` needs --c RE,IM"));
+    }
+    Ok(args)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -322,7 +428,11 @@ mod tests {
             "render lsystem --axiom F --angle 4 --order two",
             "render lsystem --axiom F --rule FF=F --angle 4 --order 1",
             "render lsystem --axiom F --angle 4 --order 1 --size 10",
-            "render mandelbrot",
+            "render julia",
+            "render mandelbrot --center 1",
+            "render mandelbrot --algorithm slow",
+            "render mandelbrot --precision huge",
+            "render mandelbrot --c 0,0",
             "frobnicate",
         ] {
             assert!(parse(&args(bad)).is_err(), "{bad}");

@@ -118,46 +118,128 @@ pub const SCENES: &[Scene] = &[
     },
 ];
 
+/// An escape-time gallery picture.
+pub struct EscapeScene {
+    pub name: &'static str,
+    pub julia: Option<(&'static str, &'static str)>,
+    pub centre: (&'static str, &'static str),
+    pub width: &'static str,
+    pub max_iterations: u32,
+    pub palette: &'static str,
+}
+
+pub const ESCAPE_SCENES: &[EscapeScene] = &[
+    EscapeScene {
+        name: "mandelbrot",
+        julia: None,
+        centre: ("-0.75", "0"),
+        width: "3.5",
+        max_iterations: 256,
+        palette: "classic",
+    },
+    EscapeScene {
+        name: "seahorse-valley",
+        julia: None,
+        centre: ("-0.7435", "0.1314"),
+        width: "0.02",
+        max_iterations: 512,
+        palette: "fire",
+    },
+    EscapeScene {
+        name: "julia",
+        julia: Some(("-0.8", "0.156")),
+        centre: ("0", "0"),
+        width: "3.2",
+        max_iterations: 300,
+        palette: "classic",
+    },
+    EscapeScene {
+        // Width 10^-9: beyond the 32-bit tier, computed in Q60 with 128-bit products.
+        name: "deep-zoom",
+        julia: None,
+        centre: ("-0.743643887037151", "0.131825904205330"),
+        width: "0.000000001",
+        max_iterations: 4000,
+        palette: "fire",
+    },
+];
+
+fn row(scene: &str, detail: &str, work: &str, elapsed: std::time::Duration, file: &Path) {
+    println!(
+        "| {:<22} | {:<14} | {:>18} | {:>9.3} | {}",
+        scene,
+        detail,
+        work,
+        elapsed.as_secs_f64() * 1e3,
+        file.display()
+    );
+}
+
 /// Renders every scene into `out` and prints a table; returns whether all succeeded.
 pub fn run(out: &Path) -> bool {
     println!(
-        "| {:<22} | {:>5} | {:>8} | {:>9} | {:>9} | file",
-        "scene", "order", "segments", "max_stack", "ms"
+        "| {:<22} | {:<14} | {:>18} | {:>9} | file",
+        "scene", "detail", "work", "ms"
     );
-    println!(
-        "|{:-<24}|{:->7}|{:->10}|{:->11}|{:->11}|-----",
-        "", "", "", "", ""
-    );
+    println!("|{:-<24}|{:-<16}|{:->20}|{:->11}|-----", "", "", "", "");
     let mut ok = true;
-    for scene in SCENES {
-        let path = out.join(format!("{}.png", scene.name));
-        let result = scene.grammar().and_then(|grammar| {
-            crate::scene::render_oriented(&grammar, scene.order, 320, 240, scene.orientation)
-        });
-        match result {
-            Ok(rendered) => match crate::output::save_png(&rendered.display, &path) {
-                Ok(()) => println!(
-                    "| {:<22} | {:>5} | {:>8} | {:>9} | {:>9.3} | {}",
-                    scene.name,
-                    scene.order,
-                    rendered.stats.segments,
-                    rendered.stats.max_stack,
-                    rendered.elapsed.as_secs_f64() * 1e3,
-                    path.display()
-                ),
+    let mut report =
+        |name: &str, result: Result<(String, String, std::time::Duration), String>, path: &Path| {
+            match result {
+                Ok((detail, work, elapsed)) => row(name, &detail, &work, elapsed, path),
                 Err(error) => {
-                    eprintln!(
-                        "tinyfractal: error: cannot write {}: {error}",
-                        path.display()
-                    );
+                    eprintln!("tinyfractal: error: {name}: {error}");
                     ok = false;
                 }
-            },
-            Err(error) => {
-                eprintln!("tinyfractal: error: {}: {error}", scene.name);
-                ok = false;
             }
-        }
+        };
+    for scene in SCENES {
+        let path = out.join(format!("{}.png", scene.name));
+        let result = scene
+            .grammar()
+            .and_then(|grammar| {
+                crate::scene::render_oriented(&grammar, scene.order, 320, 240, scene.orientation)
+            })
+            .map_err(|e| e.to_string())
+            .and_then(|rendered| {
+                save(&rendered.display, &path)?;
+                Ok((
+                    format!("order {}", scene.order),
+                    format!("{} segments", rendered.stats.segments),
+                    rendered.elapsed,
+                ))
+            });
+        report(scene.name, result, &path);
+    }
+    for scene in ESCAPE_SCENES {
+        let path = out.join(format!("{}.png", scene.name));
+        let request = crate::escape_scene::Request {
+            julia: scene.julia,
+            centre: scene.centre,
+            width: scene.width,
+            size: embedded_graphics::geometry::Size::new(320, 240),
+            max_iterations: scene.max_iterations,
+            algorithm: tinyfractal::Algorithm::Fast,
+            tier: None,
+            palette: scene.palette,
+        };
+        let result = crate::escape_scene::render(&request).and_then(|rendered| {
+            save(&rendered.display, &path)?;
+            Ok((
+                format!("{} tier", rendered.stats.tier.name()),
+                format!("{} iterations", rendered.stats.iterations),
+                rendered.elapsed,
+            ))
+        });
+        report(scene.name, result, &path);
     }
     ok
+}
+
+fn save(
+    display: &embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>,
+    path: &Path,
+) -> Result<(), String> {
+    crate::output::save_png(display, path)
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))
 }

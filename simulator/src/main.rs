@@ -2,6 +2,7 @@
 //! with the `window` feature, `--window` also shows them.
 
 mod args;
+mod escape_scene;
 mod gallery;
 mod output;
 mod palette;
@@ -10,7 +11,7 @@ mod scene;
 use std::path::Path;
 use std::process::ExitCode;
 
-use args::{Command, InlineAngle, LSystemArgs, Source};
+use args::{Command, EscapeArgs, InlineAngle, LSystemArgs, Source};
 use tinyfractal::{Angle, Grammar, LFile, Real};
 
 fn main() -> ExitCode {
@@ -36,6 +37,7 @@ fn main() -> ExitCode {
             }
         }
         Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
+        Command::RenderEscape(escape) => render_escape(&escape),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -128,6 +130,47 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     }
     if common.stats {
         println!("{}", scene::stats_line(&rendered));
+    }
+    if common.window {
+        show(&rendered.display)?;
+    }
+    Ok(())
+}
+
+fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
+    let common = &arguments.common;
+    let name = if arguments.julia.is_some() {
+        "julia"
+    } else {
+        "mandelbrot"
+    };
+    let request = escape_scene::Request {
+        julia: arguments
+            .julia
+            .as_ref()
+            .map(|(re, im)| (re.as_str(), im.as_str())),
+        centre: (&arguments.centre.0, &arguments.centre.1),
+        width: &arguments.width,
+        size: embedded_graphics::geometry::Size::new(common.width, common.height),
+        max_iterations: arguments.max_iterations,
+        algorithm: arguments.algorithm,
+        tier: arguments.tier,
+        palette: &arguments.palette,
+    };
+    // Everything is computed before anything is written: an error leaves no file behind.
+    let rendered = escape_scene::render(&request).map_err(|e| format!("{name}: {e}"))?;
+    let out = common
+        .out
+        .clone()
+        .unwrap_or_else(|| Path::new(&format!("{name}.png")).to_path_buf());
+    output::save_png(&rendered.display, &out)
+        .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+    if let Some(path) = &arguments.dwell {
+        output::save_text(path, &escape_scene::dwell_text(&rendered))
+            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    if common.stats {
+        println!("{}", escape_scene::stats_line(&rendered));
     }
     if common.window {
         show(&rendered.display)?;

@@ -234,4 +234,137 @@ fn gallery_renders_every_scene() {
         assert!(table.contains(scene), "{table}");
         assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");
     }
+    assert!(
+        table
+            .lines()
+            .any(|l| l.contains("deep-zoom") && l.contains("deep tier")),
+        "{table}"
+    );
+}
+
+fn read_dwell(path: &Path) -> (Vec<u32>, Vec<Vec<u32>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .unwrap()
+        .split(' ')
+        .map(|n| n.parse().unwrap())
+        .collect();
+    let rows = lines
+        .map(|l| l.split(' ').map(|n| n.parse().unwrap()).collect())
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn mandelbrot_dwell_file_and_stats() {
+    let dir = scratch("mandelbrot");
+    let (png, txt) = (dir.join("m.png"), dir.join("m.txt"));
+    let output = run(&[
+        "render",
+        "mandelbrot",
+        "--size",
+        "40x30",
+        "--max-iter",
+        "100",
+        "--algorithm",
+        "exact",
+        "--out",
+        png.to_str().unwrap(),
+        "--dwell",
+        txt.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let stats = stdout(&output);
+    for key in [
+        "iterations=",
+        "pixels=1200 ",
+        "draw_calls=30 ",
+        "tier=standard",
+        "elapsed_ms=",
+    ] {
+        assert!(stats.contains(key), "{stats}");
+    }
+    let (header, rows) = read_dwell(&txt);
+    assert_eq!(header, vec![40, 30, 100]);
+    assert_eq!(rows.len(), 30);
+    assert!(rows.iter().all(|r| r.len() == 40));
+    // Default view: centre -0.75,0, width 3.5. Independent spot checks with f64:
+    // pixel (20, 15) samples c = (-0.75 + 0.5·3.5/40, -0.5·3.5/40), inside the cardioid.
+    assert_eq!(rows[15][20], 100);
+    // Pixel (0, 0) samples c = (-2.456.., 1.269..), outside radius 2: dwell 1.
+    assert_eq!(rows[0][0], 1);
+    // Symmetric about the real axis.
+    for j in 0..15 {
+        assert_eq!(rows[j], rows[29 - j], "row {j}");
+    }
+}
+
+#[test]
+fn julia_needs_its_parameter_and_mirrors_through_the_origin() {
+    let dir = scratch("julia");
+    let txt = dir.join("j.txt");
+    let output = run(&["render", "julia", "--size", "30x20"]);
+    assert_eq!(output.status.code(), Some(2));
+    let output = run(&[
+        "render",
+        "julia",
+        "--c",
+        "-0.8,0.156",
+        "--center",
+        "0,0",
+        "--width",
+        "3.2",
+        "--size",
+        "31x21",
+        "--max-iter",
+        "200",
+        "--out",
+        dir.join("j.png").to_str().unwrap(),
+        "--dwell",
+        txt.to_str().unwrap(),
+        "--palette",
+        "bands",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let (_, rows) = read_dwell(&txt);
+    for j in 0..21 {
+        for i in 0..31 {
+            assert_eq!(rows[j][i], rows[20 - j][30 - i], "({i}, {j})");
+        }
+    }
+}
+
+#[test]
+fn escape_time_errors() {
+    let dir = scratch("escape-errors");
+    let out = dir.join("never.png");
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["mandelbrot", "--width", "0"], "view is out of range"),
+        (vec!["mandelbrot", "--max-iter", "0"], "max-iter 0"),
+        (
+            vec!["mandelbrot", "--max-iter", "100000"],
+            "max-iter 100000",
+        ),
+        (
+            vec!["mandelbrot", "--width", "0.00000000000001"],
+            "too deep",
+        ),
+        (vec!["mandelbrot", "--size", "0x5"], "zero width or height"),
+        (vec!["mandelbrot", "--center", "x,0"], "--center: `x`"),
+        (vec!["mandelbrot", "--palette", "neon"], "--palette: `neon`"),
+        (vec!["julia", "--c", "3,3"], "view is out of range"),
+    ];
+    for (args, message) in cases {
+        let mut full = vec!["render"];
+        full.extend(args.iter().copied());
+        full.extend(["--out", out.to_str().unwrap()]);
+        let output = run(&full);
+        assert_eq!(output.status.code(), Some(1), "{full:?}");
+        let err = stderr(&output);
+        assert!(err.contains(message), "{full:?}: {err}");
+        assert!(!out.exists(), "{full:?} left a file");
+    }
 }

@@ -1,0 +1,196 @@
+//! Rendering an escape-time view on the host: dwells into a buffer (for `--dwell`), then
+//! coloured into a simulator display.
+
+use std::time::{Duration, Instant};
+
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+use embedded_graphics_simulator::SimulatorDisplay;
+use tinyfractal::{
+    Algorithm, Bands, Coord, DwellSink, Error, Fractal, Gradient, Palette, Render, RenderStats,
+    Tier, TwoColor, View,
+};
+
+/// Dwells, row-major.
+pub struct DwellBuffer {
+    pub size: Size,
+    pub values: Vec<u16>,
+}
+
+impl DwellSink for DwellBuffer {
+    type Error = std::convert::Infallible;
+
+    fn dwells<I: Iterator<Item = u16>>(
+        &mut self,
+        area: &Rectangle,
+        dwells: I,
+    ) -> Result<(), Self::Error> {
+        for (p, dwell) in area.points().zip(dwells) {
+            let index = p.y as usize * self.size.width as usize + p.x as usize;
+            if let Some(cell) = self.values.get_mut(index) {
+                *cell = dwell;
+            }
+        }
+        Ok(())
+    }
+
+    fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error> {
+        self.dwells(area, std::iter::repeat(dwell))
+    }
+}
+
+/// A rendered view.
+pub struct Rendered {
+    pub view: View,
+    pub dwells: DwellBuffer,
+    pub display: SimulatorDisplay<Rgb888>,
+    pub stats: RenderStats,
+    pub elapsed: Duration,
+}
+
+/// What to render, as the user wrote it.
+pub struct Request<'a> {
+    pub julia: Option<(&'a str, &'a str)>,
+    pub centre: (&'a str, &'a str),
+    pub width: &'a str,
+    pub size: Size,
+    pub max_iterations: u32,
+    pub algorithm: Algorithm,
+    pub tier: Option<Tier>,
+    pub palette: &'a str,
+}
+
+fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
+    Coord::parse(text).ok_or_else(|| format!("{what}: `{text}` is not a number between -8 and 8"))
+}
+
+/// Checks and renders a request.
+pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
+    let fractal = match request.julia {
+        None => Fractal::Mandelbrot,
+        Some((re, im)) => Fractal::Julia {
+            re: coordinate("--c", re)?,
+            im: coordinate("--c", im)?,
+        },
+    };
+    let centre = (
+        coordinate("--center", request.centre.0)?,
+        coordinate("--center", request.centre.1)?,
+    );
+    let width = coordinate("--width", request.width)?;
+    let palette = palette(request.palette)?;
+    let failed = |e: Error| e.to_string();
+    let mut view =
+        View::new(fractal, centre, width, request.size, request.max_iterations).map_err(failed)?;
+    if let Some(tier) = request.tier {
+        view = view.with_tier(tier);
+    }
+    let mut dwells = DwellBuffer {
+        size: request.size,
+        values: vec![0; (request.size.width * request.size.height) as usize],
+    };
+    let started = Instant::now();
+    let Ok(stats) = Render::new(view, request.algorithm).run(&mut dwells);
+    let elapsed = started.elapsed();
+    let mut display = SimulatorDisplay::new(request.size);
+    let max = u16::try_from(request.max_iterations).unwrap_or(u16::MAX);
+    let colours = dwells.values.iter().map(|&d| palette.color(d, max));
+    let Ok(()) = display.fill_contiguous(&display.bounding_box(), colours);
+    Ok(Rendered {
+        view,
+        dwells,
+        display,
+        stats,
+        elapsed,
+    })
+}
+
+/// The `--dwell` text: `W H MAXITER`, then H lines of W dwells.
+pub fn dwell_text(rendered: &Rendered) -> String {
+    let size = rendered.dwells.size;
+    let mut text = format!(
+        "{} {} {}\n",
+        size.width,
+        size.height,
+        rendered.view.max_iterations()
+    );
+    for row in rendered.dwells.values.chunks(size.width as usize) {
+        let line: Vec<String> = row.iter().map(u16::to_string).collect();
+        text.push_str(&line.join(" "));
+        text.push('\n');
+    }
+    text
+}
+
+/// The one-line `--stats` report.
+pub fn stats_line(rendered: &Rendered) -> String {
+    let s = rendered.stats;
+    format!(
+        "iterations={} pixels={} draw_calls={} tier={} elapsed_ms={:.3}",
+        s.iterations,
+        s.pixels,
+        s.draw_calls,
+        s.tier.name(),
+        rendered.elapsed.as_secs_f64() * 1e3
+    )
+}
+
+/// The palettes by name.
+pub enum HostPalette {
+    Gradient(Box<Gradient<Rgb888, 256>>),
+    Bands(Bands<'static, Rgb888>),
+    TwoColor(TwoColor<Rgb888>),
+}
+
+impl Palette for HostPalette {
+    type Color = Rgb888;
+
+    fn color(&self, dwell: u16, max: u16) -> Rgb888 {
+        match self {
+            Self::Gradient(p) => p.color(dwell, max),
+            Self::Bands(p) => p.color(dwell, max),
+            Self::TwoColor(p) => p.color(dwell, max),
+        }
+    }
+}
+
+const BANDS: [(u16, Rgb888); 5] = [
+    (4, Rgb888::new(0x10, 0x10, 0x40)),
+    (8, Rgb888::new(0x20, 0x40, 0xA0)),
+    (16, Rgb888::new(0x40, 0xA0, 0xE0)),
+    (32, Rgb888::new(0xF0, 0xF0, 0x80)),
+    (64, Rgb888::new(0xF0, 0x80, 0x20)),
+];
+
+pub fn palette(name: &str) -> Result<HostPalette, String> {
+    let gradient = |keys: &[Rgb888]| {
+        Gradient::new(keys, Rgb888::BLACK)
+            .map(|g| HostPalette::Gradient(Box::new(g)))
+            .ok_or_else(|| "empty gradient".to_string())
+    };
+    match name {
+        "classic" => gradient(&[
+            Rgb888::new(0x00, 0x07, 0x64),
+            Rgb888::new(0x20, 0x6B, 0xCB),
+            Rgb888::new(0xED, 0xFF, 0xFF),
+            Rgb888::new(0xFF, 0xAA, 0x00),
+            Rgb888::new(0x00, 0x02, 0x00),
+        ]),
+        "fire" => gradient(&[
+            Rgb888::new(0x20, 0x00, 0x00),
+            Rgb888::new(0xC0, 0x20, 0x00),
+            Rgb888::new(0xFF, 0xC0, 0x00),
+            Rgb888::new(0xFF, 0xFF, 0xC0),
+        ]),
+        "gray" => gradient(&[Rgb888::new(0x20, 0x20, 0x20), Rgb888::WHITE]),
+        "bands" => Bands::new(&BANDS, Rgb888::BLACK)
+            .map(HostPalette::Bands)
+            .ok_or_else(|| "empty bands".to_string()),
+        "two-color" => Ok(HostPalette::TwoColor(TwoColor {
+            inside: Rgb888::BLACK,
+            outside: Rgb888::WHITE,
+        })),
+        other => Err(format!(
+            "--palette: `{other}` is not classic, fire, gray, bands or two-color"
+        )),
+    }
+}
