@@ -552,3 +552,66 @@ proptest! {
         }
     }
 }
+
+/// Every palette kind works with the usual colour types, built from `Rgb888` keys, and a
+/// fast render writes each pixel of a MockDisplay exactly once (it panics on overdraw).
+#[test]
+fn palettes_for_every_colour_type() {
+    use embedded_graphics::{
+        mock_display::MockDisplay,
+        pixelcolor::{BinaryColor, Gray4, Rgb565, Rgb888},
+    };
+    use tinyfractal::{Bands, Gradient};
+    let view = View::new(
+        Fractal::Mandelbrot,
+        (Coord::parse("-0.75").unwrap(), Coord::default()),
+        Coord::parse("3.5").unwrap(),
+        Size::new(64, 48),
+        60,
+    )
+    .unwrap();
+    let keys = [Rgb888::BLUE, Rgb888::WHITE, Rgb888::new(255, 160, 0)];
+
+    let mut binary = MockDisplay::<BinaryColor>::new();
+    EscapeTime::new(
+        view,
+        TwoColor {
+            inside: BinaryColor::On,
+            outside: BinaryColor::Off,
+        },
+    )
+    .draw(&mut binary)
+    .unwrap();
+    // The cardioid's centre region is inside; the corners are outside.
+    assert_eq!(binary.get_pixel(Point::new(40, 24)), Some(BinaryColor::On));
+    assert_eq!(binary.get_pixel(Point::new(0, 0)), Some(BinaryColor::Off));
+
+    let mut gray = MockDisplay::<Gray4>::new();
+    let gradient = Gradient::<Gray4, 16>::new(&keys, Gray4::BLACK).unwrap();
+    EscapeTime::new(view, &gradient).draw(&mut gray).unwrap();
+    assert_eq!(gray.get_pixel(Point::new(40, 24)), Some(Gray4::BLACK));
+
+    let mut rgb = MockDisplay::<Rgb565>::new();
+    let bands = [(2, Rgb565::BLUE), (5, Rgb565::GREEN), (20, Rgb565::RED)];
+    EscapeTime::new(view, Bands::new(&bands, Rgb565::BLACK).unwrap())
+        .draw(&mut rgb)
+        .unwrap();
+    // Pixel (0, 0) samples c ≈ (-2.45, 1.28): dwell 1, the first band.
+    assert_eq!(rgb.get_pixel(Point::new(0, 0)), Some(Rgb565::BLUE));
+
+    // Cycling: an offset of k shifts dwell d to the colour of d + k.
+    let cycled = gradient.with_offset(3);
+    use tinyfractal::Palette;
+    assert_eq!(cycled.color(2, 60), gradient.color(5, 60));
+    assert_eq!(
+        cycled.color(60, 60),
+        Gray4::BLACK,
+        "inside keeps its colour"
+    );
+}
+
+#[test]
+fn a_render_fits_in_a_few_kilobytes() {
+    let bytes = core::mem::size_of::<Render>();
+    assert!(bytes <= 2200, "Render is {bytes} bytes");
+}

@@ -11,8 +11,10 @@
 //! axis, turned half round for a Julia view centred on the origin (the kernel keeps both
 //! symmetries exactly).
 //!
-//! RAM: the tile's dwells (32×32×2 = 2 KiB) and a subdivision stack of 32 rectangles
-//! (256 bytes), whatever the view size; nothing is read back from the target.
+//! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB) and the view, about 2.1 KiB;
+//! while a tile is computed, a subdivision stack of 32 rectangles (512 bytes) is on the
+//! stack. That is the worst case for a 320×240 view or any other: nothing is read back
+//! from the target.
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use heapless::Vec;
