@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{koch_snowflake, pixel, Bitmap};
+use common::{koch_snowflake, pixel, Bitmap, Counting};
 use embedded_graphics::{
     mock_display::MockDisplay,
     pixelcolor::BinaryColor,
@@ -97,61 +97,6 @@ fn orientation_rotates_by_quarter_turns() {
     );
 }
 
-/// Counts what reaches the target.
-#[derive(Default)]
-struct Counting {
-    inner: Option<Bitmap>,
-    draw_iter_pixels: usize,
-    fill_solid_calls: usize,
-    fill_contiguous_calls: usize,
-}
-
-impl Counting {
-    fn new(width: u32, height: u32) -> Self {
-        Self {
-            inner: Some(Bitmap::new(width, height)),
-            ..Self::default()
-        }
-    }
-    fn bitmap(&self) -> &Bitmap {
-        self.inner.as_ref().unwrap()
-    }
-}
-
-impl OriginDimensions for Counting {
-    fn size(&self) -> Size {
-        self.bitmap().size
-    }
-}
-
-impl DrawTarget for Counting {
-    type Color = BinaryColor;
-    type Error = core::convert::Infallible;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), Self::Error> {
-        let pixels: Vec<_> = pixels.into_iter().collect();
-        self.draw_iter_pixels += pixels.len();
-        self.inner.as_mut().unwrap().draw_iter(pixels)
-    }
-
-    fn fill_solid(&mut self, area: &Rectangle, color: BinaryColor) -> Result<(), Self::Error> {
-        self.fill_solid_calls += 1;
-        self.inner.as_mut().unwrap().fill_solid(area, color)
-    }
-
-    fn fill_contiguous<I: IntoIterator<Item = BinaryColor>>(
-        &mut self,
-        area: &Rectangle,
-        colors: I,
-    ) -> Result<(), Self::Error> {
-        self.fill_contiguous_calls += 1;
-        self.inner.as_mut().unwrap().fill_contiguous(area, colors)
-    }
-}
-
 fn hilbert() -> Grammar<'static> {
     Grammar::new(Dialect::Abop, "A", Angle::Divisions(4))
         .unwrap()
@@ -163,7 +108,7 @@ fn hilbert() -> Grammar<'static> {
 
 #[test]
 fn axis_aligned_lines_are_one_fill_solid_each() {
-    let mut target = Counting::new(128, 128);
+    let mut target = Counting::new(Bitmap::new(128, 128));
     let hilbert = hilbert();
     let drawing = LSystem::new(&hilbert, 5)
         .fit(target.bounding_box(), &[BinaryColor::On])
@@ -181,7 +126,7 @@ fn axis_aligned_lines_are_one_fill_solid_each() {
 #[test]
 fn runs_match_per_pixel_lines() {
     let grammar = hilbert();
-    let mut fast = Counting::new(128, 128);
+    let mut fast = Counting::new(Bitmap::new(128, 128));
     let drawing = LSystem::new(&grammar, 5)
         .fit(fast.bounding_box(), &[BinaryColor::On])
         .unwrap();
@@ -196,7 +141,7 @@ fn runs_match_per_pixel_lines() {
             .draw(&mut slow)
             .unwrap();
     }
-    assert_eq!(fast.bitmap().pixels, slow.pixels);
+    assert_eq!(fast.inner.pixels, slow.pixels);
     assert!(slow.lit() > 1000);
 }
 
@@ -205,7 +150,7 @@ fn runs_match_per_pixel_lines() {
 #[test]
 fn diagonal_runs_stay_on_the_line() {
     let snowflake = koch_snowflake();
-    let mut target = Counting::new(200, 200);
+    let mut target = Counting::new(Bitmap::new(200, 200));
     let drawing = LSystem::new(&snowflake, 3)
         .fit(target.bounding_box(), &[BinaryColor::On])
         .unwrap();
@@ -226,7 +171,7 @@ fn diagonal_runs_stay_on_the_line() {
             (px - t * dx).hypot(py - t * dy) <= 0.75
         })
     };
-    let bitmap = target.bitmap();
+    let bitmap = &target.inner;
     for p in bitmap
         .bounding_box()
         .points()

@@ -1,7 +1,10 @@
 //! The escape-time engine against an f64 model written here from the definitions, plus its
 //! own promises: tiers, exact mirroring, safe cardioid test, typed errors, runs, steps.
 
-use embedded_graphics::{pixelcolor::Gray8, prelude::*, primitives::Rectangle};
+mod common;
+
+use common::{Bitmap, Counting};
+use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
 use tinyfractal::{
     Algorithm, Coord, DwellSink, Error, EscapeTime, Fractal, Render, Tier, TwoColor, View,
@@ -416,75 +419,24 @@ fn bad_views_are_typed_errors() {
     assert!(Error::ZoomTooDeep.to_string().contains("deepest tier"));
 }
 
-/// Counts what reaches a display.
-struct Counting {
-    draw_iter: usize,
-    fill_solid: usize,
-    fill_contiguous: usize,
-    pixels: usize,
-}
-
-impl OriginDimensions for Counting {
-    fn size(&self) -> Size {
-        Size::new(320, 240)
-    }
-}
-
-impl DrawTarget for Counting {
-    type Color = Gray8;
-    type Error = core::convert::Infallible;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), Self::Error> {
-        self.draw_iter += pixels.into_iter().count();
-        Ok(())
-    }
-
-    fn fill_contiguous<I: IntoIterator<Item = Gray8>>(
-        &mut self,
-        area: &Rectangle,
-        colors: I,
-    ) -> Result<(), Self::Error> {
-        self.fill_contiguous += 1;
-        self.pixels += colors
-            .into_iter()
-            .take(area.size.width as usize * area.size.height as usize)
-            .count();
-        Ok(())
-    }
-
-    fn fill_solid(&mut self, area: &Rectangle, _: Gray8) -> Result<(), Self::Error> {
-        self.fill_solid += 1;
-        self.pixels += (area.size.width * area.size.height) as usize;
-        Ok(())
-    }
-}
-
 #[test]
 fn output_goes_in_runs_never_pixel_by_pixel() {
     let view = view_of(&CASES[0]);
     let palette = TwoColor {
-        inside: Gray8::BLACK,
-        outside: Gray8::WHITE,
+        inside: BinaryColor::On,
+        outside: BinaryColor::Off,
     };
     for algorithm in [Algorithm::Exact, Algorithm::Fast] {
-        let mut target = Counting {
-            draw_iter: 0,
-            fill_solid: 0,
-            fill_contiguous: 0,
-            pixels: 0,
-        };
+        let mut target = Counting::new(Bitmap::new(320, 240));
         let stats = EscapeTime::new(view, palette)
             .with_algorithm(algorithm)
             .draw(&mut target)
             .unwrap();
-        assert_eq!(target.draw_iter, 0);
-        assert_eq!(target.pixels, 320 * 240, "each pixel sent once");
+        assert_eq!(target.draw_iter_pixels, 0);
+        assert_eq!(target.run_pixels, 320 * 240, "each pixel sent once");
         assert_eq!(
             stats.draw_calls as usize,
-            target.fill_solid + target.fill_contiguous
+            target.fill_solid_calls + target.fill_contiguous_calls
         );
         match algorithm {
             Algorithm::Exact => assert_eq!(stats.draw_calls, 240, "one call per row"),
@@ -493,7 +445,7 @@ fn output_goes_in_runs_never_pixel_by_pixel() {
         }
         println!(
             "{algorithm:?}: {} fill_solid, {} fill_contiguous",
-            target.fill_solid, target.fill_contiguous
+            target.fill_solid_calls, target.fill_contiguous_calls
         );
     }
 }

@@ -51,6 +51,33 @@ pub struct Common {
     pub window: bool,
 }
 
+impl Default for Common {
+    fn default() -> Self {
+        Self {
+            width: 320,
+            height: 240,
+            out: None,
+            segments: None,
+            stats: false,
+            window: false,
+        }
+    }
+}
+
+impl Common {
+    /// Takes one of the options every render has; false if `flag` is not one of them.
+    fn take_flag(&mut self, flag: &str, options: &mut Options<'_>) -> Result<bool, UsageError> {
+        match flag {
+            "--size" => (self.width, self.height) = parse_size(options.value(flag)?)?,
+            "--out" => self.out = Some(PathBuf::from(options.value(flag)?)),
+            "--stats" => self.stats = true,
+            "--window" => self.window = true,
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+}
+
 /// `render lsystem`'s arguments.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LSystemArgs {
@@ -218,16 +245,12 @@ fn parse_lsystem(words: &[&str]) -> Result<LSystemArgs, UsageError> {
     let mut draw_symbols = String::new();
     let mut dialect = None;
     let mut order = None;
-    let mut common = Common {
-        width: 320,
-        height: 240,
-        out: None,
-        segments: None,
-        stats: false,
-        window: false,
-    };
+    let mut common = Common::default();
     let mut options = Options::new(words);
     while let Some(flag) = options.next_flag()? {
+        if common.take_flag(flag, &mut options)? {
+            continue;
+        }
         match flag {
             "--file" => file = Some(PathBuf::from(options.value(flag)?)),
             "--name" => name = Some(options.value(flag)?.to_string()),
@@ -265,11 +288,7 @@ fn parse_lsystem(words: &[&str]) -> Result<LSystemArgs, UsageError> {
                 })
             }
             "--order" => order = Some(parse_number(flag, options.value(flag)?)?),
-            "--size" => (common.width, common.height) = parse_size(options.value(flag)?)?,
-            "--out" => common.out = Some(PathBuf::from(options.value(flag)?)),
             "--segments" => common.segments = Some(PathBuf::from(options.value(flag)?)),
-            "--stats" => common.stats = true,
-            "--window" => common.window = true,
             _ => return Err(usage(format!("unknown option `{flag}`"))),
         }
     }
@@ -333,18 +352,14 @@ fn parse_escape(julia: bool, words: &[&str]) -> Result<EscapeArgs, UsageError> {
         algorithm: tinyfractal::Algorithm::Fast,
         tier: None,
         palette: "classic".into(),
-        common: Common {
-            width: 320,
-            height: 240,
-            out: None,
-            segments: None,
-            stats: false,
-            window: false,
-        },
+        common: Common::default(),
         dwell: None,
     };
     let mut options = Options::new(words);
     while let Some(flag) = options.next_flag()? {
+        if args.common.take_flag(flag, &mut options)? {
+            continue;
+        }
         match flag {
             "--c" if julia => args.julia = Some(parse_pair(flag, options.value(flag)?)?),
             "--center" | "--centre" => args.centre = parse_pair(flag, options.value(flag)?)?,
@@ -378,11 +393,7 @@ fn parse_escape(julia: bool, words: &[&str]) -> Result<EscapeArgs, UsageError> {
                 }
             }
             "--palette" => args.palette = options.value(flag)?.to_string(),
-            "--size" => (args.common.width, args.common.height) = parse_size(options.value(flag)?)?,
-            "--out" => args.common.out = Some(PathBuf::from(options.value(flag)?)),
             "--dwell" => args.dwell = Some(PathBuf::from(options.value(flag)?)),
-            "--stats" => args.common.stats = true,
-            "--window" => args.common.window = true,
             _ => return Err(usage(format!("unknown option `{flag}`"))),
         }
     }

@@ -320,3 +320,65 @@ impl DrawTarget for Bitmap {
         Ok(())
     }
 }
+
+/// Wraps a target and counts what reaches it: per-pixel writes, runs, and pixels.
+pub struct Counting<T> {
+    pub inner: T,
+    pub draw_iter_pixels: usize,
+    pub fill_solid_calls: usize,
+    pub fill_contiguous_calls: usize,
+    /// Pixels covered by `fill_solid` and `fill_contiguous` areas.
+    pub run_pixels: usize,
+}
+
+impl<T> Counting<T> {
+    pub fn new(inner: T) -> Self {
+        Self {
+            inner,
+            draw_iter_pixels: 0,
+            fill_solid_calls: 0,
+            fill_contiguous_calls: 0,
+            run_pixels: 0,
+        }
+    }
+}
+
+impl<T: OriginDimensions> OriginDimensions for Counting<T> {
+    fn size(&self) -> Size {
+        self.inner.size()
+    }
+}
+
+impl<T: DrawTarget + OriginDimensions> DrawTarget for Counting<T> {
+    type Color = T::Color;
+    type Error = T::Error;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<T::Color>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), T::Error> {
+        let pixels: Vec<_> = pixels.into_iter().collect();
+        self.draw_iter_pixels += pixels.len();
+        self.inner.draw_iter(pixels)
+    }
+
+    fn fill_solid(
+        &mut self,
+        area: &embedded_graphics::primitives::Rectangle,
+        color: T::Color,
+    ) -> Result<(), T::Error> {
+        self.fill_solid_calls += 1;
+        self.run_pixels += (area.size.width * area.size.height) as usize;
+        self.inner.fill_solid(area, color)
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = T::Color>>(
+        &mut self,
+        area: &embedded_graphics::primitives::Rectangle,
+        colors: I,
+    ) -> Result<(), T::Error> {
+        self.fill_contiguous_calls += 1;
+        self.run_pixels += (area.size.width * area.size.height) as usize;
+        self.inner.fill_contiguous(area, colors)
+    }
+}
