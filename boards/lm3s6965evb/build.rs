@@ -1,0 +1,18 @@
+//! Links the firmware: the root `memory.x` (the LM3S6965) and cortex-m-rt's `link.x`.
+//!
+//! `-Tlink.x` comes from here rather than `.cargo/config.toml`, because a build started at
+//! the workspace root ignores the board's config, and the ELF would link silently broken.
+
+use std::{env, fs, path::PathBuf};
+
+fn main() {
+    let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
+    let memory = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../memory.x");
+    fs::copy(&memory, out.join("memory.x")).expect("memory.x at the repository root");
+    println!("cargo:rustc-link-search={}", out.display());
+    println!("cargo:rerun-if-changed={}", memory.display());
+    println!("cargo:rerun-if-changed=build.rs");
+    if env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("none") {
+        println!("cargo:rustc-link-arg-bins=-Tlink.x");
+    }
+}

@@ -1,0 +1,44 @@
+//! Firmware for the TI Stellaris LM3S6965 evaluation board (Cortex-M3), as QEMU emulates it:
+//! draws each scene on the SSD0323 OLED (128×64, 4-bit grey, on SSI0), says so over
+//! semihosting, and waits for the select button before the next one. The test harness
+//! presses it through QEMU's monitor (`sendkey ctrl`, the gamepad's select) after taking a
+//! screendump.
+#![cfg_attr(target_os = "none", no_std)]
+#![cfg_attr(target_os = "none", no_main)]
+
+#[cfg(target_os = "none")]
+mod board;
+
+#[cfg(target_os = "none")]
+mod firmware {
+    use cortex_m_rt::entry;
+    use cortex_m_semihosting::{debug, hprintln};
+    use panic_semihosting as _;
+    use tinyfractal_lm3s6965evb::{scenes::SCENES, Framebuffer};
+
+    use crate::board::Board;
+
+    #[entry]
+    fn main() -> ! {
+        let mut board = Board::init();
+        let mut framebuffer = Framebuffer::new();
+        for (index, (name, scene)) in SCENES.iter().enumerate() {
+            let result = scene.draw(&mut framebuffer);
+            board.show(&framebuffer);
+            match result {
+                Ok(work) => hprintln!("scene {} {} done: {:?}", index, name, work),
+                Err(error) => hprintln!("scene {} {} failed: {}", index, name, error),
+            }
+            board.wait_for_select();
+        }
+        hprintln!("all scenes done");
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::wfi();
+        }
+    }
+}
+
+/// On the host there is nothing to run: the firmware is built for `thumbv7m-none-eabi`.
+#[cfg(not(target_os = "none"))]
+fn main() {}
