@@ -6,6 +6,7 @@
 #![deny(missing_docs, unsafe_code)]
 
 pub mod framebuffer;
+pub mod measure;
 pub mod scenes;
 
 pub use framebuffer::Framebuffer;

@@ -7,6 +7,8 @@
 //! Without `qemu-system-arm` the test says so loudly and passes, except under `CI=true`,
 //! where it fails (`.ci/run` installs QEMU).
 
+mod common;
+
 use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::net::UnixStream;
 use std::path::{Path, PathBuf};
@@ -17,14 +19,6 @@ use std::time::{Duration, Instant};
 use tinyfractal_lm3s6965evb::{framebuffer, scenes::SCENES, Framebuffer};
 
 const MAGNIFY: usize = 4;
-
-fn qemu_available() -> bool {
-    Command::new("qemu-system-arm")
-        .arg("--version")
-        .stdout(Stdio::null())
-        .status()
-        .is_ok_and(|s| s.success())
-}
 
 /// Builds the firmware in its own target folder (the outer `cargo test` holds the main one).
 fn build_firmware() -> PathBuf {
@@ -109,15 +103,7 @@ fn read_ppm(path: &Path) -> (usize, usize, Vec<u8>) {
 
 #[test]
 fn firmware_matches_the_host_pixel_for_pixel() {
-    if !qemu_available() {
-        assert!(
-            std::env::var("CI").as_deref() != Ok("true"),
-            "qemu-system-arm is missing under CI: .ci/run must install it"
-        );
-        eprintln!(
-            "\n*** WARNING: qemu-system-arm not found: the QEMU firmware test did NOT run. ***"
-        );
-        eprintln!("*** Install it (apt-get install qemu-system-arm) to check the firmware. ***\n");
+    if !common::qemu_or_skip("the QEMU firmware test") {
         return;
     }
     let elf = build_firmware();

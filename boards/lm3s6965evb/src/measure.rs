@@ -1,0 +1,179 @@
+//! What the measuring firmware (`boards/qemu-measure`) runs, shared with the host test that
+//! checks it: a target that folds every pixel into a checksum, and the two baselines a user
+//! would write first.
+
+use core::convert::Infallible;
+
+use embedded_graphics::{pixelcolor::Gray4, prelude::*};
+
+/// A 128×64 target with no memory: every pixel written (position and grey, in order) is
+/// folded into an FNV-1a checksum, so the host can check the MCU drew the same thing.
+#[derive(Debug, Clone, Copy)]
+pub struct Checksum {
+    /// The checksum so far.
+    pub value: u32,
+    /// Pixels written.
+    pub pixels: u32,
+}
+
+impl Default for Checksum {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Checksum {
+    /// The empty checksum.
+    pub const fn new() -> Self {
+        Self {
+            value: 0x811C_9DC5,
+            pixels: 0,
+        }
+    }
+
+    fn fold(&mut self, byte: u8) {
+        self.value = (self.value ^ u32::from(byte)).wrapping_mul(0x0100_0193);
+    }
+}
+
+impl OriginDimensions for Checksum {
+    fn size(&self) -> Size {
+        Size::new(128, 64)
+    }
+}
+
+impl DrawTarget for Checksum {
+    type Color = Gray4;
+    type Error = Infallible;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<Gray4>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), Infallible> {
+        for Pixel(p, color) in pixels {
+            if (0..128).contains(&p.x) && (0..64).contains(&p.y) {
+                self.fold(p.x as u8);
+                self.fold(p.y as u8);
+                self.fold(color.into_storage());
+                self.pixels += 1;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A view for the baselines: centre, width, and the Julia parameter if any.
+#[derive(Debug, Clone, Copy)]
+pub struct BaselineView {
+    /// Centre (re, im).
+    pub centre: (f32, f32),
+    /// Width along the real axis.
+    pub width: f32,
+    /// The Julia parameter, or `None` for the Mandelbrot set.
+    pub julia: Option<(f32, f32)>,
+    /// Iteration cap.
+    pub max_iterations: u32,
+}
+
+fn grey(dwell: u32, max: u32) -> Gray4 {
+    if dwell >= max {
+        Gray4::new(0)
+    } else {
+        Gray4::new((dwell % 15 + 1) as u8)
+    }
+}
+
+/// The naive f32 loop, drawn pixel by pixel: what a first sketch does.
+pub fn baseline_f32<D: DrawTarget<Color = Gray4>>(view: BaselineView, target: &mut D) -> u64 {
+    let size = target.bounding_box().size;
+    let d = view.width / size.width as f32;
+    let mut total = 0u64;
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let re = view.centre.0 + (i as f32 + 0.5 - size.width as f32 / 2.0) * d;
+            let im = view.centre.1 - (j as f32 + 0.5 - size.height as f32 / 2.0) * d;
+            let ((mut x, mut y), (cr, ci)) = match view.julia {
+                None => ((0.0f32, 0.0f32), (re, im)),
+                Some(k) => ((re, im), k),
+            };
+            let mut n = 0;
+            while n < view.max_iterations {
+                n += 1;
+                let xt = x * x - y * y + cr;
+                y = 2.0 * x * y + ci;
+                x = xt;
+                if x * x + y * y > 4.0 {
+                    break;
+                }
+            }
+            total += u64::from(n);
+            let _ = target.draw_iter(core::iter::once(Pixel(
+                Point::new(i as i32, j as i32),
+                grey(n, view.max_iterations),
+            )));
+        }
+    }
+    total
+}
+
+/// The naive fixed-point loop of the classic Arduino display example: i64 with 20
+/// fractional bits, drawn pixel by pixel.
+pub fn baseline_fixed20<D: DrawTarget<Color = Gray4>>(view: BaselineView, target: &mut D) -> u64 {
+    const ONE: f32 = (1 << 20) as f32;
+    let fix = |v: f32| (v * ONE) as i64;
+    let size = target.bounding_box().size;
+    let d = fix(view.width / size.width as f32);
+    let (left, top) = (
+        fix(view.centre.0) - d * i64::from(size.width) / 2 + d / 2,
+        fix(view.centre.1) + d * i64::from(size.height) / 2 - d / 2,
+    );
+    let four = 4i64 << 20;
+    let mut total = 0u64;
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let re = left + d * i64::from(i);
+            let im = top - d * i64::from(j);
+            let ((mut x, mut y), (cr, ci)) = match view.julia {
+                None => ((0i64, 0i64), (re, im)),
+                Some((kr, ki)) => ((re, im), (fix(kr), fix(ki))),
+            };
+            let mut n = 0;
+            while n < view.max_iterations {
+                n += 1;
+                let (x2, y2) = ((x * x) >> 20, (y * y) >> 20);
+                let xy = (x * y) >> 19;
+                x = x2 - y2 + cr;
+                y = xy + ci;
+                if ((x * x) >> 20) + ((y * y) >> 20) > four {
+                    break;
+                }
+            }
+            total += u64::from(n);
+            let _ = target.draw_iter(core::iter::once(Pixel(
+                Point::new(i as i32, j as i32),
+                grey(n, view.max_iterations),
+            )));
+        }
+    }
+    total
+}
+
+/// The baselines' view for a scene, where a baseline applies: the Mandelbrot and Julia
+/// overviews. (L-systems have none, and f32 cannot resolve the deep zoom.)
+pub fn baseline_view(name: &str) -> Option<BaselineView> {
+    match name {
+        "mandelbrot" => Some(BaselineView {
+            centre: (-0.75, 0.0),
+            width: 3.5,
+            julia: None,
+            max_iterations: 64,
+        }),
+        "julia" => Some(BaselineView {
+            centre: (0.0, 0.0),
+            width: 3.6,
+            julia: Some((-0.8, 0.156)),
+            max_iterations: 100,
+        }),
+        _ => None,
+    }
+}

@@ -1,0 +1,181 @@
+//! Measuring firmware, one build per core: runs every scene (and, where they apply, the
+//! f32 and fixed-point baselines) into a checksum target and reports, over semihosting,
+//! one line per scene: instructions, work, checksum and stack high-water mark.
+//!
+//! Under QEMU with `-icount shift=0` each instruction is one virtual nanosecond. SysTick
+//! runs from the core clock, so its ticks are proportional to instructions; the ratio is
+//! calibrated against a loop of known length, and wrap-arounds are counted in its handler.
+//! (DWT's cycle counter reads 0 in QEMU.)
+#![cfg_attr(target_os = "none", no_std)]
+#![cfg_attr(target_os = "none", no_main)]
+
+#[cfg(target_os = "none")]
+mod firmware {
+    use core::sync::atomic::{AtomicU32, Ordering};
+
+    use cortex_m::peripheral::{syst::SystClkSource, SYST};
+    use cortex_m_rt::{entry, exception};
+    use cortex_m_semihosting::{debug, hprintln};
+    use panic_semihosting as _;
+    use tinyfractal_lm3s6965evb::measure::{
+        baseline_f32, baseline_fixed20, baseline_view, Checksum,
+    };
+    use tinyfractal_lm3s6965evb::scenes::{Work, SCENES};
+
+    const RELOAD: u32 = 0x00FF_FFFF;
+    static WRAPS: AtomicU32 = AtomicU32::new(0);
+
+    #[exception]
+    fn SysTick() {
+        // Load and store only: thumbv6m has no atomic read-modify-write.
+        WRAPS.store(WRAPS.load(Ordering::Relaxed) + 1, Ordering::Relaxed);
+    }
+
+    fn ticks() -> u64 {
+        loop {
+            let before = WRAPS.load(Ordering::Relaxed);
+            let current = SYST::get_current();
+            if WRAPS.load(Ordering::Relaxed) == before {
+                return u64::from(before) * u64::from(RELOAD + 1) + u64::from(RELOAD - current);
+            }
+        }
+    }
+
+    /// Exactly 2 instructions per round (`subs`, `bne`).
+    fn known_loop(rounds: u32) {
+        // SAFETY: a counted loop on a scratch register.
+        #[allow(unsafe_code)]
+        unsafe {
+            core::arch::asm!("1:", "subs {0}, #1", "bne 1b", inout(reg) rounds => _, options(nomem, nostack));
+        }
+    }
+
+    extern "C" {
+        static mut __sheap: u32;
+        static _stack_start: u32;
+    }
+
+    const PAINT: u32 = 0xA5A5_A5A5;
+
+    /// Paints the free stack below the current one; returns its lowest address.
+    #[inline(never)]
+    fn paint_stack() -> *mut u32 {
+        // SAFETY: writes only between the end of static RAM and 256 bytes below the stack
+        // pointer, memory nobody uses at this point.
+        #[allow(unsafe_code)]
+        unsafe {
+            let bottom = core::ptr::addr_of_mut!(__sheap);
+            let top = (cortex_m::register::msp::read() as *mut u32).wrapping_sub(64);
+            let mut p = bottom;
+            while p < top {
+                p.write_volatile(PAINT);
+                p = p.add(1);
+            }
+            bottom
+        }
+    }
+
+    /// Bytes of stack used since `paint_stack`: from the first overwritten word to the top.
+    fn stack_used(bottom: *mut u32) -> usize {
+        // SAFETY: reads the painted region back.
+        #[allow(unsafe_code)]
+        unsafe {
+            let top = core::ptr::addr_of!(_stack_start) as usize;
+            let mut p = bottom;
+            while (p as usize) < top && p.read_volatile() == PAINT {
+                p = p.add(1);
+            }
+            top - p as usize
+        }
+    }
+
+    struct Clock {
+        /// Instructions per 2^20 ticks.
+        scale: u64,
+    }
+
+    impl Clock {
+        fn calibrate() -> Self {
+            const ROUNDS: u32 = 1 << 20;
+            let start = ticks();
+            known_loop(ROUNDS);
+            let elapsed = (ticks() - start).max(1);
+            Clock {
+                scale: ((2 * u64::from(ROUNDS)) << 20) / elapsed,
+            }
+        }
+
+        fn measure(&self, f: impl FnOnce()) -> u64 {
+            let start = ticks();
+            f();
+            ((ticks() - start) * self.scale) >> 20
+        }
+    }
+
+    #[entry]
+    fn main() -> ! {
+        let mut core = cortex_m::Peripherals::take().unwrap();
+        core.SYST.set_clock_source(SystClkSource::Core);
+        core.SYST.set_reload(RELOAD);
+        core.SYST.clear_current();
+        core.SYST.enable_interrupt();
+        core.SYST.enable_counter();
+        // The counter starts at 0 and loads RELOAD on its first tick: wait for that, so
+        // time only runs forward.
+        while SYST::get_current() == 0 {}
+        let clock = Clock::calibrate();
+        hprintln!("measure calibration scale={}", clock.scale);
+        for (name, scene) in SCENES.iter() {
+            let bottom = paint_stack();
+            let mut target = Checksum::new();
+            let mut work = Work::Segments(0);
+            let instructions = clock.measure(|| {
+                work = scene.draw(&mut target).unwrap_or(Work::Segments(0));
+            });
+            let stack = stack_used(bottom);
+            let work = match work {
+                Work::Segments(n) | Work::Iterations(n) => n,
+            };
+            let (mut f32_cost, mut fixed_cost) = (None, None);
+            if let Some(view) = baseline_view(name) {
+                f32_cost = Some(clock.measure(|| {
+                    baseline_f32(view, &mut Checksum::new());
+                }));
+                fixed_cost = Some(clock.measure(|| {
+                    baseline_fixed20(view, &mut Checksum::new());
+                }));
+            }
+            hprintln!(
+                "measure scene={} instructions={} work={} checksum={} pixels={} stack={} baseline_f32={} baseline_fixed20={}",
+                name,
+                instructions,
+                work,
+                target.value,
+                target.pixels,
+                stack,
+                Optional(f32_cost),
+                Optional(fixed_cost)
+            );
+        }
+        hprintln!("measure done");
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::wfi();
+        }
+    }
+
+    struct Optional(Option<u64>);
+
+    impl core::fmt::Display for Optional {
+        fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+            match self.0 {
+                Some(value) => write!(f, "{value}"),
+                None => f.write_str("null"),
+            }
+        }
+    }
+}
+
+/// On the host there is nothing to run: the firmware is built for the Cortex-M targets.
+#[cfg(not(target_os = "none"))]
+fn main() {}
