@@ -96,10 +96,22 @@ impl Real {
 
     /// Times a Q30 factor (a sine or cosine), rounded half away from zero so that
     /// `x.mul_q30(-c) == -x.mul_q30(c)` exactly: symmetric headings give exactly opposite steps.
+    ///
+    /// Two 32×32→64 products instead of an i128 multiply, which is a library call on
+    /// Cortex-M: |self|·|factor| = hi·|factor|·2³² + lo·|factor|, and 2³² is a multiple of
+    /// 2³⁰, so the rounding only looks at the low product.
     pub(crate) fn mul_q30(self, factor: i32) -> Self {
-        let product = i128::from(self.to_bits()) * i128::from(factor);
-        // |self| < 2^63 and |factor| <= 2^30, so the shifted product fits in i64 again.
-        Self::from_bits(shift_round(product, 30) as i64)
+        let negative = (self.to_bits() < 0) != (factor < 0);
+        let (a, b) = (
+            self.to_bits().unsigned_abs(),
+            u64::from(factor.unsigned_abs()),
+        );
+        let low = (a & 0xFFFF_FFFF) * b; // < 2^62
+        let high = (a >> 32) * b; // < 2^62
+        let magnitude = (high << 2).wrapping_add((low + (1 << 29)) >> 30);
+        // |self·factor| / 2^30 <= |self| < 2^63: the magnitude fits in i64.
+        let magnitude = magnitude as i64;
+        Self::from_bits(if negative { -magnitude } else { magnitude })
     }
 
     /// Rounds to the nearest integer, half away from zero (saturating at the i32 range).
@@ -173,6 +185,25 @@ pub(crate) fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
     Some(if negative { -magnitude } else { magnitude })
 }
 
+/// The exact product of two i64 as i128, from four 32×32→64 products: an i128 multiply is
+/// a library call on Cortex-M, and these are single instructions on M3/M4.
+pub(crate) fn mul_wide(a: i64, b: i64) -> i128 {
+    let negative = (a < 0) != (b < 0);
+    let (a, b) = (a.unsigned_abs(), b.unsigned_abs());
+    let (a_low, a_high) = (a & 0xFFFF_FFFF, a >> 32);
+    let (b_low, b_high) = (b & 0xFFFF_FFFF, b >> 32);
+    let middle = u128::from(a_low * b_high) + u128::from(a_high * b_low);
+    let magnitude =
+        (u128::from(a_high * b_high) << 64) + (middle << 32) + u128::from(a_low * b_low);
+    // |a·b| < 2^126: the magnitude fits in i128.
+    let magnitude = magnitude as i128;
+    if negative {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
 /// `value / 2^shift`, rounded half away from zero.
 pub(crate) const fn shift_round(value: i128, shift: u32) -> i128 {
     let half = 1i128 << (shift - 1);
@@ -217,6 +248,58 @@ mod tests {
         let step = Real::from_bits(0x1_2345_6789);
         for c in [1 << 30, -(1 << 30), 123_456_789, 7, -7] {
             assert_eq!(step.mul_q30(c).to_bits(), -step.mul_q30(-c).to_bits());
+        }
+    }
+
+    /// The split multiply equals the exact i128 product rounded half away from zero.
+    #[test]
+    fn q30_product_matches_the_wide_product() {
+        let values = [
+            0i64,
+            1,
+            -1,
+            3,
+            1 << 31,
+            -(1 << 40) - 7,
+            i64::MAX / 3,
+            -(i64::MAX / 5),
+            0x1234_5678_9ABC,
+        ];
+        let factors = [
+            0i32,
+            1,
+            -1,
+            1 << 30,
+            -(1 << 30),
+            536_870_912,
+            -123_456_789,
+            7,
+        ];
+        for &v in &values {
+            for &f in &factors {
+                let wide = shift_round(i128::from(v) * i128::from(f), 30) as i64;
+                assert_eq!(Real::from_bits(v).mul_q30(f).to_bits(), wide, "{v} × {f}");
+            }
+        }
+    }
+
+    #[test]
+    fn wide_products_are_exact() {
+        let values = [
+            0i64,
+            1,
+            -1,
+            i64::MAX,
+            i64::MIN + 1,
+            1 << 40,
+            -(1 << 33) + 5,
+            0x7FFF_FFFF,
+            -0x8000_0001,
+        ];
+        for &a in &values {
+            for &b in &values {
+                assert_eq!(mul_wide(a, b), i128::from(a) * i128::from(b), "{a} × {b}");
+            }
         }
     }
 

@@ -6,11 +6,14 @@
 //! squares, Q60 in i64 with i128 squares). A Julia start outside radius 2 escapes at once
 //! (|z₁| ≥ |z₀|² − |k| > 2 because |k| ≤ 2) and is never squared.
 //!
+//! The deep tier's 64×64→128 products are built from 32-bit halves (see `mul_wide`), since
+//! an i128 multiply is a library call on Cortex-M.
+//!
 //! Mirrored points stay mirrored exactly: 2xy is truncated toward zero, the only product
 //! whose sign depends on y.
 
 use super::view::{Fractal, Tier, View};
-use crate::real::shift_round;
+use crate::real::{mul_wide, shift_round};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
 /// iterations 1, 2, 4, 8, ...).
@@ -69,7 +72,7 @@ const fn from_q60(bits: i128, frac: u32) -> i128 {
 
 /// One tier's iteration: value type `$v`, product type `$w`, `$frac` fractional bits.
 macro_rules! tier_kernel {
-    ($name:ident, $v:ty, $w:ty, $frac:expr) => {
+    ($name:ident, $v:ty, $w:ty, $frac:expr, $mul:expr) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
         fn $name(c: (i128, i128), z0: (i128, i128), max: u32, tolerance: i128) -> Orbit {
@@ -81,8 +84,9 @@ macro_rules! tier_kernel {
             // A tolerance below one unit of this tier means exact comparison.
             let tolerance = from_q60(tolerance, FRAC) as $v;
             let four: $w = 4 << (2 * FRAC);
-            let mut x2 = <$w>::from(x) * <$w>::from(x);
-            let mut y2 = <$w>::from(y) * <$w>::from(y);
+            let mul: fn($v, $v) -> $w = $mul;
+            let mut x2 = mul(x, x);
+            let mut y2 = mul(y, y);
             if x2 + y2 > four {
                 return Orbit {
                     dwell: 1,
@@ -92,12 +96,12 @@ macro_rules! tier_kernel {
             let (mut saved_x, mut saved_y) = (x, y);
             let mut next_save: u32 = 1;
             for n in 1..=max {
-                let xy = <$w>::from(x) * <$w>::from(y);
+                let xy = mul(x, y);
                 // 2xy: division truncates toward zero, so a mirrored orbit stays exact.
                 y = (xy / (1 << (FRAC - 1))) as $v + ci;
                 x = ((x2 - y2) >> FRAC) as $v + cr;
-                x2 = <$w>::from(x) * <$w>::from(x);
-                y2 = <$w>::from(y) * <$w>::from(y);
+                x2 = mul(x, x);
+                y2 = mul(y, y);
                 if x2 + y2 > four {
                     return Orbit {
                         dwell: n,
@@ -123,28 +127,31 @@ macro_rules! tier_kernel {
     };
 }
 
-tier_kernel!(narrow, i32, i32, 12);
-tier_kernel!(standard, i32, i64, 28);
-tier_kernel!(deep, i64, i128, 60);
+tier_kernel!(narrow, i32, i32, 12, |a, b| a * b);
+tier_kernel!(standard, i32, i64, 28, |a, b| i64::from(a) * i64::from(b));
+tier_kernel!(deep, i64, i128, 60, mul_wide);
 
-/// Inside the main cardioid or the period-2 bulb, decided exactly in Q60/Q120 integers with
-/// a margin of 2⁻⁵⁰, so a point on or next to the boundary is iterated instead.
+/// Inside the main cardioid or the period-2 bulb, decided in Q28 with 64-bit products (no
+/// 128-bit library calls on Cortex-M) and a margin of 2⁻²⁰, which covers every rounding
+/// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
+/// or next to the boundary is iterated instead.
 fn in_cardioid_or_bulb((x, y): (i128, i128)) -> bool {
-    const ONE: i128 = 1 << 60;
-    const MARGIN: i128 = 1 << 70; // 2^-50 in Q120
-                                  // Outside |re|, |im| < 2 nothing is inside, and the products below stay in range.
-    if x.abs() >= 2 * ONE || y.abs() >= 2 * ONE {
+    const ONE: i64 = 1 << 28;
+    const MARGIN: i64 = 1 << 36; // 2^-20 in Q56
+                                 // Outside |re|, |im| < 2 nothing is inside, and the products below stay in range.
+    if x.abs() >= 2 << 60 || y.abs() >= 2 << 60 {
         return false;
     }
-    let y2 = y * y; // Q120
+    let (x, y) = (shift_round(x, 32) as i64, shift_round(y, 32) as i64);
+    let y2 = y * y; // Q56
                     // Period-2 bulb: (x + 1)² + y² < 1/16.
     let x1 = x + ONE;
-    if x1 * x1 + y2 + MARGIN < 1 << 116 {
+    if x1 * x1 + y2 + MARGIN < 1 << 52 {
         return true;
     }
-    // Cardioid: q(q + x - 1/4) < y²/4 with q = (x - 1/4)² + y².
+    // Cardioid: q(q + x - 1/4) < y²/4 with q = (x - 1/4)² + y², all below 2^63.
     let xq = x - ONE / 4;
-    let q = (xq * xq + y2) >> 60; // Q60, rounded down: the margin covers it
+    let q = (xq * xq + y2) >> 28; // Q28, rounded down: the margin covers it
     q * (q + xq) + MARGIN < y2 / 4
 }
 

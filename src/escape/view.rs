@@ -4,7 +4,7 @@
 use embedded_graphics::geometry::Size;
 
 use crate::error::Error;
-use crate::real::{div_round, parse_fixed};
+use crate::real::{div_round, mul_wide, parse_fixed, shift_round};
 
 /// Most iterations a view may ask for (dwells are kept in 16 bits).
 pub const MAX_ITERATIONS: u32 = u16::MAX as u32;
@@ -234,10 +234,10 @@ impl View {
     /// pixels outside the view). Offsets are rounded half away from zero, so rows mirrored
     /// about a centre on the real axis get exactly negated imaginary parts.
     pub(crate) fn point(&self, i: i64, j: i64) -> (i128, i128) {
-        let d = i128::from(self.spacing);
         let (w, h) = (i64::from(self.size.width), i64::from(self.size.height));
-        let re = i128::from(self.centre.0 .0) + div_round(i128::from(2 * i + 1 - w) * d, 2);
-        let im = i128::from(self.centre.1 .0) - div_round(i128::from(2 * j + 1 - h) * d, 2);
+        let offset = |k: i64| shift_round(mul_wide(self.spacing, k), 1);
+        let re = i128::from(self.centre.0 .0) + offset(2 * i + 1 - w);
+        let im = i128::from(self.centre.1 .0) - offset(2 * j + 1 - h);
         (re, im)
     }
 

@@ -52,19 +52,37 @@ impl Runs {
         let twice_major = 2 * length.max(1);
         let twice_minor = 2 * d_minor.abs();
         // Closed form at t = first: offset = floor((t·2|d_minor| + |d_major|) / 2|d_major|).
-        let numerator = i128::from(first) * i128::from(twice_minor) + i128::from(length);
-        let offset = numerator / i128::from(twice_major);
-        let remainder = numerator % i128::from(twice_major);
+        // An unclipped line starts at t = 0 and needs no division at all; a clipped one
+        // usually fits i64 (64-bit division is much cheaper than 128-bit on Cortex-M).
+        let (offset, remainder) = if first == 0 {
+            (0, length)
+        } else {
+            match first
+                .checked_mul(twice_minor)
+                .and_then(|n| n.checked_add(length))
+            {
+                Some(numerator) => (numerator / twice_major, numerator % twice_major),
+                None => {
+                    let numerator =
+                        i128::from(first) * i128::from(twice_minor) + i128::from(length);
+                    let twice_major = i128::from(twice_major);
+                    (
+                        i64::try_from(numerator / twice_major).unwrap_or(0),
+                        i64::try_from(numerator % twice_major).unwrap_or(0),
+                    )
+                }
+            }
+        };
         let minor_dir = if d_minor < 0 { -1 } else { 1 };
         Self {
             major: major0 + major_dir * first,
             major_dir,
-            minor: minor0 + minor_dir * i64::try_from(offset).unwrap_or(0),
+            minor: minor0 + minor_dir * offset,
             minor_dir,
             remaining: (last - first + 1).max(0),
             twice_minor,
             twice_major,
-            remainder: i64::try_from(remainder).unwrap_or(0),
+            remainder,
             x_major,
         }
     }
