@@ -565,5 +565,6 @@ fn palettes_for_every_colour_type() {
 #[test]
 fn a_render_fits_in_a_few_kilobytes() {
     let bytes = core::mem::size_of::<Render>();
-    assert!(bytes <= 2200, "Render is {bytes} bytes");
+    // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view and the counters.
+    assert!(bytes <= 2700, "Render is {bytes} bytes");
 }

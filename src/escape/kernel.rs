@@ -34,9 +34,8 @@ pub(crate) struct Orbit {
     pub(crate) iterations: u32,
 }
 
-/// The dwell of pixel (i, j) of `view`.
-pub(crate) fn dwell(view: &View, i: i64, j: i64, periodicity: Periodicity) -> Orbit {
-    let point = view.point(i, j);
+/// The dwell of the point `point` (Q60) of `view`.
+pub(crate) fn dwell(view: &View, point: (i128, i128), periodicity: Periodicity) -> Orbit {
     let max = view.max_iterations;
     let (c, z0) = match view.fractal {
         Fractal::Mandelbrot => {

@@ -11,7 +11,9 @@
 //! axis, turned half round for a Julia view centred on the origin (the kernel keeps both
 //! symmetries exactly).
 //!
-//! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB) and the view, about 2.1 KiB;
+//! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB), the tile's 32 column and 32
+//! row coordinates (512 bytes: points are separable, so they are computed once per tile,
+//! not once per pixel) and the view, about 2.6 KiB;
 //! while a tile is computed, a subdivision stack of 32 rectangles (512 bytes) is on the
 //! stack. That is the worst case for a 320×240 view or any other: nothing is read back
 //! from the target.
@@ -91,6 +93,9 @@ pub struct Render {
     next: u32,
     stats: RenderStats,
     tile: [u16; CELLS],
+    /// The current tile's column and row parts of its points, Q60 (within ±3.5: i64).
+    columns: [i64; TILE as usize],
+    rows: [i64; TILE as usize],
 }
 
 /// A rectangle of a tile, corners inclusive, in tile coordinates.
@@ -116,6 +121,8 @@ impl Render {
                 tier: view.tier(),
             },
             tile: [0; CELLS],
+            columns: [0; TILE as usize],
+            rows: [0; TILE as usize],
         }
     }
 
@@ -185,8 +192,9 @@ impl Render {
         }
     }
 
-    fn compute(&mut self, i: u32, j: u32) -> u16 {
-        let orbit = dwell(&self.view, i64::from(i), i64::from(j), self.periodicity());
+    /// The dwell of the point with column part `re` and row part `im`.
+    fn compute_at(&mut self, re: i128, im: i128) -> u16 {
+        let orbit = dwell(&self.view, (re, im), self.periodicity());
         self.stats.iterations += u64::from(orbit.iterations);
         self.stats.pixels += 1;
         // max_iterations <= u16::MAX is checked by the view.
@@ -198,7 +206,11 @@ impl Render {
         let width = self.view.size.width;
         let area = Rectangle::new(Point::new(0, coordinate(j)), Size::new(width, 1));
         self.stats.draw_calls += 1;
-        let dwells = (0..width).map(|i| self.compute(i, j));
+        let im = self.view.row(i64::from(j));
+        let dwells = (0..width).map(|i| {
+            let re = self.view.column(i64::from(i));
+            self.compute_at(re, im)
+        });
         sink.dwells(&area, dwells)
     }
 
@@ -208,7 +220,18 @@ impl Render {
         let w = TILE.min(self.view.size.width - x0);
         let h = TILE.min(self.computed_rows() - y0);
         self.tile = [0; CELLS];
-        self.subdivide(x0, y0, w, h);
+        for k in 0..TILE {
+            let (column, row) = (i64::from(x0 + k), i64::from(y0 + k));
+            // Points of the view are within ±3.5 (checked by `View::new`), so they fit i64;
+            // columns and rows past the view's edge are not used.
+            if let Some(slot) = self.columns.get_mut(k as usize) {
+                *slot = i64::try_from(self.view.column(column)).unwrap_or(0);
+            }
+            if let Some(slot) = self.rows.get_mut(k as usize) {
+                *slot = i64::try_from(self.view.row(row)).unwrap_or(0);
+            }
+        }
+        self.subdivide(w, h);
 
         let area = Rectangle::new(Point::new(coordinate(x0), coordinate(y0)), Size::new(w, h));
         let first = self.cell(0, 0);
@@ -279,11 +302,13 @@ impl Render {
             .unwrap_or(0)
     }
 
-    fn known(&mut self, origin: (u32, u32), tx: u32, ty: u32) -> u16 {
+    fn known(&mut self, tx: u32, ty: u32) -> u16 {
         let index = (ty * TILE + tx) as usize;
         match self.tile.get(index).copied() {
             Some(0) => {
-                let value = self.compute(origin.0 + tx, origin.1 + ty);
+                let re = self.columns.get(tx as usize).copied().unwrap_or(0);
+                let im = self.rows.get(ty as usize).copied().unwrap_or(0);
+                let value = self.compute_at(i128::from(re), i128::from(im));
                 if let Some(cell) = self.tile.get_mut(index) {
                     *cell = value;
                 }
@@ -294,9 +319,8 @@ impl Render {
         }
     }
 
-    /// Mariani–Silver over the tile at (x0, y0) of size w×h.
-    fn subdivide(&mut self, x0: u32, y0: u32, w: u32, h: u32) {
-        let origin = (x0, y0);
+    /// Mariani–Silver over the current tile, of size w×h.
+    fn subdivide(&mut self, w: u32, h: u32) {
         let mut stack: Vec<Block, 32> = Vec::new();
         let _ = stack.push(Block {
             x0: 0,
@@ -313,12 +337,12 @@ impl Render {
                 Some(seen) => uniform &= seen == value,
             };
             for tx in b.x0..=b.x1 {
-                note(self.known(origin, tx, b.y0));
-                note(self.known(origin, tx, b.y1));
+                note(self.known(tx, b.y0));
+                note(self.known(tx, b.y1));
             }
             for ty in b.y0..=b.y1 {
-                note(self.known(origin, b.x0, ty));
-                note(self.known(origin, b.x1, ty));
+                note(self.known(b.x0, ty));
+                note(self.known(b.x1, ty));
             }
             let (bw, bh) = (b.x1 - b.x0, b.y1 - b.y0);
             if uniform && bw >= 2 && bh >= 2 {
@@ -333,7 +357,7 @@ impl Render {
             } else if bw < 4 || bh < 4 {
                 for ty in b.y0..=b.y1 {
                     for tx in b.x0..=b.x1 {
-                        self.known(origin, tx, ty);
+                        self.known(tx, ty);
                     }
                 }
             } else {
