@@ -83,29 +83,18 @@ fn grey(dwell: u32, max: u32) -> Gray4 {
     }
 }
 
-/// The naive f32 loop, drawn pixel by pixel: what a first sketch does.
-pub fn baseline_f32<D: DrawTarget<Color = Gray4>>(view: BaselineView, target: &mut D) -> u64 {
+/// Every pixel in order: its dwell from `dwell(i, j)`, drawn alone with `draw_iter`, as the
+/// classic display sketches do. Returns the total iterations.
+fn pixel_by_pixel<D: DrawTarget<Color = Gray4>>(
+    view: BaselineView,
+    target: &mut D,
+    mut dwell: impl FnMut(u32, u32) -> u32,
+) -> u64 {
     let size = target.bounding_box().size;
-    let d = view.width / size.width as f32;
     let mut total = 0u64;
     for j in 0..size.height {
         for i in 0..size.width {
-            let re = view.centre.0 + (i as f32 + 0.5 - size.width as f32 / 2.0) * d;
-            let im = view.centre.1 - (j as f32 + 0.5 - size.height as f32 / 2.0) * d;
-            let ((mut x, mut y), (cr, ci)) = match view.julia {
-                None => ((0.0f32, 0.0f32), (re, im)),
-                Some(k) => ((re, im), k),
-            };
-            let mut n = 0;
-            while n < view.max_iterations {
-                n += 1;
-                let xt = x * x - y * y + cr;
-                y = 2.0 * x * y + ci;
-                x = xt;
-                if x * x + y * y > 4.0 {
-                    break;
-                }
-            }
+            let n = dwell(i, j);
             total += u64::from(n);
             let _ = target.draw_iter(core::iter::once(Pixel(
                 Point::new(i as i32, j as i32),
@@ -114,6 +103,31 @@ pub fn baseline_f32<D: DrawTarget<Color = Gray4>>(view: BaselineView, target: &m
         }
     }
     total
+}
+
+/// The naive f32 loop, drawn pixel by pixel: what a first sketch does.
+pub fn baseline_f32<D: DrawTarget<Color = Gray4>>(view: BaselineView, target: &mut D) -> u64 {
+    let size = target.bounding_box().size;
+    let d = view.width / size.width as f32;
+    pixel_by_pixel(view, target, |i, j| {
+        let re = view.centre.0 + (i as f32 + 0.5 - size.width as f32 / 2.0) * d;
+        let im = view.centre.1 - (j as f32 + 0.5 - size.height as f32 / 2.0) * d;
+        let ((mut x, mut y), (cr, ci)) = match view.julia {
+            None => ((0.0f32, 0.0f32), (re, im)),
+            Some(k) => ((re, im), k),
+        };
+        let mut n = 0;
+        while n < view.max_iterations {
+            n += 1;
+            let xt = x * x - y * y + cr;
+            y = 2.0 * x * y + ci;
+            x = xt;
+            if x * x + y * y > 4.0 {
+                break;
+            }
+        }
+        n
+    })
 }
 
 /// The naive fixed-point loop of the classic Arduino display example: i64 with 20
@@ -128,34 +142,26 @@ pub fn baseline_fixed20<D: DrawTarget<Color = Gray4>>(view: BaselineView, target
         fix(view.centre.1) + d * i64::from(size.height) / 2 - d / 2,
     );
     let four = 4i64 << 20;
-    let mut total = 0u64;
-    for j in 0..size.height {
-        for i in 0..size.width {
-            let re = left + d * i64::from(i);
-            let im = top - d * i64::from(j);
-            let ((mut x, mut y), (cr, ci)) = match view.julia {
-                None => ((0i64, 0i64), (re, im)),
-                Some((kr, ki)) => ((re, im), (fix(kr), fix(ki))),
-            };
-            let mut n = 0;
-            while n < view.max_iterations {
-                n += 1;
-                let (x2, y2) = ((x * x) >> 20, (y * y) >> 20);
-                let xy = (x * y) >> 19;
-                x = x2 - y2 + cr;
-                y = xy + ci;
-                if ((x * x) >> 20) + ((y * y) >> 20) > four {
-                    break;
-                }
+    pixel_by_pixel(view, target, |i, j| {
+        let re = left + d * i64::from(i);
+        let im = top - d * i64::from(j);
+        let ((mut x, mut y), (cr, ci)) = match view.julia {
+            None => ((0i64, 0i64), (re, im)),
+            Some((kr, ki)) => ((re, im), (fix(kr), fix(ki))),
+        };
+        let mut n = 0;
+        while n < view.max_iterations {
+            n += 1;
+            let (x2, y2) = ((x * x) >> 20, (y * y) >> 20);
+            let xy = (x * y) >> 19;
+            x = x2 - y2 + cr;
+            y = xy + ci;
+            if ((x * x) >> 20) + ((y * y) >> 20) > four {
+                break;
             }
-            total += u64::from(n);
-            let _ = target.draw_iter(core::iter::once(Pixel(
-                Point::new(i as i32, j as i32),
-                grey(n, view.max_iterations),
-            )));
         }
-    }
-    total
+        n
+    })
 }
 
 /// The baselines' view for a scene, where a baseline applies: the Mandelbrot and Julia
