@@ -1,5 +1,7 @@
 //! The scenes the firmware shows, in order, drawn the same way on the host and the board.
 
+use core::convert::Infallible;
+
 use embedded_graphics::{
     pixelcolor::{Gray4, GrayColor, Rgb888},
     prelude::*,
@@ -113,12 +115,13 @@ fn coord(text: &str) -> Result<Coord, Error> {
 }
 
 impl Scene {
-    /// Clears `target` and draws the scene into it.
+    /// Clears `target` and draws the scene into it. The targets here (the framebuffer, the
+    /// checksum) cannot fail, so nothing a display says is lost.
     pub fn draw<D>(&self, target: &mut D) -> Result<Work, Error>
     where
-        D: DrawTarget<Color = Gray4>,
+        D: DrawTarget<Color = Gray4, Error = Infallible>,
     {
-        let _ = target.clear(Gray4::BLACK);
+        let Ok(()) = target.clear(Gray4::BLACK);
         match *self {
             Scene::LSystem {
                 axiom,
@@ -140,7 +143,7 @@ impl Scene {
                 let drawing = LSystem::new(&grammar, order)
                     .with_orientation(orientation)
                     .fit(target.bounding_box(), &[Gray4::WHITE])?;
-                let stats = drawing.draw(target).unwrap_or_default();
+                let Ok(stats) = drawing.draw(target);
                 Ok(Work::Segments(stats.segments))
             }
             Scene::Escape {
@@ -171,10 +174,8 @@ impl Scene {
                 ];
                 let palette =
                     Gradient::<Gray4, 16>::new(&keys, Gray4::BLACK).ok_or(Error::EmptyPalette)?;
-                match EscapeTime::new(view, &palette).draw(target) {
-                    Ok(stats) => Ok(Work::Iterations(stats.iterations)),
-                    Err(_) => Ok(Work::Iterations(0)),
-                }
+                let Ok(stats) = EscapeTime::new(view, &palette).draw(target);
+                Ok(Work::Iterations(stats.iterations))
             }
         }
     }
