@@ -283,9 +283,7 @@ impl Render {
             Some(value) => sink.uniform(&area, value),
             None => {
                 let tile = &self.tile;
-                let at = move |tx: u32, ty: u32| {
-                    tile.get((ty * TILE + tx) as usize).copied().unwrap_or(0)
-                };
+                let at = move |tx: u32, ty: u32| tile.get(cell_index(tx, ty)).copied().unwrap_or(0);
                 let column = move |k: u32| if reversed { w - 1 - k } else { k };
                 sink.dwells(
                     &area,
@@ -296,14 +294,11 @@ impl Render {
     }
 
     fn cell(&self, tx: u32, ty: u32) -> u16 {
-        self.tile
-            .get((ty * TILE + tx) as usize)
-            .copied()
-            .unwrap_or(0)
+        self.tile.get(cell_index(tx, ty)).copied().unwrap_or(0)
     }
 
     fn known(&mut self, tx: u32, ty: u32) -> u16 {
-        let index = (ty * TILE + tx) as usize;
+        let index = cell_index(tx, ty);
         match self.tile.get(index).copied() {
             Some(0) => {
                 let re = self.columns.get(tx as usize).copied().unwrap_or(0);
@@ -349,7 +344,7 @@ impl Render {
                 let value = border.unwrap_or(0);
                 for ty in b.y0 + 1..b.y1 {
                     for tx in b.x0 + 1..b.x1 {
-                        if let Some(cell) = self.tile.get_mut((ty * TILE + tx) as usize) {
+                        if let Some(cell) = self.tile.get_mut(cell_index(tx, ty)) {
                             *cell = value;
                         }
                     }
@@ -394,6 +389,11 @@ impl Render {
             }
         }
     }
+}
+
+/// Where cell (tx, ty) of a tile is in `Render::tile`.
+const fn cell_index(tx: u32, ty: u32) -> usize {
+    (ty * TILE + tx) as usize
 }
 
 fn coordinate(value: u32) -> i32 {
