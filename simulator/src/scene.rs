@@ -38,9 +38,6 @@ pub fn render_oriented(
     height: u32,
     orientation: Orientation,
 ) -> Result<Rendered, Error> {
-    if width == 0 || height == 0 {
-        return Err(Error::ZeroSizeTarget);
-    }
     let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(width, height));
     let started = Instant::now();
     let drawing = LSystem::new(grammar, order)
