@@ -7,6 +7,7 @@
 
 pub mod framebuffer;
 pub mod measure;
-pub mod scenes;
 
 pub use framebuffer::Framebuffer;
+/// The scenes, shared with every board (drawn here in [`scenes::GREY`]).
+pub use tinyfractal_scenes as scenes;

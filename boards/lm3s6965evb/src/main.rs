@@ -14,7 +14,10 @@ mod firmware {
     use cortex_m_rt::entry;
     use cortex_m_semihosting::{debug, hprintln};
     use panic_semihosting as _;
-    use tinyfractal_lm3s6965evb::{scenes::SCENES, Framebuffer};
+    use tinyfractal_lm3s6965evb::{
+        scenes::{self, SCENES},
+        Framebuffer,
+    };
 
     use crate::board::Board;
 
@@ -23,7 +26,7 @@ mod firmware {
         let mut board = Board::init();
         let mut framebuffer = Framebuffer::new();
         for (index, (name, scene)) in SCENES.iter().enumerate() {
-            let result = scene.draw(&mut framebuffer);
+            let result = scene.draw(&mut framebuffer, &scenes::GREY);
             board.show(&framebuffer);
             match result {
                 Ok(work) => hprintln!("scene {} {} done: {:?}", index, name, work),

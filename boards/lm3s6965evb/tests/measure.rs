@@ -156,7 +156,10 @@ fn every_core_draws_the_host_picture_and_fits() {
         .iter()
         .map(|(_, scene)| {
             let mut target = Checksum::new();
-            let work = match scene.draw(&mut target).unwrap() {
+            let work = match scene
+                .draw(&mut target, &tinyfractal_lm3s6965evb::scenes::GREY)
+                .unwrap()
+            {
                 Work::Segments(n) | Work::Iterations(n) => n,
             };
             (target.value, target.pixels, work)

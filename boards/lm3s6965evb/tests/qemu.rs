@@ -16,7 +16,11 @@ use std::process::{Command, Stdio};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use tinyfractal_lm3s6965evb::{framebuffer, scenes::SCENES, Framebuffer};
+use tinyfractal_lm3s6965evb::{
+    framebuffer,
+    scenes::{self, SCENES},
+    Framebuffer,
+};
 
 const MAGNIFY: usize = 4;
 
@@ -162,7 +166,7 @@ fn firmware_matches_the_host_pixel_for_pixel() {
         );
 
         let mut host = Framebuffer::new();
-        let work_done = scene.draw(&mut host).unwrap();
+        let work_done = scene.draw(&mut host, &scenes::GREY).unwrap();
         assert!(
             line.ends_with(&format!("{work_done:?}")),
             "same work on both: {line} vs {work_done:?}"

@@ -20,7 +20,7 @@ mod firmware {
     use tinyfractal_lm3s6965evb::measure::{
         baseline_f32, baseline_fixed20, baseline_view, Checksum,
     };
-    use tinyfractal_lm3s6965evb::scenes::{Work, SCENES};
+    use tinyfractal_lm3s6965evb::scenes::{Work, GREY, SCENES};
 
     const RELOAD: u32 = 0x00FF_FFFF;
     static WRAPS: AtomicU32 = AtomicU32::new(0);
@@ -130,7 +130,7 @@ mod firmware {
             let mut target = Checksum::new();
             let mut work = Work::Segments(0);
             let instructions = clock.measure(|| {
-                work = scene.draw(&mut target).unwrap_or(Work::Segments(0));
+                work = scene.draw(&mut target, &GREY).unwrap_or(Work::Segments(0));
             });
             let stack = stack_used(bottom);
             let work = match work {

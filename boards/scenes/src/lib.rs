@@ -1,14 +1,17 @@
-//! The scenes the firmware shows, in order, drawn the same way on the host and the board.
-
-use core::convert::Infallible;
+//! The scenes every tinyfractal board shows, in order, drawn the same way on the host and on
+//! the board: the QEMU test compares the LM3S6965's screen with the host's rendering, the
+//! measuring firmware folds them into checksums, and the Pico and the STM32F429I-DISCO
+//! show them on their displays. One [`Look`] per display says which colours to use.
+#![no_std]
+#![deny(missing_docs, unsafe_code)]
 
 use embedded_graphics::{
-    pixelcolor::{Gray4, GrayColor, Rgb888},
+    pixelcolor::{Gray4, GrayColor, Rgb565, Rgb888},
     prelude::*,
 };
 use tinyfractal::{
-    Angle, Coord, Dialect, Error, EscapeTime, Fractal, Gradient, Grammar, LSystem, Orientation,
-    Real, View,
+    Angle, Coord, Dialect, DrawError, Error, EscapeTime, Fractal, Gradient, Grammar, LSystem,
+    Orientation, Real, View,
 };
 
 /// What to draw.
@@ -114,14 +117,58 @@ fn coord(text: &str) -> Result<Coord, Error> {
     Coord::parse(text).ok_or(Error::ViewOutOfRange)
 }
 
+/// The colours a display draws the scenes in.
+#[derive(Debug, Clone, Copy)]
+pub struct Look<'a, C> {
+    /// What the target is cleared to.
+    pub background: C,
+    /// The L-systems' line colour.
+    pub ink: C,
+    /// Escape-time gradient keys, spread over 16 colours.
+    pub keys: &'a [Rgb888],
+    /// Escape-time points that never escape.
+    pub inside: C,
+}
+
+/// The SSD0323's 4-bit grey: white lines, a dark-light-dark gradient.
+pub const GREY: Look<'static, Gray4> = Look {
+    background: Gray4::BLACK,
+    ink: Gray4::WHITE,
+    keys: &[
+        Rgb888::new(0x10, 0x10, 0x10),
+        Rgb888::new(0x90, 0x90, 0x90),
+        Rgb888::WHITE,
+        Rgb888::new(0x50, 0x50, 0x50),
+    ],
+    inside: Gray4::BLACK,
+};
+
+/// RGB565 displays (ST7789, ILI9341): green plants on black, a blue-gold gradient.
+pub const COLOUR: Look<'static, Rgb565> = Look {
+    background: Rgb565::BLACK,
+    ink: Rgb565::new(12, 58, 12),
+    keys: &[
+        Rgb888::new(0x00, 0x07, 0x64),
+        Rgb888::new(0x20, 0x6B, 0xCB),
+        Rgb888::new(0xED, 0xFF, 0xFF),
+        Rgb888::new(0xFF, 0xAA, 0x00),
+        Rgb888::new(0x00, 0x02, 0x00),
+    ],
+    inside: Rgb565::BLACK,
+};
+
 impl Scene {
-    /// Clears `target` and draws the scene into it. The targets here (the framebuffer, the
-    /// checksum) cannot fail, so nothing a display says is lost.
-    pub fn draw<D>(&self, target: &mut D) -> Result<Work, Error>
+    /// Clears `target` to `look.background` and draws the scene into it.
+    pub fn draw<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+    ) -> Result<Work, DrawError<D::Error>>
     where
-        D: DrawTarget<Color = Gray4, Error = Infallible>,
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
     {
-        let Ok(()) = target.clear(Gray4::BLACK);
+        target.clear(look.background).map_err(DrawError::Target)?;
         match *self {
             Scene::LSystem {
                 axiom,
@@ -140,10 +187,11 @@ impl Scene {
                 for &(symbol, body) in rules {
                     grammar = grammar.with_rule(symbol, body)?;
                 }
+                let ink = [look.ink];
                 let drawing = LSystem::new(&grammar, order)
                     .with_orientation(orientation)
-                    .fit(target.bounding_box(), &[Gray4::WHITE])?;
-                let Ok(stats) = drawing.draw(target);
+                    .fit(target.bounding_box(), &ink)?;
+                let stats = drawing.draw(target).map_err(DrawError::Target)?;
                 Ok(Work::Segments(stats.segments))
             }
             Scene::Escape {
@@ -166,15 +214,11 @@ impl Scene {
                     target.bounding_box().size,
                     max_iterations,
                 )?;
-                let keys = [
-                    Rgb888::new(0x10, 0x10, 0x10),
-                    Rgb888::new(0x90, 0x90, 0x90),
-                    Rgb888::WHITE,
-                    Rgb888::new(0x50, 0x50, 0x50),
-                ];
-                let palette =
-                    Gradient::<Gray4, 16>::new(&keys, Gray4::BLACK).ok_or(Error::EmptyPalette)?;
-                let Ok(stats) = EscapeTime::new(view, &palette).draw(target);
+                let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
+                    .ok_or(Error::EmptyPalette)?;
+                let stats = EscapeTime::new(view, &palette)
+                    .draw(target)
+                    .map_err(DrawError::Target)?;
                 Ok(Work::Iterations(stats.iterations))
             }
         }
