@@ -214,6 +214,17 @@ pub(crate) const fn shift_round(value: i128, shift: u32) -> i128 {
     }
 }
 
+/// [`shift_round`] in 64 bits, for per-pixel work on 32-bit cores (a 128-bit shift costs a
+/// dozen instructions there). `|value| + 2^(shift-1)` must fit in an i64.
+pub(crate) const fn shift_round_i64(value: i64, shift: u32) -> i64 {
+    let half = 1i64 << (shift - 1);
+    if value >= 0 {
+        (value + half) >> shift
+    } else {
+        -((-value + half) >> shift)
+    }
+}
+
 /// `numerator / denominator` rounded half away from zero; the denominator must not be 0.
 pub(crate) const fn div_round(numerator: i128, denominator: i128) -> i128 {
     let negative = (numerator < 0) != (denominator < 0);

@@ -13,7 +13,7 @@
 //! whose sign depends on y.
 
 use super::view::{Fractal, Tier, View};
-use crate::real::{mul_wide, shift_round};
+use crate::real::{mul_wide, shift_round_i64};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
 /// iterations 1, 2, 4, 8, ...).
@@ -34,8 +34,10 @@ pub(crate) struct Orbit {
     pub(crate) iterations: u32,
 }
 
-/// The dwell of the point `point` (Q60) of `view`.
-pub(crate) fn dwell(view: &View, point: (i128, i128), periodicity: Periodicity) -> Orbit {
+/// The dwell of the point `point` (Q60, within ±3.5 as the view guarantees) of `view`.
+/// Everything per pixel is 64-bit or narrower: a 128-bit step is a dozen instructions on a
+/// 32-bit core.
+pub(crate) fn dwell(view: &View, point: (i64, i64), periodicity: Periodicity) -> Orbit {
     let max = view.max_iterations;
     let (c, z0) = match view.fractal {
         Fractal::Mandelbrot => {
@@ -47,11 +49,11 @@ pub(crate) fn dwell(view: &View, point: (i128, i128), periodicity: Periodicity) 
             }
             (point, (0, 0))
         }
-        Fractal::Julia { re, im } => ((i128::from(re.to_bits()), i128::from(im.to_bits())), point),
+        Fractal::Julia { re, im } => ((re.to_bits(), im.to_bits()), point),
     };
     let tolerance = match periodicity {
         Periodicity::Exact => 0,
-        Periodicity::Within(bits) => i128::from(bits),
+        Periodicity::Within(bits) => bits,
     };
     match view.tier {
         Tier::Narrow => narrow(c, z0, max, tolerance),
@@ -61,11 +63,11 @@ pub(crate) fn dwell(view: &View, point: (i128, i128), periodicity: Periodicity) 
 }
 
 /// Q60 to `frac` fractional bits, rounded half away from zero (so negation commutes).
-const fn from_q60(bits: i128, frac: u32) -> i128 {
+const fn from_q60(bits: i64, frac: u32) -> i64 {
     if frac >= 60 {
         bits
     } else {
-        shift_round(bits, 60 - frac)
+        shift_round_i64(bits, 60 - frac)
     }
 }
 
@@ -74,10 +76,10 @@ macro_rules! tier_kernel {
     ($name:ident, $v:ty, $w:ty, $frac:expr, $mul:expr) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
-        fn $name(c: (i128, i128), z0: (i128, i128), max: u32, tolerance: i128) -> Orbit {
+        fn $name(c: (i64, i64), z0: (i64, i64), max: u32, tolerance: i64) -> Orbit {
             const FRAC: u32 = $frac;
             // Casts are exact: the view keeps |c|, |z0| ≤ 3.5 (see the module docs).
-            let to = |q60: i128| from_q60(q60, FRAC) as $v;
+            let to = |q60: i64| from_q60(q60, FRAC) as $v;
             let (cr, ci) = (to(c.0), to(c.1));
             let (mut x, mut y) = (to(z0.0), to(z0.1));
             // A tolerance below one unit of this tier means exact comparison.
@@ -134,14 +136,14 @@ tier_kernel!(deep, i64, i128, 60, mul_wide);
 /// 128-bit library calls on Cortex-M) and a margin of 2⁻²⁰, which covers every rounding
 /// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
 /// or next to the boundary is iterated instead.
-fn in_cardioid_or_bulb((x, y): (i128, i128)) -> bool {
+fn in_cardioid_or_bulb((x, y): (i64, i64)) -> bool {
     const ONE: i64 = 1 << 28;
     const MARGIN: i64 = 1 << 36; // 2^-20 in Q56
                                  // Outside |re|, |im| < 2 nothing is inside, and the products below stay in range.
     if x.abs() >= 2 << 60 || y.abs() >= 2 << 60 {
         return false;
     }
-    let (x, y) = (shift_round(x, 32) as i64, shift_round(y, 32) as i64);
+    let (x, y) = (shift_round_i64(x, 32), shift_round_i64(y, 32));
     let y2 = y * y; // Q56
                     // Period-2 bulb: (x + 1)² + y² < 1/16.
     let x1 = x + ONE;
@@ -158,8 +160,8 @@ fn in_cardioid_or_bulb((x, y): (i128, i128)) -> bool {
 mod tests {
     use super::*;
 
-    fn q60(v: f64) -> i128 {
-        (v * (1u64 << 60) as f64) as i128
+    fn q60(v: f64) -> i64 {
+        (v * (1u64 << 60) as f64) as i64
     }
 
     #[test]

@@ -192,8 +192,8 @@ impl Render {
         }
     }
 
-    /// The dwell of the point with column part `re` and row part `im`.
-    fn compute_at(&mut self, re: i128, im: i128) -> u16 {
+    /// The dwell of the point with column part `re` and row part `im` (Q60).
+    fn compute_at(&mut self, re: i64, im: i64) -> u16 {
         let orbit = dwell(&self.view, (re, im), self.periodicity());
         self.stats.iterations += u64::from(orbit.iterations);
         self.stats.pixels += 1;
@@ -206,9 +206,9 @@ impl Render {
         let width = self.view.size.width;
         let area = Rectangle::new(Point::new(0, coordinate(j)), Size::new(width, 1));
         self.stats.draw_calls += 1;
-        let im = self.view.row(i64::from(j));
+        let im = in_view(self.view.row(i64::from(j)));
         let dwells = (0..width).map(|i| {
-            let re = self.view.column(i64::from(i));
+            let re = in_view(self.view.column(i64::from(i)));
             self.compute_at(re, im)
         });
         sink.dwells(&area, dwells)
@@ -222,13 +222,12 @@ impl Render {
         self.tile = [0; CELLS];
         for k in 0..TILE {
             let (column, row) = (i64::from(x0 + k), i64::from(y0 + k));
-            // Points of the view are within ±3.5 (checked by `View::new`), so they fit i64;
-            // columns and rows past the view's edge are not used.
+            // Columns and rows past the view's edge are not used.
             if let Some(slot) = self.columns.get_mut(k as usize) {
-                *slot = i64::try_from(self.view.column(column)).unwrap_or(0);
+                *slot = in_view(self.view.column(column));
             }
             if let Some(slot) = self.rows.get_mut(k as usize) {
-                *slot = i64::try_from(self.view.row(row)).unwrap_or(0);
+                *slot = in_view(self.view.row(row));
             }
         }
         self.subdivide(w, h);
@@ -303,7 +302,7 @@ impl Render {
             Some(0) => {
                 let re = self.columns.get(tx as usize).copied().unwrap_or(0);
                 let im = self.rows.get(ty as usize).copied().unwrap_or(0);
-                let value = self.compute_at(i128::from(re), i128::from(im));
+                let value = self.compute_at(re, im);
                 if let Some(cell) = self.tile.get_mut(index) {
                     *cell = value;
                 }
@@ -394,6 +393,12 @@ impl Render {
 /// Where cell (tx, ty) of a tile is in `Render::tile`.
 const fn cell_index(tx: u32, ty: u32) -> usize {
     (ty * TILE + tx) as usize
+}
+
+/// A point part of a pixel in the view: within ±3.5 (checked by `View::new`), so it fits an
+/// i64; 0 for parts past the view's edge, which are never used.
+fn in_view(q60: i128) -> i64 {
+    i64::try_from(q60).unwrap_or(0)
 }
 
 fn coordinate(value: u32) -> i32 {

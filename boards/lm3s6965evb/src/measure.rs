@@ -4,10 +4,12 @@
 
 use core::convert::Infallible;
 
-use embedded_graphics::{pixelcolor::Gray4, prelude::*};
+use embedded_graphics::{pixelcolor::Gray4, prelude::*, primitives::Rectangle};
 
 /// A 128×64 target with no memory: every pixel written (position and grey, in order) is
-/// folded into an FNV-1a checksum, so the host can check the MCU drew the same thing.
+/// folded into an FNV-1a checksum, so the host can check the MCU drew the same thing. Like a
+/// display driver it takes runs (`fill_contiguous`, `fill_solid`) without a `Pixel` and a
+/// bounds check each; the baselines draw through `draw_iter`, pixel by pixel.
 #[derive(Debug, Clone, Copy)]
 pub struct Checksum {
     /// The checksum so far.
@@ -59,6 +61,39 @@ impl DrawTarget for Checksum {
             }
         }
         Ok(())
+    }
+
+    /// Runs, as a display driver takes them: one bounds check per run, not per pixel (the
+    /// checksum is the same as pixel by pixel).
+    fn fill_contiguous<I: IntoIterator<Item = Gray4>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Infallible> {
+        let Some(bottom_right) = area.bottom_right() else {
+            return Ok(());
+        };
+        if area.intersection(&self.bounding_box()) != *area {
+            let pixels = area.points().zip(colors).map(|(p, c)| Pixel(p, c));
+            return self.draw_iter(pixels);
+        }
+        let mut colors = colors.into_iter();
+        for y in area.top_left.y..=bottom_right.y {
+            for x in area.top_left.x..=bottom_right.x {
+                let Some(color) = colors.next() else {
+                    return Ok(());
+                };
+                self.fold(x as u8);
+                self.fold(y as u8);
+                self.fold(color.into_storage());
+                self.pixels += 1;
+            }
+        }
+        Ok(())
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, color: Gray4) -> Result<(), Infallible> {
+        self.fill_contiguous(area, core::iter::repeat(color))
     }
 }
 

@@ -158,7 +158,9 @@ pub const COLOUR: Look<'static, Rgb565> = Look {
 };
 
 impl Scene {
-    /// Clears `target` to `look.background` and draws the scene into it.
+    /// Draws the scene over the whole of `target`: an L-system clears it to
+    /// `look.background` first; an escape-time view paints every pixel anyway, so clearing
+    /// would only double the traffic to the display.
     pub fn draw<D>(
         &self,
         target: &mut D,
@@ -168,7 +170,6 @@ impl Scene {
         D: DrawTarget,
         D::Color: From<Rgb888>,
     {
-        target.clear(look.background).map_err(DrawError::Target)?;
         match *self {
             Scene::LSystem {
                 axiom,
@@ -177,6 +178,7 @@ impl Scene {
                 order,
                 orientation,
             } => {
+                target.clear(look.background).map_err(DrawError::Target)?;
                 let angle = match angle {
                     SceneAngle::Divisions(n) => Angle::Divisions(n),
                     SceneAngle::Degrees(text) => {

@@ -6,7 +6,7 @@
 use std::convert::Infallible;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
-use tinyfractal_scenes::{Look, Work, COLOUR, GREY, SCENES};
+use tinyfractal_scenes::{Look, Scene, Work, COLOUR, GREY, SCENES};
 
 /// A frame that records every pixel and counts the ones that fall outside it.
 struct Frame<C> {
@@ -50,13 +50,13 @@ impl<C: PixelColor> DrawTarget for Frame<C> {
 
 /// Which pixels a look left as background (L-systems) or inside colour (escape time).
 fn marks<C: PixelColor + From<Rgb888>>(
-    scene: usize,
+    (name, scene): &(&str, Scene),
     size: Size,
     look: &Look<'_, C>,
 ) -> (Work, Vec<bool>) {
     let mut frame = Frame::new(size, look.background);
-    let work = SCENES[scene].1.draw(&mut frame, look).unwrap();
-    assert_eq!(frame.outside, 0, "{} drew outside {size}", SCENES[scene].0);
+    let work = scene.draw(&mut frame, look).unwrap();
+    assert_eq!(frame.outside, 0, "{name} drew outside {size}");
     let marked = match work {
         Work::Segments(_) => frame.pixels.iter().map(|&p| p != look.background).collect(),
         Work::Iterations(_) => frame.pixels.iter().map(|&p| p == look.inside).collect(),
@@ -67,22 +67,17 @@ fn marks<C: PixelColor + From<Rgb888>>(
 #[test]
 fn every_scene_marks_the_same_pixels_in_colour_and_in_grey() {
     // The deep zoom (1000 iterations at 60 bits) is left to the QEMU test at 128×64.
-    for scene in 0..SCENES.len() - 1 {
+    for scene @ (name, _) in &SCENES[..SCENES.len() - 1] {
         for size in [Size::new(320, 240), Size::new(240, 320)] {
             let (work_colour, colour) = marks(scene, size, &COLOUR);
             let (work_grey, grey) = marks(scene, size, &GREY);
-            assert_eq!(work_colour, work_grey, "{}", SCENES[scene].0);
+            assert_eq!(work_colour, work_grey, "{name}");
             let marked = colour.iter().filter(|&&m| m).count();
             assert!(
                 marked > colour.len() / 100,
-                "{} at {size}: only {marked} pixels marked",
-                SCENES[scene].0
+                "{name} at {size}: only {marked} pixels marked"
             );
-            assert!(
-                colour == grey,
-                "{} at {size}: looks differ",
-                SCENES[scene].0
-            );
+            assert!(colour == grey, "{name} at {size}: looks differ");
         }
     }
 }
