@@ -13,7 +13,7 @@
 //! whose sign depends on y.
 
 use super::view::{Fractal, Tier, View};
-use crate::real::{mul_wide, shift_round_i64};
+use crate::real::{mul_i32_wide, mul_wide, shift_round_i64};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
 /// iterations 1, 2, 4, 8, ...).
@@ -71,9 +71,10 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
     }
 }
 
-/// One tier's iteration: value type `$v`, product type `$w`, `$frac` fractional bits.
+/// One tier's iteration: value type `$v` (unsigned twin `$u`), product type `$w`, `$frac`
+/// fractional bits, exact product `$mul`.
 macro_rules! tier_kernel {
-    ($name:ident, $v:ty, $w:ty, $frac:expr, $mul:expr) => {
+    ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
         fn $name(c: (i64, i64), z0: (i64, i64), max: u32, tolerance: i64) -> Orbit {
@@ -84,6 +85,10 @@ macro_rules! tier_kernel {
             let (mut x, mut y) = (to(z0.0), to(z0.1));
             // A tolerance below one unit of this tier means exact comparison.
             let tolerance = from_q60(tolerance, FRAC) as $v;
+            // |d| ≤ tolerance as one unsigned comparison: d + tolerance in 0..=2·tolerance.
+            // Orbit points compared have |x|, |y| ≤ 2, so nothing wraps.
+            let span = (tolerance as $u).wrapping_mul(2);
+            let near = move |d: $v| (d.wrapping_add(tolerance) as $u) <= span;
             let four: $w = 4 << (2 * FRAC);
             let mul: fn($v, $v) -> $w = $mul;
             let mut x2 = mul(x, x);
@@ -95,8 +100,11 @@ macro_rules! tier_kernel {
                 };
             }
             let (mut saved_x, mut saved_y) = (x, y);
+            // At most 2·max ≤ 2^17 (the view caps max at u16::MAX): it cannot overflow.
             let mut next_save: u32 = 1;
-            for n in 1..=max {
+            let mut n: u32 = 0;
+            while n < max {
+                n += 1;
                 let xy = mul(x, y);
                 // 2xy: division truncates toward zero, so a mirrored orbit stays exact.
                 y = (xy / (1 << (FRAC - 1))) as $v + ci;
@@ -109,7 +117,7 @@ macro_rules! tier_kernel {
                         iterations: n,
                     };
                 }
-                if (x - saved_x).abs() <= tolerance && (y - saved_y).abs() <= tolerance {
+                if near(x - saved_x) && near(y - saved_y) {
                     return Orbit {
                         dwell: max,
                         iterations: n,
@@ -117,7 +125,7 @@ macro_rules! tier_kernel {
                 }
                 if n == next_save {
                     (saved_x, saved_y) = (x, y);
-                    next_save = next_save.saturating_mul(2);
+                    next_save *= 2;
                 }
             }
             Orbit {
@@ -128,32 +136,38 @@ macro_rules! tier_kernel {
     };
 }
 
-tier_kernel!(narrow, i32, i32, 12, |a, b| a * b);
-tier_kernel!(standard, i32, i64, 28, |a, b| i64::from(a) * i64::from(b));
-tier_kernel!(deep, i64, i128, 60, mul_wide);
+tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b);
+tier_kernel!(standard, i32, u32, i64, 28, mul_i32_wide);
+tier_kernel!(deep, i64, u64, i128, 60, mul_wide);
 
 /// Inside the main cardioid or the period-2 bulb, decided in Q28 with 64-bit products (no
 /// 128-bit library calls on Cortex-M) and a margin of 2⁻²⁰, which covers every rounding
 /// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
 /// or next to the boundary is iterated instead.
 fn in_cardioid_or_bulb((x, y): (i64, i64)) -> bool {
-    const ONE: i64 = 1 << 28;
+    const ONE: i32 = 1 << 28;
     const MARGIN: i64 = 1 << 36; // 2^-20 in Q56
-                                 // Outside |re|, |im| < 2 nothing is inside, and the products below stay in range.
+                                 // Outside |re|, |im| < 2 nothing is inside, and the values below fit in an i32.
     if x.abs() >= 2 << 60 || y.abs() >= 2 << 60 {
         return false;
     }
-    let (x, y) = (shift_round_i64(x, 32), shift_round_i64(y, 32));
-    let y2 = y * y; // Q56
-                    // Period-2 bulb: (x + 1)² + y² < 1/16.
+    let (x, y) = (shift_round_i64(x, 32) as i32, shift_round_i64(y, 32) as i32);
+    let y2 = mul_i32_wide(y, y); // Q56
+                                 // Period-2 bulb: (x + 1)² + y² < 1/16.
     let x1 = x + ONE;
-    if x1 * x1 + y2 + MARGIN < 1 << 52 {
+    if mul_i32_wide(x1, x1) + y2 + MARGIN < 1 << 52 {
         return true;
     }
     // Cardioid: q(q + x - 1/4) < y²/4 with q = (x - 1/4)² + y², all below 2^63.
     let xq = x - ONE / 4;
-    let q = (xq * xq + y2) >> 28; // Q28, rounded down: the margin covers it
-    q * (q + xq) + MARGIN < y2 / 4
+    let q = (mul_i32_wide(xq, xq) + y2) >> 28; // Q28, rounded down: the margin covers it
+                                               // From q ≥ 2 on, q + xq ≥ 1/4 and q ≥ y², so q(q + xq) ≥ y²/4: outside. Below it, q
+                                               // and q + xq fit in an i32.
+    if q >= 2 << 28 {
+        return false;
+    }
+    let q = q as i32;
+    mul_i32_wide(q, q + xq) + MARGIN < y2 / 4
 }
 
 #[cfg(test)]

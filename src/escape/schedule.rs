@@ -280,15 +280,8 @@ impl Render {
         self.stats.draw_calls += 1;
         match uniform {
             Some(value) => sink.uniform(&area, value),
-            None => {
-                let tile = &self.tile;
-                let at = move |tx: u32, ty: u32| tile.get(cell_index(tx, ty)).copied().unwrap_or(0);
-                let column = move |k: u32| if reversed { w - 1 - k } else { k };
-                sink.dwells(
-                    &area,
-                    rows.flat_map(move |ty| (0..w).map(move |k| at(column(k), ty))),
-                )
-            }
+            None if reversed => sink.dwells(&area, Cells::<_, true>::new(&self.tile, rows, w)),
+            None => sink.dwells(&area, Cells::<_, false>::new(&self.tile, rows, w)),
         }
     }
 
@@ -386,6 +379,45 @@ impl Render {
                     let _ = stack.push(block);
                 }
             }
+        }
+    }
+}
+
+/// The first `w` cells of tile rows `rows`, each row right to left if `REVERSED`: a slice
+/// walk per row, a few instructions a pixel.
+struct Cells<'a, R, const REVERSED: bool> {
+    tile: &'a [u16],
+    rows: R,
+    row: core::slice::Iter<'a, u16>,
+    w: usize,
+}
+
+impl<'a, R: Iterator<Item = u32>, const REVERSED: bool> Cells<'a, R, REVERSED> {
+    fn new(tile: &'a [u16], rows: R, w: u32) -> Self {
+        Self {
+            tile,
+            rows,
+            row: [].iter(),
+            w: w as usize,
+        }
+    }
+}
+
+impl<R: Iterator<Item = u32>, const REVERSED: bool> Iterator for Cells<'_, R, REVERSED> {
+    type Item = u16;
+
+    fn next(&mut self) -> Option<u16> {
+        loop {
+            let cell = if REVERSED {
+                self.row.next_back()
+            } else {
+                self.row.next()
+            };
+            if let Some(&dwell) = cell {
+                return Some(dwell);
+            }
+            let start = cell_index(0, self.rows.next()?);
+            self.row = self.tile.get(start..start + self.w).unwrap_or(&[]).iter();
         }
     }
 }
