@@ -239,6 +239,22 @@ pub(crate) fn mul_i32_halves(a: i32, b: i32) -> i64 {
     }
 }
 
+/// 2ab as (a + b)² − a² − b², given the squares, with (a + b)² from 16-bit halves: where
+/// there is no long multiply (ARMv6-M) a square needs neither signs nor a fourth 16×16
+/// product, so this costs about half a signed product. `a + b` must fit in an i32.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn twice_product_by_squares(a: i32, b: i32, a_squared: i64, b_squared: i64) -> i64 {
+    let sum = (a + b).unsigned_abs();
+    let (low, high) = (sum & 0xFFFF, sum >> 16);
+    let cross = low * high; // 2·cross·2^16 = cross·2^17
+    let (low_word, carry) = (low * low).overflowing_add(cross << 17);
+    let high_word = high * high + (cross >> 15) + u32::from(carry);
+    // (a + b)² ≤ 2^62 for a sum within i32.
+    let sum_squared = ((u64::from(high_word) << 32) | u64::from(low_word)) as i64;
+    sum_squared - a_squared - b_squared
+}
+
 /// The exact product of two i64 as i128, from four 32×32→64 products: an i128 multiply is
 /// a library call on Cortex-M, and these are single instructions on M3/M4.
 pub(crate) fn mul_wide(a: i64, b: i64) -> i128 {
@@ -324,6 +340,14 @@ mod tests {
                 assert_eq!(mul_u32_halves(a, b), u64::from(a) * u64::from(b), "{a} {b}");
                 let (a, b) = (a as i32, b as i32);
                 assert_eq!(mul_i32_halves(a, b), i64::from(a) * i64::from(b), "{a} {b}");
+                // The sum must fit in an i32: halve both.
+                let (a, b) = (a / 2, b / 2);
+                let (a2, b2) = (i64::from(a) * i64::from(a), i64::from(b) * i64::from(b));
+                assert_eq!(
+                    twice_product_by_squares(a, b, a2, b2),
+                    2 * i64::from(a) * i64::from(b),
+                    "{a} {b}"
+                );
             }
         }
     }

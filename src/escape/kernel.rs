@@ -13,6 +13,8 @@
 //! whose sign depends on y.
 
 use super::view::{Fractal, Tier, View};
+#[cfg(tinyfractal_no_long_multiply)]
+use crate::real::twice_product_by_squares;
 use crate::real::{mul_i32_wide, mul_wide, shift_round_i64};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
@@ -72,9 +74,10 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
 }
 
 /// One tier's iteration: value type `$v` (unsigned twin `$u`), product type `$w`, `$frac`
-/// fractional bits, exact product `$mul`.
+/// fractional bits, exact product `$mul`, and `$twice_xy(x, y, x², y²)`: 2xy in the tier,
+/// truncated toward zero (so a mirrored orbit stays exact).
 macro_rules! tier_kernel {
-    ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr) => {
+    ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr, $twice_xy:expr) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
         fn $name(c: (i64, i64), z0: (i64, i64), max: u32, tolerance: i64) -> Orbit {
@@ -91,6 +94,7 @@ macro_rules! tier_kernel {
             let near = move |d: $v| (d.wrapping_add(tolerance) as $u) <= span;
             let four: $w = 4 << (2 * FRAC);
             let mul: fn($v, $v) -> $w = $mul;
+            let twice_xy: fn($v, $v, $w, $w) -> $v = $twice_xy;
             let mut x2 = mul(x, x);
             let mut y2 = mul(y, y);
             if x2 + y2 > four {
@@ -105,9 +109,7 @@ macro_rules! tier_kernel {
             let mut n: u32 = 0;
             while n < max {
                 n += 1;
-                let xy = mul(x, y);
-                // 2xy: division truncates toward zero, so a mirrored orbit stays exact.
-                y = (xy / (1 << (FRAC - 1))) as $v + ci;
+                y = twice_xy(x, y, x2, y2) + ci;
                 x = ((x2 - y2) >> FRAC) as $v + cr;
                 x2 = mul(x, x);
                 y2 = mul(y, y);
@@ -136,9 +138,29 @@ macro_rules! tier_kernel {
     };
 }
 
-tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b);
-tier_kernel!(standard, i32, u32, i64, 28, mul_i32_wide);
-tier_kernel!(deep, i64, u64, i128, 60, mul_wide);
+tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b, |x, y, _, _| x * y
+    / (1 << 11));
+tier_kernel!(standard, i32, u32, i64, 28, mul_i32_wide, standard_twice_xy);
+tier_kernel!(deep, i64, u64, i128, 60, mul_wide, |x, y, _, _| {
+    (mul_wide(x, y) / (1 << 59)) as i64
+});
+
+/// The standard tier's 2xy (Q28, truncated toward zero): `smull` and a shift where there is
+/// a long multiply; from the squares the loop already has where there is not (ARMv6-M).
+/// Both are exact, so every core gets the same bits.
+#[inline(always)]
+fn standard_twice_xy(x: i32, y: i32, x2: i64, y2: i64) -> i32 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        // |x|, |y| ≤ 2 (Q28) here, so x + y fits in an i32.
+        (twice_product_by_squares(x, y, x2, y2) / (1 << 28)) as i32
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        let _ = (x2, y2);
+        (mul_i32_wide(x, y) / (1 << 27)) as i32
+    }
+}
 
 /// Inside the main cardioid or the period-2 bulb, decided in Q28 with 64-bit products (no
 /// 128-bit library calls on Cortex-M) and a margin of 2⁻²⁰, which covers every rounding
