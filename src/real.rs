@@ -246,12 +246,9 @@ pub(crate) fn mul_i32_halves(a: i32, b: i32) -> i64 {
 #[inline(always)]
 pub(crate) fn twice_product_by_squares(a: i32, b: i32, a_squared: i64, b_squared: i64) -> i64 {
     let sum = (a + b).unsigned_abs();
-    let (low, high) = (sum & 0xFFFF, sum >> 16);
-    let cross = low * high; // 2·cross·2^16 = cross·2^17
-    let (low_word, carry) = (low * low).overflowing_add(cross << 17);
-    let high_word = high * high + (cross >> 15) + u32::from(carry);
-    // (a + b)² ≤ 2^62 for a sum within i32.
-    let sum_squared = ((u64::from(high_word) << 32) | u64::from(low_word)) as i64;
+    // (a + b)² ≤ 2^62 for a sum within i32. The compiler shares the two equal cross
+    // products of a square: three 16×16 multiplies.
+    let sum_squared = mul_u32_halves(sum, sum) as i64;
     sum_squared - a_squared - b_squared
 }
 
