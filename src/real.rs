@@ -272,26 +272,32 @@ pub(crate) fn mul_wide(a: i64, b: i64) -> i128 {
     }
 }
 
-/// `value / 2^shift`, rounded half away from zero.
-pub(crate) const fn shift_round(value: i128, shift: u32) -> i128 {
-    let half = 1i128 << (shift - 1);
-    if value >= 0 {
-        (value + half) >> shift
-    } else {
-        -((-value + half) >> shift)
-    }
+/// `value / 2^shift` rounded half away from zero (so negation commutes), for one width.
+macro_rules! shift_round_in {
+    ($(#[$doc:meta])* $name:ident, $t:ty) => {
+        $(#[$doc])*
+        pub(crate) const fn $name(value: $t, shift: u32) -> $t {
+            let half: $t = 1 << (shift - 1);
+            if value >= 0 {
+                (value + half) >> shift
+            } else {
+                -((-value + half) >> shift)
+            }
+        }
+    };
 }
 
-/// [`shift_round`] in 64 bits, for per-pixel work on 32-bit cores (a 128-bit shift costs a
-/// dozen instructions there). `|value| + 2^(shift-1)` must fit in an i64.
-pub(crate) const fn shift_round_i64(value: i64, shift: u32) -> i64 {
-    let half = 1i64 << (shift - 1);
-    if value >= 0 {
-        (value + half) >> shift
-    } else {
-        -((-value + half) >> shift)
-    }
-}
+shift_round_in!(
+    /// `value / 2^shift`, rounded half away from zero.
+    shift_round,
+    i128
+);
+shift_round_in!(
+    /// [`shift_round`] in 64 bits, for per-pixel work on 32-bit cores (a 128-bit shift costs
+    /// a dozen instructions there). `|value| + 2^(shift-1)` must fit in an i64.
+    shift_round_i64,
+    i64
+);
 
 /// `numerator / denominator` rounded half away from zero; the denominator must not be 0.
 pub(crate) const fn div_round(numerator: i128, denominator: i128) -> i128 {

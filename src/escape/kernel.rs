@@ -138,8 +138,9 @@ macro_rules! tier_kernel {
     };
 }
 
-tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b, |x, y, _, _| x * y
-    / (1 << 11));
+tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b, |x, y, _, _| {
+    x * y / (1 << 11)
+});
 tier_kernel!(standard, i32, u32, i64, 28, mul_i32_wide, standard_twice_xy);
 tier_kernel!(deep, i64, u64, i128, 60, mul_wide, |x, y, _, _| {
     (mul_wide(x, y) / (1 << 59)) as i64
@@ -168,23 +169,26 @@ fn standard_twice_xy(x: i32, y: i32, x2: i64, y2: i64) -> i32 {
 /// or next to the boundary is iterated instead.
 fn in_cardioid_or_bulb((x, y): (i64, i64)) -> bool {
     const ONE: i32 = 1 << 28;
-    const MARGIN: i64 = 1 << 36; // 2^-20 in Q56
-                                 // Outside |re|, |im| < 2 nothing is inside, and the values below fit in an i32.
+    // 2^-20 in Q56.
+    const MARGIN: i64 = 1 << 36;
+    // Outside |re|, |im| < 2 nothing is inside, and the values below fit in an i32.
     if x.abs() >= 2 << 60 || y.abs() >= 2 << 60 {
         return false;
     }
     let (x, y) = (shift_round_i64(x, 32) as i32, shift_round_i64(y, 32) as i32);
-    let y2 = mul_i32_wide(y, y); // Q56
-                                 // Period-2 bulb: (x + 1)² + y² < 1/16.
+    // Q56.
+    let y2 = mul_i32_wide(y, y);
+    // Period-2 bulb: (x + 1)² + y² < 1/16.
     let x1 = x + ONE;
     if mul_i32_wide(x1, x1) + y2 + MARGIN < 1 << 52 {
         return true;
     }
     // Cardioid: q(q + x - 1/4) < y²/4 with q = (x - 1/4)² + y², all below 2^63.
     let xq = x - ONE / 4;
-    let q = (mul_i32_wide(xq, xq) + y2) >> 28; // Q28, rounded down: the margin covers it
-                                               // From q ≥ 2 on, q + xq ≥ 1/4 and q ≥ y², so q(q + xq) ≥ y²/4: outside. Below it, q
-                                               // and q + xq fit in an i32.
+    // Q28, rounded down: the margin covers it.
+    let q = (mul_i32_wide(xq, xq) + y2) >> 28;
+    // From q ≥ 2 on, q + xq ≥ 1/4 and q ≥ y², so q(q + xq) ≥ y²/4: outside. Below it, q and
+    // q + xq fit in an i32.
     if q >= 2 << 28 {
         return false;
     }

@@ -36,6 +36,14 @@ impl Checksum {
     fn fold(&mut self, byte: u8) {
         self.value = (self.value ^ u32::from(byte)).wrapping_mul(0x0100_0193);
     }
+
+    /// One pixel written: its position (inside the target) and grey.
+    fn record(&mut self, x: i32, y: i32, color: Gray4) {
+        self.fold(x as u8);
+        self.fold(y as u8);
+        self.fold(color.into_storage());
+        self.pixels += 1;
+    }
 }
 
 impl OriginDimensions for Checksum {
@@ -54,10 +62,7 @@ impl DrawTarget for Checksum {
     ) -> Result<(), Infallible> {
         for Pixel(p, color) in pixels {
             if (0..128).contains(&p.x) && (0..64).contains(&p.y) {
-                self.fold(p.x as u8);
-                self.fold(p.y as u8);
-                self.fold(color.into_storage());
-                self.pixels += 1;
+                self.record(p.x, p.y, color);
             }
         }
         Ok(())
@@ -83,10 +88,7 @@ impl DrawTarget for Checksum {
                 let Some(color) = colors.next() else {
                     return Ok(());
                 };
-                self.fold(x as u8);
-                self.fold(y as u8);
-                self.fold(color.into_storage());
-                self.pixels += 1;
+                self.record(x, y, color);
             }
         }
         Ok(())
