@@ -26,7 +26,7 @@ use rp2040_hal::{
     gpio::{FunctionSpi, Pins},
     pac, Sio, Spi, Timer, Watchdog,
 };
-use tinyfractal_scenes::{Work, COLOUR, SCENES};
+use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, SCENES};
 
 /// The second-stage bootloader for the Pico's W25Q080 flash, first in the image.
 // SAFETY: `.boot2` is the 256 bytes memory.x reserves at the start of the flash for it.
@@ -111,20 +111,12 @@ fn main() -> ! {
                 Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
                 Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
             }
-            wait_for_press_or(&timer, &mut button, SHOW_FOR_MS);
+            let shown = timer.get_counter();
+            wait_for_press_or(
+                SHOW_FOR_MS,
+                || (timer.get_counter() - shown).to_millis(),
+                || button.is_low().unwrap_or(false), // active low
+            );
         }
-    }
-}
-
-/// Returns when the (active-low) button is pressed and released, or after `ms`.
-fn wait_for_press_or(timer: &Timer, button: &mut impl InputPin, ms: u64) {
-    let start = timer.get_counter();
-    let mut pressed = false;
-    while (timer.get_counter() - start).to_millis() < ms {
-        let low = button.is_low().unwrap_or(false);
-        if pressed && !low {
-            return;
-        }
-        pressed |= low;
     }
 }

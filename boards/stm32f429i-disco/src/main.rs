@@ -9,7 +9,6 @@
 
 use defmt::{error, info, Debug2Format, Display2Format};
 use defmt_rtt as _;
-use embedded_hal::digital::InputPin;
 use embedded_hal_bus::spi::ExclusiveDevice;
 use fugit::TimerDurationU32;
 use mipidsi::{
@@ -26,14 +25,14 @@ use stm32f4xx_hal::{
     spi::{Mode, Phase, Polarity},
     timer::Counter,
 };
-use tinyfractal_scenes::{Work, COLOUR, SCENES};
+use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, SCENES};
 
 /// The board's 8 MHz HSE clock.
 const HSE_MHZ: u32 = 8;
 /// The ILI9341's serial interface is specified to 10 MHz writes; it is commonly run faster.
 const SPI_MHZ: u32 = 22;
 /// How long a scene stays up without a button press.
-const SHOW_FOR_MS: u32 = 10_000;
+const SHOW_FOR_MS: u64 = 10_000;
 /// The timer that measures scenes and timeouts counts at 10 kHz (a 16-bit prescaler cannot
 /// reach 1 kHz from 90 MHz); TIM2 is 32 bits, so it wraps after five days.
 const TICK_HZ: u32 = 10_000;
@@ -83,7 +82,7 @@ fn main() -> ! {
     );
     let cs = gpioc.pc2.into_push_pull_output();
     let dc = gpiod.pd13.into_push_pull_output();
-    let mut button = gpioa.pa0.into_floating_input();
+    let button = gpioa.pa0.into_floating_input();
 
     let Ok(device) = ExclusiveDevice::new(spi, cs, dp.TIM5.delay_us(&mut rcc));
     let mut buffer = [0_u8; 512];
@@ -123,20 +122,12 @@ fn main() -> ! {
                 Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
                 Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
             }
-            wait_for_press_or(&clock, &mut button, SHOW_FOR_MS);
+            let shown = clock.now();
+            wait_for_press_or(
+                SHOW_FOR_MS,
+                || u64::from((clock.now() - shown).to_millis()),
+                || button.is_high(), // active high
+            );
         }
-    }
-}
-
-/// Returns when the (active-high) button is pressed and released, or after `ms`.
-fn wait_for_press_or(clock: &Counter<pac::TIM2, TICK_HZ>, button: &mut impl InputPin, ms: u32) {
-    let start = clock.now();
-    let mut pressed = false;
-    while (clock.now() - start).to_millis() < ms {
-        let high = button.is_high().unwrap_or(false);
-        if pressed && !high {
-            return;
-        }
-        pressed |= high;
     }
 }
