@@ -9,8 +9,10 @@
 //! The deep tier's 64×64→128 products are built from 32-bit halves (see `mul_wide`), since
 //! an i128 multiply is a library call on Cortex-M.
 //!
-//! Mirrored points stay mirrored exactly: 2xy is truncated toward zero, the only product
-//! whose sign depends on y.
+//! Mirrored points have the same dwell by construction: a Mandelbrot point is iterated as
+//! its twin in the upper half-plane (|im|), so products round down with a plain shift
+//! instead of toward zero (which costs a correction per step). A Julia set's half turn
+//! needs nothing: z₀ and −z₀ have the same z₁ however products round.
 
 use super::view::{Fractal, Tier, View};
 #[cfg(tinyfractal_no_long_multiply)]
@@ -36,31 +38,94 @@ pub(crate) struct Orbit {
     pub(crate) iterations: u32,
 }
 
-/// The dwell of the point `point` (Q60, within ±3.5 as the view guarantees) of `view`.
-/// Everything per pixel is 64-bit or narrower: a 128-bit step is a dozen instructions on a
-/// 32-bit core.
-pub(crate) fn dwell(view: &View, point: (i64, i64), periodicity: Periodicity) -> Orbit {
-    let max = view.max_iterations;
-    let (c, z0) = match view.fractal {
-        Fractal::Mandelbrot => {
-            if in_cardioid_or_bulb(point) {
-                return Orbit {
-                    dwell: max,
-                    iterations: 0,
-                };
-            }
-            (point, (0, 0))
+/// One coordinate of a pixel's point in the tier's units, converted once per column or
+/// row rather than once per pixel.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) struct Part(i64);
+
+/// What is the same for every pixel of a render, in the tier's units: converted once, so
+/// a pixel costs its cardioid test and its iterations, nothing more.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Kernel {
+    tier: Tier,
+    max: u32,
+    /// The Julia parameter, or `None` for the Mandelbrot set.
+    julia: Option<(i64, i64)>,
+    /// How close a repeat must be (0: exactly).
+    tolerance: i64,
+}
+
+impl Kernel {
+    /// The kernel of `view`, recognising repeats as `periodicity` says.
+    pub(crate) fn new(view: &View, periodicity: Periodicity) -> Self {
+        let frac = view.tier.frac_bits();
+        let tolerance = match periodicity {
+            Periodicity::Exact => 0,
+            Periodicity::Within(bits) => bits,
+        };
+        Self {
+            tier: view.tier,
+            max: view.max_iterations,
+            julia: match view.fractal {
+                Fractal::Mandelbrot => None,
+                Fractal::Julia { re, im } => {
+                    Some((from_q60(re.to_bits(), frac), from_q60(im.to_bits(), frac)))
+                }
+            },
+            // A tolerance below one unit of the tier means exact comparison.
+            tolerance: from_q60(tolerance, frac),
         }
-        Fractal::Julia { re, im } => ((re.to_bits(), im.to_bits()), point),
-    };
-    let tolerance = match periodicity {
-        Periodicity::Exact => 0,
-        Periodicity::Within(bits) => bits,
-    };
-    match view.tier {
-        Tier::Narrow => narrow(c, z0, max, tolerance),
-        Tier::Standard => standard(c, z0, max, tolerance),
-        Tier::Deep => deep(c, z0, max, tolerance),
+    }
+
+    /// A point coordinate (Q60, within ±3.5 as the view guarantees) ready for
+    /// [`dwell`](Self::dwell).
+    pub(crate) fn part(&self, q60: i64) -> Part {
+        Part(from_q60(q60, self.tier.frac_bits()))
+    }
+
+    /// A part in Q28 for the cardioid test: exact from the narrow tier (so the test is about
+    /// the point iterated), rounded from the deep one (the test's margin covers that).
+    fn q28(&self, part: Part) -> i32 {
+        // Within ±3.5 in any tier, so the Q28 value fits an i32.
+        match self.tier {
+            Tier::Narrow => (part.0 << 16) as i32,
+            Tier::Standard => part.0 as i32,
+            Tier::Deep => shift_round_i64(part.0, 32) as i32,
+        }
+    }
+
+    /// The dwell of the point (`re`, `im`).
+    pub(crate) fn dwell(&self, re: Part, im: Part) -> Orbit {
+        let max = self.max;
+        let (c, z0) = match self.julia {
+            None => {
+                if in_cardioid_or_bulb(self.q28(re), self.q28(im)) {
+                    return Orbit {
+                        dwell: max,
+                        iterations: 0,
+                    };
+                }
+                // The upper half-plane twin: the same dwell, exactly (see the module docs).
+                ((re.0, im.0.abs()), (0, 0))
+            }
+            Some(k) => (k, (re.0, im.0)),
+        };
+        // The casts are exact: every value is within ±3.5 in the tier's units.
+        match self.tier {
+            Tier::Narrow => narrow(
+                (c.0 as i32, c.1 as i32),
+                (z0.0 as i32, z0.1 as i32),
+                max,
+                self.tolerance as i32,
+            ),
+            Tier::Standard => standard(
+                (c.0 as i32, c.1 as i32),
+                (z0.0 as i32, z0.1 as i32),
+                max,
+                self.tolerance as i32,
+            ),
+            Tier::Deep => deep(c, z0, max, self.tolerance),
+        }
     }
 }
 
@@ -73,25 +138,22 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
     }
 }
 
-/// One tier's iteration: value type `$v` (unsigned twin `$u`), product type `$w`, `$frac`
-/// fractional bits, exact product `$mul`, and `$twice_xy(x, y, x², y²)`: 2xy in the tier,
-/// truncated toward zero (so a mirrored orbit stays exact).
+/// One tier's iteration from z0 with parameter c, both in the tier's units: value type `$v`
+/// (unsigned twin `$u`), product type `$w`, `$frac` fractional bits, exact product `$mul`,
+/// and `$twice_xy(x, y, x², y²)`: 2xy in the tier, rounded down.
+///
+/// Repeats are found by Brent's method: the orbit point saved at n = 0, 1, 2, 4, 8, ... is
+/// compared with every point up to the next save. Each stretch between saves is a loop of
+/// its own, so the step itself tests nothing but escape and repeat.
 macro_rules! tier_kernel {
     ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr, $twice_xy:expr) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
-        fn $name(c: (i64, i64), z0: (i64, i64), max: u32, tolerance: i64) -> Orbit {
+        fn $name((cr, ci): ($v, $v), (mut x, mut y): ($v, $v), max: u32, tolerance: $v) -> Orbit {
             const FRAC: u32 = $frac;
-            // Casts are exact: the view keeps |c|, |z0| ≤ 3.5 (see the module docs).
-            let to = |q60: i64| from_q60(q60, FRAC) as $v;
-            let (cr, ci) = (to(c.0), to(c.1));
-            let (mut x, mut y) = (to(z0.0), to(z0.1));
-            // A tolerance below one unit of this tier means exact comparison.
-            let tolerance = from_q60(tolerance, FRAC) as $v;
             // |d| ≤ tolerance as one unsigned comparison: d + tolerance in 0..=2·tolerance.
             // Orbit points compared have |x|, |y| ≤ 2, so nothing wraps.
             let span = (tolerance as $u).wrapping_mul(2);
-            let near = move |d: $v| (d.wrapping_add(tolerance) as $u) <= span;
             let four: $w = 4 << (2 * FRAC);
             let mul: fn($v, $v) -> $w = $mul;
             let twice_xy: fn($v, $v, $w, $w) -> $v = $twice_xy;
@@ -103,50 +165,60 @@ macro_rules! tier_kernel {
                     iterations: 0,
                 };
             }
-            let (mut saved_x, mut saved_y) = (x, y);
+            // Steps taken before the current stretch.
+            let mut n: u32 = 0;
             // At most 2·max ≤ 2^17 (the view caps max at u16::MAX): it cannot overflow.
             let mut next_save: u32 = 1;
-            let mut n: u32 = 0;
-            while n < max {
-                n += 1;
-                y = twice_xy(x, y, x2, y2) + ci;
-                x = ((x2 - y2) >> FRAC) as $v + cr;
-                x2 = mul(x, x);
-                y2 = mul(y, y);
-                if x2 + y2 > four {
-                    return Orbit {
-                        dwell: n,
-                        iterations: n,
-                    };
+            loop {
+                // The saved point, less the tolerance: x − saved + tolerance in one step.
+                let (saved_x, saved_y) = (x.wrapping_sub(tolerance), y.wrapping_sub(tolerance));
+                let stretch = next_save.min(max) - n;
+                // Counts down, so the step keeps one counter in a register, not two.
+                let mut left = stretch;
+                while left > 0 {
+                    left -= 1;
+                    y = twice_xy(x, y, x2, y2) + ci;
+                    x = ((x2 - y2) >> FRAC) as $v + cr;
+                    x2 = mul(x, x);
+                    y2 = mul(y, y);
+                    if x2 + y2 > four {
+                        let n = n + stretch - left;
+                        return Orbit {
+                            dwell: n,
+                            iterations: n,
+                        };
+                    }
+                    if (x.wrapping_sub(saved_x) as $u) <= span
+                        && (y.wrapping_sub(saved_y) as $u) <= span
+                    {
+                        return Orbit {
+                            dwell: max,
+                            iterations: n + stretch - left,
+                        };
+                    }
                 }
-                if near(x - saved_x) && near(y - saved_y) {
+                n += stretch;
+                if n >= max {
                     return Orbit {
                         dwell: max,
-                        iterations: n,
+                        iterations: max,
                     };
                 }
-                if n == next_save {
-                    (saved_x, saved_y) = (x, y);
-                    next_save *= 2;
-                }
-            }
-            Orbit {
-                dwell: max,
-                iterations: max,
+                next_save *= 2;
             }
         }
     };
 }
 
 tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b, |x, y, _, _| {
-    x * y / (1 << 11)
+    (x * y) >> 11
 });
 tier_kernel!(standard, i32, u32, i64, 28, mul_i32_wide, standard_twice_xy);
 tier_kernel!(deep, i64, u64, i128, 60, mul_wide, |x, y, _, _| {
-    (mul_wide(x, y) / (1 << 59)) as i64
+    (mul_wide(x, y) >> 59) as i64
 });
 
-/// The standard tier's 2xy (Q28, truncated toward zero): `smull` and a shift where there is
+/// The standard tier's 2xy (Q28, rounded down): `smull` and a shift where there is
 /// a long multiply; from the squares the loop already has where there is not (ARMv6-M).
 /// Both are exact, so every core gets the same bits.
 #[inline(always)]
@@ -154,28 +226,24 @@ fn standard_twice_xy(x: i32, y: i32, x2: i64, y2: i64) -> i32 {
     #[cfg(tinyfractal_no_long_multiply)]
     {
         // |x|, |y| ≤ 2 (Q28) here, so x + y fits in an i32.
-        (twice_product_by_squares(x, y, x2, y2) / (1 << 28)) as i32
+        (twice_product_by_squares(x, y, x2, y2) >> 28) as i32
     }
     #[cfg(not(tinyfractal_no_long_multiply))]
     {
         let _ = (x2, y2);
-        (mul_i32_wide(x, y) / (1 << 27)) as i32
+        (mul_i32_wide(x, y) >> 27) as i32
     }
 }
 
 /// Inside the main cardioid or the period-2 bulb, decided in Q28 with 64-bit products (no
 /// 128-bit library calls on Cortex-M) and a margin of 2⁻²⁰, which covers every rounding
 /// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
-/// or next to the boundary is iterated instead.
-fn in_cardioid_or_bulb((x, y): (i64, i64)) -> bool {
+/// or next to the boundary is iterated instead. |x|, |y| ≤ 3.5 (the view's limit), so every
+/// value below fits its type.
+fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
     const ONE: i32 = 1 << 28;
     // 2^-20 in Q56.
     const MARGIN: i64 = 1 << 36;
-    // Outside |re|, |im| < 2 nothing is inside, and the values below fit in an i32.
-    if x.abs() >= 2 << 60 || y.abs() >= 2 << 60 {
-        return false;
-    }
-    let (x, y) = (shift_round_i64(x, 32) as i32, shift_round_i64(y, 32) as i32);
     // Q56.
     let y2 = mul_i32_wide(y, y);
     // Period-2 bulb: (x + 1)² + y² < 1/16.
@@ -199,9 +267,14 @@ fn in_cardioid_or_bulb((x, y): (i64, i64)) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::escape::view::Coord;
 
     fn q60(v: f64) -> i64 {
         (v * (1u64 << 60) as f64) as i64
+    }
+
+    fn q28(v: f64) -> i32 {
+        (v * f64::from(1 << 28)) as i32
     }
 
     #[test]
@@ -213,7 +286,7 @@ mod tests {
             (-1.2, 0.1),
             (0.2, 0.0),
         ] {
-            assert!(in_cardioid_or_bulb((q60(re), q60(im))), "{re},{im}");
+            assert!(in_cardioid_or_bulb(q28(re), q28(im)), "{re},{im}");
         }
         for (re, im) in [
             (0.3, 0.0),
@@ -223,17 +296,26 @@ mod tests {
             (-2.0, 0.0),
             (1.9, 1.9),
         ] {
-            assert!(!in_cardioid_or_bulb((q60(re), q60(im))), "{re},{im}");
+            assert!(!in_cardioid_or_bulb(q28(re), q28(im)), "{re},{im}");
         }
     }
 
     #[test]
     fn tiers_agree_on_simple_points() {
+        let view = View::new(
+            Fractal::Mandelbrot,
+            (Coord::default(), Coord::default()),
+            Coord::from_f64(3.0).unwrap(),
+            embedded_graphics::geometry::Size::new(100, 100),
+            500,
+        )
+        .unwrap();
         for (re, im, dwell) in [(1.0, 0.0, 3), (-0.1, 0.1, u32::MAX), (-2.1, 0.0, 1)] {
-            let c = (q60(re), q60(im));
             let expected = if dwell == u32::MAX { 500 } else { dwell };
-            for kernel in [narrow, standard, deep] {
-                assert_eq!(kernel(c, (0, 0), 500, 0).dwell, expected, "{re},{im}");
+            for tier in Tier::ALL {
+                let kernel = Kernel::new(&view.with_tier(tier), Periodicity::Exact);
+                let orbit = kernel.dwell(kernel.part(q60(re)), kernel.part(q60(im)));
+                assert_eq!(orbit.dwell, expected, "{re},{im} {tier:?}");
             }
         }
     }

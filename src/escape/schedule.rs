@@ -21,7 +21,7 @@
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use heapless::Vec;
 
-use super::kernel::{dwell, Periodicity};
+use super::kernel::{Kernel, Part, Periodicity};
 use super::view::{Symmetry, Tier, View};
 
 /// Side of a fast-mode tile, in pixels.
@@ -92,10 +92,11 @@ pub struct Render {
     algorithm: Algorithm,
     next: u32,
     stats: RenderStats,
+    kernel: Kernel,
     tile: [u16; CELLS],
-    /// The current tile's column and row parts of its points, Q60 (within ±3.5: i64).
-    columns: [i64; TILE as usize],
-    rows: [i64; TILE as usize],
+    /// The current tile's column and row parts of its points.
+    columns: [Part; TILE as usize],
+    rows: [Part; TILE as usize],
 }
 
 /// A rectangle of a tile, corners inclusive, in tile coordinates.
@@ -110,7 +111,12 @@ struct Block {
 impl Render {
     /// A render of `view`, nothing computed yet.
     pub fn new(view: View, algorithm: Algorithm) -> Self {
+        let periodicity = match algorithm {
+            Algorithm::Exact => Periodicity::Exact,
+            Algorithm::Fast => Periodicity::Within(view.spacing >> 4),
+        };
         Self {
+            kernel: Kernel::new(&view, periodicity),
             view,
             algorithm,
             next: 0,
@@ -121,8 +127,8 @@ impl Render {
                 tier: view.tier(),
             },
             tile: [0; CELLS],
-            columns: [0; TILE as usize],
-            rows: [0; TILE as usize],
+            columns: [Part::default(); TILE as usize],
+            rows: [Part::default(); TILE as usize],
         }
     }
 
@@ -163,13 +169,6 @@ impl Render {
         Ok(self.stats)
     }
 
-    fn periodicity(&self) -> Periodicity {
-        match self.algorithm {
-            Algorithm::Exact => Periodicity::Exact,
-            Algorithm::Fast => Periodicity::Within(self.view.spacing >> 4),
-        }
-    }
-
     /// Rows to compute: the top half when mirrored (the middle row of an odd height is
     /// its own mirror and is computed too).
     fn computed_rows(&self) -> u32 {
@@ -192,9 +191,9 @@ impl Render {
         }
     }
 
-    /// The dwell of the point with column part `re` and row part `im` (Q60).
-    fn compute_at(&mut self, re: i64, im: i64) -> u16 {
-        let orbit = dwell(&self.view, (re, im), self.periodicity());
+    /// The dwell of the point with column part `re` and row part `im`.
+    fn compute_at(&mut self, re: Part, im: Part) -> u16 {
+        let orbit = self.kernel.dwell(re, im);
         self.stats.iterations += u64::from(orbit.iterations);
         self.stats.pixels += 1;
         // max_iterations <= u16::MAX is checked by the view.
@@ -206,9 +205,9 @@ impl Render {
         let width = self.view.size.width;
         let area = Rectangle::new(Point::new(0, coordinate(j)), Size::new(width, 1));
         self.stats.draw_calls += 1;
-        let im = in_view(self.view.row(i64::from(j)));
+        let im = self.kernel.part(in_view(self.view.row(i64::from(j))));
         let dwells = (0..width).map(|i| {
-            let re = in_view(self.view.column(i64::from(i)));
+            let re = self.kernel.part(in_view(self.view.column(i64::from(i))));
             self.compute_at(re, im)
         });
         sink.dwells(&area, dwells)
@@ -224,10 +223,10 @@ impl Render {
             let (column, row) = (i64::from(x0 + k), i64::from(y0 + k));
             // Columns and rows past the view's edge are not used.
             if let Some(slot) = self.columns.get_mut(k as usize) {
-                *slot = in_view(self.view.column(column));
+                *slot = self.kernel.part(in_view(self.view.column(column)));
             }
             if let Some(slot) = self.rows.get_mut(k as usize) {
-                *slot = in_view(self.view.row(row));
+                *slot = self.kernel.part(in_view(self.view.row(row)));
             }
         }
         self.subdivide(w, h);
@@ -293,8 +292,8 @@ impl Render {
         let index = cell_index(tx, ty);
         match self.tile.get(index).copied() {
             Some(0) => {
-                let re = self.columns.get(tx as usize).copied().unwrap_or(0);
-                let im = self.rows.get(ty as usize).copied().unwrap_or(0);
+                let re = self.columns.get(tx as usize).copied().unwrap_or_default();
+                let im = self.rows.get(ty as usize).copied().unwrap_or_default();
                 let value = self.compute_at(re, im);
                 if let Some(cell) = self.tile.get_mut(index) {
                     *cell = value;
