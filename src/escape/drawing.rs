@@ -44,7 +44,7 @@ where
     ) -> Result<(), D::Error> {
         let (palette, max) = (&self.palette, self.max);
         self.target
-            .fill_contiguous(area, dwells.map(|dwell| palette.color(dwell, max)))
+            .fill_contiguous(area, dwells.map(move |dwell| palette.color(dwell, max)))
     }
 
     fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), D::Error> {

@@ -97,7 +97,7 @@ impl Kernel {
     /// The dwell of the point (`re`, `im`).
     pub(crate) fn dwell(&self, re: Part, im: Part) -> Orbit {
         let max = self.max;
-        let (c, z0) = match self.julia {
+        let (c, z, steps) = match self.julia {
             None => {
                 if in_cardioid_or_bulb(self.q28(re), self.q28(im)) {
                     return Orbit {
@@ -106,25 +106,29 @@ impl Kernel {
                     };
                 }
                 // The upper half-plane twin: the same dwell, exactly (see the module docs).
-                ((re.0, im.0.abs()), (0, 0))
+                let c = (re.0, im.0.abs());
+                // The first step is free: z₁ = c.
+                (c, c, 1)
             }
-            Some(k) => (k, (re.0, im.0)),
+            Some(k) => (k, (re.0, im.0), 0),
         };
         // The casts are exact: every value is within ±3.5 in the tier's units.
         match self.tier {
             Tier::Narrow => narrow(
                 (c.0 as i32, c.1 as i32),
-                (z0.0 as i32, z0.1 as i32),
+                (z.0 as i32, z.1 as i32),
+                steps,
                 max,
                 self.tolerance as i32,
             ),
             Tier::Standard => standard(
                 (c.0 as i32, c.1 as i32),
-                (z0.0 as i32, z0.1 as i32),
+                (z.0 as i32, z.1 as i32),
+                steps,
                 max,
                 self.tolerance as i32,
             ),
-            Tier::Deep => deep(c, z0, max, self.tolerance),
+            Tier::Deep => deep(c, z, steps, max, self.tolerance),
         }
     }
 }
@@ -138,7 +142,7 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
     }
 }
 
-/// One tier's iteration from z0 with parameter c, both in the tier's units: value type `$v`
+/// One tier's iteration from z, `steps` (0 or 1) after z₀, with parameter c, all in the tier's units: value type `$v`
 /// (unsigned twin `$u`), product type `$w`, `$frac` fractional bits, exact product `$mul`,
 /// and `$twice_xy(x, y, x², y²)`: 2xy in the tier, rounded down.
 ///
@@ -149,7 +153,13 @@ macro_rules! tier_kernel {
     ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr, $twice_xy:expr) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
-        fn $name((cr, ci): ($v, $v), (mut x, mut y): ($v, $v), max: u32, tolerance: $v) -> Orbit {
+        fn $name(
+            (cr, ci): ($v, $v),
+            (mut x, mut y): ($v, $v),
+            steps: u32,
+            max: u32,
+            tolerance: $v,
+        ) -> Orbit {
             const FRAC: u32 = $frac;
             // |d| ≤ tolerance as one unsigned comparison: d + tolerance in 0..=2·tolerance.
             // Orbit points compared have |x|, |y| ≤ 2, so nothing wraps.
@@ -161,28 +171,43 @@ macro_rules! tier_kernel {
             let mut y2 = mul(y, y);
             if x2 + y2 > four {
                 return Orbit {
-                    dwell: 1,
-                    iterations: 0,
+                    dwell: steps.max(1),
+                    iterations: steps,
                 };
             }
-            // Steps taken before the current stretch.
-            let mut n: u32 = 0;
-            // At most 2·max ≤ 2^17 (the view caps max at u16::MAX): it cannot overflow.
-            let mut next_save: u32 = 1;
-            loop {
-                // The saved point, less the tolerance: x − saved + tolerance in one step.
-                let (saved_x, saved_y) = (x.wrapping_sub(tolerance), y.wrapping_sub(tolerance));
-                let stretch = next_save.min(max) - n;
-                // Counts down, so the step keeps one counter in a register, not two.
-                let mut left = stretch;
-                while left > 0 {
-                    left -= 1;
+            // One step: z ← z² + c, then its squares; true if it escaped.
+            macro_rules! step {
+                () => {{
                     y = twice_xy(x, y, x2, y2) + ci;
                     x = ((x2 - y2) >> FRAC) as $v + cr;
                     x2 = mul(x, x);
                     y2 = mul(y, y);
-                    if x2 + y2 > four {
-                        let n = n + stretch - left;
+                    x2 + y2 > four
+                }};
+            }
+            let mut n: u32 = steps;
+            // Most points escape within the first few steps: they run without repeat tests.
+            let plain = FIRST_SAVE.min(max);
+            while n < plain {
+                n += 1;
+                if step!() {
+                    return Orbit {
+                        dwell: n,
+                        iterations: n,
+                    };
+                }
+            }
+            // Then Brent: the point saved at FIRST_SAVE, 2·FIRST_SAVE, 4·FIRST_SAVE, ... is
+            // compared with every point up to the next save. At most 2·max ≤ 2^17 (the view
+            // caps max at u16::MAX): it cannot overflow.
+            let mut next_save = 2 * plain;
+            while n < max {
+                // The saved point, less the tolerance: x − saved + tolerance in one step.
+                let (saved_x, saved_y) = (x.wrapping_sub(tolerance), y.wrapping_sub(tolerance));
+                let stop = next_save.min(max);
+                while n < stop {
+                    n += 1;
+                    if step!() {
                         return Orbit {
                             dwell: n,
                             iterations: n,
@@ -193,22 +218,22 @@ macro_rules! tier_kernel {
                     {
                         return Orbit {
                             dwell: max,
-                            iterations: n + stretch - left,
+                            iterations: n,
                         };
                     }
                 }
-                n += stretch;
-                if n >= max {
-                    return Orbit {
-                        dwell: max,
-                        iterations: max,
-                    };
-                }
                 next_save *= 2;
+            }
+            Orbit {
+                dwell: max,
+                iterations: max,
             }
         }
     };
 }
+
+/// Steps before the first point is saved for the repeat test.
+const FIRST_SAVE: u32 = 16;
 
 tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b, |x, y, _, _| {
     (x * y) >> 11
@@ -244,6 +269,11 @@ fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
     const ONE: i32 = 1 << 28;
     // 2^-20 in Q56.
     const MARGIN: i64 = 1 << 36;
+    // Both lie within -1.25 ≤ x ≤ 0.375, |y| ≤ 0.65: most of a picture fails these cheaper
+    // comparisons first.
+    if !(-(ONE + ONE / 4)..=3 * ONE / 8).contains(&x) || y.unsigned_abs() > (ONE / 20 * 13) as u32 {
+        return false;
+    }
     // Q56.
     let y2 = mul_i32_wide(y, y);
     // Period-2 bulb: (x + 1)² + y² < 1/16.

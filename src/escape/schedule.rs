@@ -229,13 +229,8 @@ impl Render {
                 *slot = self.kernel.part(in_view(self.view.row(row)));
             }
         }
-        self.subdivide(w, h);
-
+        let uniform = self.subdivide(w, h);
         let area = Rectangle::new(Point::new(coordinate(x0), coordinate(y0)), Size::new(w, h));
-        let first = self.cell(0, 0);
-        let uniform = (0..h)
-            .all(|ty| (0..w).all(|tx| self.cell(tx, ty) == first))
-            .then_some(first);
         self.emit(sink, area, 0..h, w, false, uniform)?;
         let symmetry = self.view.symmetry();
         if symmetry != Symmetry::None {
@@ -284,65 +279,75 @@ impl Render {
         }
     }
 
-    fn cell(&self, tx: u32, ty: u32) -> u16 {
-        self.tile.get(cell_index(tx, ty)).copied().unwrap_or(0)
-    }
-
+    /// The dwell of tile cell (tx, ty), computed on first use (0 marks "not yet").
+    #[inline(always)]
     fn known(&mut self, tx: u32, ty: u32) -> u16 {
-        let index = cell_index(tx, ty);
-        match self.tile.get(index).copied() {
-            Some(0) => {
-                let re = self.columns.get(tx as usize).copied().unwrap_or_default();
-                let im = self.rows.get(ty as usize).copied().unwrap_or_default();
-                let value = self.compute_at(re, im);
-                if let Some(cell) = self.tile.get_mut(index) {
-                    *cell = value;
-                }
-                value
-            }
-            Some(value) => value,
-            None => 0,
+        // Cells and coordinates are indexed within their arrays by masking: no bounds checks.
+        let index = cell_index(tx, ty) & (CELLS - 1);
+        let value = self.tile.get(index).copied().unwrap_or(0);
+        if value != 0 {
+            return value;
         }
+        let mask = TILE as usize - 1;
+        let re = self
+            .columns
+            .get(tx as usize & mask)
+            .copied()
+            .unwrap_or_default();
+        let im = self
+            .rows
+            .get(ty as usize & mask)
+            .copied()
+            .unwrap_or_default();
+        let value = self.compute_at(re, im);
+        if let Some(cell) = self.tile.get_mut(index) {
+            *cell = value;
+        }
+        value
     }
 
-    /// Mariani–Silver over the current tile, of size w×h.
-    fn subdivide(&mut self, w: u32, h: u32) {
-        let mut stack: Vec<Block, 32> = Vec::new();
-        let _ = stack.push(Block {
+    /// Computes the border of `b`; its dwell if it has only one.
+    fn border(&mut self, b: Block) -> Option<u16> {
+        let first = self.known(b.x0, b.y0);
+        let mut same = true;
+        for tx in b.x0..b.x1 + 1 {
+            same &= self.known(tx, b.y0) == first;
+            same &= self.known(tx, b.y1) == first;
+        }
+        for ty in b.y0 + 1..b.y1 {
+            same &= self.known(b.x0, ty) == first;
+            same &= self.known(b.x1, ty) == first;
+        }
+        same.then_some(first)
+    }
+
+    /// Mariani–Silver over the current tile, of size w×h: the tile's dwell if it is uniform.
+    fn subdivide(&mut self, w: u32, h: u32) -> Option<u16> {
+        let whole = Block {
             x0: 0,
             y0: 0,
             x1: w - 1,
             y1: h - 1,
-        });
-        while let Some(b) = stack.pop() {
-            // The border, and whether it is one dwell.
-            let mut border = None;
-            let mut uniform = true;
-            let mut note = |value: u16| match border {
-                None => border = Some(value),
-                Some(seen) => uniform &= seen == value,
-            };
-            for tx in b.x0..=b.x1 {
-                note(self.known(tx, b.y0));
-                note(self.known(tx, b.y1));
-            }
-            for ty in b.y0..=b.y1 {
-                note(self.known(b.x0, ty));
-                note(self.known(b.x1, ty));
-            }
+        };
+        // A tile whose outline is one dwell is filled with it: uniform.
+        let uniform = self.border(whole);
+        let mut stack: Vec<Block, 32> = Vec::new();
+        let mut next = Some((whole, uniform));
+        while let Some((b, border)) = next {
             let (bw, bh) = (b.x1 - b.x0, b.y1 - b.y0);
-            if uniform && bw >= 2 && bh >= 2 {
-                let value = border.unwrap_or(0);
+            if let Some(value) = border {
                 for ty in b.y0 + 1..b.y1 {
-                    for tx in b.x0 + 1..b.x1 {
-                        if let Some(cell) = self.tile.get_mut(cell_index(tx, ty)) {
-                            *cell = value;
-                        }
+                    let row = cell_index(0, ty);
+                    if let Some(cells) = self
+                        .tile
+                        .get_mut(row + b.x0 as usize + 1..row + b.x1 as usize)
+                    {
+                        cells.fill(value);
                     }
                 }
             } else if bw < 4 || bh < 4 {
-                for ty in b.y0..=b.y1 {
-                    for tx in b.x0..=b.x1 {
+                for ty in b.y0 + 1..b.y1 {
+                    for tx in b.x0 + 1..b.x1 {
                         self.known(tx, ty);
                     }
                 }
@@ -378,7 +383,9 @@ impl Render {
                     let _ = stack.push(block);
                 }
             }
+            next = stack.pop().map(|b| (b, self.border(b)));
         }
+        uniform
     }
 }
 

@@ -33,17 +33,19 @@ impl Checksum {
         }
     }
 
-    fn fold(&mut self, byte: u8) {
-        self.value = (self.value ^ u32::from(byte)).wrapping_mul(0x0100_0193);
-    }
-
     /// One pixel written: its position (inside the target) and grey.
     fn record(&mut self, x: i32, y: i32, color: Gray4) {
-        self.fold(x as u8);
-        self.fold(y as u8);
-        self.fold(color.into_storage());
+        self.value = folded(self.value, x, y, color);
         self.pixels += 1;
     }
+}
+
+/// `value` with a pixel's position and grey folded in as one 24-bit word (FNV-1a's step on
+/// words, not bytes): one multiply a pixel, about what a framebuffer write costs.
+#[inline(always)]
+fn folded(value: u32, x: i32, y: i32, color: Gray4) -> u32 {
+    let word = u32::from(x as u8) | u32::from(y as u8) << 8 | u32::from(color.into_storage()) << 16;
+    (value ^ word).wrapping_mul(0x0100_0193)
 }
 
 impl OriginDimensions for Checksum {
@@ -82,15 +84,19 @@ impl DrawTarget for Checksum {
             let pixels = area.points().zip(colors).map(|(p, c)| Pixel(p, c));
             return self.draw_iter(pixels);
         }
+        // In locals while the run lasts, as a driver keeps its bus state in registers.
+        let (mut value, mut pixels) = (self.value, self.pixels);
         let mut colors = colors.into_iter();
-        for y in area.top_left.y..=bottom_right.y {
-            for x in area.top_left.x..=bottom_right.x {
+        'rows: for y in area.top_left.y..bottom_right.y + 1 {
+            for x in area.top_left.x..bottom_right.x + 1 {
                 let Some(color) = colors.next() else {
-                    return Ok(());
+                    break 'rows;
                 };
-                self.record(x, y, color);
+                value = folded(value, x, y, color);
+                pixels += 1;
             }
         }
+        (self.value, self.pixels) = (value, pixels);
         Ok(())
     }
 
