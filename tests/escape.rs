@@ -565,6 +565,7 @@ fn palettes_for_every_colour_type() {
 #[test]
 fn a_render_fits_in_a_few_kilobytes() {
     let bytes = core::mem::size_of::<Render>();
-    // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view and the counters.
-    assert!(bytes <= 2700, "Render is {bytes} bytes");
+    // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view, the kernel constants and
+    // the counters.
+    assert!(bytes <= 2750, "Render is {bytes} bytes");
 }

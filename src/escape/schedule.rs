@@ -13,7 +13,7 @@
 //!
 //! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB), the tile's 32 column and 32
 //! row coordinates (512 bytes: points are separable, so they are computed once per tile,
-//! not once per pixel) and the view, about 2.6 KiB;
+//! not once per pixel), the view and its kernel constants, about 2.7 KiB;
 //! while a tile is computed, a subdivision stack of 32 rectangles (512 bytes) is on the
 //! stack. That is the worst case for a 320×240 view or any other: nothing is read back
 //! from the target.
@@ -93,7 +93,11 @@ pub struct Render {
     next: u32,
     stats: RenderStats,
     kernel: Kernel,
+    /// The current tile's dwells, row by row with no gaps (w×h of them): a tile leaves as
+    /// one slice.
     tile: [u16; CELLS],
+    /// The current tile's width: the row stride in `tile`.
+    width: u32,
     /// The current tile's column and row parts of its points.
     columns: [Part; TILE as usize],
     rows: [Part; TILE as usize],
@@ -127,6 +131,7 @@ impl Render {
                 tier: view.tier(),
             },
             tile: [0; CELLS],
+            width: TILE,
             columns: [Part::default(); TILE as usize],
             rows: [Part::default(); TILE as usize],
         }
@@ -219,6 +224,7 @@ impl Render {
         let w = TILE.min(self.view.size.width - x0);
         let h = TILE.min(self.computed_rows() - y0);
         self.tile = [0; CELLS];
+        self.width = w;
         for k in 0..TILE {
             let (column, row) = (i64::from(x0 + k), i64::from(y0 + k));
             // Columns and rows past the view's edge are not used.
@@ -231,7 +237,7 @@ impl Render {
         }
         let uniform = self.subdivide(w, h);
         let area = Rectangle::new(Point::new(coordinate(x0), coordinate(y0)), Size::new(w, h));
-        self.emit(sink, area, 0..h, w, false, uniform)?;
+        self.emit(sink, area, Order::Forward, uniform)?;
         let symmetry = self.view.symmetry();
         if symmetry != Symmetry::None {
             // Row r mirrors to H-1-r. The middle row of an odd height is its own mirror and
@@ -247,43 +253,50 @@ impl Render {
                     Point::new(coordinate(x), coordinate(mirror_top + overlap)),
                     Size::new(w, h - overlap),
                 );
-                self.emit(
-                    sink,
-                    mirrored,
-                    (0..h - overlap).rev(),
-                    w,
-                    half_turn,
-                    uniform,
-                )?;
+                let order = if half_turn {
+                    Order::HalfTurn
+                } else {
+                    Order::RowsReversed
+                };
+                self.emit(sink, mirrored, order, uniform)?;
             }
         }
         Ok(())
     }
 
-    /// Sends tile rows `rows` (in that order; columns right to left if `reversed`) to
-    /// `area`, or one dwell if uniform.
+    /// Sends the tile's first `area.size.height` rows to `area` in `order`, or one dwell if
+    /// uniform.
     fn emit<S: DwellSink>(
         &mut self,
         sink: &mut S,
         area: Rectangle,
-        rows: impl Iterator<Item = u32>,
-        w: u32,
-        reversed: bool,
+        order: Order,
         uniform: Option<u16>,
     ) -> Result<(), S::Error> {
         self.stats.draw_calls += 1;
-        match uniform {
-            Some(value) => sink.uniform(&area, value),
-            None if reversed => sink.dwells(&area, Cells::<_, true>::new(&self.tile, rows, w)),
-            None => sink.dwells(&area, Cells::<_, false>::new(&self.tile, rows, w)),
+        let w = self.width as usize;
+        let cells = self
+            .tile
+            .get(..w * area.size.height as usize)
+            .unwrap_or(&[]);
+        match (uniform, order) {
+            (Some(value), _) => sink.uniform(&area, value),
+            (None, Order::Forward) => sink.dwells(&area, cells.iter().copied()),
+            (None, Order::RowsReversed) => sink.dwells(&area, RowsBackward::new(cells, w)),
+            (None, Order::HalfTurn) => sink.dwells(&area, cells.iter().rev().copied()),
         }
+    }
+
+    /// Where cell (tx, ty) of the current tile is in `tile`.
+    const fn cell_index(&self, tx: u32, ty: u32) -> usize {
+        (ty * self.width + tx) as usize
     }
 
     /// The dwell of tile cell (tx, ty), computed on first use (0 marks "not yet").
     #[inline(always)]
     fn known(&mut self, tx: u32, ty: u32) -> u16 {
         // Cells and coordinates are indexed within their arrays by masking: no bounds checks.
-        let index = cell_index(tx, ty) & (CELLS - 1);
+        let index = self.cell_index(tx, ty) & (CELLS - 1);
         let value = self.tile.get(index).copied().unwrap_or(0);
         if value != 0 {
             return value;
@@ -337,7 +350,7 @@ impl Render {
             let (bw, bh) = (b.x1 - b.x0, b.y1 - b.y0);
             if let Some(value) = border {
                 for ty in b.y0 + 1..b.y1 {
-                    let row = cell_index(0, ty);
+                    let row = self.cell_index(0, ty);
                     if let Some(cells) = self
                         .tile
                         .get_mut(row + b.x0 as usize + 1..row + b.x1 as usize)
@@ -389,48 +402,49 @@ impl Render {
     }
 }
 
-/// The first `w` cells of tile rows `rows`, each row right to left if `REVERSED`: a slice
-/// walk per row, a few instructions a pixel.
-struct Cells<'a, R, const REVERSED: bool> {
-    tile: &'a [u16],
-    rows: R,
+/// Cells row by row, last row first: a slice walk per row, a few instructions a cell.
+struct RowsBackward<'a> {
+    /// The rows not yet started.
+    rest: &'a [u16],
     row: core::slice::Iter<'a, u16>,
     w: usize,
 }
 
-impl<'a, R: Iterator<Item = u32>, const REVERSED: bool> Cells<'a, R, REVERSED> {
-    fn new(tile: &'a [u16], rows: R, w: u32) -> Self {
+impl<'a> RowsBackward<'a> {
+    fn new(cells: &'a [u16], w: usize) -> Self {
         Self {
-            tile,
-            rows,
+            rest: cells,
             row: [].iter(),
-            w: w as usize,
+            // A zero width would never finish a row.
+            w: w.max(1),
         }
     }
 }
 
-impl<R: Iterator<Item = u32>, const REVERSED: bool> Iterator for Cells<'_, R, REVERSED> {
+impl Iterator for RowsBackward<'_> {
     type Item = u16;
 
     fn next(&mut self) -> Option<u16> {
         loop {
-            let cell = if REVERSED {
-                self.row.next_back()
-            } else {
-                self.row.next()
-            };
-            if let Some(&dwell) = cell {
+            if let Some(&dwell) = self.row.next() {
                 return Some(dwell);
             }
-            let start = cell_index(0, self.rows.next()?);
-            self.row = self.tile.get(start..start + self.w).unwrap_or(&[]).iter();
+            let start = self.rest.len().checked_sub(self.w)?;
+            let (rest, last) = self.rest.split_at_checked(start)?;
+            (self.rest, self.row) = (rest, last.iter());
         }
     }
 }
 
-/// Where cell (tx, ty) of a tile is in `Render::tile`.
-const fn cell_index(tx: u32, ty: u32) -> usize {
-    (ty * TILE + tx) as usize
+/// The order a tile's rows and columns are sent in.
+#[derive(Debug, Clone, Copy)]
+enum Order {
+    /// As computed.
+    Forward,
+    /// Rows bottom to top (a mirror about the real axis).
+    RowsReversed,
+    /// Rows bottom to top and columns right to left (a half turn).
+    HalfTurn,
 }
 
 /// A point part of a pixel in the view: within ±3.5 (checked by `View::new`), so it fits an
