@@ -53,6 +53,9 @@ pub(crate) struct Kernel {
     julia: Option<(i64, i64)>,
     /// How close a repeat must be (0: exactly).
     tolerance: i64,
+    /// Steps before the first point is saved for the repeat test: FIRST_SAVE, or fewer if
+    /// the cap is lower.
+    plain: u32,
 }
 
 impl Kernel {
@@ -74,6 +77,7 @@ impl Kernel {
             },
             // A tolerance below one unit of the tier means exact comparison.
             tolerance: from_q60(tolerance, frac),
+            plain: FIRST_SAVE.min(view.max_iterations),
         }
     }
 
@@ -83,52 +87,12 @@ impl Kernel {
         Part(from_q60(q60, self.tier.frac_bits()))
     }
 
-    /// A part in Q28 for the cardioid test: exact from the narrow tier (so the test is about
-    /// the point iterated), rounded from the deep one (the test's margin covers that).
-    fn q28(&self, part: Part) -> i32 {
-        // Within ±3.5 in any tier, so the Q28 value fits an i32.
-        match self.tier {
-            Tier::Narrow => (part.0 << 16) as i32,
-            Tier::Standard => part.0 as i32,
-            Tier::Deep => shift_round_i64(part.0, 32) as i32,
-        }
-    }
-
     /// The dwell of the point (`re`, `im`).
     pub(crate) fn dwell(&self, re: Part, im: Part) -> Orbit {
-        let max = self.max;
-        let (c, z, steps) = match self.julia {
-            None => {
-                if in_cardioid_or_bulb(self.q28(re), self.q28(im)) {
-                    return Orbit {
-                        dwell: max,
-                        iterations: 0,
-                    };
-                }
-                // The upper half-plane twin: the same dwell, exactly (see the module docs).
-                let c = (re.0, im.0.abs());
-                // The first step is free: z₁ = c.
-                (c, c, 1)
-            }
-            Some(k) => (k, (re.0, im.0), 0),
-        };
-        // The casts are exact: every value is within ±3.5 in the tier's units.
         match self.tier {
-            Tier::Narrow => narrow(
-                (c.0 as i32, c.1 as i32),
-                (z.0 as i32, z.1 as i32),
-                steps,
-                max,
-                self.tolerance as i32,
-            ),
-            Tier::Standard => standard(
-                (c.0 as i32, c.1 as i32),
-                (z.0 as i32, z.1 as i32),
-                steps,
-                max,
-                self.tolerance as i32,
-            ),
-            Tier::Deep => deep(c, z, steps, max, self.tolerance),
+            Tier::Narrow => narrow(self, re.0, im.0),
+            Tier::Standard => standard(self, re.0, im.0),
+            Tier::Deep => deep(self, re.0, im.0),
         }
     }
 }
@@ -142,25 +106,41 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
     }
 }
 
-/// One tier's iteration from z, `steps` (0 or 1) after z₀, with parameter c, all in the tier's units: value type `$v`
+/// One tier's dwell of the point (`re`, `im`), in the tier's units: value type `$v`
 /// (unsigned twin `$u`), product type `$w`, `$frac` fractional bits, exact product `$mul`,
-/// and `$twice_xy(x, y, x², y²)`: 2xy in the tier, rounded down.
+/// `$twice_xy(x, y, x², y²)`: 2xy in the tier, rounded down, and `$q28`: a value in Q28 for
+/// the cardioid test (exact from the narrow tier, so the test is about the point iterated;
+/// rounded from the deep one, which the test's margin covers).
 ///
 /// Repeats are found by Brent's method: the orbit point saved at n = 0, 1, 2, 4, 8, ... is
 /// compared with every point up to the next save. Each stretch between saves is a loop of
 /// its own, so the step itself tests nothing but escape and repeat.
 macro_rules! tier_kernel {
-    ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr, $twice_xy:expr) => {
+    ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr, $twice_xy:expr, $q28:expr) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
-        fn $name(
-            (cr, ci): ($v, $v),
-            (mut x, mut y): ($v, $v),
-            steps: u32,
-            max: u32,
-            tolerance: $v,
-        ) -> Orbit {
+        fn $name(kernel: &Kernel, re: i64, im: i64) -> Orbit {
             const FRAC: u32 = $frac;
+            let max = kernel.max;
+            // The casts are exact: every value is within ±3.5 in the tier's units.
+            let (re, im) = (re as $v, im as $v);
+            let q28: fn($v) -> i32 = $q28;
+            let ((cr, ci), (mut x, mut y), steps) = match kernel.julia {
+                None => {
+                    if in_cardioid_or_bulb(q28(re), q28(im)) {
+                        return Orbit {
+                            dwell: max,
+                            iterations: 0,
+                        };
+                    }
+                    // The upper half-plane twin: the same dwell, exactly (see the module
+                    // docs). The first step is free: z₁ = c.
+                    let c = (re, im.abs());
+                    (c, c, 1)
+                }
+                Some((kr, ki)) => ((kr as $v, ki as $v), (re, im), 0),
+            };
+            let tolerance = kernel.tolerance as $v;
             // |d| ≤ tolerance as one unsigned comparison: d + tolerance in 0..=2·tolerance.
             // Orbit points compared have |x|, |y| ≤ 2, so nothing wraps.
             let span = (tolerance as $u).wrapping_mul(2);
@@ -187,7 +167,7 @@ macro_rules! tier_kernel {
             }
             let mut n: u32 = steps;
             // Most points escape within the first few steps: they run without repeat tests.
-            let plain = FIRST_SAVE.min(max);
+            let plain = kernel.plain;
             while n < plain {
                 n += 1;
                 if step!() {
@@ -235,13 +215,36 @@ macro_rules! tier_kernel {
 /// Steps before the first point is saved for the repeat test.
 const FIRST_SAVE: u32 = 16;
 
-tier_kernel!(narrow, i32, u32, i32, 12, |a, b| a * b, |x, y, _, _| {
-    (x * y) >> 11
-});
-tier_kernel!(standard, i32, u32, i64, 28, mul_i32_wide, standard_twice_xy);
-tier_kernel!(deep, i64, u64, i128, 60, mul_wide, |x, y, _, _| {
-    (mul_wide(x, y) >> 59) as i64
-});
+tier_kernel!(
+    narrow,
+    i32,
+    u32,
+    i32,
+    12,
+    |a, b| a * b,
+    |x, y, _, _| (x * y) >> 11,
+    |v| v << 16
+);
+tier_kernel!(
+    standard,
+    i32,
+    u32,
+    i64,
+    28,
+    mul_i32_wide,
+    standard_twice_xy,
+    |v| v
+);
+tier_kernel!(
+    deep,
+    i64,
+    u64,
+    i128,
+    60,
+    mul_wide,
+    |x, y, _, _| (mul_wide(x, y) >> 59) as i64,
+    |v| shift_round_i64(v, 32) as i32
+);
 
 /// The standard tier's 2xy (Q28, rounded down): `smull` and a shift where there is
 /// a long multiply; from the squares the loop already has where there is not (ARMv6-M).
