@@ -297,10 +297,15 @@ impl Render {
     fn known(&mut self, tx: u32, ty: u32) -> u16 {
         // Cells and coordinates are indexed within their arrays by masking: no bounds checks.
         let index = self.cell_index(tx, ty) & (CELLS - 1);
-        let value = self.tile.get(index).copied().unwrap_or(0);
-        if value != 0 {
-            return value;
+        match self.tile.get(index).copied() {
+            Some(0) | None => self.compute_cell(tx, ty, index),
+            Some(value) => value,
         }
+    }
+
+    /// Computes tile cell (tx, ty), at `index` in `tile`.
+    #[inline(never)]
+    fn compute_cell(&mut self, tx: u32, ty: u32, index: usize) -> u16 {
         let mask = TILE as usize - 1;
         let re = self
             .columns
