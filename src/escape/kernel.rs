@@ -20,7 +20,7 @@ use crate::real::twice_product_by_squares;
 use crate::real::{mul_i32_wide, mul_wide, shift_round_i64};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
-/// iterations 1, 2, 4, 8, ...).
+/// iterations 16, 32, 64, ...; see `FIRST_SAVE`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Periodicity {
     /// Only an exact repeat of the fixed-point orbit: it can never change a dwell.
@@ -112,7 +112,8 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
 /// the cardioid test (exact from the narrow tier, so the test is about the point iterated;
 /// rounded from the deep one, which the test's margin covers).
 ///
-/// Repeats are found by Brent's method: the orbit point saved at n = 0, 1, 2, 4, 8, ... is
+/// The first `FIRST_SAVE` steps test only escape. Then repeats are found by Brent's
+/// method: the orbit point saved at n = FIRST_SAVE, 2·FIRST_SAVE, 4·FIRST_SAVE, ... is
 /// compared with every point up to the next save. Each stretch between saves is a loop of
 /// its own, so the step itself tests nothing but escape and repeat.
 macro_rules! tier_kernel {
