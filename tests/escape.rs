@@ -164,7 +164,17 @@ const CASES: &[Case] = &[
         width: "3.5",
         size: Size::new(128, 64),
         max: 64,
-        tier: Tier::Standard,
+        tier: Tier::Medium,
+    },
+    // At the medium tier's limit (log2(1/d) + log2(max) = 7 + 5 = 12), on the boundary.
+    Case {
+        name: "medium's limit",
+        julia: None,
+        centre: ("-0.75", "0.1"),
+        width: "1.0",
+        size: Size::new(128, 96),
+        max: 32,
+        tier: Tier::Medium,
     },
     Case {
         name: "deep zoom",
@@ -179,7 +189,7 @@ const CASES: &[Case] = &[
 
 #[test]
 fn dwells_agree_with_the_f64_model() {
-    for case in &CASES[..4] {
+    for case in &CASES[..5] {
         let view = view_of(case);
         assert_eq!(view.tier(), case.tier, "{}: tier", case.name);
         let centre = (
@@ -287,7 +297,7 @@ fn model_dd(centre: (Coord, Coord), spacing: Coord, size: Size, max: u32) -> Vec
 
 #[test]
 fn a_view_too_deep_for_32_bits_switches_tier_and_agrees() {
-    let deep = &CASES[4];
+    let deep = &CASES[5];
     let view = view_of(deep);
     assert_eq!(view.tier(), Tier::Deep);
     let centre = (
@@ -555,6 +565,19 @@ fn palettes_for_every_colour_type() {
     let cycled = gradient.with_offset(3);
     use tinyfractal::Palette;
     assert_eq!(cycled.color(2, 60), gradient.color(5, 60));
+    for k in [0u16, 1, 7, 15, 16, 19, 400, u16::MAX] {
+        let cycled = gradient.with_offset(k);
+        for d in 0..59 {
+            assert_eq!(
+                cycled.color(d, 60),
+                gradient.color(d + k % 16, 100),
+                "{k} {d}"
+            );
+        }
+        // Offsets are absolute: cycling again starts from the same table.
+        assert_eq!(cycled.with_offset(3), gradient.with_offset(3));
+        assert_eq!(cycled.with_offset(0), gradient);
+    }
     assert_eq!(
         cycled.color(60, 60),
         Gray4::BLACK,

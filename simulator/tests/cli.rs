@@ -282,7 +282,7 @@ fn mandelbrot_dwell_file_and_stats() {
         "iterations=",
         "pixels=1200 ",
         "draw_calls=30 ",
-        "tier=standard",
+        "tier=medium",
         "elapsed_ms=",
     ] {
         assert!(stats.contains(key), "{stats}");

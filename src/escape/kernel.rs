@@ -88,9 +88,11 @@ impl Kernel {
     }
 
     /// The dwell of the point (`re`, `im`).
+    #[inline(always)]
     pub(crate) fn dwell(&self, re: Part, im: Part) -> Orbit {
         match self.tier {
             Tier::Narrow => narrow(self, re.0, im.0),
+            Tier::Medium => medium(self, re.0, im.0),
             Tier::Standard => standard(self, re.0, im.0),
             Tier::Deep => deep(self, re.0, im.0),
         }
@@ -107,21 +109,31 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
 }
 
 /// One tier's dwell of the point (`re`, `im`), in the tier's units: value type `$v`
-/// (unsigned twin `$u`), product type `$w`, `$frac` fractional bits, exact product `$mul`,
-/// `$twice_xy(x, y, x², y²)`: 2xy in the tier, rounded down, and `$q28`: a value in Q28 for
-/// the cardioid test (exact from the narrow tier, so the test is about the point iterated;
-/// rounded from the deep one, which the test's margin covers).
+/// (unsigned twin `$u`), product type `$w` with `$product_frac` fractional bits, `$mul`:
+/// the product as the tier keeps it (rounded down), `$to_value`: x² − y² back in the
+/// value's units, `$twice_xy(x, y, x², y²)`: 2xy as a value, rounded down, and `$q28`: a
+/// value in Q28 for the cardioid test (exact from the narrow tier, so the test is about the
+/// point iterated; rounded from the deep one, which the test's margin covers).
 ///
 /// The first `FIRST_SAVE` steps test only escape. Then repeats are found by Brent's
 /// method: the orbit point saved at n = FIRST_SAVE, 2·FIRST_SAVE, 4·FIRST_SAVE, ... is
 /// compared with every point up to the next save. Each stretch between saves is a loop of
 /// its own, so the step itself tests nothing but escape and repeat.
 macro_rules! tier_kernel {
-    ($name:ident, $v:ty, $u:ty, $w:ty, $frac:expr, $mul:expr, $twice_xy:expr, $q28:expr) => {
+    (
+        $name:ident,
+        $v:ty,
+        $u:ty,
+        $w:ty,
+        $product_frac:expr,
+        $mul:expr,
+        $to_value:expr,
+        $twice_xy:expr,
+        $q28:expr
+    ) => {
         // In the narrow tier products are as wide as values, so some casts are no-ops.
         #[allow(trivial_numeric_casts)]
         fn $name(kernel: &Kernel, re: i64, im: i64) -> Orbit {
-            const FRAC: u32 = $frac;
             let max = kernel.max;
             // The casts are exact: every value is within ±3.5 in the tier's units.
             let (re, im) = (re as $v, im as $v);
@@ -145,8 +157,9 @@ macro_rules! tier_kernel {
             // |d| ≤ tolerance as one unsigned comparison: d + tolerance in 0..=2·tolerance.
             // Orbit points compared have |x|, |y| ≤ 2, so nothing wraps.
             let span = (tolerance as $u).wrapping_mul(2);
-            let four: $w = 4 << (2 * FRAC);
+            let four: $w = 4 << $product_frac;
             let mul: fn($v, $v) -> $w = $mul;
+            let to_value: fn($w) -> $v = $to_value;
             let twice_xy: fn($v, $v, $w, $w) -> $v = $twice_xy;
             let mut x2 = mul(x, x);
             let mut y2 = mul(y, y);
@@ -160,7 +173,7 @@ macro_rules! tier_kernel {
             macro_rules! step {
                 () => {{
                     y = twice_xy(x, y, x2, y2) + ci;
-                    x = ((x2 - y2) >> FRAC) as $v + cr;
+                    x = to_value(x2 - y2) + cr;
                     x2 = mul(x, x);
                     y2 = mul(y, y);
                     x2 + y2 > four
@@ -168,8 +181,24 @@ macro_rules! tier_kernel {
             }
             let mut n: u32 = steps;
             // Most points escape within the first few steps: they run without repeat tests.
+            // Two steps a turn: the loop's counting and moves are halved.
             let plain = kernel.plain;
-            while n < plain {
+            while n + 1 < plain {
+                if step!() {
+                    return Orbit {
+                        dwell: n + 1,
+                        iterations: n + 1,
+                    };
+                }
+                n += 2;
+                if step!() {
+                    return Orbit {
+                        dwell: n,
+                        iterations: n,
+                    };
+                }
+            }
+            if n < plain {
                 n += 1;
                 if step!() {
                     return Orbit {
@@ -186,22 +215,34 @@ macro_rules! tier_kernel {
                 // The saved point, less the tolerance: x − saved + tolerance in one step.
                 let (saved_x, saved_y) = (x.wrapping_sub(tolerance), y.wrapping_sub(tolerance));
                 let stop = next_save.min(max);
-                while n < stop {
+                // One step and its tests; returns the orbit if it escaped or repeated.
+                macro_rules! tested_step {
+                    ($n:expr) => {
+                        if step!() {
+                            return Orbit {
+                                dwell: $n,
+                                iterations: $n,
+                            };
+                        }
+                        if (x.wrapping_sub(saved_x) as $u) <= span
+                            && (y.wrapping_sub(saved_y) as $u) <= span
+                        {
+                            return Orbit {
+                                dwell: max,
+                                iterations: $n,
+                            };
+                        }
+                    };
+                }
+                // Two steps a turn, as above.
+                while n + 1 < stop {
+                    tested_step!(n + 1);
+                    n += 2;
+                    tested_step!(n);
+                }
+                if n < stop {
                     n += 1;
-                    if step!() {
-                        return Orbit {
-                            dwell: n,
-                            iterations: n,
-                        };
-                    }
-                    if (x.wrapping_sub(saved_x) as $u) <= span
-                        && (y.wrapping_sub(saved_y) as $u) <= span
-                    {
-                        return Orbit {
-                            dwell: max,
-                            iterations: n,
-                        };
-                    }
+                    tested_step!(n);
                 }
                 next_save *= 2;
             }
@@ -221,18 +262,34 @@ tier_kernel!(
     i32,
     u32,
     i32,
-    12,
+    24,
     |a, b| a * b,
+    |d| d >> 12,
     |x, y, _, _| (x * y) >> 11,
     |v| v << 16
+);
+// Products keep their high word (Q24), shifted back into Q28 with c's low bits added:
+// |x² − y²| ≤ 4 and |xy| ≤ 2 while the orbit runs, so nothing overflows. 2xy is the
+// rounded-down xy doubled (one bit less than rounding 2xy, and one instruction fewer).
+tier_kernel!(
+    medium,
+    i32,
+    u32,
+    i32,
+    24,
+    high_word,
+    |d| d << 4,
+    |x, y, _, _| high_word(x, y) << 5,
+    |v| v
 );
 tier_kernel!(
     standard,
     i32,
     u32,
     i64,
-    28,
+    56,
     mul_i32_wide,
+    |d| (d >> 28) as i32,
     standard_twice_xy,
     |v| v
 );
@@ -241,11 +298,19 @@ tier_kernel!(
     i64,
     u64,
     i128,
-    60,
+    120,
     mul_wide,
+    |d| (d >> 60) as i64,
     |x, y, _, _| (mul_wide(x, y) >> 59) as i64,
     |v| shift_round_i64(v, 32) as i32
 );
+
+/// The high word of the exact product of two i32, rounded down (Q28 × Q28 → Q24): the
+/// upper register of `smull`.
+#[inline(always)]
+fn high_word(a: i32, b: i32) -> i32 {
+    (mul_i32_wide(a, b) >> 32) as i32
+}
 
 /// The standard tier's 2xy (Q28, rounded down): `smull` and a shift where there is
 /// a long multiply; from the squares the loop already has where there is not (ARMv6-M).
