@@ -33,7 +33,7 @@ where
 impl<D, P> DwellSink for Painter<'_, D, P>
 where
     D: DrawTarget,
-    P: Palette<Color = D::Color>,
+    P: Palette<Color = D::Color> + Copy,
 {
     type Error = D::Error;
 
@@ -42,7 +42,9 @@ where
         area: &Rectangle,
         dwells: I,
     ) -> Result<(), D::Error> {
-        let (palette, max) = (&self.palette, self.max);
+        // A copy, not a reference to the field: the run's loop then reads the palette
+        // itself, not a pointer to a pointer to it, for every pixel.
+        let (palette, max) = (self.palette, self.max);
         self.target
             .fill_contiguous(area, dwells.map(move |dwell| palette.color(dwell, max)))
     }

@@ -76,6 +76,7 @@ impl<C: PixelColor> Palette for Bands<'_, C> {
 /// dwell `d` outside takes entry `(d + offset) % N`. Change the offset to cycle colours.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Gradient<C, const N: usize> {
+    /// Entries turned by `offset`: dwell `d` takes `table[d % N]`, one read a pixel.
     table: [C; N],
     inside: C,
     offset: u16,
@@ -113,9 +114,15 @@ impl<C: PixelColor + From<Rgb888>, const N: usize> Gradient<C, N> {
         })
     }
 
-    /// The same gradient shifted by `offset` entries (colour cycling).
+    /// The same gradient shifted by `offset` entries (colour cycling). The table is turned
+    /// here, once (N moves), so a pixel costs one read.
     #[must_use]
-    pub const fn with_offset(mut self, offset: u16) -> Self {
+    pub fn with_offset(mut self, offset: u16) -> Self {
+        if N > 0 {
+            // From the current offset to the new one.
+            let turn = (usize::from(offset) % N + N - usize::from(self.offset) % N) % N;
+            self.table.rotate_left(turn);
+        }
         self.offset = offset;
         self
     }
@@ -128,7 +135,7 @@ impl<C: PixelColor, const N: usize> Palette for Gradient<C, N> {
         if dwell >= max {
             return self.inside;
         }
-        let index = (usize::from(dwell) + usize::from(self.offset)) % N.max(1);
+        let index = usize::from(dwell) % N.max(1);
         self.table.get(index).copied().unwrap_or(self.inside)
     }
 }

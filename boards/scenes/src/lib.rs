@@ -218,7 +218,7 @@ impl Scene {
                 )?;
                 let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
                     .ok_or(Error::EmptyPalette)?;
-                let stats = EscapeTime::new(view, &palette)
+                let stats = EscapeTime::new(view, palette)
                     .draw(target)
                     .map_err(DrawError::Target)?;
                 Ok(Work::Iterations(stats.iterations))
