@@ -124,7 +124,7 @@ USAGE:
   tinyfractal render lsystem --axiom STR --rule C=STR [--rule ...] (--angle N | --angle-deg DEG)
                              [--draw-symbols CHARS] [--dialect fractint|abop] --order N [common]
   tinyfractal render mandelbrot [--center RE,IM] [--width W] [--max-iter N]
-      [--algorithm exact|fast] [--precision auto|narrow|standard|deep] [--palette NAME] [common]
+      [--algorithm exact|fast] [--precision auto|narrow|medium|standard|deep] [--palette NAME] [common]
   tinyfractal render julia --c RE,IM [same options as mandelbrot]
   tinyfractal list PATH.l            the systems in a file, one name a line
   tinyfractal gallery [--out DIR]    render the gallery (what `cargo run --release` does)
