@@ -179,51 +179,46 @@ macro_rules! tier_kernel {
                     x2 + y2 > four
                 }};
             }
+            // The step numbered `$n` ends the orbit if it escapes.
+            macro_rules! escaping_step {
+                ($n:expr) => {
+                    if step!() {
+                        return Orbit {
+                            dwell: $n,
+                            iterations: $n,
+                        };
+                    }
+                };
+            }
             let mut n: u32 = steps;
+            // Steps up to `$stop`, two a turn (the loop's counting and moves are halved),
+            // each taken by the step macro `$step`.
+            macro_rules! steps_to {
+                ($stop:expr, $step:ident) => {
+                    while n + 1 < $stop {
+                        $step!(n + 1);
+                        n += 2;
+                        $step!(n);
+                    }
+                    if n < $stop {
+                        n += 1;
+                        $step!(n);
+                    }
+                };
+            }
             // Most points escape within the first few steps: they run without repeat tests.
-            // Two steps a turn: the loop's counting and moves are halved.
-            let plain = kernel.plain;
-            while n + 1 < plain {
-                if step!() {
-                    return Orbit {
-                        dwell: n + 1,
-                        iterations: n + 1,
-                    };
-                }
-                n += 2;
-                if step!() {
-                    return Orbit {
-                        dwell: n,
-                        iterations: n,
-                    };
-                }
-            }
-            if n < plain {
-                n += 1;
-                if step!() {
-                    return Orbit {
-                        dwell: n,
-                        iterations: n,
-                    };
-                }
-            }
+            steps_to!(kernel.plain, escaping_step);
             // Then Brent: the point saved at FIRST_SAVE, 2·FIRST_SAVE, 4·FIRST_SAVE, ... is
             // compared with every point up to the next save. At most 2·max ≤ 2^17 (the view
             // caps max at u16::MAX): it cannot overflow.
-            let mut next_save = 2 * plain;
+            let mut next_save = 2 * kernel.plain;
             while n < max {
                 // The saved point, less the tolerance: x − saved + tolerance in one step.
                 let (saved_x, saved_y) = (x.wrapping_sub(tolerance), y.wrapping_sub(tolerance));
-                let stop = next_save.min(max);
-                // One step and its tests; returns the orbit if it escaped or repeated.
-                macro_rules! tested_step {
+                // The step numbered `$n` also ends the orbit if it repeats.
+                macro_rules! repeating_step {
                     ($n:expr) => {
-                        if step!() {
-                            return Orbit {
-                                dwell: $n,
-                                iterations: $n,
-                            };
-                        }
+                        escaping_step!($n);
                         if (x.wrapping_sub(saved_x) as $u) <= span
                             && (y.wrapping_sub(saved_y) as $u) <= span
                         {
@@ -234,16 +229,7 @@ macro_rules! tier_kernel {
                         }
                     };
                 }
-                // Two steps a turn, as above.
-                while n + 1 < stop {
-                    tested_step!(n + 1);
-                    n += 2;
-                    tested_step!(n);
-                }
-                if n < stop {
-                    n += 1;
-                    tested_step!(n);
-                }
+                steps_to!(next_save.min(max), repeating_step);
                 next_save *= 2;
             }
             Orbit {
