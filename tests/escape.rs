@@ -166,6 +166,17 @@ const CASES: &[Case] = &[
         max: 64,
         tier: Tier::Medium,
     },
+    // A Julia set at the edge of the standard tier: log2(1/d) + 2 log2(max) + 8 = 28 (a
+    // board's screen; one step more is tested below).
+    Case {
+        name: "small julia",
+        julia: Some((-0.8, 0.156)),
+        centre: ("0", "0"),
+        width: "3.6",
+        size: Size::new(128, 64),
+        max: 100,
+        tier: Tier::Standard,
+    },
     // At the medium tier's limit (log2(1/d) + log2(max) = 7 + 5 = 12), on the boundary.
     Case {
         name: "medium's limit",
@@ -189,7 +200,7 @@ const CASES: &[Case] = &[
 
 #[test]
 fn dwells_agree_with_the_f64_model() {
-    for case in &CASES[..5] {
+    for case in &CASES[..6] {
         let view = view_of(case);
         assert_eq!(view.tier(), case.tier, "{}: tier", case.name);
         let centre = (
@@ -297,7 +308,7 @@ fn model_dd(centre: (Coord, Coord), spacing: Coord, size: Size, max: u32) -> Vec
 
 #[test]
 fn a_view_too_deep_for_32_bits_switches_tier_and_agrees() {
-    let deep = &CASES[5];
+    let deep = &CASES[6];
     let view = view_of(deep);
     assert_eq!(view.tier(), Tier::Deep);
     let centre = (
@@ -325,6 +336,37 @@ fn a_view_too_deep_for_32_bits_switches_tier_and_agrees() {
         forced < 0.995,
         "the 32-bit tier should fall short here ({forced})"
     );
+}
+
+/// One step past the small Julia view (29 bits by the rule): Q28 falls short there, so
+/// the rule must pick the deep tier.
+#[test]
+fn julia_sets_with_long_orbits_need_the_deep_tier() {
+    let case = Case {
+        name: "julia, long orbits",
+        julia: Some((-0.8, 0.156)),
+        centre: ("0", "0"),
+        width: "3.2",
+        size: Size::new(64, 48),
+        max: 256,
+        tier: Tier::Deep,
+    };
+    let view = view_of(&case);
+    assert_eq!(view.tier(), Tier::Deep);
+    let expected = model(case.julia, (0.0, 0.0), 3.2, case.size, case.max);
+    let agreement = |v: View| {
+        let (got, _) = render(v, Algorithm::Exact);
+        got.values
+            .iter()
+            .zip(&expected)
+            .filter(|(a, b)| a == b)
+            .count() as f64
+            / expected.len() as f64
+    };
+    let (deep, standard) = (agreement(view), agreement(view.with_tier(Tier::Standard)));
+    println!("julia, long orbits: deep {deep:.4}, forced standard {standard:.4}");
+    assert!(deep >= 0.995, "{deep}");
+    assert!(standard < 0.995, "Q28 should fall short here ({standard})");
 }
 
 #[test]

@@ -75,14 +75,15 @@ pub enum Tier {
     Narrow,
     /// Q28 in `i32` whose products keep their high 32 bits (Q24): one `smull` and no shifts
     /// per product on cores with a long multiply, so about half the instructions of
-    /// `Standard` per step, with 24 bits of precision. Chosen while
+    /// `Standard` per step, with 24 bits of precision. Chosen for the Mandelbrot set while
     /// log₂(1/d) + log₂(max-iter) ≤ 12: the full view at 128×64 and 64 iterations.
     Medium,
     /// Q28 in `i32` with 64-bit products (Fractint used Q29; Q28 leaves room for |c| ≤ 3.5).
-    /// Chosen while log₂(1/d) + log₂(max-iter) ≤ 16: the full view at 320×240 and 256
-    /// iterations, or views 8× deeper at 64 iterations.
+    /// Chosen for the Mandelbrot set while log₂(1/d) + log₂(max-iter) ≤ 16: the full view
+    /// at 320×240 and 256 iterations, or views 8× deeper at 64 iterations; for Julia sets
+    /// while log₂(1/d) + 2·log₂(max-iter) ≤ 20: 128×64 at 100 iterations.
     Standard,
-    /// Q60 in `i64` with 128-bit products, for zooms and Julia sets.
+    /// Q60 in `i64` with 128-bit products, for zooms and long-running Julia sets.
     /// Deepest zoom: pixel spacing ≥ 2⁻⁵⁴ (a width of 1.8·10⁻¹⁴ on 320 pixels); with 12
     /// guard bits and 1024 iterations, full accuracy down to widths of about 10⁻⁹.
     Deep,
@@ -190,10 +191,12 @@ impl View {
 
     /// The narrowest tier with enough bits: near the boundary a pixel's orbit magnifies
     /// rounding more the longer it runs, so the bits needed grow with the zoom *and* the
-    /// iteration cap: log₂(1/d) + log₂(max-iter) + 12, and 4 more for Julia sets, which are
-    /// all boundary. Measured against an f64 model in tests/escape.rs: this keeps ≥ 99.5 %
-    /// of dwells identical. Views needing more than 60 bits use the deep tier while the
-    /// spacing itself is resolvable (≥ 2⁻⁵⁴).
+    /// iteration cap: log₂(1/d) + log₂(max-iter) + 12 for the Mandelbrot set. A Julia set is
+    /// all boundary and its long orbits lose bits faster with the cap: log₂(1/d) +
+    /// 2·log₂(max-iter) + 8 (a 64×48 view at 256 iterations needs more than Q28, a 128×64
+    /// view at 100 does not). Measured against an f64 model in tests/escape.rs: this keeps
+    /// ≥ 99.5 % of dwells identical. Views needing more than 60 bits use the deep tier while
+    /// the spacing itself is resolvable (≥ 2⁻⁵⁴).
     fn tier_for(fractal: Fractal, spacing: i64, max_iterations: u32) -> Result<Tier, Error> {
         if spacing < 1 << 6 {
             return Err(Error::ZoomTooDeep);
@@ -201,11 +204,10 @@ impl View {
         // ceil(log2(1/d)) for d in Q60 bits, and ceil(log2(max)).
         let zoom_bits = 60 - (63 - spacing.leading_zeros());
         let iteration_bits = 32 - max_iterations.saturating_sub(1).leading_zeros();
-        let extra = match fractal {
-            Fractal::Mandelbrot => 0,
-            Fractal::Julia { .. } => 4,
+        let needed = match fractal {
+            Fractal::Mandelbrot => zoom_bits + iteration_bits + 12,
+            Fractal::Julia { .. } => zoom_bits + 2 * iteration_bits + 8,
         };
-        let needed = zoom_bits + iteration_bits + 12 + extra;
         Ok(Tier::ALL
             .into_iter()
             .find(|tier| tier.has(needed))
