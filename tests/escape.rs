@@ -198,27 +198,40 @@ const CASES: &[Case] = &[
     },
 ];
 
+/// The f64 model's dwells for a case.
+fn model_of(case: &Case) -> Vec<u16> {
+    let centre = (
+        case.centre.0.parse().unwrap(),
+        case.centre.1.parse().unwrap(),
+    );
+    model(
+        case.julia,
+        centre,
+        case.width.parse().unwrap(),
+        case.size,
+        case.max,
+    )
+}
+
+/// The share of dwells that are the same in `a` and `b`.
+fn same(a: &[u16], b: &[u16]) -> f64 {
+    a.iter().zip(b).filter(|(x, y)| x == y).count() as f64 / b.len() as f64
+}
+
+/// The share of `view`'s dwells, rendered by `algorithm`, that equal `expected`.
+fn agreement(view: View, algorithm: Algorithm, expected: &[u16]) -> f64 {
+    same(&render(view, algorithm).0.values, expected)
+}
+
 #[test]
 fn dwells_agree_with_the_f64_model() {
     for case in &CASES[..6] {
         let view = view_of(case);
         assert_eq!(view.tier(), case.tier, "{}: tier", case.name);
-        let centre = (
-            case.centre.0.parse().unwrap(),
-            case.centre.1.parse().unwrap(),
-        );
-        let expected = model(
-            case.julia,
-            centre,
-            case.width.parse().unwrap(),
-            case.size,
-            case.max,
-        );
+        let expected = model_of(case);
         let (exact, exact_stats) = render(view, Algorithm::Exact);
         let (fast, fast_stats) = render(view, Algorithm::Fast);
         let n = expected.len() as f64;
-        let same =
-            |a: &[u16], b: &[u16]| a.iter().zip(b).filter(|(x, y)| x == y).count() as f64 / n;
         let inside = |d: u16| u32::from(d) == case.max;
         let side_disagree = exact
             .values
@@ -316,20 +329,11 @@ fn a_view_too_deep_for_32_bits_switches_tier_and_agrees() {
         Coord::parse(deep.centre.1).unwrap(),
     );
     let expected = model_dd(centre, view.spacing(), deep.size, deep.max);
-    let agreement = |v: View, algorithm| {
-        let (got, _) = render(v, algorithm);
-        got.values
-            .iter()
-            .zip(&expected)
-            .filter(|(a, b)| a == b)
-            .count() as f64
-            / expected.len() as f64
-    };
     let (exact, fast) = (
-        agreement(view, Algorithm::Exact),
-        agreement(view, Algorithm::Fast),
+        agreement(view, Algorithm::Exact, &expected),
+        agreement(view, Algorithm::Fast, &expected),
     );
-    let forced = agreement(view.with_tier(Tier::Standard), Algorithm::Exact);
+    let forced = agreement(view.with_tier(Tier::Standard), Algorithm::Exact, &expected);
     println!("deep zoom: exact {exact:.4}, fast {fast:.4}, forced 32-bit {forced:.4}");
     assert!(exact >= 0.995 && fast >= 0.995, "{exact} {fast}");
     assert!(
@@ -353,17 +357,11 @@ fn julia_sets_with_long_orbits_need_the_deep_tier() {
     };
     let view = view_of(&case);
     assert_eq!(view.tier(), Tier::Deep);
-    let expected = model(case.julia, (0.0, 0.0), 3.2, case.size, case.max);
-    let agreement = |v: View| {
-        let (got, _) = render(v, Algorithm::Exact);
-        got.values
-            .iter()
-            .zip(&expected)
-            .filter(|(a, b)| a == b)
-            .count() as f64
-            / expected.len() as f64
-    };
-    let (deep, standard) = (agreement(view), agreement(view.with_tier(Tier::Standard)));
+    let expected = model_of(&case);
+    let (deep, standard) = (
+        agreement(view, Algorithm::Exact, &expected),
+        agreement(view.with_tier(Tier::Standard), Algorithm::Exact, &expected),
+    );
     println!("julia, long orbits: deep {deep:.4}, forced standard {standard:.4}");
     assert!(deep >= 0.995, "{deep}");
     assert!(standard < 0.995, "Q28 should fall short here ({standard})");

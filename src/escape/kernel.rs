@@ -3,8 +3,9 @@
 //! Overflow cannot happen, by invariant: an orbit is only squared while |z|² ≤ 4 (so |x|,
 //! |y| ≤ 2), and every c is within ±3.5 (checked by the view), so the next value is below
 //! 7.5 and its square below 57: inside every tier's range (Q12 in i32, Q28 in i32 with the
-//! high word of i64 squares (Q24) or whole i64 squares, Q60 in i64 with i128 squares). A Julia start outside radius 2 escapes at once
-//! (|z₁| ≥ |z₀|² − |k| > 2 because |k| ≤ 2) and is never squared.
+//! high word of i64 squares (Q24) or whole i64 squares, Q60 in i64 with i128 squares). A
+//! Julia start outside radius 2 escapes at once (|z₁| ≥ |z₀|² − |k| > 2 because |k| ≤ 2)
+//! and is never squared.
 //!
 //! The deep tier's 64×64→128 products are built from 32-bit halves (see `mul_wide`), since
 //! an i128 multiply is a library call on Cortex-M.
