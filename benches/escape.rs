@@ -5,30 +5,9 @@
 //! `cargo bench --bench escape`; the README quotes these numbers.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use embedded_graphics::{prelude::*, primitives::Rectangle};
+use embedded_graphics::prelude::*;
 use std::hint::black_box;
-use tinyfractal::{Algorithm, Coord, DwellSink, Fractal, Render, View};
-
-/// Discards dwells (the cost of a display is not the point here).
-struct Discard;
-
-impl DwellSink for Discard {
-    type Error = core::convert::Infallible;
-    fn dwells<I: Iterator<Item = u16>>(
-        &mut self,
-        _: &Rectangle,
-        dwells: I,
-    ) -> Result<(), Self::Error> {
-        dwells.for_each(|d| {
-            black_box(d);
-        });
-        Ok(())
-    }
-    fn uniform(&mut self, _: &Rectangle, dwell: u16) -> Result<(), Self::Error> {
-        black_box(dwell);
-        Ok(())
-    }
-}
+use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Render, View};
 
 /// What a user would write first: f64, every pixel, no tricks. Returns total iterations.
 fn naive(centre: (f64, f64), width: f64, size: Size, max: u32) -> u64 {
@@ -76,8 +55,12 @@ fn bench(c: &mut Criterion) {
         )
         .unwrap();
         let naive_iterations = naive(centre, width, size, 256);
+        // The dwells land in a buffer, as the naive loop's would in a frame.
+        let mut dwells = vec![0u16; (size.width * size.height) as usize];
         for algorithm in [Algorithm::Exact, Algorithm::Fast] {
-            let stats = Render::new(view, algorithm).run(&mut Discard).unwrap();
+            let stats = Render::new(view, algorithm)
+                .run(&mut DwellBuffer::new(&mut dwells, size.width))
+                .unwrap();
             println!(
                 "{name} {algorithm:?} ({:?} tier): iterations {:.4} of naive ({} / {naive_iterations}), pixels computed {:.4} of {}, draw calls {}",
                 stats.tier,
@@ -97,7 +80,7 @@ fn bench(c: &mut Criterion) {
             group.bench_function(format!("{algorithm:?}"), |b| {
                 b.iter(|| {
                     Render::new(black_box(view), algorithm)
-                        .run(&mut Discard)
+                        .run(&mut DwellBuffer::new(&mut dwells, size.width))
                         .unwrap()
                 })
             });

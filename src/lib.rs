@@ -70,20 +70,21 @@
 mod error;
 mod escape;
 mod lsystem;
-mod real;
-mod trig;
+mod math;
+mod render;
 
 pub use error::{DrawError, Error, Location};
 pub use escape::drawing::{EscapeTime, Painter};
-pub use escape::palette::{Bands, Gradient, Palette, TwoColor};
-pub use escape::schedule::{Algorithm, DwellSink, Progress, Render, RenderStats, TILE};
-pub use escape::view::{Coord, Fractal, Tier, View, MAX_ITERATIONS};
+pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, TILE};
+pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
 pub use lsystem::alphabet::Dialect;
 pub use lsystem::drawing::{
     Bounds, LSystem, LSystemDrawing, Orientation, Placement, DEFAULT_MARGIN,
 };
 pub use lsystem::fractint::{Entries, Entry, LFile};
-pub use lsystem::grammar::{Angle, Grammar, MAX_ANGLE_DIVISIONS, MAX_BODY_LEN, MAX_RULES};
+pub use lsystem::grammar::{Grammar, MAX_BODY_LEN, MAX_RULES};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
-pub use real::Real;
+pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
+pub use render::palette::{Bands, Gradient, Palette, TwoColor};
+pub use render::sink::{DwellBuffer, DwellSink};

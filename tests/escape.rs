@@ -7,10 +7,11 @@ use common::{Bitmap, Counting};
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
 use tinyfractal::{
-    Algorithm, Coord, DwellSink, Error, EscapeTime, Fractal, Render, Tier, TwoColor, View,
+    Algorithm, Coord, DwellBuffer, DwellSink, Error, EscapeTime, Fractal, Render, Tier, TwoColor,
+    View,
 };
 
-/// Dwells in a plain buffer, row-major.
+/// Dwells in the crate's slice-backed sink, with a count of writes per pixel beside it.
 struct Dwells {
     width: u32,
     values: Vec<u16>,
@@ -26,11 +27,6 @@ impl Dwells {
             writes: vec![0; n],
         }
     }
-    fn set(&mut self, p: Point, value: u16) {
-        let index = (p.y as u32 * self.width + p.x as u32) as usize;
-        self.values[index] = value;
-        self.writes[index] += 1;
-    }
 }
 
 impl DwellSink for Dwells {
@@ -41,17 +37,10 @@ impl DwellSink for Dwells {
         area: &Rectangle,
         dwells: I,
     ) -> Result<(), Self::Error> {
-        for (p, d) in area.points().zip(dwells) {
-            self.set(p, d);
-        }
-        Ok(())
-    }
-
-    fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error> {
         for p in area.points() {
-            self.set(p, dwell);
+            self.writes[(p.y as u32 * self.width + p.x as u32) as usize] += 1;
         }
-        Ok(())
+        DwellBuffer::new(&mut self.values, self.width).dwells(area, dwells)
     }
 }
 

@@ -3,45 +3,18 @@
 
 use std::time::{Duration, Instant};
 
-use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    Algorithm, Bands, Coord, DwellSink, Error, Fractal, Gradient, Palette, Render, RenderStats,
+    Algorithm, Bands, Coord, DwellBuffer, Error, Fractal, Gradient, Palette, Render, RenderStats,
     Tier, TwoColor, View,
 };
-
-/// Dwells, row-major.
-pub struct DwellBuffer {
-    pub size: Size,
-    pub values: Vec<u16>,
-}
-
-impl DwellSink for DwellBuffer {
-    type Error = std::convert::Infallible;
-
-    fn dwells<I: Iterator<Item = u16>>(
-        &mut self,
-        area: &Rectangle,
-        dwells: I,
-    ) -> Result<(), Self::Error> {
-        for (p, dwell) in area.points().zip(dwells) {
-            let index = p.y as usize * self.size.width as usize + p.x as usize;
-            if let Some(cell) = self.values.get_mut(index) {
-                *cell = dwell;
-            }
-        }
-        Ok(())
-    }
-
-    fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error> {
-        self.dwells(area, std::iter::repeat(dwell))
-    }
-}
 
 /// A rendered view.
 pub struct Rendered {
     pub view: View,
-    pub dwells: DwellBuffer,
+    /// Dwells, row by row.
+    pub dwells: Vec<u16>,
     pub display: SimulatorDisplay<Rgb888>,
     pub stats: RenderStats,
     pub elapsed: Duration,
@@ -84,16 +57,14 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
     if let Some(tier) = request.tier {
         view = view.with_tier(tier);
     }
-    let mut dwells = DwellBuffer {
-        size: request.size,
-        values: vec![0; (request.size.width * request.size.height) as usize],
-    };
+    let mut dwells = vec![0; (request.size.width * request.size.height) as usize];
     let started = Instant::now();
-    let Ok(stats) = Render::new(view, request.algorithm).run(&mut dwells);
+    let Ok(stats) = Render::new(view, request.algorithm)
+        .run(&mut DwellBuffer::new(&mut dwells, request.size.width));
     let elapsed = started.elapsed();
     let mut display = SimulatorDisplay::new(request.size);
     let max = u16::try_from(request.max_iterations).unwrap_or(u16::MAX);
-    let colours = dwells.values.iter().map(|&d| palette.color(d, max));
+    let colours = dwells.iter().map(|&d| palette.color(d, max));
     let Ok(()) = display.fill_contiguous(&display.bounding_box(), colours);
     Ok(Rendered {
         view,
@@ -106,14 +77,14 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
 
 /// The `--dwell` text: `W H MAXITER`, then H lines of W dwells.
 pub fn dwell_text(rendered: &Rendered) -> String {
-    let size = rendered.dwells.size;
+    let size = rendered.view.size();
     let mut text = format!(
         "{} {} {}\n",
         size.width,
         size.height,
         rendered.view.max_iterations()
     );
-    for row in rendered.dwells.values.chunks(size.width as usize) {
+    for row in rendered.dwells.chunks(size.width as usize) {
         let line: Vec<String> = row.iter().map(u16::to_string).collect();
         text.push_str(&line.join(" "));
         text.push('\n');

@@ -3,9 +3,10 @@
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 
-use super::palette::Palette;
-use super::schedule::{Algorithm, DwellSink, Render, RenderStats};
+use super::schedule::{Algorithm, Render, RenderStats};
 use super::view::View;
+use crate::render::palette::Palette;
+use crate::render::sink::DwellSink;
 
 /// A [`DwellSink`] that paints into a display through a palette.
 #[derive(Debug)]

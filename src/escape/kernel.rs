@@ -17,8 +17,8 @@
 
 use super::view::{Fractal, Tier, View};
 #[cfg(tinyfractal_no_long_multiply)]
-use crate::real::twice_product_by_squares;
-use crate::real::{mul_i32_wide, mul_wide, shift_round_i64};
+use crate::math::wide::twice_product_by_squares;
+use crate::math::wide::{mul_i32_wide, mul_wide, shift_round_i64};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
 /// iterations 16, 32, 64, ...; see `FIRST_SAVE`).
@@ -353,7 +353,7 @@ fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::escape::view::Coord;
+    use crate::math::Coord;
 
     fn q60(v: f64) -> i64 {
         (v * (1u64 << 60) as f64) as i64

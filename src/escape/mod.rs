@@ -3,6 +3,5 @@
 
 pub(crate) mod drawing;
 pub(crate) mod kernel;
-pub(crate) mod palette;
 pub(crate) mod schedule;
 pub(crate) mod view;

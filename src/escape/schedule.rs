@@ -23,6 +23,7 @@ use heapless::Vec;
 
 use super::kernel::{Kernel, Part, Periodicity};
 use super::view::{Symmetry, Tier, View};
+use crate::render::sink::DwellSink;
 
 /// Side of a fast-mode tile, in pixels.
 pub const TILE: u32 = 32;
@@ -37,22 +38,6 @@ pub enum Algorithm {
     /// Mariani–Silver subdivision, mirror symmetry and periodicity within 1/16 of a pixel.
     #[default]
     Fast,
-}
-
-/// Where dwells go: the raw layer under the palette (a display, or a buffer of numbers).
-pub trait DwellSink {
-    /// The sink's error.
-    type Error;
-
-    /// Dwells for every pixel of `area`, row by row (as `fill_contiguous`).
-    fn dwells<I: Iterator<Item = u16>>(
-        &mut self,
-        area: &Rectangle,
-        dwells: I,
-    ) -> Result<(), Self::Error>;
-
-    /// One dwell for every pixel of `area` (as `fill_solid`).
-    fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error>;
 }
 
 /// What a render did.

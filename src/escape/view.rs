@@ -4,7 +4,8 @@
 use embedded_graphics::geometry::Size;
 
 use crate::error::Error;
-use crate::real::{div_round, mul_wide, parse_fixed, shift_round};
+use crate::math::wide::{div_round, mul_wide, shift_round};
+use crate::math::Coord;
 
 /// Most iterations a view may ask for (dwells are kept in 16 bits).
 pub const MAX_ITERATIONS: u32 = u16::MAX as u32;
@@ -12,45 +13,6 @@ pub const MAX_ITERATIONS: u32 = u16::MAX as u32;
 /// Largest |re| or |im| of any pixel of a view. Keeping points within 3.5 bounds every
 /// orbit value below 8 before it escapes, so no tier can overflow.
 const COORDINATE_LIMIT: i128 = 7 << 59; // 3.5 in Q60
-
-/// A coordinate of the complex plane: signed fixed point with 60 fractional bits (Q4.60),
-/// enough for the deepest tier. Built from decimal text exactly rounded, or checked `f64`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
-pub struct Coord(i64);
-
-impl Coord {
-    /// Fractional bits.
-    pub const FRAC_BITS: u32 = 60;
-
-    /// From the raw bits (the value times 2⁶⁰).
-    pub const fn from_bits(bits: i64) -> Self {
-        Self(bits)
-    }
-
-    /// The raw bits.
-    pub const fn to_bits(self) -> i64 {
-        self.0
-    }
-
-    /// Parses decimal text such as `-0.743643887037151`; `None` if malformed or |value| ≥ 8.
-    pub fn parse(text: &str) -> Option<Self> {
-        parse_fixed(text, Self::FRAC_BITS)
-            .and_then(|bits| i64::try_from(bits).ok())
-            .map(Self)
-    }
-
-    /// The nearest coordinate to an `f64` (set-up only); `None` if not finite or |value| ≥ 8.
-    pub fn from_f64(value: f64) -> Option<Self> {
-        let scaled = value * (1u64 << 60) as f64;
-        // Checked by hand: `as` saturates silently, and fixed's `from_num` wraps in release.
-        (scaled.is_finite() && scaled.abs() < 9.2e18).then_some(Self(scaled as i64))
-    }
-
-    /// The value as `f64` (for tests and host output).
-    pub fn to_f64(self) -> f64 {
-        self.0 as f64 / (1u64 << 60) as f64
-    }
-}
 
 /// Which escape-time fractal.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -158,13 +120,16 @@ impl View {
                 value: max_iterations,
             });
         }
-        if width.0 <= 0 {
+        if width.to_bits() <= 0 {
             return Err(Error::ViewOutOfRange);
         }
-        let spacing = i64::try_from(div_round(i128::from(width.0), i128::from(size.width)))
-            .map_err(|_| Error::ViewOutOfRange)?;
+        let spacing = i64::try_from(div_round(
+            i128::from(width.to_bits()),
+            i128::from(size.width),
+        ))
+        .map_err(|_| Error::ViewOutOfRange)?;
         if let Fractal::Julia { re, im } = fractal {
-            let modulus = i128::from(re.0).pow(2) + i128::from(im.0).pow(2);
+            let modulus = i128::from(re.to_bits()).pow(2) + i128::from(im.to_bits()).pow(2);
             if modulus > 4 << 120 {
                 return Err(Error::ViewOutOfRange);
             }
@@ -244,7 +209,7 @@ impl View {
 
     /// Pixel spacing in Q60 bits.
     pub const fn spacing(&self) -> Coord {
-        Coord(self.spacing)
+        Coord::from_bits(self.spacing)
     }
 
     /// The sample point of pixel (i, j) in Q60 bits, as i128 (it may be out of range for
@@ -258,13 +223,13 @@ impl View {
     /// so a render can compute each once per tile instead of once per pixel.
     pub(crate) fn column(&self, i: i64) -> i128 {
         let w = i64::from(self.size.width);
-        i128::from(self.centre.0 .0) + self.offset(2 * i + 1 - w)
+        i128::from(self.centre.0.to_bits()) + self.offset(2 * i + 1 - w)
     }
 
     /// The imaginary part of row j's points (Q60).
     pub(crate) fn row(&self, j: i64) -> i128 {
         let h = i64::from(self.size.height);
-        i128::from(self.centre.1 .0) - self.offset(2 * j + 1 - h)
+        i128::from(self.centre.1.to_bits()) - self.offset(2 * j + 1 - h)
     }
 
     fn offset(&self, k: i64) -> i128 {
@@ -275,9 +240,11 @@ impl View {
     pub(crate) const fn symmetry(&self) -> Symmetry {
         match self.fractal {
             // c and its conjugate have the same dwell.
-            Fractal::Mandelbrot if self.centre.1 .0 == 0 => Symmetry::MirrorRows,
+            Fractal::Mandelbrot if self.centre.1.to_bits() == 0 => Symmetry::MirrorRows,
             // z0 and -z0 have the same z1, so the same dwell.
-            Fractal::Julia { .. } if self.centre.0 .0 == 0 && self.centre.1 .0 == 0 => {
+            Fractal::Julia { .. }
+                if self.centre.0.to_bits() == 0 && self.centre.1.to_bits() == 0 =>
+            {
                 Symmetry::HalfTurn
             }
             _ => Symmetry::None,

@@ -2,7 +2,7 @@
 //! and decoding a token into a turtle [`Command`] for each [`Dialect`].
 
 use crate::error::{Error, Location};
-use crate::real::Real;
+use crate::math::Real;
 
 /// Which rules of notation a system follows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]

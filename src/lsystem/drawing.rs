@@ -4,11 +4,11 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
 use super::grammar::Grammar;
-use super::raster;
 use super::turtle::{Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 use super::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::error::{DrawError, Error};
-use crate::real::Real;
+use crate::math::Real;
+use crate::render::raster;
 
 /// Pixels left free around a fitted picture by default.
 pub const DEFAULT_MARGIN: u32 = 2;

@@ -6,8 +6,9 @@
 //! and `=`; `Angle n`, `Axiom s` and `c=s` lines (repeated rule lines append); `}` ends it.
 
 use super::alphabet::Dialect;
-use super::grammar::{Angle, Grammar, MAX_ANGLE_DIVISIONS};
+use super::grammar::Grammar;
 use crate::error::{Error, Location};
+use crate::math::{Angle, MAX_ANGLE_DIVISIONS};
 
 /// A `.l` file's text.
 #[derive(Debug, Clone, Copy)]

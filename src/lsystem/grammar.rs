@@ -8,29 +8,16 @@ use heapless::Vec;
 
 use super::alphabet::{Dialect, SymbolSet, Token};
 use crate::error::{Error, Location};
-use crate::real::Real;
-use crate::trig;
+use crate::math::angle::Headings;
+use crate::math::Angle;
 
 /// Most rule lines a grammar holds (Fractint allowed 25); lines for one symbol append.
 pub const MAX_RULES: usize = 32;
-
-/// Most divisions of a full turn for `Angle n` (Fractint allowed 50).
-pub const MAX_ANGLE_DIVISIONS: u16 = 64;
 
 /// Longest axiom or rule body, in bytes: the walker keeps positions in 16 bits.
 pub const MAX_BODY_LEN: usize = u16::MAX as usize;
 
 const NO_RULE: u8 = u8::MAX;
-
-/// How far `+` and `-` turn.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Angle {
-    /// `n` equal divisions of a full turn (Fractint's `Angle n`), exact for every heading.
-    Divisions(u16),
-    /// A free angle in degrees (ABOP's δ); headings use a 1024-point quarter-wave table with
-    /// interpolation (error below 3·10⁻⁷).
-    Degrees(Real),
-}
 
 /// One rule line: a symbol and its replacement. Lines for the same symbol are chained.
 #[derive(Debug, Clone, Copy)]
@@ -253,71 +240,5 @@ impl<'a> Grammar<'a> {
     pub(crate) fn decode(&self, token: Token<'_>) -> Result<super::alphabet::Command, Error> {
         self.dialect
             .decode(token, self.extra_draw, Location::default())
-    }
-}
-
-/// The turtle's direction vectors: for `Angle n`, cos and sin of each heading in Q30;
-/// for a free angle, the turn as a binary angle.
-#[derive(Debug, Clone)]
-pub(crate) struct Headings {
-    /// Headings 0..=n/2; the rest mirror them exactly.
-    half_table: Vec<(i32, i32), { MAX_ANGLE_DIVISIONS as usize / 2 + 1 }>,
-    divisions: u16,
-    free_turn: trig::BinaryAngle,
-}
-
-impl Headings {
-    fn new(angle: Angle, at: Location) -> Result<Self, Error> {
-        let mut headings = Self {
-            half_table: Vec::new(),
-            divisions: 0,
-            free_turn: trig::BinaryAngle::default(),
-        };
-        match angle {
-            Angle::Divisions(n) => {
-                if n == 0 || n > MAX_ANGLE_DIVISIONS {
-                    return Err(Error::AngleOutOfRange {
-                        value: i64::from(n),
-                        at,
-                    });
-                }
-                headings.divisions = n;
-                for k in 0..=n / 2 {
-                    let _ = headings
-                        .half_table
-                        .push(trig::sin_cos(u64::from(k), u64::from(n)));
-                }
-            }
-            Angle::Degrees(degrees) => {
-                headings.free_turn = trig::BinaryAngle::from_degrees_bits(degrees.to_bits());
-            }
-        }
-        Ok(headings)
-    }
-
-    /// Number of divisions, or 0 for a free angle.
-    pub(crate) const fn divisions(&self) -> u16 {
-        self.divisions
-    }
-
-    /// The binary-angle turn of `+` for a free angle.
-    pub(crate) const fn free_turn(&self) -> trig::BinaryAngle {
-        self.free_turn
-    }
-
-    /// Cosine and sine of heading `k` (0..n), exact mirror images for `k` and `n - k`.
-    pub(crate) fn cos_sin(&self, k: u16) -> (i32, i32) {
-        let mirrored = k > self.divisions / 2;
-        let index = if mirrored { self.divisions - k } else { k };
-        let (c, s) = self
-            .half_table
-            .get(usize::from(index))
-            .copied()
-            .unwrap_or((trig::ONE_Q30, 0));
-        if mirrored {
-            (c, -s)
-        } else {
-            (c, s)
-        }
     }
 }

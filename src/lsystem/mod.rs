@@ -5,6 +5,5 @@ pub(crate) mod alphabet;
 pub(crate) mod drawing;
 pub(crate) mod fractint;
 pub(crate) mod grammar;
-pub(crate) mod raster;
 pub(crate) mod turtle;
 pub(crate) mod walker;

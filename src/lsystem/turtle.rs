@@ -3,11 +3,12 @@
 use heapless::Vec;
 
 use super::alphabet::{Command, Dialect};
-use super::grammar::{Grammar, Headings};
+use super::grammar::Grammar;
 use super::walker::{Walker, DEFAULT_DEPTH};
 use crate::error::Error;
-use crate::real::Real;
-use crate::trig::BinaryAngle;
+use crate::math::angle::Headings;
+use crate::math::trig::BinaryAngle;
+use crate::math::Real;
 
 /// Branches the turtle stack holds by default.
 pub const DEFAULT_STACK: usize = 20;

@@ -55,7 +55,7 @@ const fn octant_cos_sin(x: i128) -> (i32, i32) {
 }
 
 const fn round_q62_to_q30(value: i128) -> i32 {
-    crate::real::shift_round(value, 32) as i32
+    super::wide::shift_round(value, 32) as i32
 }
 
 /// Points per quarter turn in [`QUARTER_SINE`].
@@ -83,7 +83,7 @@ impl BinaryAngle {
 
     /// From decimal degrees given as Q32 bits (any sign, any size), rounded to nearest.
     pub(crate) fn from_degrees_bits(degrees_q32: i64) -> Self {
-        let turns = crate::real::div_round(i128::from(degrees_q32), 360);
+        let turns = super::wide::div_round(i128::from(degrees_q32), 360);
         // Wrapping to u32 is the reduction modulo one full turn.
         Self(turns as u32)
     }
@@ -114,7 +114,7 @@ fn quarter_sine(position: u32) -> i32 {
     let low = QUARTER_SINE.get(index).copied().unwrap_or(ONE_Q30);
     let high = QUARTER_SINE.get(index + 1).copied().unwrap_or(ONE_Q30);
     let delta = i64::from(high - low) * fraction;
-    low + crate::real::shift_round(i128::from(delta), FRACTION_BITS) as i32
+    low + super::wide::shift_round(i128::from(delta), FRACTION_BITS) as i32
 }
 
 #[cfg(test)]

@@ -1,0 +1,15 @@
+//! The numbers every family shares: fixed-point `Real` (the turtle's) and `Coord` (the
+//! complex plane's), their exact decimal parser, wide products and rounding, integer
+//! sines, and turn angles with their direction tables. This is also where affine maps,
+//! the matrix stack and the seeded generator belong.
+
+pub(crate) mod angle;
+pub(crate) mod coord;
+pub(crate) mod decimal;
+pub(crate) mod real;
+pub(crate) mod trig;
+pub(crate) mod wide;
+
+pub use angle::{Angle, MAX_ANGLE_DIVISIONS};
+pub use coord::Coord;
+pub use real::Real;

@@ -1,0 +1,218 @@
+//! `Real`: the turtle's number, signed fixed point with 32 integer and 32 fractional bits.
+//!
+//! Why I32F32: a sizing pass walks in turtle units (step 1), and deep curves reach millions
+//! of units (the Koch curve at order 16 spans 3¹⁶ ≈ 4.3·10⁷), so 16 integer bits are too few;
+//! 32 fractional bits keep the rounding of one step below 2⁻³², so even 2³¹ steps drift by
+//! at most half a unit. Every operation is integer arithmetic, so results are bit-identical
+//! on every target.
+
+use core::fmt;
+
+use fixed::types::I32F32;
+
+use super::decimal::parse_fixed;
+use super::wide::{div_round, shift_round};
+
+/// A signed fixed-point number with 32 integer and 32 fractional bits.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
+pub struct Real(I32F32);
+
+impl Real {
+    /// Zero.
+    pub const ZERO: Self = Self(I32F32::ZERO);
+    /// One.
+    pub const ONE: Self = Self(I32F32::ONE);
+    /// Number of fractional bits.
+    pub const FRAC_BITS: u32 = 32;
+
+    /// From the raw bits (the value times 2³²).
+    pub const fn from_bits(bits: i64) -> Self {
+        Self(I32F32::from_bits(bits))
+    }
+
+    /// The raw bits (the value times 2³²).
+    pub const fn to_bits(self) -> i64 {
+        self.0.to_bits()
+    }
+
+    /// An integer, exactly.
+    pub const fn from_int(value: i32) -> Self {
+        Self::from_bits((value as i64) << 32)
+    }
+
+    /// The ratio `numerator / denominator`, rounded to the nearest representable value;
+    /// `None` if the denominator is 0 or the result is out of range.
+    pub fn from_ratio(numerator: i64, denominator: i64) -> Option<Self> {
+        if denominator == 0 {
+            return None;
+        }
+        let scaled = i128::from(numerator) << 32;
+        let bits = div_round(scaled, i128::from(denominator));
+        i64::try_from(bits).ok().map(Self::from_bits)
+    }
+
+    /// Parses an unsigned decimal number such as `1.618034` or `.5`, rounded to nearest.
+    pub fn parse_decimal(text: &str) -> Option<Self> {
+        if text.starts_with(['-', '+']) {
+            return None;
+        }
+        let bits = parse_fixed(text, Self::FRAC_BITS)?;
+        i64::try_from(bits).ok().map(Self::from_bits)
+    }
+
+    /// Checked addition.
+    pub fn checked_add(self, other: Self) -> Option<Self> {
+        self.0.checked_add(other.0).map(Self)
+    }
+
+    /// Checked subtraction.
+    pub fn checked_sub(self, other: Self) -> Option<Self> {
+        self.0.checked_sub(other.0).map(Self)
+    }
+
+    /// Checked multiplication, rounded to nearest.
+    pub fn checked_mul(self, other: Self) -> Option<Self> {
+        let product = i128::from(self.to_bits()) * i128::from(other.to_bits());
+        i64::try_from(shift_round(product, 32))
+            .ok()
+            .map(Self::from_bits)
+    }
+
+    /// Checked division, rounded to nearest; `None` on division by zero or overflow.
+    pub fn checked_div(self, other: Self) -> Option<Self> {
+        if other.to_bits() == 0 {
+            return None;
+        }
+        let quotient = div_round(
+            i128::from(self.to_bits()) << 32,
+            i128::from(other.to_bits()),
+        );
+        i64::try_from(quotient).ok().map(Self::from_bits)
+    }
+
+    /// The square root of a non-negative value (`None` for negatives), rounded down.
+    pub fn checked_sqrt(self) -> Option<Self> {
+        let bits = u128::try_from(self.to_bits()).ok()?;
+        let root = (bits << 32).isqrt();
+        i64::try_from(root).ok().map(Self::from_bits)
+    }
+
+    /// Times a Q30 factor (a sine or cosine), rounded half away from zero so that
+    /// `x.mul_q30(-c) == -x.mul_q30(c)` exactly: symmetric headings give exactly opposite steps.
+    ///
+    /// Two 32×32→64 products instead of an i128 multiply, which is a library call on
+    /// Cortex-M: |self|·|factor| = hi·|factor|·2³² + lo·|factor|, and 2³² is a multiple of
+    /// 2³⁰, so the rounding only looks at the low product.
+    pub(crate) fn mul_q30(self, factor: i32) -> Self {
+        let negative = (self.to_bits() < 0) != (factor < 0);
+        let (a, b) = (
+            self.to_bits().unsigned_abs(),
+            u64::from(factor.unsigned_abs()),
+        );
+        let low = (a & 0xFFFF_FFFF) * b; // < 2^62
+        let high = (a >> 32) * b; // < 2^62
+        let magnitude = (high << 2).wrapping_add((low + (1 << 29)) >> 30);
+        // |self·factor| / 2^30 <= |self| < 2^63: the magnitude fits in i64.
+        let magnitude = magnitude as i64;
+        Self::from_bits(if negative { -magnitude } else { magnitude })
+    }
+
+    /// Rounds to the nearest integer, half away from zero (saturating at the i32 range).
+    pub fn round_to_i32(self) -> i32 {
+        let rounded = shift_round(i128::from(self.to_bits()), 32);
+        rounded.clamp(i128::from(i32::MIN), i128::from(i32::MAX)) as i32
+    }
+
+    /// The value as `f64` (exact to 53 significant bits); for tests and host output.
+    pub fn to_f64(self) -> f64 {
+        self.to_bits() as f64 / 4_294_967_296.0
+    }
+
+    /// The nearest value to an `f64`; `None` if out of range or not finite. Set-up only.
+    pub fn from_f64(value: f64) -> Option<Self> {
+        I32F32::checked_from_num(value).map(Self)
+    }
+
+    /// The absolute value, saturating.
+    pub fn abs(self) -> Self {
+        Self(self.0.saturating_abs())
+    }
+}
+
+impl fmt::Debug for Real {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+/// Exact decimal; trailing digits are as many as the value needs to round-trip.
+impl fmt::Display for Real {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_decimals_exactly_rounded() {
+        assert_eq!(Real::parse_decimal("0.5"), Some(Real::from_bits(1 << 31)));
+        assert_eq!(Real::parse_decimal(".25"), Some(Real::from_bits(1 << 30)));
+        assert_eq!(Real::parse_decimal("3"), Some(Real::from_int(3)));
+        let golden = Real::parse_decimal("1.618034").map(Real::to_f64);
+        assert!((golden.unwrap_or(0.0) - 1.618034).abs() < 1e-9);
+        for bad in ["", ".", "1.2.3", "-1", "1e5", "99999999999", "-"] {
+            assert_eq!(Real::parse_decimal(bad), None, "{bad}");
+        }
+    }
+
+    #[test]
+    fn q30_products_are_symmetric() {
+        let step = Real::from_bits(0x1_2345_6789);
+        for c in [1 << 30, -(1 << 30), 123_456_789, 7, -7] {
+            assert_eq!(step.mul_q30(c).to_bits(), -step.mul_q30(-c).to_bits());
+        }
+    }
+
+    /// The split multiply equals the exact i128 product rounded half away from zero.
+    #[test]
+    fn q30_product_matches_the_wide_product() {
+        let values = [
+            0i64,
+            1,
+            -1,
+            3,
+            1 << 31,
+            -(1 << 40) - 7,
+            i64::MAX / 3,
+            -(i64::MAX / 5),
+            0x1234_5678_9ABC,
+        ];
+        let factors = [
+            0i32,
+            1,
+            -1,
+            1 << 30,
+            -(1 << 30),
+            536_870_912,
+            -123_456_789,
+            7,
+        ];
+        for &v in &values {
+            for &f in &factors {
+                let wide = shift_round(i128::from(v) * i128::from(f), 30) as i64;
+                assert_eq!(Real::from_bits(v).mul_q30(f).to_bits(), wide, "{v} × {f}");
+            }
+        }
+    }
+
+    #[test]
+    fn sqrt_and_div() {
+        let nine = Real::from_int(9);
+        assert_eq!(nine.checked_sqrt(), Some(Real::from_int(3)));
+        assert_eq!(Real::ONE.checked_div(Real::ZERO), None);
+        assert_eq!(nine.checked_div(Real::from_int(3)), Some(Real::from_int(3)));
+    }
+}

@@ -1,0 +1,193 @@
+//! Exact wide products and rounding helpers, written so that no core calls a library
+//! routine for them (`__aeabi_lmul`, 128-bit multiplies): the same bits on every target.
+
+/// The exact product of two u32. A single instruction on Cortex-M3/M4 (`umull`); on cores
+/// without one (the `tinyfractal_no_long_multiply` cfg, set by build.rs for ARMv6-M) four
+/// 16×16 products inline, about a third of the `__aeabi_lmul` call the compiler would make.
+#[inline(always)]
+pub(crate) fn mul_u32_wide(a: u32, b: u32) -> u64 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        mul_u32_halves(a, b)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        u64::from(a) * u64::from(b)
+    }
+}
+
+/// The exact product of two u32 from 16-bit halves, in 32-bit arithmetic only.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn mul_u32_halves(a: u32, b: u32) -> u64 {
+    let (a_low, a_high) = (a & 0xFFFF, a >> 16);
+    let (b_low, b_high) = (b & 0xFFFF, b >> 16);
+    let (middle, middle_carry) = (a_low * b_high).overflowing_add(a_high * b_low);
+    let (low, low_carry) = (a_low * b_low).overflowing_add(middle << 16);
+    let high =
+        a_high * b_high + (middle >> 16) + (u32::from(middle_carry) << 16) + u32::from(low_carry);
+    (u64::from(high) << 32) | u64::from(low)
+}
+
+/// The exact product of two i32 (`smull`, or 16-bit halves: see [`mul_u32_wide`]).
+#[inline(always)]
+pub(crate) fn mul_i32_wide(a: i32, b: i32) -> i64 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        mul_i32_halves(a, b)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        i64::from(a) * i64::from(b)
+    }
+}
+
+/// The exact product of two i32 from 16-bit halves of their magnitudes.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn mul_i32_halves(a: i32, b: i32) -> i64 {
+    // |a·b| ≤ 2^62: the magnitude fits in an i64.
+    let magnitude = mul_u32_halves(a.unsigned_abs(), b.unsigned_abs()) as i64;
+    if (a ^ b) < 0 {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+/// 2ab as (a + b)² − a² − b², given the squares, with (a + b)² from 16-bit halves: where
+/// there is no long multiply (ARMv6-M) a square needs neither signs nor a fourth 16×16
+/// product, so this costs about half a signed product. `a + b` must fit in an i32.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn twice_product_by_squares(a: i32, b: i32, a_squared: i64, b_squared: i64) -> i64 {
+    let sum = (a + b).unsigned_abs();
+    // (a + b)² ≤ 2^62 for a sum within i32. The compiler shares the two equal cross
+    // products of a square: three 16×16 multiplies.
+    let sum_squared = mul_u32_halves(sum, sum) as i64;
+    sum_squared - a_squared - b_squared
+}
+
+/// The exact product of two i64 as i128, from four 32×32→64 products: an i128 multiply is
+/// a library call on Cortex-M, and these are single instructions on M3/M4.
+pub(crate) fn mul_wide(a: i64, b: i64) -> i128 {
+    let negative = (a < 0) != (b < 0);
+    let (a, b) = (a.unsigned_abs(), b.unsigned_abs());
+    let (a_low, a_high) = (a as u32, (a >> 32) as u32);
+    let (b_low, b_high) = (b as u32, (b >> 32) as u32);
+    let middle = u128::from(mul_u32_wide(a_low, b_high)) + u128::from(mul_u32_wide(a_high, b_low));
+    let magnitude = (u128::from(mul_u32_wide(a_high, b_high)) << 64)
+        + (middle << 32)
+        + u128::from(mul_u32_wide(a_low, b_low));
+    // |a·b| < 2^126: the magnitude fits in i128.
+    let magnitude = magnitude as i128;
+    if negative {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+/// `value / 2^shift` rounded half away from zero (so negation commutes), for one width.
+macro_rules! shift_round_in {
+    ($(#[$doc:meta])* $name:ident, $t:ty) => {
+        $(#[$doc])*
+        pub(crate) const fn $name(value: $t, shift: u32) -> $t {
+            let half: $t = 1 << (shift - 1);
+            if value >= 0 {
+                (value + half) >> shift
+            } else {
+                -((-value + half) >> shift)
+            }
+        }
+    };
+}
+
+shift_round_in!(
+    /// `value / 2^shift`, rounded half away from zero.
+    shift_round,
+    i128
+);
+shift_round_in!(
+    /// [`shift_round`] in 64 bits, for per-pixel work on 32-bit cores (a 128-bit shift costs
+    /// a dozen instructions there). `|value| + 2^(shift-1)` must fit in an i64.
+    shift_round_i64,
+    i64
+);
+
+/// `numerator / denominator` rounded half away from zero; the denominator must not be 0.
+pub(crate) const fn div_round(numerator: i128, denominator: i128) -> i128 {
+    let negative = (numerator < 0) != (denominator < 0);
+    let n = numerator.unsigned_abs();
+    let d = denominator.unsigned_abs();
+    let q = (n + d / 2) / d;
+    if negative {
+        -(q as i128)
+    } else {
+        q as i128
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn products_from_halves_are_exact() {
+        let edges = [
+            0,
+            1,
+            2,
+            0xFFFF,
+            0x1_0000,
+            0x1_0001,
+            0x7FFF_FFFF,
+            0x8000_0000,
+            u32::MAX,
+        ];
+        let mut state = 0x2545_F491_u32;
+        let mut values = edges.to_vec();
+        for _ in 0..2000 {
+            // xorshift32: a spread of bit patterns, reproducible.
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            values.push(state);
+        }
+        for &a in &values {
+            for &b in values.iter().step_by(37).chain(&edges) {
+                assert_eq!(mul_u32_halves(a, b), u64::from(a) * u64::from(b), "{a} {b}");
+                let (a, b) = (a as i32, b as i32);
+                assert_eq!(mul_i32_halves(a, b), i64::from(a) * i64::from(b), "{a} {b}");
+                // The sum must fit in an i32: halve both.
+                let (a, b) = (a / 2, b / 2);
+                let (a2, b2) = (i64::from(a) * i64::from(a), i64::from(b) * i64::from(b));
+                assert_eq!(
+                    twice_product_by_squares(a, b, a2, b2),
+                    2 * i64::from(a) * i64::from(b),
+                    "{a} {b}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn wide_products_are_exact() {
+        let values = [
+            0i64,
+            1,
+            -1,
+            i64::MAX,
+            i64::MIN + 1,
+            1 << 40,
+            -(1 << 33) + 5,
+            0x7FFF_FFFF,
+            -0x8000_0001,
+        ];
+        for &a in &values {
+            for &b in &values {
+                assert_eq!(mul_wide(a, b), i128::from(a) * i128::from(b), "{a} × {b}");
+            }
+        }
+    }
+}

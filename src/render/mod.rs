@@ -1,0 +1,7 @@
+//! From numbers to pixels, for every family: the run rasteriser for lines, value sinks
+//! (the raw layer under colour), palettes, and fitting a picture into a target. This is
+//! also where 3D projection belongs.
+
+pub(crate) mod palette;
+pub(crate) mod raster;
+pub(crate) mod sink;
