@@ -1,14 +1,40 @@
 //! Tells the core which targets have no 32×32→64 multiply instruction: ARMv6-M (Cortex-M0,
 //! M0+, M1) and ARMv8-M Baseline (Cortex-M23). There a 64-bit product is a call to
-//! `__aeabi_lmul`, and `real::mul_u32_wide` builds it from 16-bit halves instead. (Stable Rust
+//! `__aeabi_lmul`, and `math::wide::mul_u32_wide` builds it from 16-bit halves instead. (Stable Rust
 //! has no `target_feature` cfg for this, so the target name decides.) The products are exact
 //! either way: results are bit-identical on every target.
 
+//!
+//! It also finds Fractint's corpus for the tests that read it (`TINYFRACTAL_CORPUS`, or
+//! `shared/corpus` beside the repository): where it is missing they are built as ignored
+//! (the `tinyfractal_corpus` cfg is unset), except under `CI=true`, where they must run.
+//! Nothing in the library depends on either.
+
 use std::env;
+use std::path::PathBuf;
 
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_long_multiply)");
+    println!("cargo::rustc-check-cfg=cfg(tinyfractal_corpus)");
     println!("cargo:rerun-if-changed=build.rs");
+    println!("cargo:rerun-if-env-changed=TINYFRACTAL_CORPUS");
+    println!("cargo:rerun-if-env-changed=CI");
+    let corpus = env::var_os("TINYFRACTAL_CORPUS").map_or_else(
+        || PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus"),
+        PathBuf::from,
+    );
+    // Watching a folder that does not exist would rerun this on every build; after adding
+    // shared/ later, set TINYFRACTAL_CORPUS (or touch build.rs) to be seen.
+    if corpus.exists() {
+        println!("cargo:rerun-if-changed={}", corpus.display());
+    }
+    if corpus.join("fractint").is_dir() || env::var("CI").as_deref() == Ok("true") {
+        println!("cargo:rustc-cfg=tinyfractal_corpus");
+    }
+    println!(
+        "cargo:rustc-env=TINYFRACTAL_CORPUS_DIR={}",
+        corpus.display()
+    );
     let target = env::var("TARGET").unwrap_or_default();
     if target.starts_with("thumbv6m") || target.starts_with("thumbv8m.base") {
         println!("cargo:rustc-cfg=tinyfractal_no_long_multiply");

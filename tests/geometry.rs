@@ -3,7 +3,10 @@
 
 mod common;
 
-use common::{corpus_file, engine_segments, koch_snowflake, ModelSegment, ModelSystem};
+use common::{
+    corpus_file, engine_segments, koch_snowflake, shipped_file, ModelSegment, ModelSystem,
+    SHIPPED_L_FILES,
+};
 use tinyfractal::{Angle, Dialect, Grammar, LFile, Real, Segments};
 
 /// Asserts the engine's segments match the model's: same count, and every end within a
@@ -31,37 +34,60 @@ fn assert_matches_model(
     }
 }
 
-#[test]
-fn every_corpus_system_matches_the_f64_model() {
+/// Every system of a file against the f64 model, at the highest order up to 6 whose
+/// derived string stays small enough for the model; returns how many were checked.
+fn check_file_against_the_model(text: &str) -> usize {
     let mut checked = 0;
-    for file in ["fractint.l", "penrose.l", "tiling.l"] {
-        let text = corpus_file(file);
-        for entry in LFile::new(&text).entries() {
-            let entry = entry.unwrap();
-            let grammar = entry.grammar().unwrap();
-            let model = ModelSystem::from_fractint_body(entry.body());
-            // The highest order up to 6 whose derived string stays small enough for the model.
-            let mut order = 0;
-            while order < 6 && model.derive(order + 1, 60_000).is_some() {
-                order += 1;
-            }
-            let derived = model.derive(order, 60_000).unwrap();
-            let uses_free_angle = derived.contains(['\\', '/']);
-            let per_step = if uses_free_angle { 1e-6 } else { 1e-9 };
-            assert_matches_model(
-                &format!("{} at order {order}", entry.name()),
-                &engine_segments(&grammar, order),
-                &model.segments(&derived),
-                per_step,
-            );
-            checked += 1;
+    for entry in LFile::new(text).entries() {
+        let entry = entry.unwrap();
+        let grammar = entry.grammar().unwrap();
+        let model = ModelSystem::from_fractint_body(entry.body());
+        let mut order = 0;
+        while order < 6 && model.derive(order + 1, 60_000).is_some() {
+            order += 1;
         }
+        let derived = model.derive(order, 60_000).unwrap();
+        let uses_free_angle = derived.contains(['\\', '/']);
+        let per_step = if uses_free_angle { 1e-6 } else { 1e-9 };
+        assert_matches_model(
+            &format!("{} at order {order}", entry.name()),
+            &engine_segments(&grammar, order),
+            &model.segments(&derived),
+            per_step,
+        );
+        checked += 1;
     }
+    checked
+}
+
+#[test]
+fn every_shipped_system_matches_the_f64_model() {
+    let checked: usize = SHIPPED_L_FILES
+        .iter()
+        .map(|path| check_file_against_the_model(&shipped_file(path)))
+        .sum();
+    assert_eq!(checked, 20 + 2);
+}
+
+#[test]
+#[cfg_attr(
+    not(tinyfractal_corpus),
+    ignore = "needs Fractint's corpus: shared/ beside the repository, or TINYFRACTAL_CORPUS"
+)]
+fn every_corpus_system_matches_the_f64_model() {
+    let checked: usize = ["fractint.l", "penrose.l", "tiling.l"]
+        .iter()
+        .map(|file| check_file_against_the_model(&corpus_file(file)))
+        .sum();
     assert_eq!(checked, 90);
 }
 
 /// Fractint drew these wrong at high orders because its 32-bit turtle overflowed.
 #[test]
+#[cfg_attr(
+    not(tinyfractal_corpus),
+    ignore = "needs Fractint's corpus: shared/ beside the repository, or TINYFRACTAL_CORPUS"
+)]
 fn fractint_overflow_cases_are_right_at_high_orders() {
     let text = corpus_file("fractint.l");
     let file = LFile::new(&text);
@@ -121,16 +147,19 @@ fn koch_curve_length_grows_by_four_thirds() {
 /// exactly negated sines and cosines.
 #[test]
 fn closed_curves_close_exactly() {
-    let text = corpus_file("fractint.l");
+    let text = shipped_file("data/classics.l");
     let file = LFile::new(&text);
     let snowflake = koch_snowflake();
     let mut cases: Vec<(String, Grammar<'_>, u32)> = vec![("snowflake".into(), snowflake, 7)];
     for (name, order) in [
-        ("Koch2", 5),
-        ("Koch3", 4),
-        ("Koch6", 2),
-        ("Peano1", 4),
-        ("QuadKoch", 3),
+        ("KochSnowflake", 5),
+        ("QuadraticKochIsland", 3),
+        ("KochA", 3),
+        ("KochB", 3),
+        ("KochC", 4),
+        ("KochD", 4),
+        ("KochE", 4),
+        ("KochF", 4),
     ] {
         cases.push((name.into(), file.find(name).unwrap(), order));
     }

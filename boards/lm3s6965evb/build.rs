@@ -1,11 +1,15 @@
-//! Links the firmware: the root `memory.x` (the LM3S6965) and cortex-m-rt's `link.x`.
+//! Links the firmware: the root `memory.x` (the LM3S6965) and cortex-m-rt's `link.x`; and
+//! decides which QEMU tests can run on this host (`../tools/detect.rs`).
 //!
 //! `-Tlink.x` comes from here rather than `.cargo/config.toml`, because a build started at
 //! the workspace root ignores the board's config, and the ELF would link silently broken.
 
 use std::{env, fs, path::PathBuf};
 
+include!("../tools/detect.rs");
+
 fn main() {
+    detect_host_tools();
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("cargo sets OUT_DIR"));
     let memory = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../memory.x");
     fs::copy(&memory, out.join("memory.x")).expect("memory.x at the repository root");

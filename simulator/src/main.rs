@@ -12,7 +12,7 @@ use std::path::Path;
 use std::process::ExitCode;
 
 use args::{Command, EscapeArgs, InlineAngle, LSystemArgs, Source};
-use tinyfractal::{Angle, Grammar, LFile, Real};
+use tinyfractal::{Angle, Grammar, LFile};
 
 fn main() -> ExitCode {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
@@ -85,15 +85,8 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
         } => {
             let angle = match angle {
                 InlineAngle::Divisions(n) => Angle::Divisions(*n),
-                InlineAngle::Degrees(text) => Angle::Degrees(
-                    Real::parse_decimal(text)
-                        .or_else(|| {
-                            let positive = text.strip_prefix('-')?;
-                            let value = Real::parse_decimal(positive)?;
-                            Real::ZERO.checked_sub(value)
-                        })
-                        .ok_or_else(|| format!("--angle-deg: `{text}` is not a number"))?,
-                ),
+                InlineAngle::Degrees(text) => Angle::parse_degrees(text)
+                    .ok_or_else(|| format!("--angle-deg: `{text}` is not a number"))?,
             };
             let label = "inline system";
             let with = |e: tinyfractal::Error| format!("{label}: {e}");

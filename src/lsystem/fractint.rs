@@ -118,7 +118,7 @@ impl<'a> Entry<'a> {
             let mut chars = symbol.chars();
             if let (Some(c), None) = (chars.next(), chars.next()) {
                 let (body, column) = words.next().unwrap_or(("", symbol_at + 2));
-                grammar.add_rule(c, body, Location { line, column })?;
+                grammar.add_rule_at(c, body, Location { line, column })?;
             }
         }
         Ok(grammar)

@@ -78,12 +78,18 @@ impl<'a> Grammar<'a> {
     /// Adds a rule `symbol → body`. A second rule for the same symbol appends to the first,
     /// as repeated lines do in Fractint files.
     pub fn with_rule(mut self, symbol: char, body: &'a str) -> Result<Self, Error> {
-        self.add_rule(symbol, body, Location::column(1))?;
+        self.add_rule(symbol, body)?;
         Ok(self)
     }
 
+    /// Adds a rule `symbol → body` in place: [`with_rule`](Self::with_rule) without moving
+    /// the grammar (about 1 KiB) through every call, for tight MCU stacks.
+    pub fn add_rule(&mut self, symbol: char, body: &'a str) -> Result<(), Error> {
+        self.add_rule_at(symbol, body, Location::column(1))
+    }
+
     /// Adds a rule; `at` is where the body starts (for error messages).
-    pub(crate) fn add_rule(
+    pub(crate) fn add_rule_at(
         &mut self,
         symbol: char,
         body: &'a str,

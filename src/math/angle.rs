@@ -20,6 +20,15 @@ pub enum Angle {
     Degrees(Real),
 }
 
+impl Angle {
+    /// A free angle from decimal degrees with an optional sign (`22.5`, `-90`), exactly
+    /// rounded: the one parser for degrees given as text. `None` if `text` is not a number
+    /// or beyond ±2³¹ degrees.
+    pub fn parse_degrees(text: &str) -> Option<Self> {
+        Real::parse_signed(text.trim()).map(Self::Degrees)
+    }
+}
+
 /// The turtle's direction vectors: for `Angle n`, cos and sin of each heading in Q30;
 /// for a free angle, the turn as a binary angle.
 #[derive(Debug, Clone)]

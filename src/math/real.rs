@@ -41,14 +41,17 @@ impl Real {
     }
 
     /// The ratio `numerator / denominator`, rounded to the nearest representable value;
-    /// `None` if the denominator is 0 or the result is out of range.
-    pub fn from_ratio(numerator: i64, denominator: i64) -> Option<Self> {
+    /// `None` if the denominator is 0 or the result is out of range. A `const fn`, so tables
+    /// can hold exact values such as 22.5 (`from_ratio(45, 2)`).
+    pub const fn from_ratio(numerator: i64, denominator: i64) -> Option<Self> {
         if denominator == 0 {
             return None;
         }
-        let scaled = i128::from(numerator) << 32;
-        let bits = div_round(scaled, i128::from(denominator));
-        i64::try_from(bits).ok().map(Self::from_bits)
+        let bits = div_round((numerator as i128) << 32, denominator as i128);
+        if bits < i64::MIN as i128 || bits > i64::MAX as i128 {
+            return None;
+        }
+        Some(Self::from_bits(bits as i64))
     }
 
     /// Parses an unsigned decimal number such as `1.618034` or `.5`, rounded to nearest.
@@ -56,6 +59,13 @@ impl Real {
         if text.starts_with(['-', '+']) {
             return None;
         }
+        let bits = parse_fixed(text, Self::FRAC_BITS)?;
+        i64::try_from(bits).ok().map(Self::from_bits)
+    }
+
+    /// Parses a decimal number with an optional sign (`-22.5`, `+3`, `.5`), rounded to
+    /// nearest.
+    pub fn parse_signed(text: &str) -> Option<Self> {
         let bits = parse_fixed(text, Self::FRAC_BITS)?;
         i64::try_from(bits).ok().map(Self::from_bits)
     }
@@ -166,6 +176,9 @@ mod tests {
         for bad in ["", ".", "1.2.3", "-1", "1e5", "99999999999", "-"] {
             assert_eq!(Real::parse_decimal(bad), None, "{bad}");
         }
+        assert_eq!(Real::parse_signed("-22.5"), Real::from_ratio(-45, 2));
+        assert_eq!(Real::parse_signed("+25.7"), Real::from_ratio(257, 10));
+        assert_eq!(Real::parse_signed("--1"), None);
     }
 
     #[test]

@@ -242,13 +242,30 @@ pub fn engine_segments(grammar: &tinyfractal::Grammar<'_>, order: u32) -> Vec<Mo
         .collect()
 }
 
+/// A file of Fractint's own corpus (`../shared/corpus`, or `TINYFRACTAL_CORPUS`), read as
+/// 8-bit text. Tests that call it are built as ignored where the corpus is missing (see
+/// build.rs), except under `CI=true`.
 pub fn corpus_file(name: &str) -> String {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/corpus/fractint")
+    let path = PathBuf::from(env!("TINYFRACTAL_CORPUS_DIR"))
+        .join("fractint")
         .join(name);
-    let bytes = std::fs::read(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let bytes = std::fs::read(&path).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e} (put shared/ beside the repository, or set TINYFRACTAL_CORPUS)",
+            path.display()
+        )
+    });
     bytes.iter().map(|&b| char::from(b)).collect()
 }
+
+/// A file the project ships: `data/NAME` or `tests/data/NAME`.
+pub fn shipped_file(path: &str) -> String {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(path);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// The `.l` files the project ships, for tests that need real files.
+pub const SHIPPED_L_FILES: [&str; 2] = ["data/classics.l", "tests/data/small.l"];
 
 /// The Koch snowflake (Fractint's Koch1): 3·4ⁿ segments at order n.
 pub fn koch_snowflake() -> tinyfractal::Grammar<'static> {

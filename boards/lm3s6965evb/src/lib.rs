@@ -6,7 +6,6 @@
 #![deny(missing_docs, unsafe_code)]
 
 pub mod framebuffer;
-pub mod measure;
 
 pub use framebuffer::Framebuffer;
 /// The scenes, shared with every board (drawn here in [`scenes::GREY`]).

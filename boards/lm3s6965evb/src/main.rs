@@ -25,8 +25,11 @@ mod firmware {
     fn main() -> ! {
         let mut board = Board::init();
         let mut framebuffer = Framebuffer::new();
-        for (index, (name, scene)) in SCENES.iter().enumerate() {
-            let result = scene.draw(&mut framebuffer, &scenes::GREY);
+        for (index, entry) in SCENES.iter().enumerate() {
+            let (name, result) = (
+                entry.name,
+                entry.scene.draw(&mut framebuffer, &scenes::GREY),
+            );
             board.show(&framebuffer);
             match result {
                 Ok(work) => hprintln!("scene {} {} done: {:?}", index, name, work),

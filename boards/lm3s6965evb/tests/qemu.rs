@@ -4,10 +4,11 @@
 //! agree.
 //!
 //! QEMU shows each OLED pixel as a 4×4 block, grey level n as n·0x11 in R, G and B.
-//! Without `qemu-system-arm` the test says so loudly and passes, except under `CI=true`,
-//! where it fails (`.ci/run` installs QEMU).
+//! Without `qemu-system-arm` the test is built as ignored (and says what to install),
+//! except under `CI=true`, where it runs and fails (`.ci/run` installs QEMU).
 
-mod common;
+#[path = "../../tools/qemu.rs"]
+mod tools;
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::net::UnixStream;
@@ -27,6 +28,7 @@ const MAGNIFY: usize = 4;
 /// Builds the firmware in its own target folder (the outer `cargo test` holds the main one).
 fn build_firmware() -> PathBuf {
     let board = Path::new(env!("CARGO_MANIFEST_DIR"));
+    tools::ensure_target(board, "thumbv7m-none-eabi");
     let target_dir = board.join("../../target/qemu-firmware");
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let status = Command::new(cargo)
@@ -106,16 +108,21 @@ fn read_ppm(path: &Path) -> (usize, usize, Vec<u8>) {
 }
 
 #[test]
+#[cfg_attr(
+    tinyfractal_no_qemu,
+    ignore = "needs qemu-system-arm: apt-get install qemu-system-arm"
+)]
+#[cfg_attr(
+    all(tinyfractal_no_thumb_targets, not(tinyfractal_no_qemu)),
+    ignore = "needs the thumbv7m-none-eabi target: rustup target add thumbv7m-none-eabi"
+)]
 fn firmware_matches_the_host_pixel_for_pixel() {
-    if !common::qemu_or_skip("the QEMU firmware test") {
-        return;
-    }
     let elf = build_firmware();
     let work = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("qemu");
     let _ = std::fs::remove_dir_all(&work);
     std::fs::create_dir_all(&work).unwrap();
     let socket = work.join("monitor.sock");
-    let mut qemu = Command::new("qemu-system-arm")
+    let mut qemu = tools::qemu()
         .args([
             "-cpu",
             "cortex-m3",
@@ -148,7 +155,8 @@ fn firmware_matches_the_host_pixel_for_pixel() {
             .expect("the firmware speaks")
     };
 
-    for (index, (name, scene)) in SCENES.iter().enumerate() {
+    for (index, entry) in SCENES.iter().enumerate() {
+        let (name, scene) = (entry.name, entry.scene);
         let line = next_line();
         assert!(
             line.starts_with(&format!("scene {index} {name} done")),

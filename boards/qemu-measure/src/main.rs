@@ -17,10 +17,8 @@ mod firmware {
     use cortex_m_rt::{entry, exception};
     use cortex_m_semihosting::{debug, hprintln};
     use panic_semihosting as _;
-    use tinyfractal_lm3s6965evb::measure::{
-        baseline_f32, baseline_fixed20, baseline_view, Checksum,
-    };
-    use tinyfractal_lm3s6965evb::scenes::{Work, GREY, SCENES};
+    use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
+    use tinyfractal_scenes::{Work, GREY, SCENES};
 
     const RELOAD: u32 = 0x00FF_FFFF;
     static WRAPS: AtomicU32 = AtomicU32::new(0);
@@ -125,19 +123,22 @@ mod firmware {
         while SYST::get_current() == 0 {}
         let clock = Clock::calibrate();
         hprintln!("measure calibration scale={}", clock.scale);
-        for (name, scene) in SCENES.iter() {
+        for entry in SCENES.iter() {
             let bottom = paint_stack();
             let mut target = Checksum::new();
             let mut work = Work::Segments(0);
             let instructions = clock.measure(|| {
-                work = scene.draw(&mut target, &GREY).unwrap_or(Work::Segments(0));
+                work = entry
+                    .scene
+                    .draw(&mut target, &GREY)
+                    .unwrap_or(Work::Segments(0));
             });
             let stack = stack_used(bottom);
             let work = match work {
                 Work::Segments(n) | Work::Iterations(n) => n,
             };
             let (mut f32_cost, mut fixed_cost) = (None, None);
-            if let Some(view) = baseline_view(name) {
+            if let Some(view) = BaselineView::of(&entry.scene) {
                 f32_cost = Some(clock.measure(|| {
                     baseline_f32(view, &mut Checksum::new());
                 }));
@@ -147,7 +148,7 @@ mod firmware {
             }
             hprintln!(
                 "measure scene={} instructions={} work={} checksum={} pixels={} stack={} baseline_f32={} baseline_fixed20={}",
-                name,
+                entry.name,
                 instructions,
                 work,
                 target.value,

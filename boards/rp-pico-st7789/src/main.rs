@@ -102,7 +102,8 @@ fn main() -> ! {
     info!("ST7789 320x240 ready; GP15 shows the next scene");
 
     loop {
-        for (name, scene) in SCENES.iter() {
+        for entry in SCENES.iter() {
+            let (name, scene) = (entry.name, entry.scene);
             let start = timer.get_counter();
             let result = scene.draw(&mut display, &COLOUR);
             let ms = (timer.get_counter() - start).to_millis();

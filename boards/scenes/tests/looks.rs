@@ -6,7 +6,7 @@
 use std::convert::Infallible;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
-use tinyfractal_scenes::{Look, Scene, Work, COLOUR, GREY, SCENES};
+use tinyfractal_scenes::{Entry, Look, Work, COLOUR, GREY, SCENES};
 
 /// A frame that records every pixel and counts the ones that fall outside it.
 struct Frame<C> {
@@ -50,7 +50,7 @@ impl<C: PixelColor> DrawTarget for Frame<C> {
 
 /// Which pixels a look left as background (L-systems) or inside colour (escape time).
 fn marks<C: PixelColor + From<Rgb888>>(
-    (name, scene): &(&str, Scene),
+    Entry { name, scene, .. }: &Entry,
     size: Size,
     look: &Look<'_, C>,
 ) -> (Work, Vec<bool>) {
@@ -67,7 +67,7 @@ fn marks<C: PixelColor + From<Rgb888>>(
 #[test]
 fn every_scene_marks_the_same_pixels_in_colour_and_in_grey() {
     // The deep zoom (1000 iterations at 60 bits) is left to the QEMU test at 128×64.
-    for scene @ (name, _) in &SCENES[..SCENES.len() - 1] {
+    for scene @ Entry { name, .. } in &SCENES[..SCENES.len() - 1] {
         for size in [Size::new(320, 240), Size::new(240, 320)] {
             let (work_colour, colour) = marks(scene, size, &COLOUR);
             let (work_grey, grey) = marks(scene, size, &GREY);

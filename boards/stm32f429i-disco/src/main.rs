@@ -113,7 +113,8 @@ fn main() -> ! {
     info!("ILI9341 240x320 ready; the user button shows the next scene");
 
     loop {
-        for (name, scene) in SCENES.iter() {
+        for entry in SCENES.iter() {
+            let (name, scene) = (entry.name, entry.scene);
             let start = clock.now();
             let result = scene.draw(&mut display, &COLOUR);
             let ms = (clock.now() - start).to_millis();

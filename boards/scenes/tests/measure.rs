@@ -1,21 +1,25 @@
 //! Cost on Cortex-M0, M3 and M4, by instruction counts under QEMU (`-icount shift=0`):
 //! builds `boards/qemu-measure` for each core, runs it on `microbit`, `lm3s6965evb` and
 //! `mps2-an386`, and checks that every scene's checksum equals the host's (the same picture,
-//! bit for bit, on every core). Also reads flash and RAM sizes with llvm-tools' `llvm-size`
-//! and checks the budgets.
+//! bit for bit, on every core). Also reads flash and RAM sizes from the ELF's section
+//! headers (as `size` reports them) and checks the budgets.
+//!
+//! Built as ignored, saying what to install, where QEMU or the Cortex-M targets are missing
+//! and cannot be added (see `boards/tools/detect.rs`); under `CI=true` it always runs.
 //!
 //! With `TINYFRACTAL_MEASUREMENTS=PATH` it writes the records to PATH as JSON:
 //! `boards/measure` does that for `boards/measurements.json`.
 
-mod common;
+#[path = "../../tools/qemu.rs"]
+mod tools;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use tinyfractal_lm3s6965evb::measure::Checksum;
-use tinyfractal_lm3s6965evb::scenes::{Work, SCENES};
+use tinyfractal_scenes::measure::Checksum;
+use tinyfractal_scenes::{Scene, Work, GREY, SCENES};
 
 struct Core {
     name: &'static str,
@@ -63,6 +67,7 @@ fn repository() -> PathBuf {
 /// Builds the measuring firmware for one core, from its own folder (see its Cargo.toml).
 fn build(core: &Core) -> PathBuf {
     let folder = repository().join("boards/qemu-measure");
+    tools::ensure_target(&folder, core.target);
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let status = Command::new(cargo)
         .current_dir(&folder)
@@ -80,39 +85,42 @@ fn build(core: &Core) -> PathBuf {
         .join("release/tinyfractal-measure")
 }
 
-/// `text`, `data` and `bss` of an ELF, from llvm-tools' llvm-size.
+/// `text`, `data` and `bss` of an ELF, as Berkeley `size` counts them: allocated sections
+/// that take no file space are bss, writable ones data, and the rest (code and constants)
+/// text.
 fn sizes(elf: &Path) -> (u64, u64, u64) {
-    let sysroot = Command::new("rustc")
-        .args(["--print", "sysroot"])
-        .output()
-        .unwrap();
-    let sysroot = String::from_utf8(sysroot.stdout).unwrap();
-    let host = std::env::consts::ARCH.to_string() + "-unknown-linux-gnu";
-    let tool = Path::new(sysroot.trim())
-        .join("lib/rustlib")
-        .join(host)
-        .join("bin/llvm-size");
-    let output = Command::new(&tool).arg(elf).output().unwrap_or_else(|e| {
-        panic!(
-            "{}: {e} (rust-toolchain.toml installs llvm-tools)",
-            tool.display()
-        )
-    });
-    let text = String::from_utf8(output.stdout).unwrap();
-    let numbers: Vec<u64> = text
-        .lines()
-        .nth(1)
-        .unwrap()
-        .split_whitespace()
-        .take(3)
-        .map(|n| n.parse().unwrap())
-        .collect();
-    (numbers[0], numbers[1], numbers[2])
+    use object::{Object, ObjectSection, SectionFlags};
+    const SHF_WRITE: u64 = 0x1;
+    const SHF_ALLOC: u64 = 0x2;
+    let bytes = std::fs::read(elf).unwrap();
+    let file = object::File::parse(&*bytes).unwrap();
+    let (mut text, mut data, mut bss) = (0, 0, 0);
+    for section in file.sections() {
+        let SectionFlags::Elf { sh_flags } = section.flags() else {
+            continue;
+        };
+        if sh_flags & SHF_ALLOC == 0 {
+            continue;
+        }
+        let nobits = matches!(
+            section.kind(),
+            object::SectionKind::UninitializedData | object::SectionKind::UninitializedTls
+        );
+        let size = section.size();
+        if nobits {
+            bss += size;
+        } else if sh_flags & SHF_WRITE != 0 {
+            data += size;
+        } else {
+            text += size;
+        }
+    }
+    (text, data, bss)
 }
 
 /// Runs the firmware and returns each `measure scene=...` line as key → value.
 fn run(core: &Core, elf: &Path) -> Vec<BTreeMap<String, String>> {
-    let output = Command::new("qemu-system-arm")
+    let output = tools::qemu()
         .args([
             "-machine",
             core.machine,
@@ -147,19 +155,21 @@ fn run(core: &Core, elf: &Path) -> Vec<BTreeMap<String, String>> {
 }
 
 #[test]
+#[cfg_attr(
+    tinyfractal_no_qemu,
+    ignore = "needs qemu-system-arm: apt-get install qemu-system-arm"
+)]
+#[cfg_attr(
+    all(tinyfractal_no_thumb_targets, not(tinyfractal_no_qemu)),
+    ignore = "needs the Cortex-M targets: rustup target add thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf"
+)]
 fn every_core_draws_the_host_picture_and_fits() {
-    if !common::qemu_or_skip("the Cortex-M measurements") {
-        return;
-    }
     // The host's checksums: the same scene code into the same checksum target.
     let host: Vec<(u32, u32, u64)> = SCENES
         .iter()
-        .map(|(_, scene)| {
+        .map(|entry| {
             let mut target = Checksum::new();
-            let work = match scene
-                .draw(&mut target, &tinyfractal_lm3s6965evb::scenes::GREY)
-                .unwrap()
-            {
+            let work = match entry.scene.draw(&mut target, &GREY).unwrap() {
                 Work::Segments(n) | Work::Iterations(n) => n,
             };
             (target.value, target.pixels, work)
@@ -179,9 +189,10 @@ fn every_core_draws_the_host_picture_and_fits() {
             core.name
         );
         let mut deepest_stack = 0;
-        for (record, ((name, _), &(checksum, pixels, work))) in
+        for (record, (entry, &(checksum, pixels, work))) in
             records.iter().zip(SCENES.iter().zip(&host))
         {
+            let name = entry.name;
             assert_eq!(record["scene"], *name);
             assert_eq!(
                 record["checksum"],
@@ -194,9 +205,7 @@ fn every_core_draws_the_host_picture_and_fits() {
             let instructions: u64 = record["instructions"].parse().unwrap();
             let stack: u64 = record["stack"].parse().unwrap();
             deepest_stack = deepest_stack.max(stack);
-            let unit = if SCENES.iter().any(|(n, s)| {
-                n == name && matches!(s, tinyfractal_lm3s6965evb::scenes::Scene::LSystem { .. })
-            }) {
+            let unit = if matches!(entry.scene, Scene::LSystem { .. }) {
                 "segment"
             } else {
                 "iteration"

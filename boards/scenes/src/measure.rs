@@ -1,10 +1,14 @@
 //! What the measuring firmware (`boards/qemu-measure`) runs, shared with the host test that
 //! checks it: a target that folds every pixel into a checksum, and the two baselines a user
-//! would write first.
+//! would write first, computed from the catalogue's own scenes.
 
 use core::convert::Infallible;
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*, primitives::Rectangle};
+
+use tinyfractal::Coord;
+
+use crate::catalogue::Scene;
 
 /// A 128×64 target with no memory: every pixel written (position and grey, in order) is
 /// folded into an FNV-1a checksum, so the host can check the MCU drew the same thing. Like a
@@ -207,22 +211,68 @@ pub fn baseline_fixed20<D: DrawTarget<Color = Gray4>>(view: BaselineView, target
     })
 }
 
-/// The baselines' view for a scene, where a baseline applies: the Mandelbrot and Julia
-/// overviews. (L-systems have none, and f32 cannot resolve the deep zoom.)
-pub fn baseline_view(name: &str) -> Option<BaselineView> {
-    match name {
-        "mandelbrot" => Some(BaselineView {
-            centre: (-0.75, 0.0),
-            width: 3.5,
-            julia: None,
-            max_iterations: 64,
-        }),
-        "julia" => Some(BaselineView {
-            centre: (0.0, 0.0),
-            width: 3.6,
-            julia: Some((-0.8, 0.156)),
-            max_iterations: 100,
-        }),
-        _ => None,
+impl BaselineView {
+    /// The baselines' view of a catalogue scene, where a baseline applies: escape-time
+    /// views that `f32` resolves (width at least 2⁻¹⁰, so a 128-pixel row's spacing is
+    /// about 60 times f32's resolution near 1). L-systems have none, and f32 cannot tell
+    /// the deep zoom's pixels apart. The numbers are the scene's own text, each rounded to
+    /// the nearest f32 as a literal would be (through `Coord`: a test checks it against
+    /// `str::parse`, which would cost the firmware 20 KB of flash and a larger stack).
+    #[inline(never)]
+    pub fn of(scene: &Scene) -> Option<Self> {
+        let Scene::Escape {
+            julia,
+            centre,
+            width,
+            max_iterations,
+        } = *scene
+        else {
+            return None;
+        };
+        let number = |text: &str| Coord::parse(text).map(|value| value.to_f64() as f32);
+        let width = number(width).filter(|&w| w >= 1.0 / 1024.0)?;
+        let julia = match julia {
+            None => None,
+            Some((re, im)) => Some((number(re)?, number(im)?)),
+        };
+        Some(Self {
+            centre: (number(centre.0)?, number(centre.1)?),
+            width,
+            julia,
+            max_iterations,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{GALLERY, SCENES};
+
+    /// Through `Coord` and `f64`, every number of the catalogue becomes the f32 that
+    /// `str::parse` (the nearest one) gives: no double rounding bites.
+    #[test]
+    fn baseline_numbers_are_the_nearest_f32() {
+        for entry in SCENES.iter().chain(&GALLERY) {
+            let Scene::Escape {
+                julia,
+                centre,
+                width,
+                ..
+            } = entry.scene
+            else {
+                continue;
+            };
+            let (k_re, k_im) = julia.unwrap_or(("0", "0"));
+            for text in [centre.0, centre.1, width, k_re, k_im] {
+                let via_coord = Coord::parse(text).map(|value| value.to_f64() as f32);
+                assert_eq!(
+                    via_coord,
+                    text.parse::<f32>().ok(),
+                    "{}: {text}",
+                    entry.name
+                );
+            }
+        }
     }
 }

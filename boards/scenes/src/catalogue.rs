@@ -1,0 +1,327 @@
+//! Every scene, described once: the L-systems as the books give them, and the entries (a
+//! system at an order, or an escape-time view, with a size and a palette) that the gallery,
+//! every firmware and the measuring firmware read.
+
+use embedded_graphics::geometry::Size;
+use tinyfractal::{Angle, Coord, Dialect, Error, Fractal, Grammar, Orientation, Real, View};
+
+/// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
+#[derive(Debug, Clone, Copy)]
+pub struct System {
+    /// The axiom.
+    pub axiom: &'static str,
+    /// The rules, symbol and body.
+    pub rules: &'static [(char, &'static str)],
+    /// How far `+` and `-` turn.
+    pub angle: Angle,
+    /// Symbols besides `F` that draw a line (edge-rewriting systems).
+    pub draw_symbols: &'static str,
+}
+
+impl System {
+    /// The checked grammar. Built out of line, with the draw symbols added only when there
+    /// are some: every by-value builder step can cost a grammar-sized copy on an MCU's
+    /// stack, and the frame of a caller that draws both families should not hold them.
+    #[inline(never)]
+    pub fn grammar(&self) -> Result<Grammar<'static>, Error> {
+        let mut grammar = Grammar::new(Dialect::Abop, self.axiom, self.angle)?;
+        if !self.draw_symbols.is_empty() {
+            grammar = grammar.with_draw_symbols(self.draw_symbols)?;
+        }
+        for &(symbol, body) in self.rules {
+            grammar.add_rule(symbol, body)?;
+        }
+        Ok(grammar)
+    }
+}
+
+/// What to draw.
+#[derive(Debug, Clone, Copy)]
+pub enum Scene {
+    /// An L-system at an order.
+    LSystem {
+        /// The system.
+        system: &'static System,
+        /// Order.
+        order: u32,
+        /// Which way the first heading points.
+        orientation: Orientation,
+    },
+    /// A Mandelbrot (`julia: None`) or Julia view, as decimal text.
+    Escape {
+        /// The Julia parameter, or `None` for the Mandelbrot set.
+        julia: Option<(&'static str, &'static str)>,
+        /// Centre.
+        centre: (&'static str, &'static str),
+        /// Width along the real axis.
+        width: &'static str,
+        /// Iteration cap.
+        max_iterations: u32,
+    },
+}
+
+impl Scene {
+    /// The family, as the CLI names it: `lsystem`, `mandelbrot` or `julia`.
+    pub const fn family(&self) -> &'static str {
+        match self {
+            Self::LSystem { .. } => "lsystem",
+            Self::Escape { julia: None, .. } => "mandelbrot",
+            Self::Escape { julia: Some(_), .. } => "julia",
+        }
+    }
+
+    /// The escape-time view of this scene at `size`; `None` for an L-system.
+    pub fn view(&self, size: Size) -> Option<Result<View, Error>> {
+        let Self::Escape {
+            julia,
+            centre,
+            width,
+            max_iterations,
+        } = *self
+        else {
+            return None;
+        };
+        let coord = |text: &str| Coord::parse(text).ok_or(Error::ViewOutOfRange);
+        Some((|| {
+            let fractal = match julia {
+                None => Fractal::Mandelbrot,
+                Some((re, im)) => Fractal::Julia {
+                    re: coord(re)?,
+                    im: coord(im)?,
+                },
+            };
+            View::new(
+                fractal,
+                (coord(centre.0)?, coord(centre.1)?),
+                coord(width)?,
+                size,
+                max_iterations,
+            )
+        })())
+    }
+}
+
+/// A scene as a front end shows it: its name, its default size in pixels, and the host
+/// palette it is painted with (boards use their display's [`Look`](crate::Look) instead).
+#[derive(Debug, Clone, Copy)]
+pub struct Entry {
+    /// The name (file names, measurement records).
+    pub name: &'static str,
+    /// What to draw.
+    pub scene: Scene,
+    /// Default size in pixels.
+    pub size: Size,
+    /// The host palette: `vga` for L-systems, `classic`, `fire`, ... for escape time.
+    pub palette: &'static str,
+}
+
+/// Degrees as an exact ratio, for the tables below.
+const fn degrees(numerator: i64, denominator: i64) -> Angle {
+    match Real::from_ratio(numerator, denominator) {
+        Some(value) => Angle::Degrees(value),
+        None => panic!("a degree ratio out of range"),
+    }
+}
+
+/// The Koch snowflake (Fractint's Koch1).
+pub const KOCH_SNOWFLAKE: System = System {
+    axiom: "F--F--F",
+    rules: &[('F', "F+F--F+F")],
+    angle: Angle::Divisions(6),
+    draw_symbols: "",
+};
+/// The Heighway dragon.
+pub const DRAGON: System = System {
+    axiom: "FX",
+    rules: &[('X', "X+YF+"), ('Y', "-FX-Y")],
+    angle: Angle::Divisions(4),
+    draw_symbols: "",
+};
+/// The Hilbert curve.
+pub const HILBERT: System = System {
+    axiom: "A",
+    rules: &[('A', "+BF-AFA-FB+"), ('B', "-AF+BFB+FA-")],
+    angle: Angle::Divisions(4),
+    draw_symbols: "",
+};
+/// The Sierpiński arrowhead (edge rewriting: `A` and `B` draw).
+pub const SIERPINSKI_ARROWHEAD: System = System {
+    axiom: "A",
+    rules: &[('A', "B-A-B"), ('B', "A+B+A")],
+    angle: Angle::Divisions(6),
+    draw_symbols: "AB",
+};
+/// The Gosper curve (ABOP fig. 1.11a, edge rewriting).
+pub const GOSPER: System = System {
+    axiom: "A",
+    rules: &[('A', "A-B--B+A++AA+B-"), ('B', "+A-BB--B-A++A+B")],
+    angle: Angle::Divisions(6),
+    draw_symbols: "AB",
+};
+/// ABOP fig. 1.24d: a plant, 20°.
+pub const PLANT: System = System {
+    axiom: "X",
+    rules: &[('X', "F[+X]F[-X]+X"), ('F', "FF")],
+    angle: Angle::Degrees(Real::from_int(20)),
+    draw_symbols: "",
+};
+/// ABOP fig. 1.24f: a fern-like plant, 22.5°.
+pub const FERN: System = System {
+    axiom: "X",
+    rules: &[('X', "F-[[X]+X]+F[+FX]-X"), ('F', "FF")],
+    angle: degrees(45, 2),
+    draw_symbols: "",
+};
+/// ABOP fig. 1.25: a bush, 22.5°.
+pub const BUSH: System = System {
+    axiom: "F",
+    rules: &[('F', "FF-[-F+F+F]+[+F-F-F]")],
+    angle: degrees(45, 2),
+    draw_symbols: "",
+};
+
+const GALLERY_SIZE: Size = Size::new(320, 240);
+/// The LM3S6965EVB's OLED, where the board scenes are checked and measured.
+const OLED: Size = Size::new(128, 64);
+
+const fn lsystem(
+    name: &'static str,
+    system: &'static System,
+    order: u32,
+    orientation: Orientation,
+    size: Size,
+) -> Entry {
+    Entry {
+        name,
+        scene: Scene::LSystem {
+            system,
+            order,
+            orientation,
+        },
+        size,
+        palette: "vga",
+    }
+}
+
+/// The full Mandelbrot view.
+const MANDELBROT_CENTRE: (&str, &str) = ("-0.75", "0");
+/// The Julia set for k = −0.8 + 0.156i.
+const JULIA_K: Option<(&str, &str)> = Some(("-0.8", "0.156"));
+/// Seahorse valley's spiral, for the deep zooms.
+const SPIRAL: (&str, &str) = ("-0.743643887037151", "0.131825904205330");
+
+/// The gallery (`cargo run --release`): classic L-systems and escape-time views, 320×240.
+pub const GALLERY: [Entry; 12] = [
+    lsystem(
+        "koch-snowflake",
+        &KOCH_SNOWFLAKE,
+        5,
+        Orientation::Right,
+        GALLERY_SIZE,
+    ),
+    lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
+    lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
+    lsystem(
+        "sierpinski-arrowhead",
+        &SIERPINSKI_ARROWHEAD,
+        7,
+        Orientation::Right,
+        GALLERY_SIZE,
+    ),
+    lsystem("gosper", &GOSPER, 4, Orientation::Right, GALLERY_SIZE),
+    lsystem("plant", &PLANT, 7, Orientation::Up, GALLERY_SIZE),
+    lsystem("fern", &FERN, 6, Orientation::Up, GALLERY_SIZE),
+    lsystem("bush", &BUSH, 4, Orientation::Up, GALLERY_SIZE),
+    Entry {
+        name: "mandelbrot",
+        scene: Scene::Escape {
+            julia: None,
+            centre: MANDELBROT_CENTRE,
+            width: "3.5",
+            max_iterations: 256,
+        },
+        size: GALLERY_SIZE,
+        palette: "classic",
+    },
+    Entry {
+        name: "seahorse-valley",
+        scene: Scene::Escape {
+            julia: None,
+            centre: ("-0.7435", "0.1314"),
+            width: "0.02",
+            max_iterations: 512,
+        },
+        size: GALLERY_SIZE,
+        palette: "fire",
+    },
+    Entry {
+        name: "julia",
+        scene: Scene::Escape {
+            julia: JULIA_K,
+            centre: ("0", "0"),
+            width: "3.2",
+            max_iterations: 300,
+        },
+        size: GALLERY_SIZE,
+        palette: "classic",
+    },
+    Entry {
+        // Width 10^-9: beyond the 32-bit tiers, computed in Q60 with 128-bit products.
+        name: "deep-zoom",
+        scene: Scene::Escape {
+            julia: None,
+            centre: SPIRAL,
+            width: "0.000000001",
+            max_iterations: 4000,
+        },
+        size: GALLERY_SIZE,
+        palette: "fire",
+    },
+];
+
+/// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
+/// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
+pub const SCENES: [Entry; 5] = [
+    lsystem("plant", &FERN, 5, Orientation::Up, OLED),
+    lsystem(
+        "koch-snowflake",
+        &KOCH_SNOWFLAKE,
+        4,
+        Orientation::Right,
+        OLED,
+    ),
+    Entry {
+        name: "mandelbrot",
+        scene: Scene::Escape {
+            julia: None,
+            centre: MANDELBROT_CENTRE,
+            width: "3.5",
+            max_iterations: 64,
+        },
+        size: OLED,
+        palette: "classic",
+    },
+    Entry {
+        name: "julia",
+        scene: Scene::Escape {
+            julia: JULIA_K,
+            centre: ("0", "0"),
+            width: "3.6",
+            max_iterations: 100,
+        },
+        size: OLED,
+        palette: "classic",
+    },
+    Entry {
+        // Width 10^-7: needs the 60-bit tier with 128-bit products.
+        name: "deep-zoom",
+        scene: Scene::Escape {
+            julia: None,
+            centre: SPIRAL,
+            width: "0.0000001",
+            max_iterations: 1000,
+        },
+        size: OLED,
+        palette: "fire",
+    },
+];

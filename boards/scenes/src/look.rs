@@ -1,0 +1,101 @@
+//! Drawing a scene on a display: one [`Look`] per display says which colours to use.
+
+use embedded_graphics::{
+    pixelcolor::{Gray4, GrayColor, Rgb565, Rgb888},
+    prelude::*,
+};
+use tinyfractal::{DrawError, Error, EscapeTime, Gradient, LSystem};
+
+use crate::catalogue::Scene;
+
+/// The colours a display draws the scenes in.
+#[derive(Debug, Clone, Copy)]
+pub struct Look<'a, C> {
+    /// What the target is cleared to.
+    pub background: C,
+    /// The L-systems' line colour.
+    pub ink: C,
+    /// Escape-time gradient keys, spread over 16 colours.
+    pub keys: &'a [Rgb888],
+    /// Escape-time points that never escape.
+    pub inside: C,
+}
+
+/// The SSD0323's 4-bit grey: white lines, a dark-light-dark gradient.
+pub const GREY: Look<'static, Gray4> = Look {
+    background: Gray4::BLACK,
+    ink: Gray4::WHITE,
+    keys: &[
+        Rgb888::new(0x10, 0x10, 0x10),
+        Rgb888::new(0x90, 0x90, 0x90),
+        Rgb888::WHITE,
+        Rgb888::new(0x50, 0x50, 0x50),
+    ],
+    inside: Gray4::BLACK,
+};
+
+/// RGB565 displays (ST7789, ILI9341): green plants on black, a blue-gold gradient.
+pub const COLOUR: Look<'static, Rgb565> = Look {
+    background: Rgb565::BLACK,
+    ink: Rgb565::new(12, 58, 12),
+    keys: &[
+        Rgb888::new(0x00, 0x07, 0x64),
+        Rgb888::new(0x20, 0x6B, 0xCB),
+        Rgb888::new(0xED, 0xFF, 0xFF),
+        Rgb888::new(0xFF, 0xAA, 0x00),
+        Rgb888::new(0x00, 0x02, 0x00),
+    ],
+    inside: Rgb565::BLACK,
+};
+
+/// What drawing a scene did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Work {
+    /// Segments drawn.
+    Segments(u64),
+    /// Iterations computed.
+    Iterations(u64),
+}
+
+impl Scene {
+    /// Draws the scene over the whole of `target`: an L-system clears it to
+    /// `look.background` first; an escape-time view paints every pixel anyway, so clearing
+    /// would only double the traffic to the display.
+    pub fn draw<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+    ) -> Result<Work, DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
+        match *self {
+            Scene::LSystem {
+                system,
+                order,
+                orientation,
+            } => {
+                target.clear(look.background).map_err(DrawError::Target)?;
+                let grammar = system.grammar()?;
+                let ink = [look.ink];
+                let drawing = LSystem::new(&grammar, order)
+                    .with_orientation(orientation)
+                    .fit(target.bounding_box(), &ink)?;
+                let stats = drawing.draw(target).map_err(DrawError::Target)?;
+                Ok(Work::Segments(stats.segments))
+            }
+            Scene::Escape { .. } => {
+                let view = self
+                    .view(target.bounding_box().size)
+                    .unwrap_or(Err(Error::ViewOutOfRange))?;
+                let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
+                    .ok_or(Error::EmptyPalette)?;
+                let stats = EscapeTime::new(view, palette)
+                    .draw(target)
+                    .map_err(DrawError::Target)?;
+                Ok(Work::Iterations(stats.iterations))
+            }
+        }
+    }
+}
