@@ -1,7 +1,11 @@
-//! Command-line parsing, by hand: the contract is small and the messages are ours.
+//! Command-line parsing with clap (derive): one subcommand per family, `--help` on each,
+//! `--version`, and shell completions. The option names are a contract (the README and the
+//! issues name them): keep them exactly as they are.
 
-use std::fmt;
+use std::ffi::OsString;
 use std::path::PathBuf;
+
+use clap::{error::ErrorKind, Args, CommandFactory, Parser, Subcommand, ValueEnum};
 
 /// What the user asked for.
 #[derive(Debug, Clone, PartialEq)]
@@ -12,10 +16,10 @@ pub enum Command {
     RenderEscape(EscapeArgs),
     /// `list PATH.l`
     List(PathBuf),
-    /// `gallery [--out DIR]`
+    /// `gallery [--out DIR]`, and no arguments at all
     Gallery { out: PathBuf },
-    /// `help`, `--help`
-    Help,
+    /// `completions SHELL`
+    Completions(clap_complete::Shell),
 }
 
 /// Where the system comes from.
@@ -41,40 +45,29 @@ pub enum InlineAngle {
 }
 
 /// Options every render takes.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Args)]
 pub struct Common {
-    pub width: u32,
-    pub height: u32,
+    /// Picture size in pixels, WxH
+    #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// Write the picture there (default: NAME.png)
+    #[arg(long, value_name = "PNG")]
     pub out: Option<PathBuf>,
-    pub segments: Option<PathBuf>,
+    /// Print one line of statistics
+    #[arg(long)]
     pub stats: bool,
+    /// Show the picture in a window (needs the `window` feature and SDL2)
+    #[arg(long)]
     pub window: bool,
 }
 
-impl Default for Common {
-    fn default() -> Self {
-        Self {
-            width: 320,
-            height: 240,
-            out: None,
-            segments: None,
-            stats: false,
-            window: false,
-        }
-    }
-}
-
 impl Common {
-    /// Takes one of the options every render has; false if `flag` is not one of them.
-    fn take_flag(&mut self, flag: &str, options: &mut Options<'_>) -> Result<bool, UsageError> {
-        match flag {
-            "--size" => (self.width, self.height) = parse_size(options.value(flag)?)?,
-            "--out" => self.out = Some(PathBuf::from(options.value(flag)?)),
-            "--stats" => self.stats = true,
-            "--window" => self.window = true,
-            _ => return Ok(false),
-        }
-        Ok(true)
+    pub fn width(&self) -> u32 {
+        self.size.0
+    }
+
+    pub fn height(&self) -> u32 {
+        self.size.1
     }
 }
 
@@ -84,6 +77,7 @@ pub struct LSystemArgs {
     pub source: Source,
     pub order: u32,
     pub common: Common,
+    pub segments: Option<PathBuf>,
 }
 
 /// `render mandelbrot` / `render julia`'s arguments, as text checked by the core.
@@ -102,305 +96,302 @@ pub struct EscapeArgs {
     pub dwell: Option<PathBuf>,
 }
 
-/// A usage mistake, with what to do about it.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct UsageError(pub String);
+#[derive(Debug, Parser)]
+#[command(
+    name = "tinyfractal",
+    version,
+    about = "tinyfractal: fixed-point fractals for small displays, rendered on the host",
+    long_about = "tinyfractal: fixed-point fractals for small displays, rendered on the host.\n\
+                  With no command it renders the gallery into ./gallery/ (what `cargo run --release` does)."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Commands>,
+}
 
-impl fmt::Display for UsageError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} (see `tinyfractal help`)", self.0)
+#[derive(Debug, Subcommand)]
+enum Commands {
+    /// Render one scene to PNG
+    Render {
+        #[command(subcommand)]
+        scene: Scene,
+    },
+    /// The systems in a .l file, one name a line
+    List {
+        /// The .l file
+        #[arg(value_name = "PATH.l")]
+        file: PathBuf,
+    },
+    /// Render the gallery (what `cargo run --release` does)
+    Gallery {
+        /// The folder to write the pictures into
+        #[arg(long, value_name = "DIR", default_value = "gallery")]
+        out: PathBuf,
+    },
+    /// Print a shell completion script
+    Completions {
+        /// bash, zsh, fish, elvish or powershell
+        shell: clap_complete::Shell,
+    },
+}
+
+#[derive(Debug, Subcommand)]
+enum Scene {
+    /// An L-system, from a .l file or inline rules
+    Lsystem(LSystemOptions),
+    /// The Mandelbrot set
+    Mandelbrot(EscapeOptions),
+    /// A Julia set
+    Julia(JuliaOptions),
+}
+
+#[derive(Debug, Args)]
+struct LSystemOptions {
+    /// A Fractint .l file (with --name)
+    #[arg(
+        long,
+        value_name = "PATH.l",
+        conflicts_with = "axiom",
+        requires = "name"
+    )]
+    file: Option<PathBuf>,
+    /// The system in the file (case-insensitive)
+    #[arg(long, value_name = "NAME", requires = "file")]
+    name: Option<String>,
+    /// An inline system's axiom
+    #[arg(long, value_name = "STR", allow_hyphen_values = true)]
+    axiom: Option<String>,
+    /// An inline rule, C=STR (repeat for more)
+    #[arg(long = "rule", value_name = "C=STR", allow_hyphen_values = true, conflicts_with = "file", value_parser = parse_rule)]
+    rules: Vec<(char, String)>,
+    /// Divisions of a full turn
+    #[arg(long, value_name = "N", conflicts_with_all = ["angle_deg", "file"])]
+    angle: Option<u16>,
+    /// A free angle in degrees
+    #[arg(
+        long = "angle-deg",
+        value_name = "DEG",
+        allow_hyphen_values = true,
+        conflicts_with = "file"
+    )]
+    angle_deg: Option<String>,
+    /// More symbols that draw (ABOP edge rewriting)
+    #[arg(
+        long = "draw-symbols",
+        value_name = "CHARS",
+        default_value = "",
+        conflicts_with = "file"
+    )]
+    draw_symbols: String,
+    /// The inline system's notation (default abop; .l files are Fractint's)
+    #[arg(long, value_enum, conflicts_with = "file")]
+    dialect: Option<DialectName>,
+    /// The order (derivation steps)
+    #[arg(long, value_name = "N")]
+    order: u32,
+    /// Write every drawn segment, `x0 y0 x1 y1` in turtle units
+    #[arg(long, value_name = "TXT")]
+    segments: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum DialectName {
+    Fractint,
+    Abop,
+}
+
+#[derive(Debug, Args)]
+struct EscapeOptions {
+    /// Centre of the view, RE,IM
+    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", default_value = "-0.75,0", allow_hyphen_values = true, value_parser = parse_pair)]
+    centre: (String, String),
+    /// Width along the real axis
+    #[arg(
+        long,
+        value_name = "W",
+        default_value = "3.5",
+        allow_hyphen_values = true
+    )]
+    width: String,
+    /// Iteration cap
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256)]
+    max_iterations: u32,
+    /// How pixels are scheduled
+    #[arg(long, value_enum, default_value = "fast")]
+    algorithm: AlgorithmName,
+    /// The fixed-point tier (auto chooses per view)
+    #[arg(long, value_enum, default_value = "auto")]
+    precision: Precision,
+    /// classic, fire, gray, bands or two-color
+    #[arg(long, value_name = "NAME", default_value = "classic")]
+    palette: String,
+    /// Write `W H MAXITER`, then H lines of W dwells
+    #[arg(long, value_name = "TXT")]
+    dwell: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Args)]
+struct JuliaOptions {
+    /// The Julia parameter k, RE,IM
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = parse_pair)]
+    c: (String, String),
+    #[command(flatten)]
+    view: EscapeOptions,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum AlgorithmName {
+    Exact,
+    Fast,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum Precision {
+    Auto,
+    Narrow,
+    Medium,
+    Standard,
+    Deep,
+}
+
+impl Precision {
+    fn tier(self) -> Option<tinyfractal::Tier> {
+        match self {
+            Self::Auto => None,
+            Self::Narrow => Some(tinyfractal::Tier::Narrow),
+            Self::Medium => Some(tinyfractal::Tier::Medium),
+            Self::Standard => Some(tinyfractal::Tier::Standard),
+            Self::Deep => Some(tinyfractal::Tier::Deep),
+        }
     }
 }
 
-fn usage(message: impl Into<String>) -> UsageError {
-    UsageError(message.into())
-}
-
-pub const HELP: &str = "\
-tinyfractal: fixed-point fractals for small displays, rendered on the host
-
-USAGE:
-  tinyfractal render lsystem --file PATH.l --name NAME --order N [common options]
-  tinyfractal render lsystem --axiom STR --rule C=STR [--rule ...] (--angle N | --angle-deg DEG)
-                             [--draw-symbols CHARS] [--dialect fractint|abop] --order N [common]
-  tinyfractal render mandelbrot [--center RE,IM] [--width W] [--max-iter N]
-      [--algorithm exact|fast] [--precision auto|narrow|medium|standard|deep] [--palette NAME] [common]
-  tinyfractal render julia --c RE,IM [same options as mandelbrot]
-  tinyfractal list PATH.l            the systems in a file, one name a line
-  tinyfractal gallery [--out DIR]    render the gallery (what `cargo run --release` does)
-
-COMMON OPTIONS:
-  --size WxH        picture size in pixels (default 320x240)
-  --out PNG         write the picture there (default: NAME.png)
-  --segments TXT    (lsystem) write every drawn segment, `x0 y0 x1 y1` in turtle units
-  --dwell TXT       (mandelbrot, julia) write `W H MAXITER`, then H lines of W dwells
-  --stats           print one line of statistics
-  --window          show the picture in a window (needs the `window` feature)
-
-DEFAULTS (mandelbrot, julia): --center -0.75,0 --width 3.5 --max-iter 256 --algorithm fast
-  --precision auto --palette classic. Palettes: classic, fire, gray, bands, two-color.
-";
-
-/// Parses the arguments after the program name.
-pub fn parse(args: &[String]) -> Result<Command, UsageError> {
-    let mut words = args.iter().map(String::as_str);
-    match words.next() {
-        None => Ok(Command::Gallery {
+/// Parses the arguments after the program name. `Err` carries clap's message (help and
+/// version are "errors" of their own kinds, printed to stdout with exit status 0).
+pub fn parse<I, T>(args: I) -> Result<Command, clap::Error>
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = Cli::try_parse_from(
+        std::iter::once(OsString::from("tinyfractal")).chain(args.into_iter().map(Into::into)),
+    )?;
+    Ok(match cli.command {
+        None => Command::Gallery {
             out: PathBuf::from("gallery"),
-        }),
-        Some("help" | "--help" | "-h") => Ok(Command::Help),
-        Some("list") => {
-            let path = words
-                .next()
-                .ok_or_else(|| usage("`list` needs a .l file"))?;
-            if let Some(extra) = words.next() {
-                return Err(usage(format!("unexpected `{extra}` after the file")));
-            }
-            Ok(Command::List(PathBuf::from(path)))
-        }
-        Some("gallery") => {
-            let mut out = PathBuf::from("gallery");
-            let rest: Vec<&str> = words.collect();
-            let mut options = Options::new(&rest);
-            while let Some(flag) = options.next_flag()? {
-                match flag {
-                    "--out" => out = PathBuf::from(options.value(flag)?),
-                    _ => return Err(usage(format!("unknown option `{flag}` for `gallery`"))),
-                }
-            }
-            Ok(Command::Gallery { out })
-        }
-        Some("render") => match words.next() {
-            Some("lsystem") => {
-                let rest: Vec<&str> = words.collect();
-                parse_lsystem(&rest).map(Command::RenderLSystem)
-            }
-            Some(scene @ ("mandelbrot" | "julia")) => {
-                let rest: Vec<&str> = words.collect();
-                parse_escape(scene == "julia", &rest).map(Command::RenderEscape)
-            }
-            Some(other) => Err(usage(format!(
-                "unknown scene `{other}`: use lsystem, mandelbrot or julia"
-            ))),
-            None => Err(usage(
-                "`render` needs a scene: lsystem, mandelbrot or julia",
-            )),
         },
-        Some(other) => Err(usage(format!("unknown command `{other}`"))),
-    }
+        Some(Commands::Gallery { out }) => Command::Gallery { out },
+        Some(Commands::List { file }) => Command::List(file),
+        Some(Commands::Completions { shell }) => Command::Completions(shell),
+        Some(Commands::Render { scene }) => match scene {
+            Scene::Lsystem(options) => Command::RenderLSystem(lsystem(options)?),
+            Scene::Mandelbrot(options) => Command::RenderEscape(escape(None, options)),
+            Scene::Julia(options) => Command::RenderEscape(escape(Some(options.c), options.view)),
+        },
+    })
 }
 
-/// Walks `--flag value` pairs.
-struct Options<'s> {
-    words: &'s [&'s str],
-    position: usize,
+/// Writes a shell completion script for `shell` to stdout.
+pub fn completions(shell: clap_complete::Shell) {
+    clap_complete::generate(
+        shell,
+        &mut Cli::command(),
+        "tinyfractal",
+        &mut std::io::stdout(),
+    );
 }
 
-impl<'s> Options<'s> {
-    fn new(words: &'s [&'s str]) -> Self {
-        Self { words, position: 0 }
-    }
-
-    fn next_flag(&mut self) -> Result<Option<&'s str>, UsageError> {
-        let Some(&word) = self.words.get(self.position) else {
-            return Ok(None);
-        };
-        self.position += 1;
-        if word.starts_with("--") {
-            Ok(Some(word))
-        } else {
-            Err(usage(format!("unexpected `{word}`: options start with --")))
-        }
-    }
-
-    fn value(&mut self, flag: &str) -> Result<&'s str, UsageError> {
-        let value = self
-            .words
-            .get(self.position)
-            .copied()
-            .ok_or_else(|| usage(format!("{flag} needs a value")))?;
-        self.position += 1;
-        Ok(value)
-    }
+fn usage(kind: ErrorKind, message: &str) -> clap::Error {
+    Cli::command().error(kind, message)
 }
 
-fn parse_number<T: std::str::FromStr>(flag: &str, text: &str) -> Result<T, UsageError> {
-    text.parse()
-        .map_err(|_| usage(format!("{flag}: `{text}` is not a valid number")))
-}
-
-fn parse_size(text: &str) -> Result<(u32, u32), UsageError> {
-    let (w, h) = text
-        .split_once(['x', 'X'])
-        .ok_or_else(|| usage(format!("--size: `{text}` is not WxH, e.g. 320x240")))?;
-    Ok((parse_number("--size", w)?, parse_number("--size", h)?))
-}
-
-fn parse_lsystem(words: &[&str]) -> Result<LSystemArgs, UsageError> {
-    let mut file = None;
-    let mut name = None;
-    let mut axiom = None;
-    let mut rules = Vec::new();
-    let mut angle = None;
-    let mut draw_symbols = String::new();
-    let mut dialect = None;
-    let mut order = None;
-    let mut common = Common::default();
-    let mut options = Options::new(words);
-    while let Some(flag) = options.next_flag()? {
-        if common.take_flag(flag, &mut options)? {
-            continue;
-        }
-        match flag {
-            "--file" => file = Some(PathBuf::from(options.value(flag)?)),
-            "--name" => name = Some(options.value(flag)?.to_string()),
-            "--axiom" => axiom = Some(options.value(flag)?.to_string()),
-            "--rule" => {
-                let text = options.value(flag)?;
-                let (symbol, body) = text
-                    .split_once('=')
-                    .ok_or_else(|| usage(format!("--rule: `{text}` is not C=STR")))?;
-                let mut chars = symbol.chars();
-                let (Some(c), None) = (chars.next(), chars.next()) else {
-                    return Err(usage(format!(
-                        "--rule: `{symbol}` must be exactly one symbol before `=`"
-                    )));
-                };
-                rules.push((c, body.to_string()));
-            }
-            "--angle" => {
-                angle = Some(InlineAngle::Divisions(parse_number(
-                    flag,
-                    options.value(flag)?,
-                )?))
-            }
-            "--angle-deg" => angle = Some(InlineAngle::Degrees(options.value(flag)?.to_string())),
-            "--draw-symbols" => draw_symbols = options.value(flag)?.to_string(),
-            "--dialect" => {
-                dialect = Some(match options.value(flag)? {
-                    "fractint" => tinyfractal::Dialect::Fractint,
-                    "abop" => tinyfractal::Dialect::Abop,
-                    other => {
-                        return Err(usage(format!(
-                            "--dialect: `{other}` is not `fractint` or `abop`"
-                        )))
-                    }
-                })
-            }
-            "--order" => order = Some(parse_number(flag, options.value(flag)?)?),
-            "--segments" => common.segments = Some(PathBuf::from(options.value(flag)?)),
-            _ => return Err(usage(format!("unknown option `{flag}`"))),
-        }
-    }
-    let order = order.ok_or_else(|| usage("--order N is required"))?;
-    let source = match (file, axiom) {
-        (Some(path), None) => {
-            if !rules.is_empty() || angle.is_some() || !draw_symbols.is_empty() {
-                return Err(usage(
-                    "--rule, --angle and --draw-symbols go with --axiom, not --file",
-                ));
-            }
-            if dialect.is_some() {
-                return Err(usage(
-                    "--dialect goes with --axiom: .l files are Fractint's",
-                ));
-            }
-            let name = name.ok_or_else(|| usage("--file needs --name NAME"))?;
-            Source::File { path, name }
-        }
+fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
+    let source = match (options.file, options.axiom) {
+        (Some(path), None) => Source::File {
+            path,
+            // `requires = "name"` makes it present.
+            name: options.name.unwrap_or_default(),
+        },
         (None, Some(axiom)) => {
-            if name.is_some() {
-                return Err(usage("--name goes with --file"));
-            }
-            let angle = angle
-                .ok_or_else(|| usage("an inline system needs --angle N or --angle-deg DEG"))?;
+            let angle = match (options.angle, options.angle_deg) {
+                (Some(n), _) => InlineAngle::Divisions(n),
+                (None, Some(degrees)) => InlineAngle::Degrees(degrees),
+                (None, None) => {
+                    return Err(usage(
+                        ErrorKind::MissingRequiredArgument,
+                        "an inline system needs --angle N or --angle-deg DEG",
+                    ))
+                }
+            };
             Source::Inline {
                 axiom,
-                rules,
+                rules: options.rules,
                 angle,
-                draw_symbols,
-                dialect: dialect.unwrap_or(tinyfractal::Dialect::Abop),
+                draw_symbols: options.draw_symbols,
+                dialect: match options.dialect {
+                    Some(DialectName::Fractint) => tinyfractal::Dialect::Fractint,
+                    Some(DialectName::Abop) | None => tinyfractal::Dialect::Abop,
+                },
             }
         }
-        (Some(_), Some(_)) => return Err(usage("give either --file or --axiom, not both")),
-        (None, None) => {
+        _ => {
             return Err(usage(
+                ErrorKind::MissingRequiredArgument,
                 "give a system: --file PATH --name NAME, or --axiom STR",
             ))
         }
     };
     Ok(LSystemArgs {
         source,
-        order,
-        common,
+        order: options.order,
+        common: options.common,
+        segments: options.segments,
     })
 }
 
-fn parse_pair(flag: &str, text: &str) -> Result<(String, String), UsageError> {
+fn escape(julia: Option<(String, String)>, options: EscapeOptions) -> EscapeArgs {
+    EscapeArgs {
+        julia,
+        centre: options.centre,
+        width: options.width,
+        max_iterations: options.max_iterations,
+        algorithm: match options.algorithm {
+            AlgorithmName::Exact => tinyfractal::Algorithm::Exact,
+            AlgorithmName::Fast => tinyfractal::Algorithm::Fast,
+        },
+        tier: options.precision.tier(),
+        palette: options.palette,
+        common: options.common,
+        dwell: options.dwell,
+    }
+}
+
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("`{text}` is not WxH, e.g. 320x240");
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    Ok((w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?))
+}
+
+fn parse_pair(text: &str) -> Result<(String, String), String> {
     let (re, im) = text
         .split_once(',')
-        .ok_or_else(|| usage(format!("{flag}: `{text}` is not RE,IM, e.g. -0.75,0")))?;
+        .ok_or_else(|| format!("`{text}` is not RE,IM, e.g. -0.75,0"))?;
     Ok((re.trim().to_string(), im.trim().to_string()))
 }
 
-fn parse_escape(julia: bool, words: &[&str]) -> Result<EscapeArgs, UsageError> {
-    let mut args = EscapeArgs {
-        julia: None,
-        centre: ("-0.75".into(), "0".into()),
-        width: "3.5".into(),
-        max_iterations: 256,
-        algorithm: tinyfractal::Algorithm::Fast,
-        tier: None,
-        palette: "classic".into(),
-        common: Common::default(),
-        dwell: None,
-    };
-    let mut options = Options::new(words);
-    while let Some(flag) = options.next_flag()? {
-        if args.common.take_flag(flag, &mut options)? {
-            continue;
-        }
-        match flag {
-            "--c" if julia => args.julia = Some(parse_pair(flag, options.value(flag)?)?),
-            "--center" | "--centre" => args.centre = parse_pair(flag, options.value(flag)?)?,
-            "--width" => args.width = options.value(flag)?.to_string(),
-            "--max-iter" => args.max_iterations = parse_number(flag, options.value(flag)?)?,
-            "--algorithm" => {
-                args.algorithm = match options.value(flag)? {
-                    "exact" => tinyfractal::Algorithm::Exact,
-                    "fast" => tinyfractal::Algorithm::Fast,
-                    other => {
-                        return Err(usage(format!(
-                            "--algorithm: `{other}` is not `exact` or `fast`"
-                        )))
-                    }
-                }
-            }
-            "--precision" => {
-                let name = options.value(flag)?;
-                args.tier = match name {
-                    "auto" => None,
-                    _ => Some(
-                        tinyfractal::Tier::ALL
-                            .into_iter()
-                            .find(|tier| tier.name() == name)
-                            .ok_or_else(|| {
-                                usage(format!(
-                                    "--precision: `{name}` is not auto, narrow, standard or deep"
-                                ))
-                            })?,
-                    ),
-                }
-            }
-            "--palette" => args.palette = options.value(flag)?.to_string(),
-            "--dwell" => args.dwell = Some(PathBuf::from(options.value(flag)?)),
-            _ => return Err(usage(format!("unknown option `{flag}`"))),
-        }
+fn parse_rule(text: &str) -> Result<(char, String), String> {
+    let (symbol, body) = text
+        .split_once('=')
+        .ok_or_else(|| format!("`{text}` is not C=STR"))?;
+    let mut chars = symbol.chars();
+    match (chars.next(), chars.next()) {
+        (Some(c), None) => Ok((c, body.to_string())),
+        _ => Err(format!("`{symbol}` must be exactly one symbol before `=`")),
     }
-    if julia && args.julia.is_none() {
-        return Err(usage("`render julia` needs --c RE,IM"));
-    }
-    Ok(args)
 }
 
 #[cfg(test)]
@@ -413,14 +404,14 @@ mod tests {
 
     #[test]
     fn inline_defaults_to_abop() {
-        let parsed = parse(&args(
+        let parsed = parse(args(
             "render lsystem --axiom F --rule F=F+F --angle 4 --order 3 --size 64x48",
         ));
         let Ok(Command::RenderLSystem(a)) = parsed else {
             panic!("{parsed:?}")
         };
         assert_eq!(a.order, 3);
-        assert_eq!((a.common.width, a.common.height), (64, 48));
+        assert_eq!((a.common.width(), a.common.height()), (64, 48));
         assert!(matches!(
             a.source,
             Source::Inline {
@@ -428,6 +419,18 @@ mod tests {
                 ..
             }
         ));
+    }
+
+    #[test]
+    fn negative_numbers_are_values() {
+        let parsed = parse(args(
+            "render julia --c -0.8,0.156 --center -0.5,-0.25 --width 3.2",
+        ));
+        let Ok(Command::RenderEscape(a)) = parsed else {
+            panic!("{parsed:?}")
+        };
+        assert_eq!(a.julia, Some(("-0.8".into(), "0.156".into())));
+        assert_eq!(a.centre, ("-0.5".into(), "-0.25".into()));
     }
 
     #[test]
@@ -439,6 +442,8 @@ mod tests {
             "render lsystem --axiom F --angle 4 --order two",
             "render lsystem --axiom F --rule FF=F --angle 4 --order 1",
             "render lsystem --axiom F --angle 4 --order 1 --size 10",
+            "render lsystem --file x.l --name y --axiom F --order 1",
+            "render lsystem --file x.l --name y --angle 4 --order 1",
             "render julia",
             "render mandelbrot --center 1",
             "render mandelbrot --algorithm slow",
@@ -446,7 +451,12 @@ mod tests {
             "render mandelbrot --c 0,0",
             "frobnicate",
         ] {
-            assert!(parse(&args(bad)).is_err(), "{bad}");
+            assert!(parse(args(bad)).is_err(), "{bad}");
         }
+    }
+
+    #[test]
+    fn the_command_is_well_formed() {
+        Cli::command().debug_assert();
     }
 }

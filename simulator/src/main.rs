@@ -15,17 +15,22 @@ use args::{Command, EscapeArgs, InlineAngle, LSystemArgs, Source};
 use tinyfractal::{Angle, Grammar, LFile};
 
 fn main() -> ExitCode {
-    let arguments: Vec<String> = std::env::args().skip(1).collect();
-    let command = match args::parse(&arguments) {
+    let command = match args::parse(std::env::args_os().skip(1)) {
         Ok(command) => command,
+        Err(error) if !error.use_stderr() => {
+            // --help and --version.
+            let _ = error.print();
+            return ExitCode::SUCCESS;
+        }
         Err(error) => {
-            eprintln!("tinyfractal: {error}");
+            eprint!("tinyfractal: {}", error.render());
+            eprintln!("(see `tinyfractal help`, or `tinyfractal help COMMAND`)");
             return ExitCode::from(2);
         }
     };
     let result = match command {
-        Command::Help => {
-            print!("{}", args::HELP);
+        Command::Completions(shell) => {
+            args::completions(shell);
             Ok(())
         }
         Command::List(path) => list(&path),
@@ -105,9 +110,9 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     let common = &arguments.common;
     let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);
     // Everything is computed before anything is written: an error leaves no file behind.
-    let rendered =
-        scene::render(&grammar, arguments.order, common.width, common.height).map_err(failed)?;
-    let segments = match &common.segments {
+    let rendered = scene::render(&grammar, arguments.order, common.width(), common.height())
+        .map_err(failed)?;
+    let segments = match &arguments.segments {
         Some(_) => Some(scene::segments_text(&grammar, arguments.order).map_err(failed)?),
         None => None,
     };
@@ -117,7 +122,7 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
         .unwrap_or_else(|| Path::new(&format!("{}.png", name.to_lowercase())).to_path_buf());
     output::save_png(&rendered.display, &out)
         .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
-    if let (Some(path), Some(text)) = (&common.segments, &segments) {
+    if let (Some(path), Some(text)) = (&arguments.segments, &segments) {
         output::save_text(path, text)
             .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
@@ -144,7 +149,7 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
             .map(|(re, im)| (re.as_str(), im.as_str())),
         centre: (&arguments.centre.0, &arguments.centre.1),
         width: &arguments.width,
-        size: embedded_graphics::geometry::Size::new(common.width, common.height),
+        size: embedded_graphics::geometry::Size::new(common.width(), common.height()),
         max_iterations: arguments.max_iterations,
         algorithm: arguments.algorithm,
         tier: arguments.tier,

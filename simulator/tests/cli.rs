@@ -368,3 +368,37 @@ fn escape_time_errors() {
         assert!(!out.exists(), "{full:?} left a file");
     }
 }
+
+#[test]
+fn help_version_and_completions() {
+    for (args, expected) in [
+        (vec!["--help"], "Usage: tinyfractal"),
+        (vec!["render", "lsystem", "--help"], "--segments <TXT>"),
+        (vec!["render", "mandelbrot", "--help"], "--max-iter <N>"),
+        (vec!["render", "julia", "--help"], "--c <RE,IM>"),
+        (vec!["help", "render"], "Usage: tinyfractal render"),
+        (vec!["--version"], "tinyfractal 0.1.0"),
+        (vec!["completions", "bash"], "_tinyfractal()"),
+    ] {
+        let output = run(&args);
+        assert_eq!(
+            output.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+        assert!(
+            stdout(&output).contains(expected),
+            "{args:?}: {}",
+            stdout(&output)
+        );
+    }
+    // Every accepted --precision is listed when one is not.
+    let output = run(&["render", "mandelbrot", "--precision", "huge"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        stderr(&output).contains("auto, narrow, medium, standard, deep"),
+        "{}",
+        stderr(&output)
+    );
+}
