@@ -73,7 +73,7 @@ mod lsystem;
 mod math;
 mod render;
 
-pub use error::{DrawError, Error, Location};
+pub use error::{DrawError, Error, FitError, Location, ReadError, ViewError, WalkError};
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, TILE};
 pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
+use tinyfractal::FitError;
 use tinyfractal::{Error, LFile, LSystem};
 
 fn corpus_dir() -> PathBuf {
@@ -27,7 +28,7 @@ fn meaningful_order(grammar: &tinyfractal::Grammar<'_>) -> (u32, Option<Error>) 
         match LSystem::new(grammar, order).with_budget(budget).bounds() {
             Ok(_) => best = order,
             // Systems whose axiom is only non-drawing symbols draw from order 1 on.
-            Err(Error::EmptyDrawing) => {}
+            Err(Error::Fit(FitError::EmptyDrawing)) => {}
             Err(limit) => return (best, Some(limit)),
         }
     }

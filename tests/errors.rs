@@ -9,6 +9,7 @@ use tinyfractal::{
     Angle, Dialect, DrawError, Error, Grammar, LFile, LSystem, Location, Placement, Real, Segments,
     MAX_RULES,
 };
+use tinyfractal::{FitError, ReadError, WalkError};
 
 fn fixture(name: &str) -> String {
     let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
@@ -31,45 +32,58 @@ fn file_errors_carry_their_place() {
     let cases = [
         (
             "error-unbalanced.l",
-            Error::UnbalancedBracket { at: at(4, 6) },
+            Error::Read(ReadError::UnbalancedBracket { at: at(4, 6) }),
         ),
-        ("error-unclosed.l", Error::UnclosedBracket { at: at(4, 6) }),
-        ("error-empty-axiom.l", Error::EmptyAxiom),
-        ("error-missing-angle.l", Error::MissingAngle),
+        (
+            "error-unclosed.l",
+            Error::Read(ReadError::UnclosedBracket { at: at(4, 6) }),
+        ),
+        ("error-empty-axiom.l", Error::Read(ReadError::EmptyAxiom)),
+        (
+            "error-missing-angle.l",
+            Error::Read(ReadError::MissingAngle),
+        ),
         (
             "error-angle.l",
-            Error::AngleOutOfRange {
+            Error::Read(ReadError::AngleOutOfRange {
                 value: 0,
+                max: 64,
                 at: at(2, 9),
-            },
+            }),
         ),
         (
             "error-number.l",
-            Error::NumberOutOfRange {
+            Error::Read(ReadError::NumberOutOfRange {
                 symbol: 'c',
                 at: at(4, 6),
-            },
+            }),
         ),
         (
             "error-missing-number.l",
-            Error::MissingNumber {
+            Error::Read(ReadError::MissingNumber {
                 symbol: '@',
                 at: at(4, 6),
-            },
+            }),
         ),
         (
             "error-unterminated.l",
-            Error::UnterminatedEntry { at: at(1, 1) },
+            Error::Read(ReadError::UnterminatedEntry { at: at(1, 1) }),
         ),
         (
             "error-reserved.l",
-            Error::ReservedRule {
+            Error::Read(ReadError::ReservedRule {
                 symbol: '+',
                 at: at(4, 3),
-            },
+            }),
         ),
-        ("error-extra-text.l", Error::ExtraText { at: at(4, 9) }),
-        ("error-unknown-line.l", Error::UnknownLine { at: at(4, 3) }),
+        (
+            "error-extra-text.l",
+            Error::Read(ReadError::ExtraText { at: at(4, 9) }),
+        ),
+        (
+            "error-unknown-line.l",
+            Error::Read(ReadError::UnknownLine { at: at(4, 3) }),
+        ),
     ];
     for (file, expected) in cases {
         assert_eq!(read_bad(file), expected, "{file}");
@@ -85,7 +99,7 @@ fn messages_say_where_and_how_to_fix() {
     );
     let message = read_bad("error-number.l").to_string();
     assert!(message.contains("`c` at line 4, column 6"), "{message}");
-    let deep = Error::StackTooDeep { capacity: 20 }.to_string();
+    let deep = Error::Walk(WalkError::StackTooDeep { capacity: 20 }).to_string();
     assert!(
         deep.contains("20 levels") && deep.contains("raise the STACK capacity"),
         "{deep}"
@@ -97,41 +111,44 @@ fn unknown_system_name() {
     let text = fixture("small.l");
     assert_eq!(
         LFile::new(&text).find("nope").map(|_| ()),
-        Err(Error::UnknownSystem)
+        Err(Error::Read(ReadError::UnknownSystem))
     );
     // `comment` blocks are not systems.
     assert_eq!(
         LFile::new(&text).find("comment").map(|_| ()),
-        Err(Error::UnknownSystem)
+        Err(Error::Read(ReadError::UnknownSystem))
     );
 }
 
 #[test]
 fn inline_grammar_errors() {
     let new = |axiom| Grammar::new(Dialect::Abop, axiom, Angle::Divisions(4));
-    assert_eq!(new("  ").map(|_| ()), Err(Error::EmptyAxiom));
+    assert_eq!(
+        new("  ").map(|_| ()),
+        Err(Error::Read(ReadError::EmptyAxiom))
+    );
     assert_eq!(
         new("F]").map(|_| ()),
-        Err(Error::UnbalancedBracket {
+        Err(Error::Read(ReadError::UnbalancedBracket {
             at: Location::column(2)
-        })
+        }))
     );
     assert_eq!(
         new("Fé").map(|_| ()),
-        Err(Error::NonAsciiSymbol {
+        Err(Error::Read(ReadError::NonAsciiSymbol {
             at: Location::column(2)
-        })
+        }))
     );
     for divisions in [0, 65, 1000] {
         assert!(matches!(
             Grammar::new(Dialect::Abop, "F", Angle::Divisions(divisions)),
-            Err(Error::AngleOutOfRange { .. })
+            Err(Error::Read(ReadError::AngleOutOfRange { .. }))
         ));
     }
     let grammar = new("F").unwrap();
     assert!(matches!(
         grammar.clone().with_rule('[', "F"),
-        Err(Error::ReservedRule { .. })
+        Err(Error::Read(ReadError::ReservedRule { .. }))
     ));
     // One more rule line than fits.
     let mut many = Ok(grammar);
@@ -140,7 +157,7 @@ fn inline_grammar_errors() {
     }
     assert!(matches!(
         many,
-        Err(Error::TooManyRules { max: MAX_RULES, .. })
+        Err(Error::Read(ReadError::TooManyRules { max: MAX_RULES, .. }))
     ));
 }
 
@@ -156,7 +173,10 @@ fn too_deep_nesting_is_a_typed_error() {
         .unwrap()
         .filter_map(Result::err)
         .collect();
-    assert_eq!(errors, vec![Error::StackTooDeep { capacity: 20 }]);
+    assert_eq!(
+        errors,
+        vec![Error::Walk(WalkError::StackTooDeep { capacity: 20 })]
+    );
     // A larger stack in the type lifts the limit.
     let deep = Segments::<'_, '_, 17, 32>::with_capacity(&grammar, 11, Default::default()).unwrap();
     assert!(deep.into_iter().all(|s| s.is_ok()));
@@ -170,10 +190,10 @@ fn absurd_orders_fail_fast() {
         .unwrap();
     assert_eq!(
         Segments::new(&grammar, 1000).map(|_| ()),
-        Err(Error::OrderTooHigh {
+        Err(Error::Walk(WalkError::OrderTooHigh {
             order: 1000,
             max: 16
-        })
+        }))
     );
     // Order 16 would be 14^16 symbols; the budget stops it.
     let started = std::time::Instant::now();
@@ -183,7 +203,9 @@ fn absurd_orders_fail_fast() {
     );
     assert_eq!(
         result.map(|_| ()),
-        Err(Error::BudgetExhausted { budget: 1_000_000 })
+        Err(Error::Walk(WalkError::BudgetExhausted {
+            budget: 1_000_000
+        }))
     );
     assert!(
         started.elapsed().as_secs() < 5,
@@ -200,7 +222,7 @@ fn zero_size_targets_and_empty_palettes() {
             system
                 .fit(Rectangle::new(Point::zero(), size), &[BinaryColor::On])
                 .map(|_| ()),
-            Err(Error::ZeroSizeTarget)
+            Err(Error::Fit(FitError::ZeroSizeTarget))
         );
     }
     let no_colours: &[BinaryColor] = &[];
@@ -208,7 +230,7 @@ fn zero_size_targets_and_empty_palettes() {
         system
             .fit(Rectangle::new(Point::zero(), Size::new(8, 8)), no_colours)
             .map(|_| ()),
-        Err(Error::EmptyPalette)
+        Err(Error::Fit(FitError::EmptyPalette))
     );
     let nothing = Grammar::new(Dialect::Abop, "+-X", Angle::Divisions(4)).unwrap();
     assert_eq!(
@@ -218,7 +240,7 @@ fn zero_size_targets_and_empty_palettes() {
                 &[BinaryColor::On]
             )
             .map(|_| ()),
-        Err(Error::EmptyDrawing)
+        Err(Error::Fit(FitError::EmptyDrawing))
     );
 }
 
@@ -234,7 +256,7 @@ fn fixed_point_overflow_and_underflow_are_reported() {
         LSystem::new(&line, 0)
             .place(huge, &[BinaryColor::On])
             .map(|_| ()),
-        Err(Error::Overflow)
+        Err(Error::Walk(WalkError::Overflow))
     );
     let shrinking = Grammar::new(Dialect::Fractint, "F", Angle::Divisions(4))
         .unwrap()
@@ -244,7 +266,7 @@ fn fixed_point_overflow_and_underflow_are_reported() {
         .unwrap()
         .filter_map(Result::err)
         .collect();
-    assert_eq!(errors, vec![Error::StepUnderflow]);
+    assert_eq!(errors, vec![Error::Walk(WalkError::StepUnderflow)]);
     // A step growing 8 times an order leaves I32F32 turtle units at order 11 (8^11 = 2^33):
     // reported, not drawn wrong (Fractint's Island1 grows its moves like this).
     let growing = Grammar::new(Dialect::Fractint, "F", Angle::Divisions(4))
@@ -253,11 +275,11 @@ fn fixed_point_overflow_and_underflow_are_reported() {
         .unwrap();
     assert_eq!(
         Segments::new(&growing, 11).unwrap().find_map(Result::err),
-        Some(Error::Overflow)
+        Some(Error::Walk(WalkError::Overflow))
     );
     let area = Rectangle::new(Point::zero(), Size::new(64, 64));
     let fitted = LSystem::new(&growing, 11).fit(area, &[BinaryColor::On]);
-    assert_eq!(fitted.map(|_| ()), Err(Error::Overflow));
+    assert_eq!(fitted.map(|_| ()), Err(Error::Walk(WalkError::Overflow)));
     // At order 6 the first step is 2^-12 px: precise enough, drawn as one line across.
     let fitted = LSystem::new(&growing, 6)
         .fit(area, &[BinaryColor::On])

@@ -10,6 +10,7 @@ use tinyfractal::{
     Algorithm, Coord, DwellBuffer, DwellSink, Error, EscapeTime, Fractal, Render, Tier, TwoColor,
     View,
 };
+use tinyfractal::{FitError, ViewError};
 
 /// Dwells in the crate's slice-backed sink, with a count of writes per pixel beside it.
 struct Dwells {
@@ -421,41 +422,52 @@ fn bad_views_are_typed_errors() {
     let m = Fractal::Mandelbrot;
     assert_eq!(
         View::new(m, c, Coord::default(), size, 100),
-        Err(Error::ViewOutOfRange)
+        Err(Error::View(ViewError::ViewOutOfRange))
     );
     assert_eq!(
         View::new(m, c, Coord::parse("-1").unwrap(), size, 100),
-        Err(Error::ViewOutOfRange)
+        Err(Error::View(ViewError::ViewOutOfRange))
     );
     assert_eq!(
         View::new(m, c, w, Size::new(0, 5), 100),
-        Err(Error::ZeroSizeTarget)
+        Err(Error::Fit(FitError::ZeroSizeTarget))
     );
     assert_eq!(
         View::new(m, c, w, size, 0),
-        Err(Error::IterationsOutOfRange { value: 0 })
+        Err(Error::View(ViewError::IterationsOutOfRange {
+            value: 0,
+            max: 65_535
+        }))
     );
     assert_eq!(
         View::new(m, c, w, size, 1_000_000),
-        Err(Error::IterationsOutOfRange { value: 1_000_000 })
+        Err(Error::View(ViewError::IterationsOutOfRange {
+            value: 1_000_000,
+            max: 65_535
+        }))
     );
     assert_eq!(
         View::new(m, c, Coord::parse("7.9").unwrap(), size, 100),
-        Err(Error::ViewOutOfRange)
+        Err(Error::View(ViewError::ViewOutOfRange))
     );
     assert_eq!(
         View::new(m, c, Coord::from_bits(1), Size::new(320, 240), 100),
-        Err(Error::ZoomTooDeep)
+        Err(Error::View(ViewError::ZoomTooDeep))
     );
     let far = Fractal::Julia {
         re: Coord::parse("1.5").unwrap(),
         im: Coord::parse("1.5").unwrap(),
     };
-    assert_eq!(View::new(far, c, w, size, 100), Err(Error::ViewOutOfRange));
+    assert_eq!(
+        View::new(far, c, w, size, 100),
+        Err(Error::View(ViewError::ViewOutOfRange))
+    );
     assert_eq!(Coord::parse("8"), None);
     assert_eq!(Coord::parse("1e-3"), None);
     assert_eq!(Coord::from_f64(f64::NAN), None);
-    assert!(Error::ZoomTooDeep.to_string().contains("deepest tier"));
+    assert!(Error::View(ViewError::ZoomTooDeep)
+        .to_string()
+        .contains("deepest tier"));
 }
 
 #[test]

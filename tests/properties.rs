@@ -6,6 +6,7 @@ mod common;
 use common::Bitmap;
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
+use tinyfractal::ReadError;
 use tinyfractal::{Angle, Dialect, Error, Grammar, LFile, LSystem, Segments};
 
 const ALPHABET: &str = "FfGgDdMmXYAB+-|!\\/@IQC<>[]0123456789.=; \n{}aXx";
@@ -50,7 +51,7 @@ proptest! {
         let mut walk = Segments::new(&grammar, order).unwrap().with_budget(budget);
         for step in walk.by_ref() {
             if let Err(error) = step {
-                prop_assert!(!matches!(error, Error::UnbalancedBracket { .. }), "bodies were checked");
+                prop_assert!(!matches!(error, Error::Read(ReadError::UnbalancedBracket { .. })), "bodies were checked");
             }
         }
         prop_assert!(walk.stats().symbols <= budget);

@@ -3,7 +3,7 @@
 
 use embedded_graphics::geometry::Size;
 
-use crate::error::Error;
+use crate::error::{Error, FitError, ViewError};
 use crate::math::wide::{div_round, mul_wide, shift_round};
 use crate::math::Coord;
 
@@ -113,25 +113,26 @@ impl View {
         max_iterations: u32,
     ) -> Result<Self, Error> {
         if size.width == 0 || size.height == 0 {
-            return Err(Error::ZeroSizeTarget);
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         if max_iterations == 0 || max_iterations > MAX_ITERATIONS {
-            return Err(Error::IterationsOutOfRange {
+            return Err(Error::View(ViewError::IterationsOutOfRange {
                 value: max_iterations,
-            });
+                max: MAX_ITERATIONS,
+            }));
         }
         if width.to_bits() <= 0 {
-            return Err(Error::ViewOutOfRange);
+            return Err(Error::View(ViewError::ViewOutOfRange));
         }
         let spacing = i64::try_from(div_round(
             i128::from(width.to_bits()),
             i128::from(size.width),
         ))
-        .map_err(|_| Error::ViewOutOfRange)?;
+        .map_err(|_| Error::View(ViewError::ViewOutOfRange))?;
         if let Fractal::Julia { re, im } = fractal {
             let modulus = i128::from(re.to_bits()).pow(2) + i128::from(im.to_bits()).pow(2);
             if modulus > 4 << 120 {
-                return Err(Error::ViewOutOfRange);
+                return Err(Error::View(ViewError::ViewOutOfRange));
             }
         }
         let tier = Self::tier_for(fractal, spacing, max_iterations)?;
@@ -148,7 +149,7 @@ impl View {
         for (i, j) in [(0, 0), (w - 1, h - 1)] {
             let (re, im) = view.point(i, j);
             if re.abs() > COORDINATE_LIMIT || im.abs() > COORDINATE_LIMIT {
-                return Err(Error::ViewOutOfRange);
+                return Err(Error::View(ViewError::ViewOutOfRange));
             }
         }
         Ok(view)
@@ -164,7 +165,7 @@ impl View {
     /// the spacing itself is resolvable (≥ 2⁻⁵⁴).
     fn tier_for(fractal: Fractal, spacing: i64, max_iterations: u32) -> Result<Tier, Error> {
         if spacing < 1 << 6 {
-            return Err(Error::ZoomTooDeep);
+            return Err(Error::View(ViewError::ZoomTooDeep));
         }
         // ceil(log2(1/d)) for d in Q60 bits, and ceil(log2(max)).
         let zoom_bits = 60 - (63 - spacing.leading_zeros());

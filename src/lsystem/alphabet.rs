@@ -1,7 +1,7 @@
 //! What the symbols mean: scanning one token (a symbol and its number, if any) from a body,
 //! and decoding a token into a turtle [`Command`] for each [`Dialect`].
 
-use crate::error::{Error, Location};
+use crate::error::{Error, Location, ReadError};
 use crate::math::Real;
 
 /// Which rules of notation a system follows.
@@ -157,17 +157,17 @@ impl Dialect {
 }
 
 fn missing(token: Token<'_>, at: Location) -> Error {
-    Error::MissingNumber {
+    Error::Read(ReadError::MissingNumber {
         symbol: char::from(token.symbol),
         at,
-    }
+    })
 }
 
 fn out_of_range(token: Token<'_>, at: Location) -> Error {
-    Error::NumberOutOfRange {
+    Error::Read(ReadError::NumberOutOfRange {
         symbol: char::from(token.symbol),
         at,
-    }
+    })
 }
 
 fn number(token: Token<'_>, digits: &[u8], at: Location) -> Result<Real, Error> {
@@ -258,7 +258,9 @@ mod tests {
     use super::*;
 
     fn decode(dialect: Dialect, text: &str) -> Result<Command, Error> {
-        let (token, _) = dialect.scan(text.as_bytes(), 0).ok_or(Error::EmptyAxiom)?;
+        let (token, _) = dialect
+            .scan(text.as_bytes(), 0)
+            .ok_or(Error::Read(ReadError::EmptyAxiom))?;
         dialect.decode(token, SymbolSet::default(), Location::column(1))
     }
 
@@ -290,19 +292,19 @@ mod tests {
         let at = Location::column(1);
         assert_eq!(
             decode(Dialect::Fractint, "C256"),
-            Err(Error::NumberOutOfRange { symbol: 'c', at })
+            Err(Error::Read(ReadError::NumberOutOfRange { symbol: 'c', at }))
         );
         assert_eq!(
             decode(Dialect::Fractint, "@"),
-            Err(Error::MissingNumber { symbol: '@', at })
+            Err(Error::Read(ReadError::MissingNumber { symbol: '@', at }))
         );
         assert_eq!(
             decode(Dialect::Fractint, "@0"),
-            Err(Error::NumberOutOfRange { symbol: '@', at })
+            Err(Error::Read(ReadError::NumberOutOfRange { symbol: '@', at }))
         );
         assert_eq!(
             decode(Dialect::Fractint, "@1.2.3"),
-            Err(Error::NumberOutOfRange { symbol: '@', at })
+            Err(Error::Read(ReadError::NumberOutOfRange { symbol: '@', at }))
         );
     }
 

@@ -6,7 +6,7 @@ use embedded_graphics::primitives::Rectangle;
 use super::grammar::Grammar;
 use super::turtle::{Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 use super::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
-use crate::error::{DrawError, Error};
+use crate::error::{DrawError, Error, FitError, WalkError};
 use crate::math::Real;
 use crate::render::raster;
 
@@ -118,7 +118,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         self
     }
 
-    /// Caps every walk at `symbols` symbols ([`Error::BudgetExhausted`] beyond).
+    /// Caps every walk at `symbols` symbols ([`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) beyond).
     #[must_use]
     pub const fn with_budget(mut self, symbols: u64) -> Self {
         self.budget = symbols;
@@ -154,14 +154,14 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             }
             Ok(())
         })?;
-        bounds.ok_or(Error::EmptyDrawing)
+        bounds.ok_or(Error::Fit(FitError::EmptyDrawing))
     }
 
     /// Scales and centres the drawing into `area` (less the margin), colours from `palette`.
     ///
     /// A sizing pass measures the drawing in turtle units; a second pass at the chosen scale
     /// checks it and measures its pixel bounding box, so that drawing cannot fail.
-    /// A drawing wider than 2³¹ turtle units is [`Error::Overflow`]: fitted, its step would
+    /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::WalkError::Overflow): fitted, its step would
     /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
         &self,
@@ -169,7 +169,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         palette: &'p [C],
     ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
         if area.size.width == 0 || area.size.height == 0 {
-            return Err(Error::ZeroSizeTarget);
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let turtle_bounds = self.bounds()?;
         // The bounds as they will lie on screen.
@@ -189,8 +189,12 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             };
             Real::from_int(i32::try_from(inner - 2 * margin).unwrap_or(i32::MAX))
         };
-        let extent_x = max_x.checked_sub(min_x).ok_or(Error::Overflow)?;
-        let extent_y = max_y.checked_sub(min_y).ok_or(Error::Overflow)?;
+        let extent_x = max_x
+            .checked_sub(min_x)
+            .ok_or(Error::Walk(WalkError::Overflow))?;
+        let extent_y = max_y
+            .checked_sub(min_y)
+            .ok_or(Error::Walk(WalkError::Overflow))?;
         // Pixels per sizing unit: the tighter of the two axes.
         let per_unit = [
             span(area.size.width).checked_div(extent_x),
@@ -208,9 +212,10 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             centre.checked_sub(middle.checked_mul(per_unit)?)
         };
         let start_on_screen = (
-            placed_middle(min_x, max_x, area.top_left.x, area.size.width).ok_or(Error::Overflow)?,
+            placed_middle(min_x, max_x, area.top_left.x, area.size.width)
+                .ok_or(Error::Walk(WalkError::Overflow))?,
             placed_middle(min_y, max_y, area.top_left.y, area.size.height)
-                .ok_or(Error::Overflow)?,
+                .ok_or(Error::Walk(WalkError::Overflow))?,
         );
         self.prepared(
             Start {
@@ -249,7 +254,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         palette: &'p [C],
     ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
         if palette.is_empty() {
-            return Err(Error::EmptyPalette);
+            return Err(Error::Fit(FitError::EmptyPalette));
         }
         let pixels = self.bounds_from(start)?;
         let corners = [self.pixel_of(pixels.min), self.pixel_of(pixels.max)];

@@ -7,7 +7,7 @@
 
 use super::alphabet::Dialect;
 use super::grammar::Grammar;
-use crate::error::{Error, Location};
+use crate::error::{Error, Location, ReadError};
 use crate::math::{Angle, MAX_ANGLE_DIVISIONS};
 
 /// A `.l` file's text.
@@ -40,7 +40,7 @@ impl<'a> LFile<'a> {
                 return entry.grammar();
             }
         }
-        Err(Error::UnknownSystem)
+        Err(Error::Read(ReadError::UnknownSystem))
     }
 }
 
@@ -88,28 +88,29 @@ impl<'a> Entry<'a> {
                         .map_or(("", at(keyword_at)), |(w, c)| (w, at(c))),
                 );
             } else if keyword.eq_ignore_ascii_case("angle") {
-                let (value, column) = words.next().ok_or(Error::MissingAngle)?;
+                let (value, column) = words.next().ok_or(Error::Read(ReadError::MissingAngle))?;
                 let parsed = value.parse::<i64>().ok();
-                let out_of_range = Error::AngleOutOfRange {
+                let out_of_range = Error::Read(ReadError::AngleOutOfRange {
                     value: parsed.unwrap_or(0),
+                    max: MAX_ANGLE_DIVISIONS,
                     at: at(column),
-                };
+                });
                 let divisions = parsed
                     .and_then(|v| u16::try_from(v).ok())
                     .filter(|n| (1..=MAX_ANGLE_DIVISIONS).contains(n))
                     .ok_or(out_of_range)?;
                 angle = Some(Angle::Divisions(divisions));
             } else if keyword.len() != 1 {
-                return Err(Error::UnknownLine { at: at(keyword_at) });
+                return Err(Error::Read(ReadError::UnknownLine { at: at(keyword_at) }));
             } else {
                 words.next();
             }
             if let Some((_, column)) = words.next() {
-                return Err(Error::ExtraText { at: at(column) });
+                return Err(Error::Read(ReadError::ExtraText { at: at(column) }));
             }
         }
-        let angle = angle.ok_or(Error::MissingAngle)?;
-        let (axiom, axiom_at) = axiom.ok_or(Error::EmptyAxiom)?;
+        let angle = angle.ok_or(Error::Read(ReadError::MissingAngle))?;
+        let (axiom, axiom_at) = axiom.ok_or(Error::Read(ReadError::EmptyAxiom))?;
         let mut grammar = Grammar::new_at(Dialect::Fractint, axiom, angle, axiom_at)?;
         for (line, mut words) in self.lines() {
             let Some((symbol, symbol_at)) = words.next() else {
@@ -235,9 +236,9 @@ impl<'a> Iterator for Entries<'a> {
                 self.bump();
             }
             let name = self.text.get(name_start..self.position).unwrap_or_default();
-            let unterminated = Error::UnterminatedEntry {
+            let unterminated = Error::Read(ReadError::UnterminatedEntry {
                 at: Location { line, column: 1 },
-            };
+            });
             if !self.skip_past(b'{') {
                 self.position = self.text.len();
                 return Some(Err(unterminated));

@@ -7,7 +7,7 @@
 use heapless::Vec;
 
 use super::alphabet::{Dialect, SymbolSet, Token};
-use crate::error::{Error, Location};
+use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
 use crate::math::Angle;
 
@@ -59,7 +59,7 @@ impl<'a> Grammar<'a> {
     ) -> Result<Self, Error> {
         let axiom = axiom.trim();
         if axiom.is_empty() {
-            return Err(Error::EmptyAxiom);
+            return Err(Error::Read(ReadError::EmptyAxiom));
         }
         let headings = Headings::new(angle, at)?;
         let grammar = Self {
@@ -102,13 +102,13 @@ impl<'a> Grammar<'a> {
         let symbol = u8::try_from(symbol)
             .ok()
             .filter(u8::is_ascii)
-            .ok_or(Error::NonAsciiSymbol { at: rule_at })?;
+            .ok_or(Error::Read(ReadError::NonAsciiSymbol { at: rule_at }))?;
         let symbol = self.dialect.normalize(symbol);
         if self.dialect.is_reserved(symbol) {
-            return Err(Error::ReservedRule {
+            return Err(Error::Read(ReadError::ReservedRule {
                 symbol: char::from(symbol),
                 at: rule_at,
-            });
+            }));
         }
         self.check_body(body.as_bytes(), at)?;
         let index = u8::try_from(self.rules.len()).unwrap_or(NO_RULE);
@@ -117,9 +117,11 @@ impl<'a> Grammar<'a> {
                 body: body.as_bytes(),
                 next: NO_RULE,
             })
-            .map_err(|_| Error::TooManyRules {
-                max: MAX_RULES,
-                at: rule_at,
+            .map_err(|_| {
+                Error::Read(ReadError::TooManyRules {
+                    max: MAX_RULES,
+                    at: rule_at,
+                })
             })?;
         // Chain it after the last line for the same symbol.
         match self.first_rule(symbol) {
@@ -151,7 +153,7 @@ impl<'a> Grammar<'a> {
             let byte = u8::try_from(c)
                 .ok()
                 .filter(u8::is_ascii)
-                .ok_or(Error::NonAsciiSymbol { at })?;
+                .ok_or(Error::Read(ReadError::NonAsciiSymbol { at }))?;
             self.extra_draw.insert(byte);
         }
         Ok(self)
@@ -206,7 +208,10 @@ impl<'a> Grammar<'a> {
                 .saturating_add(u32::try_from(offset).unwrap_or(u32::MAX)),
         };
         if body.len() > MAX_BODY_LEN {
-            return Err(Error::BodyTooLong { at });
+            return Err(Error::Read(ReadError::BodyTooLong {
+                max: MAX_BODY_LEN,
+                at,
+            }));
         }
         // Where the outermost open `[` is, for the message if it is never closed.
         let mut outermost_open = 0;
@@ -215,7 +220,7 @@ impl<'a> Grammar<'a> {
         while let Some((token, next)) = self.dialect.scan(body, position) {
             let here = located(position);
             if !token.symbol.is_ascii() {
-                return Err(Error::NonAsciiSymbol { at: here });
+                return Err(Error::Read(ReadError::NonAsciiSymbol { at: here }));
             }
             match token.symbol {
                 b'[' => {
@@ -227,7 +232,7 @@ impl<'a> Grammar<'a> {
                 b']' => {
                     depth = depth
                         .checked_sub(1)
-                        .ok_or(Error::UnbalancedBracket { at: here })?;
+                        .ok_or(Error::Read(ReadError::UnbalancedBracket { at: here }))?;
                 }
                 _ => {}
             }
@@ -235,9 +240,9 @@ impl<'a> Grammar<'a> {
             position = next;
         }
         if depth > 0 {
-            return Err(Error::UnclosedBracket {
+            return Err(Error::Read(ReadError::UnclosedBracket {
                 at: located(outermost_open),
-            });
+            }));
         }
         Ok(())
     }

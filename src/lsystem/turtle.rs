@@ -5,7 +5,7 @@ use heapless::Vec;
 use super::alphabet::{Command, Dialect};
 use super::grammar::Grammar;
 use super::walker::{Walker, DEFAULT_DEPTH};
-use crate::error::Error;
+use crate::error::{Error, ReadError, WalkError};
 use crate::math::angle::Headings;
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
@@ -86,7 +86,7 @@ struct Turtle<'g, const STACK: usize> {
 impl<'g, const STACK: usize> Turtle<'g, STACK> {
     fn new(grammar: &'g Grammar<'_>, start: Start) -> Result<Self, Error> {
         if start.step.abs() < MIN_STEP {
-            return Err(Error::StepUnderflow);
+            return Err(Error::Walk(WalkError::StepUnderflow));
         }
         let mut turtle = Self {
             headings: grammar.headings(),
@@ -137,11 +137,11 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             x: start
                 .x
                 .checked_add(step.mul_q30(cos))
-                .ok_or(Error::Overflow)?,
+                .ok_or(Error::Walk(WalkError::Overflow))?,
             y: start
                 .y
                 .checked_add(step.mul_q30(sin))
-                .ok_or(Error::Overflow)?,
+                .ok_or(Error::Walk(WalkError::Overflow))?,
         };
         self.state.position = end;
         Ok(Segment {
@@ -198,9 +198,12 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 };
             }
             Command::Scale(factor) => {
-                state.step = state.step.checked_mul(factor).ok_or(Error::Overflow)?;
+                state.step = state
+                    .step
+                    .checked_mul(factor)
+                    .ok_or(Error::Walk(WalkError::Overflow))?;
                 if state.step.abs() < MIN_STEP {
-                    return Err(Error::StepUnderflow);
+                    return Err(Error::Walk(WalkError::StepUnderflow));
                 }
             }
             Command::SetColor(color) => state.color = color,
@@ -209,13 +212,16 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             Command::Push => {
                 self.stack
                     .push(*state)
-                    .map_err(|_| Error::StackTooDeep { capacity: STACK })?;
+                    .map_err(|_| Error::Walk(WalkError::StackTooDeep { capacity: STACK }))?;
                 self.max_stack = self.max_stack.max(self.stack.len());
             }
             Command::Pop => {
-                let saved = self.stack.pop().ok_or(Error::UnbalancedBracket {
-                    at: crate::Location::default(),
-                })?;
+                let saved = self
+                    .stack
+                    .pop()
+                    .ok_or(Error::Read(ReadError::UnbalancedBracket {
+                        at: crate::Location::default(),
+                    }))?;
                 // Fractint's `]` restores everything but the colour; ABOP's restores all.
                 let color = state.color;
                 *state = saved;
@@ -288,7 +294,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
         })
     }
 
-    /// Ends the walk with [`Error::BudgetExhausted`] after `symbols` symbols.
+    /// Ends the walk with [`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) after `symbols` symbols.
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
         self.walker = self.walker.with_budget(symbols);

@@ -9,12 +9,12 @@ use heapless::Vec;
 
 use super::alphabet::Token;
 use super::grammar::Grammar;
-use crate::error::Error;
+use crate::error::{Error, WalkError};
 
 /// Frames a walker holds by default: orders 0 to 16.
 pub const DEFAULT_DEPTH: usize = 17;
 
-/// Symbols a walk may read by default before it stops with [`Error::BudgetExhausted`].
+/// Symbols a walk may read by default before it stops with [`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted).
 pub const DEFAULT_BUDGET: u64 = 1 << 28;
 
 /// Marks the axiom in `Frame::rule`.
@@ -51,10 +51,10 @@ impl<'g, 'a> Walker<'g, 'a> {
 impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
     /// A walk of `grammar` at `order`; fails if the order needs more than `DEPTH` levels.
     pub fn with_capacity(grammar: &'g Grammar<'a>, order: u32) -> Result<Self, Error> {
-        let too_high = Error::OrderTooHigh {
+        let too_high = Error::Walk(WalkError::OrderTooHigh {
             order,
             max: u32::try_from(DEPTH.saturating_sub(1)).unwrap_or(u32::MAX),
-        };
+        });
         if usize::try_from(order).map_or(true, |order| order >= DEPTH) {
             return Err(too_high);
         }
@@ -75,7 +75,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
         })
     }
 
-    /// Stops the walk with [`Error::BudgetExhausted`] after `symbols` symbols are read
+    /// Stops the walk with [`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) after `symbols` symbols are read
     /// (expanded or interpreted), so no order can hang a device.
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
@@ -134,9 +134,9 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             };
             if self.read >= self.budget {
                 self.frames.clear();
-                return Some(Err(Error::BudgetExhausted {
+                return Some(Err(Error::Walk(WalkError::BudgetExhausted {
                     budget: self.budget,
-                }));
+                })));
             }
             self.read += 1;
             if let Some(top) = self.frames.last_mut() {

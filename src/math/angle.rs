@@ -5,7 +5,7 @@ use heapless::Vec;
 
 use super::real::Real;
 use super::trig;
-use crate::error::{Error, Location};
+use crate::error::{Error, Location, ReadError};
 
 /// Most divisions of a full turn for `Angle n` (Fractint allowed 50).
 pub const MAX_ANGLE_DIVISIONS: u16 = 64;
@@ -49,10 +49,11 @@ impl Headings {
         match angle {
             Angle::Divisions(n) => {
                 if n == 0 || n > MAX_ANGLE_DIVISIONS {
-                    return Err(Error::AngleOutOfRange {
+                    return Err(Error::Read(ReadError::AngleOutOfRange {
                         value: i64::from(n),
+                        max: MAX_ANGLE_DIVISIONS,
                         at,
-                    });
+                    }));
                 }
                 headings.divisions = n;
                 for k in 0..=n / 2 {

@@ -3,6 +3,7 @@
 //! every firmware and the measuring firmware read.
 
 use embedded_graphics::geometry::Size;
+use tinyfractal::ViewError;
 use tinyfractal::{Angle, Coord, Dialect, Error, Fractal, Grammar, Orientation, Real, View};
 
 /// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
@@ -81,7 +82,7 @@ impl Scene {
         else {
             return None;
         };
-        let coord = |text: &str| Coord::parse(text).ok_or(Error::ViewOutOfRange);
+        let coord = |text: &str| Coord::parse(text).ok_or(Error::View(ViewError::ViewOutOfRange));
         Some((|| {
             let fractal = match julia {
                 None => Fractal::Mandelbrot,

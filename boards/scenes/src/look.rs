@@ -5,6 +5,7 @@ use embedded_graphics::{
     prelude::*,
 };
 use tinyfractal::{DrawError, Error, EscapeTime, Gradient, LSystem};
+use tinyfractal::{FitError, ViewError};
 
 use crate::catalogue::Scene;
 
@@ -88,9 +89,9 @@ impl Scene {
             Scene::Escape { .. } => {
                 let view = self
                     .view(target.bounding_box().size)
-                    .unwrap_or(Err(Error::ViewOutOfRange))?;
+                    .unwrap_or(Err(Error::View(ViewError::ViewOutOfRange)))?;
                 let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
-                    .ok_or(Error::EmptyPalette)?;
+                    .ok_or(Error::Fit(FitError::EmptyPalette))?;
                 let stats = EscapeTime::new(view, palette)
                     .draw(target)
                     .map_err(DrawError::Target)?;

@@ -1,0 +1,124 @@
+//! One `Copy` error type for the whole crate, with messages that say how to fix the input:
+//! [`Error`] holds one small enum per stage (reading text, walking, fitting, views), each
+//! with its own `Display` in its own module. Nothing here names another module's items, so
+//! every family can return these without a cycle.
+
+use core::fmt;
+
+mod fit;
+mod read;
+mod view;
+mod walk;
+
+pub use fit::FitError;
+pub use read::ReadError;
+pub use view::ViewError;
+pub use walk::WalkError;
+
+/// Where in the source text a problem was found (1-based; `line` is 0 for text that did not
+/// come from a file, such as a rule passed on the command line).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Location {
+    /// 1-based line in the file, or 0 when the text was not read from a file.
+    pub line: u32,
+    /// 1-based column (in bytes) within the line or the inline text.
+    pub column: u32,
+}
+
+impl Location {
+    /// A location inside inline text (no file line).
+    pub const fn column(column: u32) -> Self {
+        Self { line: 0, column }
+    }
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.line == 0 {
+            write!(f, "column {}", self.column)
+        } else {
+            write!(f, "line {}, column {}", self.line, self.column)
+        }
+    }
+}
+
+/// Everything that can go wrong in tinyfractal, from reading a system to drawing it,
+/// grouped by stage so that each group stays small and each message says how to fix it.
+///
+/// Match a group, then its variant: `Error::Read(ReadError::EmptyAxiom)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Error {
+    /// The text of a system is malformed.
+    Read(ReadError),
+    /// A walk reached a capacity, its budget or the fixed-point range.
+    Walk(WalkError),
+    /// The picture cannot be placed on the target.
+    Fit(FitError),
+    /// An escape-time view cannot be computed.
+    View(ViewError),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Read(error) => error.fmt(f),
+            Self::Walk(error) => error.fmt(f),
+            Self::Fit(error) => error.fmt(f),
+            Self::View(error) => error.fmt(f),
+        }
+    }
+}
+
+impl core::error::Error for Error {}
+
+macro_rules! group {
+    ($($group:ident($error:ty)),*) => {$(
+        impl From<$error> for Error {
+            fn from(error: $error) -> Self {
+                Self::$group(error)
+            }
+        }
+
+        impl core::error::Error for $error {}
+
+        impl<E> From<$error> for DrawError<E> {
+            fn from(error: $error) -> Self {
+                Self::Fractal(Error::$group(error))
+            }
+        }
+    )*};
+}
+
+group!(
+    Read(ReadError),
+    Walk(WalkError),
+    Fit(FitError),
+    View(ViewError)
+);
+
+/// An error while drawing: either the engine's own [`Error`] or the display's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DrawError<E> {
+    /// The system could not be drawn.
+    Fractal(Error),
+    /// The draw target reported an error.
+    Target(E),
+}
+
+impl<E> From<Error> for DrawError<E> {
+    fn from(error: Error) -> Self {
+        Self::Fractal(error)
+    }
+}
+
+impl<E: fmt::Debug> fmt::Display for DrawError<E> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Fractal(error) => error.fmt(f),
+            Self::Target(error) => write!(f, "the draw target failed: {error:?}"),
+        }
+    }
+}
+
+impl<E: fmt::Debug> core::error::Error for DrawError<E> {}
