@@ -118,7 +118,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         self
     }
 
-    /// Caps every walk at `symbols` symbols ([`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) beyond).
+    /// Caps every walk at `symbols` symbols ([`WalkError::BudgetExhausted`] beyond).
     #[must_use]
     pub const fn with_budget(mut self, symbols: u64) -> Self {
         self.budget = symbols;
@@ -161,7 +161,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     ///
     /// A sizing pass measures the drawing in turtle units; a second pass at the chosen scale
     /// checks it and measures its pixel bounding box, so that drawing cannot fail.
-    /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::WalkError::Overflow): fitted, its step would
+    /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`]: fitted, its step would
     /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
         &self,

@@ -294,7 +294,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
         })
     }
 
-    /// Ends the walk with [`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) after `symbols` symbols.
+    /// Ends the walk with [`WalkError::BudgetExhausted`] after `symbols` symbols.
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
         self.walker = self.walker.with_budget(symbols);

@@ -14,7 +14,7 @@ use crate::error::{Error, WalkError};
 /// Frames a walker holds by default: orders 0 to 16.
 pub const DEFAULT_DEPTH: usize = 17;
 
-/// Symbols a walk may read by default before it stops with [`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted).
+/// Symbols a walk may read by default before it stops with [`WalkError::BudgetExhausted`].
 pub const DEFAULT_BUDGET: u64 = 1 << 28;
 
 /// Marks the axiom in `Frame::rule`.
@@ -75,7 +75,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
         })
     }
 
-    /// Stops the walk with [`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) after `symbols` symbols are read
+    /// Stops the walk with [`WalkError::BudgetExhausted`] after `symbols` symbols are read
     /// (expanded or interpreted), so no order can hang a device.
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
