@@ -78,13 +78,12 @@ pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, TILE};
 pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
 pub use lsystem::alphabet::Dialect;
-pub use lsystem::drawing::{
-    Bounds, LSystem, LSystemDrawing, Orientation, Placement, DEFAULT_MARGIN,
-};
+pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
 pub use lsystem::fractint::{Entries, Entry, LFile};
 pub use lsystem::grammar::{Grammar, MAX_BODY_LEN, MAX_RULES};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
+pub use render::fit::{Orientation, DEFAULT_MARGIN};
 pub use render::palette::{Bands, Gradient, Palette, TwoColor};
 pub use render::sink::{DwellBuffer, DwellSink};

@@ -6,12 +6,10 @@ use embedded_graphics::primitives::Rectangle;
 use super::grammar::Grammar;
 use super::turtle::{Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 use super::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
-use crate::error::{DrawError, Error, FitError, WalkError};
+use crate::error::{DrawError, Error, FitError};
 use crate::math::Real;
+use crate::render::fit::{fit, Orientation, DEFAULT_MARGIN};
 use crate::render::raster;
-
-/// Pixels left free around a fitted picture by default.
-pub const DEFAULT_MARGIN: u32 = 2;
 
 /// An L-system at an order, ready to be fitted or placed on a target.
 ///
@@ -23,51 +21,6 @@ pub struct LSystem<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH, const STACK: usiz
     budget: u64,
     margin: u32,
     orientation: Orientation,
-}
-
-/// Which way on screen the turtle's first heading (+x in turtle space) points.
-///
-/// Fractint draws heading right; *The Algorithmic Beauty of Plants* heading up, so plants
-/// grow upward. Quarter turns are exact: they only swap and negate coordinates.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub enum Orientation {
-    /// Heading right (Fractint).
-    #[default]
-    Right,
-    /// Heading up (ABOP).
-    Up,
-    /// Heading left.
-    Left,
-    /// Heading down.
-    Down,
-}
-
-impl Orientation {
-    /// Turtle space (y up) to screen space (y down), same units.
-    fn to_screen(self, p: TurtlePoint) -> (Real, Real) {
-        let (x, y) = (p.x, p.y);
-        match self {
-            Self::Right => (x, neg(y)),
-            Self::Up => (neg(y), neg(x)),
-            Self::Left => (neg(x), y),
-            Self::Down => (y, x),
-        }
-    }
-
-    /// Screen space back to turtle space.
-    fn to_turtle(self, (sx, sy): (Real, Real)) -> TurtlePoint {
-        let (x, y) = match self {
-            Self::Right => (sx, neg(sy)),
-            Self::Up => (neg(sy), neg(sx)),
-            Self::Left => (neg(sx), sy),
-            Self::Down => (sy, sx),
-        };
-        TurtlePoint { x, y }
-    }
-}
-
-fn neg(value: Real) -> Real {
-    Real::from_bits(value.to_bits().saturating_neg())
 }
 
 /// Where an L-system goes on the target, when it is not fitted.
@@ -118,7 +71,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         self
     }
 
-    /// Caps every walk at `symbols` symbols ([`WalkError::BudgetExhausted`] beyond).
+    /// Caps every walk at `symbols` symbols ([`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) beyond).
     #[must_use]
     pub const fn with_budget(mut self, symbols: u64) -> Self {
         self.budget = symbols;
@@ -161,7 +114,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     ///
     /// A sizing pass measures the drawing in turtle units; a second pass at the chosen scale
     /// checks it and measures its pixel bounding box, so that drawing cannot fail.
-    /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`]: fitted, its step would
+    /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::WalkError::Overflow): fitted, its step would
     /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
         &self,
@@ -171,56 +124,19 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
-        let turtle_bounds = self.bounds()?;
-        // The bounds as they will lie on screen.
-        let corners = [
-            self.orientation.to_screen(turtle_bounds.min),
-            self.orientation.to_screen(turtle_bounds.max),
-        ];
-        let (min_x, max_x) = min_max(corners[0].0, corners[1].0);
-        let (min_y, max_y) = min_max(corners[0].1, corners[1].1);
-        // Pixel centres span size - 1; keep the margin only if the area can afford it.
-        let span = |size: u32| {
-            let inner = size.saturating_sub(1);
-            let margin = if inner > 2 * self.margin {
-                self.margin
-            } else {
-                0
-            };
-            Real::from_int(i32::try_from(inner - 2 * margin).unwrap_or(i32::MAX))
-        };
-        let extent_x = max_x
-            .checked_sub(min_x)
-            .ok_or(Error::Walk(WalkError::Overflow))?;
-        let extent_y = max_y
-            .checked_sub(min_y)
-            .ok_or(Error::Walk(WalkError::Overflow))?;
-        // Pixels per sizing unit: the tighter of the two axes.
-        let per_unit = [
-            span(area.size.width).checked_div(extent_x),
-            span(area.size.height).checked_div(extent_y),
-        ]
-        .into_iter()
-        .flatten()
-        .min()
-        .unwrap_or(Real::ONE);
-        let step = per_unit;
-        // Start where the scaled picture's middle lands on the area's middle.
-        let placed_middle = |low: Real, high: Real, start: i32, size: u32| -> Option<Real> {
-            let middle = Real::from_bits(low.checked_add(high)?.to_bits() / 2);
-            let centre = Real::from_ratio(2 * i64::from(start) + i64::from(size) - 1, 2)?;
-            centre.checked_sub(middle.checked_mul(per_unit)?)
-        };
-        let start_on_screen = (
-            placed_middle(min_x, max_x, area.top_left.x, area.size.width)
-                .ok_or(Error::Walk(WalkError::Overflow))?,
-            placed_middle(min_y, max_y, area.top_left.y, area.size.height)
-                .ok_or(Error::Walk(WalkError::Overflow))?,
-        );
+        let bounds = self.bounds()?;
+        let fitted = fit(
+            (bounds.min.x, bounds.min.y),
+            (bounds.max.x, bounds.max.y),
+            self.orientation,
+            &area,
+            self.margin,
+        )?;
+        let (x, y) = self.orientation.to_picture(fitted.origin);
         self.prepared(
             Start {
-                position: self.orientation.to_turtle(start_on_screen),
-                step,
+                position: TurtlePoint { x, y },
+                step: fitted.scale,
                 turns: 0,
             },
             palette,
@@ -234,10 +150,11 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         placement: Placement,
         palette: &'p [C],
     ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
-        let position = self.orientation.to_turtle((
+        let (x, y) = self.orientation.to_picture((
             Real::from_int(placement.origin.x),
             Real::from_int(placement.origin.y),
         ));
+        let position = TurtlePoint { x, y };
         self.prepared(
             Start {
                 position,
@@ -276,13 +193,9 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 
     /// The pixel for a point of a drawing pass (whose turtle works in pixels).
     fn pixel_of(&self, p: TurtlePoint) -> Point {
-        let (x, y) = self.orientation.to_screen(p);
+        let (x, y) = self.orientation.to_screen((p.x, p.y));
         Point::new(x.round_to_i32(), y.round_to_i32())
     }
-}
-
-fn min_max(a: Real, b: Real) -> (Real, Real) {
-    (a.min(b), a.max(b))
 }
 
 /// A fitted or placed L-system with its palette: an embedded-graphics [`Drawable`].

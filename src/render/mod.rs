@@ -2,6 +2,7 @@
 //! (the raw layer under colour), palettes, and fitting a picture into a target. This is
 //! also where 3D projection belongs.
 
+pub(crate) mod fit;
 pub(crate) mod palette;
 pub(crate) mod raster;
 pub(crate) mod sink;
