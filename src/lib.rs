@@ -85,5 +85,5 @@ pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFA
 pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
 pub use render::fit::{Orientation, DEFAULT_MARGIN};
-pub use render::palette::{Bands, Gradient, Palette, TwoColor};
+pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use render::sink::{DwellBuffer, DwellSink};

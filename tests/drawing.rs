@@ -197,3 +197,34 @@ fn walker_state_is_small_and_independent_of_order() {
         size_of::<Grammar<'static>>()
     );
 }
+
+/// Any palette colours an L-system's indices: a gradient gives index i its entry i.
+#[test]
+fn colour_indices_through_any_palette() {
+    use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
+    use tinyfractal::{Colors, Gradient};
+    let grammar = Grammar::new(Dialect::Fractint, "FC1FC2F", Angle::Divisions(4)).unwrap();
+    let gradient = Gradient::<Rgb888, 4>::new(
+        &[Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE, Rgb888::WHITE],
+        Rgb888::BLACK,
+    )
+    .unwrap();
+    let system = LSystem::new(&grammar, 0).with_margin(0);
+    let area = Rectangle::new(Point::zero(), Size::new(10, 1));
+    let mut by_gradient = MockDisplay::<Rgb888>::new();
+    let mut by_list = MockDisplay::<Rgb888>::new();
+    system
+        .fit_with(area, &gradient)
+        .unwrap()
+        .draw(&mut by_gradient)
+        .unwrap();
+    let list = [Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE];
+    system
+        .fit_with(area, Colors::new(&list).unwrap())
+        .unwrap()
+        .draw(&mut by_list)
+        .unwrap();
+    by_gradient.assert_eq(&by_list);
+    assert_eq!(by_list.get_pixel(Point::new(0, 0)), Some(Rgb888::RED));
+    assert_eq!(by_list.get_pixel(Point::new(9, 0)), Some(Rgb888::BLUE));
+}

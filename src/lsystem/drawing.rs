@@ -9,6 +9,7 @@ use super::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::error::{DrawError, Error, FitError};
 use crate::math::Real;
 use crate::render::fit::{fit, Orientation, DEFAULT_MARGIN};
+use crate::render::palette::{Colors, Palette};
 use crate::render::raster;
 
 /// An L-system at an order, ready to be fitted or placed on a target.
@@ -120,7 +121,21 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         &self,
         area: Rectangle,
         palette: &'p [C],
-    ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
+    ) -> Result<LSystemDrawing<'g, 'a, Colors<'p, C>, DEPTH, STACK>, Error> {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        self.fit_with(area, colors(palette)?)
+    }
+
+    /// [`fit`](Self::fit) with any [`Palette`] for the colour indices (a [`Gradient`], say).
+    ///
+    /// [`Gradient`]: crate::Gradient
+    pub fn fit_with<P: Palette>(
+        &self,
+        area: Rectangle,
+        palette: P,
+    ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
@@ -149,7 +164,16 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         &self,
         placement: Placement,
         palette: &'p [C],
-    ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
+    ) -> Result<LSystemDrawing<'g, 'a, Colors<'p, C>, DEPTH, STACK>, Error> {
+        self.place_with(placement, colors(palette)?)
+    }
+
+    /// [`place`](Self::place) with any [`Palette`] for the colour indices.
+    pub fn place_with<P: Palette>(
+        &self,
+        placement: Placement,
+        palette: P,
+    ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
         let (x, y) = self.orientation.to_picture((
             Real::from_int(placement.origin.x),
             Real::from_int(placement.origin.y),
@@ -165,14 +189,11 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         )
     }
 
-    fn prepared<'p, C: PixelColor>(
+    fn prepared<P: Palette>(
         &self,
         start: Start,
-        palette: &'p [C],
-    ) -> Result<LSystemDrawing<'g, 'a, 'p, C, DEPTH, STACK>, Error> {
-        if palette.is_empty() {
-            return Err(Error::Fit(FitError::EmptyPalette));
-        }
+        palette: P,
+    ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
         let pixels = self.bounds_from(start)?;
         let corners = [self.pixel_of(pixels.min), self.pixel_of(pixels.max)];
         let top_left = Point::new(
@@ -198,28 +219,32 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     }
 }
 
+/// A slice of colours as a palette; an empty one is [`FitError::EmptyPalette`].
+fn colors<C: PixelColor>(palette: &[C]) -> Result<Colors<'_, C>, Error> {
+    Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))
+}
+
 /// A fitted or placed L-system with its palette: an embedded-graphics [`Drawable`].
 ///
-/// Colour index `i` of the system is drawn as `palette[i % palette.len()]`. Lines go to the
-/// target as horizontal and vertical runs through `fill_solid`; clipping is the target's.
+/// Colour index `i` of the system is drawn as `palette.color(i, u16::MAX)` (never
+/// "inside"): with a list of colours ([`Colors`], what `fit` and `place` build from a
+/// slice), `colours[i % len]`. Lines go to the target as horizontal and vertical runs
+/// through `fill_solid`; clipping is the target's.
 #[derive(Debug, Clone, Copy)]
 pub struct LSystemDrawing<
     'g,
     'a,
-    'p,
-    C,
+    P,
     const DEPTH: usize = DEFAULT_DEPTH,
     const STACK: usize = DEFAULT_STACK,
 > {
     system: LSystem<'g, 'a, DEPTH, STACK>,
     start: Start,
-    palette: &'p [C],
+    palette: P,
     bounding_box: Rectangle,
 }
 
-impl<C: PixelColor, const DEPTH: usize, const STACK: usize>
-    LSystemDrawing<'_, '_, '_, C, DEPTH, STACK>
-{
+impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, P, DEPTH, STACK> {
     /// Where the turtle starts and its step, in pixels (turtle space: y up).
     pub const fn start(&self) -> Start {
         self.start
@@ -229,7 +254,7 @@ impl<C: PixelColor, const DEPTH: usize, const STACK: usize>
     /// walk was checked when fitting or placing).
     pub fn try_draw<D>(&self, target: &mut D) -> Result<WalkStats, DrawError<D::Error>>
     where
-        D: DrawTarget<Color = C>,
+        D: DrawTarget<Color = P::Color>,
     {
         let clip = target.bounding_box();
         let mut segments = self.system.segments(self.start)?;
@@ -240,27 +265,25 @@ impl<C: PixelColor, const DEPTH: usize, const STACK: usize>
                 self.system.pixel_of(segment.start),
                 self.system.pixel_of(segment.end),
             );
-            let index = usize::from(segment.color) % self.palette.len().max(1);
-            if let Some(&color) = self.palette.get(index) {
-                // A continuing line does not draw its first pixel twice.
-                raster::draw_line(target, from, to, last_end == Some(from), color, &clip)
-                    .map_err(DrawError::Target)?;
-            }
+            let color = self.palette.color(u16::from(segment.color), u16::MAX);
+            // A continuing line does not draw its first pixel twice.
+            raster::draw_line(target, from, to, last_end == Some(from), color, &clip)
+                .map_err(DrawError::Target)?;
             last_end = Some(to);
         }
         Ok(segments.stats())
     }
 }
 
-impl<C: PixelColor, const DEPTH: usize, const STACK: usize> Drawable
-    for LSystemDrawing<'_, '_, '_, C, DEPTH, STACK>
+impl<P: Palette, const DEPTH: usize, const STACK: usize> Drawable
+    for LSystemDrawing<'_, '_, P, DEPTH, STACK>
 {
-    type Color = C;
+    type Color = P::Color;
     type Output = WalkStats;
 
     fn draw<D>(&self, target: &mut D) -> Result<WalkStats, D::Error>
     where
-        D: DrawTarget<Color = C>,
+        D: DrawTarget<Color = P::Color>,
     {
         match self.try_draw(target) {
             Ok(stats) => Ok(stats),
@@ -271,8 +294,8 @@ impl<C: PixelColor, const DEPTH: usize, const STACK: usize> Drawable
     }
 }
 
-impl<C, const DEPTH: usize, const STACK: usize> Dimensions
-    for LSystemDrawing<'_, '_, '_, C, DEPTH, STACK>
+impl<P, const DEPTH: usize, const STACK: usize> Dimensions
+    for LSystemDrawing<'_, '_, P, DEPTH, STACK>
 {
     fn bounding_box(&self) -> Rectangle {
         self.bounding_box

@@ -1,23 +1,53 @@
-//! From dwell to colour, for any `PixelColor` that converts from `Rgb888` (every colour
+//! From a value to a colour, for every family: an escape-time dwell, or an L-system's colour
+//! index. Gradients work for any `PixelColor` that converts from `Rgb888` (every colour
 //! type of embedded-graphics does: `Rgb565`, `Rgb888`, `Gray8`, `Gray4`, `BinaryColor`...).
 //! Conversions happen when a palette is built, never per pixel.
 
 use embedded_graphics::pixelcolor::{PixelColor, Rgb888, RgbColor};
 
-/// Maps a dwell to a colour; `max` means "did not escape" (inside).
+/// Maps a value to a colour: an escape-time dwell, where `max` means "did not escape"
+/// (inside), or an L-system colour index, drawn with `max` = `u16::MAX` (never inside).
 pub trait Palette {
     /// The colour type.
     type Color: PixelColor;
 
-    /// The colour of a pixel with this dwell.
-    fn color(&self, dwell: u16, max: u16) -> Self::Color;
+    /// The colour of a pixel with this value.
+    fn color(&self, value: u16, max: u16) -> Self::Color;
 }
 
-impl<P: Palette> Palette for &P {
+impl<P: Palette + ?Sized> Palette for &P {
     type Color = P::Color;
 
-    fn color(&self, dwell: u16, max: u16) -> Self::Color {
-        (**self).color(dwell, max)
+    fn color(&self, value: u16, max: u16) -> Self::Color {
+        (**self).color(value, max)
+    }
+}
+
+/// A list of colours taken in turn, as Fractint's colour indices are: value `v` takes
+/// `colours[v % len]`; inside (an escape-time value at `max`) takes the first colour.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Colors<'a, C> {
+    colors: &'a [C],
+    first: C,
+}
+
+impl<'a, C: PixelColor> Colors<'a, C> {
+    /// The colours in order; `None` if there are none.
+    pub fn new(colors: &'a [C]) -> Option<Self> {
+        let first = *colors.first()?;
+        Some(Self { colors, first })
+    }
+}
+
+impl<C: PixelColor> Palette for Colors<'_, C> {
+    type Color = C;
+
+    fn color(&self, value: u16, max: u16) -> C {
+        if value >= max {
+            return self.first;
+        }
+        let index = usize::from(value) % self.colors.len().max(1);
+        self.colors.get(index).copied().unwrap_or(self.first)
     }
 }
 
@@ -137,5 +167,31 @@ impl<C: PixelColor, const N: usize> Palette for Gradient<C, N> {
         }
         let index = usize::from(dwell) % N.max(1);
         self.table.get(index).copied().unwrap_or(self.inside)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics::pixelcolor::Rgb565;
+
+    use super::*;
+
+    #[test]
+    fn colours_cycle_and_inside_takes_the_first() {
+        let list = [Rgb565::RED, Rgb565::GREEN, Rgb565::BLUE];
+        let colors = Colors::new(&list).unwrap();
+        let picked: [Rgb565; 5] = core::array::from_fn(|i| colors.color(i as u16, u16::MAX));
+        assert_eq!(
+            picked,
+            [
+                Rgb565::RED,
+                Rgb565::GREEN,
+                Rgb565::BLUE,
+                Rgb565::RED,
+                Rgb565::GREEN
+            ]
+        );
+        assert_eq!(colors.color(7, 7), Rgb565::RED);
+        assert_eq!(Colors::<Rgb565>::new(&[]), None);
     }
 }
