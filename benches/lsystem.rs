@@ -4,58 +4,14 @@
 //! `cargo bench --bench lsystem`; the README quotes these numbers.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use embedded_graphics::{pixelcolor::Rgb565, prelude::*, primitives::Rectangle};
+use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use std::hint::black_box;
 use tinyfractal::{Angle, Dialect, Grammar, LSystem, Segments};
 
-/// A framebuffer whose `fill_solid` writes rows directly, as a real one would.
-struct Framebuffer {
-    pixels: Vec<Rgb565>,
-}
+#[path = "../tests/support/frame.rs"]
+mod frame;
 
-impl Framebuffer {
-    const SIZE: Size = Size::new(320, 240);
-    fn new() -> Self {
-        Self {
-            pixels: vec![Rgb565::BLACK; 320 * 240],
-        }
-    }
-}
-
-impl OriginDimensions for Framebuffer {
-    fn size(&self) -> Size {
-        Self::SIZE
-    }
-}
-
-impl DrawTarget for Framebuffer {
-    type Color = Rgb565;
-    type Error = core::convert::Infallible;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<Rgb565>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            if let (Ok(x @ 0..320), Ok(y @ 0..240)) = (usize::try_from(p.x), usize::try_from(p.y)) {
-                self.pixels[y * 320 + x] = c;
-            }
-        }
-        Ok(())
-    }
-
-    fn fill_solid(&mut self, area: &Rectangle, color: Rgb565) -> Result<(), Self::Error> {
-        let area = area.intersection(&self.bounding_box());
-        let Some(bottom_right) = area.bottom_right() else {
-            return Ok(());
-        };
-        for y in area.top_left.y..=bottom_right.y {
-            let row = y as usize * 320;
-            self.pixels[row + area.top_left.x as usize..=row + bottom_right.x as usize].fill(color);
-        }
-        Ok(())
-    }
-}
+type Framebuffer = frame::Frame<Rgb565>;
 
 fn koch() -> Grammar<'static> {
     Grammar::new(Dialect::Fractint, "F--F--F", Angle::Divisions(6))
@@ -79,7 +35,7 @@ fn bench(c: &mut Criterion) {
             assert_eq!(count as u64, segments);
         })
     });
-    let mut framebuffer = Framebuffer::new();
+    let mut framebuffer = Framebuffer::filled(Size::new(320, 240), Rgb565::BLACK);
     let drawing = LSystem::new(&grammar, 8)
         .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
         .unwrap();
@@ -89,7 +45,7 @@ fn bench(c: &mut Criterion) {
     group.bench_function("fit (sizing + checking passes)", |b| {
         b.iter(|| {
             LSystem::new(black_box(&grammar), 8)
-                .fit(Framebuffer::new().bounding_box(), &[Rgb565::WHITE])
+                .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
                 .unwrap()
         })
     });

@@ -6,7 +6,10 @@
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
+use embedded_graphics::prelude::*;
+
+#[path = "../support/frame.rs"]
+mod support;
 
 /// A system as the model sees it.
 #[derive(Debug, Clone)]
@@ -284,59 +287,8 @@ pub fn pixel(p: tinyfractal::TurtlePoint) -> Point {
     Point::new(p.x.round_to_i32(), -p.y.round_to_i32())
 }
 
-/// A plain 1-bit framebuffer of any size (MockDisplay stops at 64×64).
-pub struct Bitmap {
-    pub size: Size,
-    pub pixels: Vec<bool>,
-}
-
-impl Bitmap {
-    pub fn new(width: u32, height: u32) -> Self {
-        Self {
-            size: Size::new(width, height),
-            pixels: vec![false; (width * height) as usize],
-        }
-    }
-
-    pub fn get(&self, x: i32, y: i32) -> bool {
-        x >= 0
-            && y >= 0
-            && (x as u32) < self.size.width
-            && (y as u32) < self.size.height
-            && self.pixels[(y as u32 * self.size.width + x as u32) as usize]
-    }
-
-    pub fn lit(&self) -> usize {
-        self.pixels.iter().filter(|&&p| p).count()
-    }
-}
-
-impl OriginDimensions for Bitmap {
-    fn size(&self) -> Size {
-        self.size
-    }
-}
-
-impl DrawTarget for Bitmap {
-    type Color = BinaryColor;
-    type Error = core::convert::Infallible;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(
-        &mut self,
-        pixels: I,
-    ) -> Result<(), Self::Error> {
-        for Pixel(p, c) in pixels {
-            if p.x >= 0
-                && p.y >= 0
-                && (p.x as u32) < self.size.width
-                && (p.y as u32) < self.size.height
-            {
-                self.pixels[(p.y as u32 * self.size.width + p.x as u32) as usize] = c.is_on();
-            }
-        }
-        Ok(())
-    }
-}
+#[allow(unused_imports)]
+pub use support::{Bitmap, Frame};
 
 /// Wraps a target and counts what reaches it: per-pixel writes, runs, and pixels.
 pub struct Counting<T> {

@@ -204,6 +204,28 @@ const fn lsystem(
     }
 }
 
+const fn escape(
+    name: &'static str,
+    julia: Option<(&'static str, &'static str)>,
+    centre: (&'static str, &'static str),
+    width: &'static str,
+    max_iterations: u32,
+    size: Size,
+    palette: &'static str,
+) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Escape {
+            julia,
+            centre,
+            width,
+            max_iterations,
+        },
+        size,
+        palette,
+    }
+}
+
 /// The full Mandelbrot view.
 const MANDELBROT_CENTRE: (&str, &str) = ("-0.75", "0");
 /// The Julia set for k = −0.8 + 0.156i.
@@ -212,117 +234,31 @@ const JULIA_K: Option<(&str, &str)> = Some(("-0.8", "0.156"));
 const SPIRAL: (&str, &str) = ("-0.743643887037151", "0.131825904205330");
 
 /// The gallery (`cargo run --release`): classic L-systems and escape-time views, 320×240.
+#[rustfmt::skip]
 pub const GALLERY: [Entry; 12] = [
-    lsystem(
-        "koch-snowflake",
-        &KOCH_SNOWFLAKE,
-        5,
-        Orientation::Right,
-        GALLERY_SIZE,
-    ),
+    lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
-    lsystem(
-        "sierpinski-arrowhead",
-        &SIERPINSKI_ARROWHEAD,
-        7,
-        Orientation::Right,
-        GALLERY_SIZE,
-    ),
+    lsystem("sierpinski-arrowhead", &SIERPINSKI_ARROWHEAD, 7, Orientation::Right, GALLERY_SIZE),
     lsystem("gosper", &GOSPER, 4, Orientation::Right, GALLERY_SIZE),
     lsystem("plant", &PLANT, 7, Orientation::Up, GALLERY_SIZE),
     lsystem("fern", &FERN, 6, Orientation::Up, GALLERY_SIZE),
     lsystem("bush", &BUSH, 4, Orientation::Up, GALLERY_SIZE),
-    Entry {
-        name: "mandelbrot",
-        scene: Scene::Escape {
-            julia: None,
-            centre: MANDELBROT_CENTRE,
-            width: "3.5",
-            max_iterations: 256,
-        },
-        size: GALLERY_SIZE,
-        palette: "classic",
-    },
-    Entry {
-        name: "seahorse-valley",
-        scene: Scene::Escape {
-            julia: None,
-            centre: ("-0.7435", "0.1314"),
-            width: "0.02",
-            max_iterations: 512,
-        },
-        size: GALLERY_SIZE,
-        palette: "fire",
-    },
-    Entry {
-        name: "julia",
-        scene: Scene::Escape {
-            julia: JULIA_K,
-            centre: ("0", "0"),
-            width: "3.2",
-            max_iterations: 300,
-        },
-        size: GALLERY_SIZE,
-        palette: "classic",
-    },
-    Entry {
-        // Width 10^-9: beyond the 32-bit tiers, computed in Q60 with 128-bit products.
-        name: "deep-zoom",
-        scene: Scene::Escape {
-            julia: None,
-            centre: SPIRAL,
-            width: "0.000000001",
-            max_iterations: 4000,
-        },
-        size: GALLERY_SIZE,
-        palette: "fire",
-    },
+    escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"),
+    escape("seahorse-valley", None, ("-0.7435", "0.1314"), "0.02", 512, GALLERY_SIZE, "fire"),
+    escape("julia", JULIA_K, ("0", "0"), "3.2", 300, GALLERY_SIZE, "classic"),
+    // Width 10^-9: beyond the 32-bit tiers, computed in Q60 with 128-bit products.
+    escape("deep-zoom", None, SPIRAL, "0.000000001", 4000, GALLERY_SIZE, "fire"),
 ];
 
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
+#[rustfmt::skip]
 pub const SCENES: [Entry; 5] = [
     lsystem("plant", &FERN, 5, Orientation::Up, OLED),
-    lsystem(
-        "koch-snowflake",
-        &KOCH_SNOWFLAKE,
-        4,
-        Orientation::Right,
-        OLED,
-    ),
-    Entry {
-        name: "mandelbrot",
-        scene: Scene::Escape {
-            julia: None,
-            centre: MANDELBROT_CENTRE,
-            width: "3.5",
-            max_iterations: 64,
-        },
-        size: OLED,
-        palette: "classic",
-    },
-    Entry {
-        name: "julia",
-        scene: Scene::Escape {
-            julia: JULIA_K,
-            centre: ("0", "0"),
-            width: "3.6",
-            max_iterations: 100,
-        },
-        size: OLED,
-        palette: "classic",
-    },
-    Entry {
-        // Width 10^-7: needs the 60-bit tier with 128-bit products.
-        name: "deep-zoom",
-        scene: Scene::Escape {
-            julia: None,
-            centre: SPIRAL,
-            width: "0.0000001",
-            max_iterations: 1000,
-        },
-        size: OLED,
-        palette: "fire",
-    },
+    lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 4, Orientation::Right, OLED),
+    escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"),
+    escape("julia", JULIA_K, ("0", "0"), "3.6", 100, OLED, "classic"),
+    // Width 10^-7: needs the 60-bit tier with 128-bit products.
+    escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire"),
 ];

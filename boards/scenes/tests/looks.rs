@@ -3,50 +3,13 @@
 //! colours only: every scene draws at each size, stays inside the target, and marks exactly
 //! the same pixels in either look.
 
-use std::convert::Infallible;
-
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use tinyfractal_scenes::{Entry, Look, Work, COLOUR, GREY, SCENES};
 
-/// A frame that records every pixel and counts the ones that fall outside it.
-struct Frame<C> {
-    size: Size,
-    pixels: Vec<C>,
-    outside: usize,
-}
+#[path = "../../../tests/support/frame.rs"]
+mod frame;
 
-impl<C: PixelColor> Frame<C> {
-    fn new(size: Size, background: C) -> Self {
-        Self {
-            size,
-            pixels: vec![background; (size.width * size.height) as usize],
-            outside: 0,
-        }
-    }
-}
-
-impl<C: PixelColor> OriginDimensions for Frame<C> {
-    fn size(&self) -> Size {
-        self.size
-    }
-}
-
-impl<C: PixelColor> DrawTarget for Frame<C> {
-    type Color = C;
-    type Error = Infallible;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<C>>>(&mut self, pixels: I) -> Result<(), Infallible> {
-        for Pixel(point, colour) in pixels {
-            if self.bounding_box().contains(point) {
-                let index = point.y as u32 * self.size.width + point.x as u32;
-                self.pixels[index as usize] = colour;
-            } else {
-                self.outside += 1;
-            }
-        }
-        Ok(())
-    }
-}
+use frame::Frame;
 
 /// Which pixels a look left as background (L-systems) or inside colour (escape time).
 fn marks<C: PixelColor + From<Rgb888>>(
@@ -54,7 +17,7 @@ fn marks<C: PixelColor + From<Rgb888>>(
     size: Size,
     look: &Look<'_, C>,
 ) -> (Work, Vec<bool>) {
-    let mut frame = Frame::new(size, look.background);
+    let mut frame = Frame::filled(size, look.background);
     let work = scene.draw(&mut frame, look).unwrap();
     assert_eq!(frame.outside, 0, "{name} drew outside {size}");
     let marked = match work {
