@@ -61,12 +61,13 @@ fn bench(c: &mut Criterion) {
             let stats = Render::new(view, algorithm)
                 .run(&mut DwellBuffer::new(&mut dwells, size.width))
                 .unwrap();
+            // One line per view and algorithm, read by benches/record.
             println!(
-                "{name} {algorithm:?} ({:?} tier): iterations {:.4} of naive ({} / {naive_iterations}), pixels computed {:.4} of {}, draw calls {}",
-                stats.tier,
-                stats.iterations as f64 / naive_iterations as f64,
+                "work view={} algorithm={algorithm:?} tier={} iterations={} naive={naive_iterations} pixels={} of={} draw_calls={}",
+                name.replace(' ', "-"),
+                stats.tier.name(),
                 stats.iterations,
-                f64::from(stats.pixels) / f64::from(size.width * size.height),
+                stats.pixels,
                 size.width * size.height,
                 stats.draw_calls
             );

@@ -66,6 +66,7 @@ pub(crate) enum Command {
 
 impl Dialect {
     /// The symbol as rules and commands see it.
+    #[inline]
     pub(crate) const fn normalize(self, byte: u8) -> u8 {
         match self {
             Self::Fractint => byte.to_ascii_lowercase(),
@@ -81,12 +82,14 @@ impl Dialect {
         }
     }
 
+    #[inline]
     fn takes_number(self, symbol: u8) -> bool {
         self == Self::Fractint && matches!(symbol, b'\\' | b'/' | b'@' | b'c' | b'<' | b'>')
     }
 
     /// Reads the token at `position` of `body`; returns it and the position after it, or
     /// `None` at the end. The argument is scanned, not checked: [`Dialect::decode`] checks it.
+    #[inline]
     pub(crate) fn scan<'a>(self, body: &'a [u8], position: usize) -> Option<(Token<'a>, usize)> {
         let symbol = self.normalize(*body.get(position)?);
         let start = position + 1;
@@ -113,6 +116,7 @@ impl Dialect {
 
     /// What a token makes the turtle do. `extra_draw` is the set of extra drawing symbols
     /// (ABOP only). Errors carry the column of the token within its body (`at`).
+    #[inline]
     pub(crate) fn decode(
         self,
         token: Token<'_>,
@@ -248,6 +252,7 @@ impl SymbolSet {
         }
     }
 
+    #[inline]
     pub(crate) fn contains(self, symbol: u8) -> bool {
         symbol < 128 && self.0 & (1 << symbol) != 0
     }

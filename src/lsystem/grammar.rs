@@ -179,15 +179,18 @@ impl<'a> Grammar<'a> {
         self.rules.len()
     }
 
+    #[inline]
     pub(crate) fn axiom_bytes(&self) -> &'a [u8] {
         self.axiom
     }
 
+    #[inline]
     pub(crate) fn rule(&self, index: u8) -> Option<&Rule<'a>> {
         self.rules.get(usize::from(index))
     }
 
     /// The first rule line for a (normalized) symbol.
+    #[inline]
     pub(crate) fn first_rule(&self, symbol: u8) -> Option<u8> {
         self.first
             .get(usize::from(symbol))
@@ -195,6 +198,7 @@ impl<'a> Grammar<'a> {
             .filter(|&index| index != NO_RULE)
     }
 
+    #[inline]
     pub(crate) const fn headings(&self) -> &Headings {
         &self.headings
     }
@@ -248,6 +252,7 @@ impl<'a> Grammar<'a> {
     }
 
     /// Decodes a token of a body already checked by `check_body`.
+    #[inline]
     pub(crate) fn decode(&self, token: Token<'_>) -> Result<super::alphabet::Command, Error> {
         self.dialect
             .decode(token, self.extra_draw, Location::default())

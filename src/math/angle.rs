@@ -70,16 +70,19 @@ impl Headings {
     }
 
     /// Number of divisions, or 0 for a free angle.
+    #[inline]
     pub(crate) const fn divisions(&self) -> u16 {
         self.divisions
     }
 
     /// The binary-angle turn of `+` for a free angle.
+    #[inline]
     pub(crate) const fn free_turn(&self) -> trig::BinaryAngle {
         self.free_turn
     }
 
     /// Cosine and sine of heading `k` (0..n), exact mirror images for `k` and `n - k`.
+    #[inline]
     pub(crate) fn cos_sin(&self, k: u16) -> (i32, i32) {
         let mirrored = k > self.divisions / 2;
         let index = if mirrored { self.divisions - k } else { k };

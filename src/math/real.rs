@@ -26,11 +26,13 @@ impl Real {
     pub const FRAC_BITS: u32 = 32;
 
     /// From the raw bits (the value times 2³²).
+    #[inline]
     pub const fn from_bits(bits: i64) -> Self {
         Self(I32F32::from_bits(bits))
     }
 
     /// The raw bits (the value times 2³²).
+    #[inline]
     pub const fn to_bits(self) -> i64 {
         self.0.to_bits()
     }
@@ -71,11 +73,13 @@ impl Real {
     }
 
     /// Checked addition.
+    #[inline]
     pub fn checked_add(self, other: Self) -> Option<Self> {
         self.0.checked_add(other.0).map(Self)
     }
 
     /// Checked subtraction.
+    #[inline]
     pub fn checked_sub(self, other: Self) -> Option<Self> {
         self.0.checked_sub(other.0).map(Self)
     }
@@ -113,6 +117,7 @@ impl Real {
     /// Two 32×32→64 products instead of an i128 multiply, which is a library call on
     /// Cortex-M: |self|·|factor| = hi·|factor|·2³² + lo·|factor|, and 2³² is a multiple of
     /// 2³⁰, so the rounding only looks at the low product.
+    #[inline]
     pub(crate) fn mul_q30(self, factor: i32) -> Self {
         let negative = (self.to_bits() < 0) != (factor < 0);
         let (a, b) = (
@@ -128,6 +133,7 @@ impl Real {
     }
 
     /// Rounds to the nearest integer, half away from zero (saturating at the i32 range).
+    #[inline]
     pub fn round_to_i32(self) -> i32 {
         let rounded = shift_round(i128::from(self.to_bits()), 32);
         rounded.clamp(i128::from(i32::MIN), i128::from(i32::MAX)) as i32

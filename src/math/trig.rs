@@ -89,6 +89,7 @@ impl BinaryAngle {
     }
 
     /// Cosine and sine in Q30: table lookup with linear interpolation (error < 3·10⁻⁷).
+    #[inline]
     pub(crate) fn cos_sin(self) -> (i32, i32) {
         let sin = |angle: u32| -> i32 {
             let within = angle & (Self::QUARTER - 1);
@@ -107,6 +108,7 @@ impl BinaryAngle {
 }
 
 /// sin of `position / 2³⁰` of a quarter turn, `position` in 0..=2³⁰.
+#[inline]
 fn quarter_sine(position: u32) -> i32 {
     const FRACTION_BITS: u32 = 20; // 2^30 / QUARTER_STEPS = 2^20 positions between points
     let index = (position >> FRACTION_BITS) as usize;

@@ -1,0 +1,262 @@
+//! The performance tables in `docs/performance.md` and the README are generated from the
+//! measurements (`boards/measurements.json`, written by `boards/measure`, and
+//! `benches/results.json`, written by `benches/record`), never typed by hand. This test
+//! regenerates every table and fails when a document's copy is stale;
+//! `TINYFRACTAL_BLESS=1` (or `boards/tables`) writes them instead.
+//!
+//! A table sits between `<!-- generated: NAME -->` and `<!-- end: NAME -->`.
+
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+
+fn repository() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+fn read_json(path: &str) -> Value {
+    let path = repository().join(path);
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// 1234567 as "1,234,567".
+fn thousands(value: u64) -> String {
+    let digits = value.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+fn number(record: &Value, key: &str) -> Option<u64> {
+    record.get(key).and_then(Value::as_u64)
+}
+
+fn text<'a>(record: &'a Value, key: &str) -> &'a str {
+    record.get(key).and_then(Value::as_str).unwrap_or("?")
+}
+
+/// Every Cortex-M record: instructions per frame and per unit of work, against the baselines.
+fn cortex_m_table(records: &[Value]) -> String {
+    let mut table = String::from(
+        "| core | scene | instructions per frame | per unit | f32 baseline | fixed20 baseline | stack (bytes) |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    for record in records {
+        let instructions = number(record, "instructions").unwrap_or(0);
+        let work = number(record, "work").unwrap_or(1).max(1);
+        let baseline = |key: &str| {
+            number(record, key).map_or("—".to_string(), |b| {
+                format!("{} ({:.1}×)", thousands(b), b as f64 / instructions as f64)
+            })
+        };
+        table.push_str(&format!(
+            "| {} | {} | {} | {} per {} | {} | {} | {} |\n",
+            text(record, "core"),
+            text(record, "scene"),
+            thousands(instructions),
+            thousands((instructions as f64 / work as f64).round() as u64),
+            text(record, "work_unit"),
+            baseline("baseline_f32"),
+            baseline("baseline_fixed20"),
+            thousands(number(record, "stack").unwrap_or(0)),
+        ));
+    }
+    table
+}
+
+/// Flash of the measuring firmware per core, and the deepest stack.
+fn footprint_table(records: &[Value]) -> String {
+    let mut table = String::from(
+        "| core | `.text` (bytes) | `.data` | `.bss` | deepest stack (bytes) |\n|---|---|---|---|---|\n",
+    );
+    let mut cores: Vec<&str> = records.iter().map(|r| text(r, "core")).collect();
+    cores.dedup();
+    for core in cores {
+        let of_core: Vec<&Value> = records.iter().filter(|r| text(r, "core") == core).collect();
+        let first = of_core[0];
+        let stack = of_core
+            .iter()
+            .filter_map(|r| number(r, "stack"))
+            .max()
+            .unwrap_or(0);
+        table.push_str(&format!(
+            "| {core} | {} | {} | {} | {} |\n",
+            thousands(number(first, "text").unwrap_or(0)),
+            number(first, "data").unwrap_or(0),
+            number(first, "bss").unwrap_or(0),
+            thousands(stack),
+        ));
+    }
+    table
+}
+
+/// The README's short table: the full Mandelbrot view on each core against the better of
+/// the two naive loops.
+fn summary_table(records: &[Value]) -> String {
+    let mut table = String::from(
+        "| core | Mandelbrot full view, 128×64 | naive f32 loop | naive fixed-point loop | fewer instructions than the better one |\n|---|---|---|---|---|\n",
+    );
+    for record in records.iter().filter(|r| text(r, "scene") == "mandelbrot") {
+        let ours = number(record, "instructions").unwrap_or(1).max(1);
+        let f32_loop = number(record, "baseline_f32").unwrap_or(0);
+        let fixed = number(record, "baseline_fixed20").unwrap_or(0);
+        let better = f32_loop.min(fixed);
+        table.push_str(&format!(
+            "| {} | {} | {} | {} | {:.1}× |\n",
+            text(record, "core"),
+            thousands(ours),
+            thousands(f32_loop),
+            thousands(fixed),
+            better as f64 / ours as f64,
+        ));
+    }
+    table
+}
+
+fn milliseconds(ns: u64) -> String {
+    let ms = ns as f64 / 1e6;
+    if ms < 10.0 {
+        format!("{ms:.2} ms")
+    } else {
+        format!("{ms:.1} ms")
+    }
+}
+
+/// The L-system benches: the Koch snowflake at order 8.
+fn lsystem_table(results: &Value) -> String {
+    const SEGMENTS: u64 = 3 * 4u64.pow(8);
+    let mut table = String::from("| what | time | segments per second |\n|---|---|---|\n");
+    let times = &results["times_ns"];
+    for (key, what) in [
+        ("segments (walk + turtle)", "walk + turtle (`Segments`)"),
+        (
+            "segments + rasterisation (320x240)",
+            "walk + turtle + rasterise into a 320×240 RGB565 framebuffer",
+        ),
+        (
+            "fit (sizing + checking passes)",
+            "fit (sizing pass + checking pass)",
+        ),
+    ] {
+        let ns = number(times, &format!("koch-snowflake-order-8 / {key}")).unwrap_or(0);
+        let per_second = SEGMENTS as f64 / (ns.max(1) as f64 / 1e9);
+        table.push_str(&format!(
+            "| {what} | {} | {:.0} M |\n",
+            milliseconds(ns),
+            per_second / 1e6
+        ));
+    }
+    table
+}
+
+/// The escape-time benches: two views at 320×240, max-iter 256.
+fn escape_table(results: &Value) -> String {
+    let mut table = String::from(
+        "| view | algorithm | tier | time | iterations (of naive) | pixels computed | draw calls |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    let times = &results["times_ns"];
+    let work = results["work"].as_array().cloned().unwrap_or_default();
+    for view in ["full-view", "seahorse-zoom"] {
+        let name = view.replace('-', " ");
+        let group = format!("mandelbrot {name} 320x240 max-iter 256");
+        let rows: Vec<&Value> = work.iter().filter(|w| text(w, "view") == view).collect();
+        let naive = rows
+            .first()
+            .and_then(|w| number(w, "naive"))
+            .unwrap_or(1)
+            .max(1);
+        table.push_str(&format!(
+            "| {name} | naive f64 | — | {} | {} (100 %) | 100 % | — |\n",
+            milliseconds(number(times, &format!("{group} / naive f64 per pixel")).unwrap_or(0)),
+            thousands(naive)
+        ));
+        for row in rows {
+            let algorithm = text(row, "algorithm");
+            let iterations = number(row, "iterations").unwrap_or(0);
+            let pixels = number(row, "pixels").unwrap_or(0);
+            let of = number(row, "of").unwrap_or(1).max(1);
+            table.push_str(&format!(
+                "| {name} | `{algorithm}` | {} | {} | {} ({:.1} %) | {:.1} % | {} |\n",
+                text(row, "tier"),
+                milliseconds(number(times, &format!("{group} / {algorithm}")).unwrap_or(0)),
+                thousands(iterations),
+                100.0 * iterations as f64 / naive as f64,
+                100.0 * pixels as f64 / of as f64,
+                thousands(number(row, "draw_calls").unwrap_or(0)),
+            ));
+        }
+    }
+    table
+}
+
+/// `document` with each named region replaced by its table.
+fn regenerated(document: &str, tables: &[(&str, String)]) -> String {
+    let mut out = document.to_string();
+    for (name, table) in tables {
+        let (open, close) = (
+            format!("<!-- generated: {name} -->\n"),
+            format!("<!-- end: {name} -->"),
+        );
+        let Some(start) = out.find(&open) else {
+            continue;
+        };
+        let body = start + open.len();
+        let end = body
+            + out[body..]
+                .find(&close)
+                .unwrap_or_else(|| panic!("`{close}` is missing"));
+        out.replace_range(body..end, table);
+    }
+    out
+}
+
+#[test]
+fn performance_tables_are_generated_from_the_measurements() {
+    let measurements = read_json("boards/measurements.json");
+    let records = measurements.as_array().expect("an array of records");
+    let results = read_json("benches/results.json");
+    let tables = [
+        ("cortex-m", cortex_m_table(records)),
+        ("footprint", footprint_table(records)),
+        ("summary", summary_table(records)),
+        ("lsystem-bench", lsystem_table(&results)),
+        ("escape-bench", escape_table(&results)),
+    ];
+    let bless = std::env::var_os("TINYFRACTAL_BLESS").is_some();
+    let mut stale = Vec::new();
+    for document in ["README.md", "docs/performance.md"] {
+        let path = repository().join(document);
+        let text = std::fs::read_to_string(&path).unwrap();
+        let fresh = regenerated(&text, &tables);
+        if fresh != text {
+            if bless {
+                std::fs::write(&path, fresh).unwrap();
+                println!("wrote {document}");
+            } else {
+                stale.push(document);
+            }
+        }
+    }
+    assert!(
+        stale.is_empty(),
+        "stale generated tables in {stale:?}: run boards/tables (TINYFRACTAL_BLESS=1) and commit"
+    );
+}
+
+#[test]
+fn regions_are_replaced_and_the_rest_kept() {
+    let document = "a\n<!-- generated: t -->\nold\n<!-- end: t -->\nb\n";
+    assert_eq!(
+        regenerated(document, &[("t", "new\n".into())]),
+        "a\n<!-- generated: t -->\nnew\n<!-- end: t -->\nb\n"
+    );
+    assert_eq!(thousands(1_234_567), "1,234,567");
+    assert_eq!(thousands(12), "12");
+}
