@@ -31,17 +31,10 @@ pub enum Source {
     Inline {
         axiom: String,
         rules: Vec<(char, String)>,
-        angle: InlineAngle,
+        angle: tinyfractal::Angle,
         draw_symbols: String,
         dialect: tinyfractal::Dialect,
     },
-}
-
-/// `--angle N` or `--angle-deg DEG`.
-#[derive(Debug, Clone, PartialEq)]
-pub enum InlineAngle {
-    Divisions(u16),
-    Degrees(String),
 }
 
 /// Options every render takes.
@@ -167,14 +160,15 @@ struct LSystemOptions {
     /// Divisions of a full turn
     #[arg(long, value_name = "N", conflicts_with_all = ["angle_deg", "file"])]
     angle: Option<u16>,
-    /// A free angle in degrees
+    /// A free angle in degrees, e.g. 22.5 or -90
     #[arg(
         long = "angle-deg",
         value_name = "DEG",
         allow_hyphen_values = true,
-        conflicts_with = "file"
+        conflicts_with = "file",
+        value_parser = parse_degrees
     )]
-    angle_deg: Option<String>,
+    angle_deg: Option<tinyfractal::Angle>,
     /// More symbols that draw (ABOP edge rewriting)
     #[arg(
         long = "draw-symbols",
@@ -318,8 +312,8 @@ fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
         },
         (None, Some(axiom)) => {
             let angle = match (options.angle, options.angle_deg) {
-                (Some(n), _) => InlineAngle::Divisions(n),
-                (None, Some(degrees)) => InlineAngle::Degrees(degrees),
+                (Some(n), _) => tinyfractal::Angle::Divisions(n),
+                (None, Some(degrees)) => degrees,
                 (None, None) => {
                     return Err(usage(
                         ErrorKind::MissingRequiredArgument,
@@ -374,6 +368,11 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let bad = || format!("`{text}` is not WxH, e.g. 320x240");
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     Ok((w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?))
+}
+
+fn parse_degrees(text: &str) -> Result<tinyfractal::Angle, String> {
+    tinyfractal::Angle::parse_degrees(text)
+        .ok_or_else(|| format!("`{text}` is not a number of degrees, e.g. 22.5 or -90"))
 }
 
 fn parse_pair(text: &str) -> Result<(String, String), String> {

@@ -11,8 +11,8 @@ mod scene;
 use std::path::Path;
 use std::process::ExitCode;
 
-use args::{Command, EscapeArgs, InlineAngle, LSystemArgs, Source};
-use tinyfractal::{Angle, Grammar, LFile};
+use args::{Command, EscapeArgs, LSystemArgs, Source};
+use tinyfractal::{Grammar, LFile};
 
 fn main() -> ExitCode {
     let command = match args::parse(std::env::args_os().skip(1)) {
@@ -88,14 +88,9 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
             draw_symbols,
             dialect,
         } => {
-            let angle = match angle {
-                InlineAngle::Divisions(n) => Angle::Divisions(*n),
-                InlineAngle::Degrees(text) => Angle::parse_degrees(text)
-                    .ok_or_else(|| format!("--angle-deg: `{text}` is not a number"))?,
-            };
             let label = "inline system";
             let with = |e: tinyfractal::Error| format!("{label}: {e}");
-            let mut grammar = Grammar::new(*dialect, axiom, angle)
+            let mut grammar = Grammar::new(*dialect, axiom, *angle)
                 .map_err(with)?
                 .with_draw_symbols(draw_symbols)
                 .map_err(with)?;
