@@ -4,8 +4,9 @@
 // as a silent `ok`. Under `CI=true` nothing is ignored: a missing piece fails the test.
 //
 // - `tinyfractal_no_qemu`: `qemu-system-arm` is not on the PATH.
-// - `tinyfractal_no_thumb_targets`: the Cortex-M standard libraries are not installed and
-//   there is no rustup to install them (with rustup, the tests add them themselves).
+// - `tinyfractal_no_thumb_targets`: the Cortex-M standard libraries are not installed for
+//   the toolchain (`rustup target add` them). Under `CI=true` the tests add them with
+//   rustup themselves.
 
 /// Prints the cfg lines (and what makes cargo decide again).
 fn detect_host_tools() {
@@ -26,6 +27,13 @@ fn detect_host_tools() {
         println!("cargo:rustc-cfg=tinyfractal_no_qemu");
     }
     let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
+    // Adding a target adds a folder here: decide again then.
+    if let Ok(output) = std::process::Command::new(&rustc).args(["--print", "sysroot"]).output() {
+        let rustlib = std::path::Path::new(String::from_utf8_lossy(&output.stdout).trim()).join("lib/rustlib");
+        if rustlib.is_dir() {
+            println!("cargo:rerun-if-changed={}", rustlib.display());
+        }
+    }
     let installed = ["thumbv6m-none-eabi", "thumbv7m-none-eabi", "thumbv7em-none-eabihf"]
         .iter()
         .all(|target| {
@@ -38,7 +46,7 @@ fn detect_host_tools() {
                     std::path::Path::new(String::from_utf8_lossy(&output.stdout).trim()).is_dir()
                 })
         });
-    if !installed && !runs("rustup", &["--version"]) {
+    if !installed {
         println!("cargo:rustc-cfg=tinyfractal_no_thumb_targets");
     }
 }
