@@ -40,7 +40,7 @@ pub enum Source {
 /// Options every render takes.
 #[derive(Debug, Clone, PartialEq, Args)]
 pub struct Common {
-    /// Picture size in pixels, WxH
+    /// Picture size in pixels, WxH (at most 16384 a side, 8192x8192 in all)
     #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = parse_size)]
     pub size: (u32, u32),
     /// Write the picture there (default: NAME.png)
@@ -218,9 +218,9 @@ struct EscapeOptions {
     /// The fixed-point tier (auto chooses per view)
     #[arg(long, value_enum, default_value = "auto")]
     precision: Precision,
-    /// classic, fire, gray, bands or two-color
-    #[arg(long, value_name = "NAME", default_value = "classic")]
-    palette: String,
+    /// The colours
+    #[arg(long, value_enum, default_value = "classic")]
+    palette: PaletteName,
     /// Write `W H MAXITER`, then H lines of W dwells
     #[arg(long, value_name = "TXT")]
     dwell: Option<PathBuf>,
@@ -235,6 +235,27 @@ struct JuliaOptions {
     c: (String, String),
     #[command(flatten)]
     view: EscapeOptions,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+enum PaletteName {
+    Classic,
+    Fire,
+    Gray,
+    Bands,
+    TwoColor,
+}
+
+impl PaletteName {
+    fn name(self) -> &'static str {
+        match self {
+            Self::Classic => "classic",
+            Self::Fire => "fire",
+            Self::Gray => "gray",
+            Self::Bands => "bands",
+            Self::TwoColor => "two-color",
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -358,16 +379,28 @@ fn escape(julia: Option<(String, String)>, options: EscapeOptions) -> EscapeArgs
             AlgorithmName::Fast => tinyfractal::Algorithm::Fast,
         },
         tier: options.precision.tier(),
-        palette: options.palette,
+        palette: options.palette.name().to_string(),
         common: options.common,
         dwell: options.dwell,
     }
 }
 
+/// The largest picture the CLI draws: 16384 pixels a side and 2²⁶ pixels (64 Mi, 8192×8192)
+/// in all, so a picture and its buffers stay within a few hundred MB.
+pub const MAX_SIDE: u32 = 16_384;
+/// See [`MAX_SIDE`].
+pub const MAX_PIXELS: u64 = 1 << 26;
+
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let bad = || format!("`{text}` is not WxH, e.g. 320x240");
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    Ok((w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?))
+    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    if w > MAX_SIDE || h > MAX_SIDE || u64::from(w) * u64::from(h) > MAX_PIXELS {
+        return Err(format!(
+            "{w}x{h} is larger than the largest picture: at most {MAX_SIDE} pixels a side and {MAX_PIXELS} in all (8192x8192)"
+        ));
+    }
+    Ok((w, h))
 }
 
 fn parse_degrees(text: &str) -> Result<tinyfractal::Angle, String> {
@@ -448,6 +481,7 @@ mod tests {
             "render mandelbrot --algorithm slow",
             "render mandelbrot --precision huge",
             "render mandelbrot --c 0,0",
+            "render mandelbrot --palette neon",
             "frobnicate",
         ] {
             assert!(parse(args(bad)).is_err(), "{bad}");

@@ -1,6 +1,7 @@
 //! Rendering an escape-time view on the host: dwells into a buffer (for `--dwell`), then
 //! coloured into a simulator display.
 
+use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
@@ -57,7 +58,9 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
     if let Some(tier) = request.tier {
         view = view.with_tier(tier);
     }
-    let mut dwells = vec![0; (request.size.width * request.size.height) as usize];
+    let cells = usize::try_from(u64::from(request.size.width) * u64::from(request.size.height))
+        .map_err(|_| "the picture is too large for this machine".to_string())?;
+    let mut dwells = vec![0; cells];
     let started = Instant::now();
     let Ok(stats) = Render::new(view, request.algorithm)
         .run(&mut DwellBuffer::new(&mut dwells, request.size.width));
@@ -75,21 +78,27 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
     })
 }
 
-/// The `--dwell` text: `W H MAXITER`, then H lines of W dwells.
-pub fn dwell_text(rendered: &Rendered) -> String {
+/// The `--dwell` text, streamed: `W H MAXITER`, then H lines of W dwells.
+pub fn write_dwells(rendered: &Rendered, out: &mut dyn Write) -> io::Result<()> {
     let size = rendered.view.size();
-    let mut text = format!(
-        "{} {} {}\n",
+    writeln!(
+        out,
+        "{} {} {}",
         size.width,
         size.height,
         rendered.view.max_iterations()
-    );
+    )?;
     for row in rendered.dwells.chunks(size.width as usize) {
-        let line: Vec<String> = row.iter().map(u16::to_string).collect();
-        text.push_str(&line.join(" "));
-        text.push('\n');
+        let mut values = row.iter();
+        if let Some(first) = values.next() {
+            write!(out, "{first}")?;
+        }
+        for value in values {
+            write!(out, " {value}")?;
+        }
+        writeln!(out)?;
     }
-    text
+    Ok(())
 }
 
 /// The one-line `--stats` report.

@@ -16,8 +16,25 @@ fn row(scene: &str, detail: &str, work: &str, elapsed: std::time::Duration, file
     );
 }
 
-/// Renders every scene into `out` and prints a table; returns whether all succeeded.
-pub fn run(out: &Path) -> bool {
+/// The gallery's folder, made if it is missing; one message if it cannot be.
+fn folder(out: &Path) -> Result<(), String> {
+    if out.exists() && !out.is_dir() {
+        return Err(format!(
+            "gallery --out {}: is a file, not a folder",
+            out.display()
+        ));
+    }
+    std::fs::create_dir_all(out).map_err(|e| {
+        format!(
+            "gallery --out {}: cannot make the folder: {e}",
+            out.display()
+        )
+    })
+}
+
+/// Renders every scene into `out` and prints a table.
+pub fn run(out: &Path) -> Result<(), String> {
+    folder(out)?;
     println!(
         "| {:<22} | {:<14} | {:>18} | {:>9} | file",
         "scene", "detail", "work", "ms"
@@ -90,13 +107,16 @@ pub fn run(out: &Path) -> bool {
         };
         report(entry.name, result, &path);
     }
-    ok
+    if ok {
+        Ok(())
+    } else {
+        Err("the gallery is incomplete".to_string())
+    }
 }
 
 fn save(
     display: &embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>,
     path: &Path,
 ) -> Result<(), String> {
-    crate::output::save_png(display, path)
-        .map_err(|e| format!("cannot write {}: {e}", path.display()))
+    crate::output::save_png(display, "gallery --out", path)
 }

@@ -34,13 +34,7 @@ fn main() -> ExitCode {
             Ok(())
         }
         Command::List(path) => list(&path),
-        Command::Gallery { out } => {
-            if gallery::run(&out) {
-                Ok(())
-            } else {
-                Err("the gallery is incomplete".to_string())
-            }
-        }
+        Command::Gallery { out } => gallery::run(&out),
         Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
         Command::RenderEscape(escape) => render_escape(&escape),
     };
@@ -53,8 +47,28 @@ fn main() -> ExitCode {
     }
 }
 
+/// The largest input file read: Fractint's own files are a few KiB, the largest public
+/// collections a few hundred.
+const MAX_INPUT_BYTES: u64 = 16 << 20;
+
 fn read_text(path: &Path) -> Result<String, String> {
-    let bytes = std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    use std::io::Read;
+    let cannot = |e: std::io::Error| format!("cannot read {}: {e}", path.display());
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err(format!("cannot read {}: it is a folder", path.display()));
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!(
+            "{} is larger than {} MiB, the largest input read: is it a .l file?",
+            path.display(),
+            MAX_INPUT_BYTES >> 20
+        ));
+    }
     // Fractint files are 8-bit text: read every byte as its Latin-1 character.
     Ok(match String::from_utf8(bytes) {
         Ok(text) => text,
@@ -103,24 +117,25 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
         }
     };
     let common = &arguments.common;
+    window_available(common.window)?;
     let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);
-    // Everything is computed before anything is written: an error leaves no file behind.
+    // Everything is computed and every output checked before anything is written.
     let rendered = scene::render(&grammar, arguments.order, common.width(), common.height())
         .map_err(failed)?;
-    let segments = match &arguments.segments {
-        Some(_) => Some(scene::segments_text(&grammar, arguments.order).map_err(failed)?),
-        None => None,
-    };
     let out = common
         .out
         .clone()
         .unwrap_or_else(|| Path::new(&format!("{}.png", name.to_lowercase())).to_path_buf());
-    output::save_png(&rendered.display, &out)
-        .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
-    if let (Some(path), Some(text)) = (&arguments.segments, &segments) {
-        output::save_text(path, text)
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    let mut plan = output::Plan::new();
+    plan.add("--out", &out, |w| output::png(&rendered.display, w));
+    if let Some(path) = &arguments.segments {
+        let (grammar, order) = (&grammar, arguments.order);
+        // The same walk as the fit's sizing pass, which succeeded: it cannot fail here.
+        plan.add("--segments", path, move |w| {
+            scene::write_segments(grammar, order, w)
+        });
     }
+    plan.write()?;
     if common.stats {
         println!("{}", scene::stats_line(&rendered));
     }
@@ -150,23 +165,34 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
         tier: arguments.tier,
         palette: &arguments.palette,
     };
-    // Everything is computed before anything is written: an error leaves no file behind.
+    window_available(common.window)?;
+    // Everything is computed and every output checked before anything is written.
     let rendered = escape_scene::render(&request).map_err(|e| format!("{name}: {e}"))?;
     let out = common
         .out
         .clone()
         .unwrap_or_else(|| Path::new(&format!("{name}.png")).to_path_buf());
-    output::save_png(&rendered.display, &out)
-        .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+    let mut plan = output::Plan::new();
+    plan.add("--out", &out, |w| output::png(&rendered.display, w));
     if let Some(path) = &arguments.dwell {
-        output::save_text(path, &escape_scene::dwell_text(&rendered))
-            .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        plan.add("--dwell", path, |w| {
+            escape_scene::write_dwells(&rendered, w)
+        });
     }
+    plan.write()?;
     if common.stats {
         println!("{}", escape_scene::stats_line(&rendered));
     }
     if common.window {
         show(&rendered.display)?;
+    }
+    Ok(())
+}
+
+/// `--window` in a build without the window: refused before anything is computed.
+fn window_available(asked: bool) -> Result<(), String> {
+    if asked && cfg!(not(feature = "window")) {
+        return Err("--window: built without a window: run with `cargo run --release --features window -- ...` (needs SDL2)".into());
     }
     Ok(())
 }

@@ -1,48 +1,215 @@
-//! Writing results: PNG pictures and text, each all-or-nothing (a temporary file renamed
-//! into place), so a failed run never leaves a partial file behind.
+//! Writing a run's outputs: all of them or none, and nothing destroyed on the way.
+//!
+//! Every output of a run is planned first ([`Plan`]): two outputs naming one file are
+//! refused, as is a folder or a missing folder, before anything is written. Then each
+//! output streams into a uniquely named temporary file beside its target (`tempfile`), and
+//! only when all of them are complete are they renamed over their targets. A target that
+//! is not a regular file (a FIFO, a device such as `/dev/null`) is written directly, after
+//! every temporary file is complete, and never replaced; a symlink is followed, and its
+//! target written (atomically, when that is a regular file). Nothing the program did not
+//! create is ever removed, and a failure removes the temporary files it made.
 
 use std::fs;
-use std::io::{self, Write};
+use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
+use image::codecs::png::{CompressionType, FilterType, PngEncoder};
+use image::ImageEncoder;
 
-fn temporary(path: &Path) -> PathBuf {
-    let mut name = path.file_name().unwrap_or_default().to_os_string();
-    name.push(".partial");
-    path.with_file_name(name)
+/// Produces an output's bytes into a writer (it may be called once).
+type Producer<'a> = Box<dyn FnOnce(&mut dyn Write) -> io::Result<()> + 'a>;
+
+/// One output: where it goes, what names it (for messages), and how its bytes are made.
+struct Output<'a> {
+    option: &'static str,
+    path: PathBuf,
+    produce: Producer<'a>,
 }
 
-/// Writes `contents` to `path` through a temporary file in the same folder.
-pub fn write_atomically(
-    path: &Path,
-    write: impl FnOnce(&Path) -> io::Result<()>,
-) -> io::Result<()> {
-    if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
-        fs::create_dir_all(parent)?;
-    }
-    let partial = temporary(path);
-    let result = write(&partial).and_then(|()| fs::rename(&partial, path));
-    if result.is_err() {
-        let _ = fs::remove_file(&partial);
-    }
-    result
+/// The outputs of one run, written all together by [`Plan::write`].
+#[derive(Default)]
+pub struct Plan<'a> {
+    outputs: Vec<Output<'a>>,
 }
 
-/// Saves the display as a PNG, one image pixel per display pixel.
-pub fn save_png(display: &SimulatorDisplay<Rgb888>, path: &Path) -> io::Result<()> {
+/// Where an output's bytes go.
+enum Destination {
+    /// A regular file (or none yet): through a temporary file renamed over `target`.
+    Replace { target: PathBuf },
+    /// Anything else (a FIFO, a device): written in place.
+    InPlace { target: PathBuf },
+}
+
+impl<'a> Plan<'a> {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Adds an output named by `option` (e.g. `--out`) at `path`.
+    pub fn add(
+        &mut self,
+        option: &'static str,
+        path: &Path,
+        produce: impl FnOnce(&mut dyn Write) -> io::Result<()> + 'a,
+    ) {
+        self.outputs.push(Output {
+            option,
+            path: path.to_path_buf(),
+            produce: Box::new(produce),
+        });
+    }
+
+    /// Checks every output, without writing anything: see the module docs.
+    pub fn check(&self) -> Result<(), String> {
+        let mut seen: Vec<(&'static str, PathBuf)> = Vec::new();
+        for output in &self.outputs {
+            let destination = destination(output.option, &output.path)?;
+            let target = match &destination {
+                Destination::Replace { target } | Destination::InPlace { target } => target,
+            };
+            let identity = identity(target);
+            if let Some((other, _)) = seen.iter().find(|(_, seen)| *seen == identity) {
+                return Err(format!(
+                    "{other} and {} both name {}: give each output its own file",
+                    output.option,
+                    output.path.display()
+                ));
+            }
+            seen.push((output.option, identity));
+        }
+        Ok(())
+    }
+
+    /// Writes every output, or none: see the module docs.
+    pub fn write(self) -> Result<(), String> {
+        self.check()?;
+        let mut staged = Vec::new();
+        let mut in_place = Vec::new();
+        for output in self.outputs {
+            let failed = |e: io::Error| format!("cannot write {}: {e}", output.path.display());
+            match destination(output.option, &output.path)? {
+                Destination::Replace { target } => {
+                    let folder = folder_of(&target);
+                    let name = target.file_name().unwrap_or_default().to_string_lossy();
+                    let prefix = format!(".{name}.");
+                    let mut builder = tempfile::Builder::new();
+                    builder.prefix(&prefix).suffix(".tmp");
+                    #[cfg(unix)]
+                    builder.permissions(permissions(&target));
+                    let mut temporary = builder.tempfile_in(folder).map_err(failed)?;
+                    let mut writer = BufWriter::new(temporary.as_file_mut());
+                    (output.produce)(&mut writer)
+                        .and_then(|()| writer.flush())
+                        .map_err(failed)?;
+                    drop(writer);
+                    staged.push((temporary, target, output.path));
+                }
+                Destination::InPlace { target } => in_place.push((output, target)),
+            }
+        }
+        // Every temporary file is complete: now the outputs that cannot be staged.
+        for (output, target) in in_place {
+            let failed = |e: io::Error| format!("cannot write {}: {e}", output.path.display());
+            let file = fs::OpenOptions::new()
+                .write(true)
+                .open(&target)
+                .map_err(failed)?;
+            let mut writer = BufWriter::new(file);
+            (output.produce)(&mut writer)
+                .and_then(|()| writer.flush())
+                .map_err(failed)?;
+        }
+        for (temporary, target, path) in staged {
+            temporary
+                .persist(&target)
+                .map_err(|e| format!("cannot write {}: {}", path.display(), e.error))?;
+        }
+        Ok(())
+    }
+}
+
+/// Where `path`'s bytes go, or why they cannot.
+fn destination(option: &str, path: &Path) -> Result<Destination, String> {
+    // A symlink's target is what gets written.
+    let target = match fs::symlink_metadata(path) {
+        Ok(meta) if meta.file_type().is_symlink() => fs::canonicalize(path).unwrap_or_else(|_| {
+            fs::read_link(path)
+                .map_or_else(|_| path.to_path_buf(), |link| folder_of(path).join(link))
+        }),
+        _ => path.to_path_buf(),
+    };
+    match fs::metadata(&target) {
+        Ok(meta) if meta.is_dir() => Err(format!(
+            "{option} {}: is a folder, not a file",
+            path.display()
+        )),
+        Ok(meta) if meta.is_file() => Ok(Destination::Replace { target }),
+        Ok(_) => Ok(Destination::InPlace { target }),
+        Err(error) if error.kind() == io::ErrorKind::NotFound => {
+            let folder = folder_of(&target);
+            match fs::metadata(folder) {
+                Ok(meta) if meta.is_dir() => Ok(Destination::Replace { target }),
+                Ok(_) => Err(format!(
+                    "{option} {}: {} is not a folder",
+                    path.display(),
+                    folder.display()
+                )),
+                Err(_) => Err(format!(
+                    "{option} {}: the folder {} does not exist",
+                    path.display(),
+                    folder.display()
+                )),
+            }
+        }
+        Err(error) => Err(format!("{option} {}: {error}", path.display())),
+    }
+}
+
+/// A replaced file keeps its permissions; a new one gets what `File::create` would give
+/// (0o666 less the umask), not the temporary file's private 0o600.
+#[cfg(unix)]
+fn permissions(target: &Path) -> fs::Permissions {
+    use std::os::unix::fs::PermissionsExt;
+    fs::metadata(target).map_or_else(|_| fs::Permissions::from_mode(0o666), |m| m.permissions())
+}
+
+fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => parent,
+        _ => Path::new("."),
+    }
+}
+
+/// A path as one file: its folder resolved, so `a.png` and `./a.png` are the same.
+fn identity(target: &Path) -> PathBuf {
+    let folder = fs::canonicalize(folder_of(target)).unwrap_or_else(|_| folder_of(target).into());
+    folder.join(target.file_name().unwrap_or_default())
+}
+
+/// The display as PNG bytes, one image pixel per display pixel.
+pub fn png(display: &SimulatorDisplay<Rgb888>, out: &mut dyn Write) -> io::Result<()> {
     let image = display.to_rgb_output_image(&OutputSettingsBuilder::new().build());
-    write_atomically(path, |partial| {
-        image.save_png(partial).map_err(io::Error::other)
-    })
+    let buffer = image.as_image_buffer();
+    // The simulator's own settings, so the bytes are what `save_png` wrote.
+    PngEncoder::new_with_quality(out, CompressionType::Best, FilterType::default())
+        .write_image(
+            buffer.as_raw(),
+            buffer.width(),
+            buffer.height(),
+            image::ExtendedColorType::Rgb8,
+        )
+        .map_err(io::Error::other)
 }
 
-/// Saves text.
-pub fn save_text(path: &Path, text: &str) -> io::Result<()> {
-    write_atomically(path, |partial| {
-        let mut file = io::BufWriter::new(fs::File::create(partial)?);
-        file.write_all(text.as_bytes())?;
-        file.flush()
-    })
+/// Saves the display as a PNG file at `path`, all or nothing (the gallery's pictures).
+pub fn save_png(
+    display: &SimulatorDisplay<Rgb888>,
+    option: &'static str,
+    path: &Path,
+) -> Result<(), String> {
+    let mut plan = Plan::new();
+    plan.add(option, path, |out| png(display, out));
+    plan.write()
 }

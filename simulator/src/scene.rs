@@ -1,5 +1,6 @@
 //! Rendering an L-system into a simulator display, timed.
 
+use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
@@ -57,15 +58,14 @@ pub fn render_oriented(
 }
 
 /// Every drawn segment, `x0 y0 x1 y1` per line, in turtle units (start at the origin,
-/// heading +x, step 1, y up): the engine's fixed-point values printed exactly.
-pub fn segments_text(grammar: &Grammar<'_>, order: u32) -> Result<String, Error> {
-    let mut text = String::new();
-    Segments::new(grammar, order)?.try_for_each_segment(|s| {
-        use std::fmt::Write;
-        let _ = writeln!(text, "{} {} {} {}", s.start.x, s.start.y, s.end.x, s.end.y);
-        Ok(())
-    })?;
-    Ok(text)
+/// heading +x, step 1, y up): the engine's fixed-point values printed exactly. Streamed:
+/// a derivation of billions of segments needs no more memory than one.
+pub fn write_segments(grammar: &Grammar<'_>, order: u32, out: &mut dyn Write) -> io::Result<()> {
+    for segment in Segments::new(grammar, order).map_err(io::Error::other)? {
+        let s = segment.map_err(io::Error::other)?;
+        writeln!(out, "{} {} {} {}", s.start.x, s.start.y, s.end.x, s.end.y)?;
+    }
+    Ok(())
 }
 
 /// The one-line `--stats` report.

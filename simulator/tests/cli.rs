@@ -354,7 +354,6 @@ fn escape_time_errors() {
         ),
         (vec!["mandelbrot", "--size", "0x5"], "zero width or height"),
         (vec!["mandelbrot", "--center", "x,0"], "--center: `x`"),
-        (vec!["mandelbrot", "--palette", "neon"], "--palette: `neon`"),
         (vec!["julia", "--c", "3,3"], "view is out of range"),
     ];
     for (args, message) in cases {
@@ -401,4 +400,268 @@ fn help_version_and_completions() {
         "{}",
         stderr(&output)
     );
+}
+
+/// Every file in `dir` with its bytes, to compare a folder before and after a run.
+fn snapshot(dir: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| {
+            let path = e.unwrap().path();
+            let bytes = std::fs::read(&path).unwrap_or_default();
+            (path, bytes)
+        })
+        .collect();
+    files.sort();
+    files
+}
+
+#[test]
+fn a_failing_run_leaves_the_folder_exactly_as_it_was() {
+    let dir = scratch("untouched");
+    // A user's own files, among them one named like the old temporary file.
+    std::fs::write(dir.join("old.png"), b"not a png, but mine").unwrap();
+    std::fs::write(dir.join("old.png.partial"), b"mine too").unwrap();
+    std::fs::create_dir(dir.join("folder")).unwrap();
+    let before = snapshot(&dir);
+    let out = dir.join("old.png");
+    let out = out.to_str().unwrap();
+    let folder = dir.join("folder");
+    let folder = folder.to_str().unwrap();
+    let cases: Vec<Vec<&str>> = vec![
+        // The picture would be fine; the second output cannot be written.
+        vec![
+            "mandelbrot",
+            "--size",
+            "8x8",
+            "--out",
+            out,
+            "--dwell",
+            folder,
+        ],
+        vec![
+            "mandelbrot",
+            "--size",
+            "8x8",
+            "--out",
+            out,
+            "--dwell",
+            "/no/such/folder/d.txt",
+        ],
+        // Two outputs, one file.
+        vec!["mandelbrot", "--size", "8x8", "--out", out, "--dwell", out],
+        // The window is not built in.
+        vec!["mandelbrot", "--size", "8x8", "--out", out, "--window"],
+        // The picture fails.
+        vec![
+            "mandelbrot",
+            "--size",
+            "8x8",
+            "--out",
+            out,
+            "--max-iter",
+            "0",
+        ],
+    ];
+    for args in cases {
+        if args.contains(&"--window") && cfg!(feature = "window") {
+            continue;
+        }
+        let mut full = vec!["render"];
+        full.extend(args.iter().copied());
+        let output = run(&full);
+        assert_eq!(
+            output.status.code(),
+            Some(1),
+            "{full:?}: {}",
+            stderr(&output)
+        );
+        assert!(
+            stderr(&output).starts_with("tinyfractal: error: "),
+            "{}",
+            stderr(&output)
+        );
+        assert_eq!(snapshot(&dir), before, "{full:?} changed the folder");
+    }
+    let output = run(&[
+        "render",
+        "mandelbrot",
+        "--size",
+        "8x8",
+        "--out",
+        out,
+        "--dwell",
+        out,
+    ]);
+    assert!(
+        stderr(&output).contains("--out and --dwell both name"),
+        "{}",
+        stderr(&output)
+    );
+    // A successful run replaces the picture and leaves the user's other files alone.
+    let output = run(&["render", "mandelbrot", "--size", "8x8", "--out", out]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_ne!(std::fs::read(out).unwrap(), b"not a png, but mine");
+    assert_eq!(
+        std::fs::read(dir.join("old.png.partial")).unwrap(),
+        b"mine too"
+    );
+    assert_eq!(snapshot(&dir).len(), before.len());
+}
+
+#[cfg(unix)]
+#[test]
+fn special_files_and_symlinks_are_written_not_replaced() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = scratch("special");
+    // /dev/null stays a device.
+    let output = run(&[
+        "render",
+        "mandelbrot",
+        "--size",
+        "8x8",
+        "--out",
+        "/dev/null",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(std::fs::metadata("/dev/null")
+        .unwrap()
+        .file_type()
+        .is_char_device());
+    // A symlink stays a symlink; its target gets the picture.
+    let target = dir.join("real.png");
+    let link = dir.join("link.png");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let output = run(&[
+        "render",
+        "mandelbrot",
+        "--size",
+        "8x8",
+        "--out",
+        link.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::read(&target).unwrap().starts_with(b"\x89PNG"));
+}
+
+#[test]
+fn limits_are_typed_errors_not_aborts() {
+    let dir = scratch("limits");
+    for size in ["100000x100000", "65536x65536", "16385x1", "9000x9000"] {
+        let output = run(&["render", "mandelbrot", "--size", size]);
+        assert_eq!(output.status.code(), Some(2), "{size}");
+        assert!(
+            stderr(&output).contains("largest picture"),
+            "{}",
+            stderr(&output)
+        );
+    }
+    // An endless input is read only up to its limit.
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--file",
+        "/dev/zero",
+        "--name",
+        "x",
+        "--order",
+        "1",
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(stderr(&output).contains("16 MiB"), "{}", stderr(&output));
+    // An output folder that is a file: said once.
+    let file = dir.join("file");
+    std::fs::write(&file, b"").unwrap();
+    let output = run(&["gallery", "--out", file.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(
+        stderr(&output).matches("error").count(),
+        1,
+        "{}",
+        stderr(&output)
+    );
+    assert!(
+        stderr(&output).contains("not a folder"),
+        "{}",
+        stderr(&output)
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn paths_need_not_be_utf8() {
+    use std::os::unix::ffi::OsStrExt;
+    let dir = scratch("utf8");
+    let out = dir.join(std::ffi::OsStr::from_bytes(b"caf\xe9.png"));
+    let output = Command::new(env!("CARGO_BIN_EXE_tinyfractal"))
+        .args(["render", "mandelbrot", "--size", "8x8", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(out.exists());
+}
+
+#[test]
+fn segments_are_streamed() {
+    let dir = scratch("stream");
+    let txt = dir.join("koch.txt");
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--axiom",
+        "F--F--F",
+        "--rule",
+        "F=F+F--F+F",
+        "--angle",
+        "6",
+        "--order",
+        "7",
+        "--size",
+        "64x64",
+        "--out",
+        dir.join("k.png").to_str().unwrap(),
+        "--segments",
+        txt.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let lines = std::fs::read_to_string(&txt).unwrap().lines().count();
+    assert_eq!(lines, 3 * 4usize.pow(7));
+}
+
+#[test]
+fn every_usage_mistake_exits_2_and_names_the_accepted_values() {
+    for (args, expected) in [
+        (
+            vec!["render", "mandelbrot", "--palette", "neon"],
+            "classic, fire, gray, bands, two-color",
+        ),
+        (
+            vec!["render", "mandelbrot", "--algorithm", "slow"],
+            "exact, fast",
+        ),
+        (
+            vec!["render", "lsystem", "--dialect", "x", "--axiom", "F"],
+            "fractint, abop",
+        ),
+    ] {
+        let output = run(&args);
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert!(
+            stderr(&output).contains(expected),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+    }
+    for args in [
+        vec!["render", "lsystem", "--help"],
+        vec!["list", "--help"],
+        vec!["gallery", "--help"],
+    ] {
+        assert_eq!(run(&args).status.code(), Some(0), "{args:?}");
+    }
 }
