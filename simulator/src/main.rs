@@ -8,7 +8,10 @@ mod output;
 mod palette;
 mod scene;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics_simulator::SimulatorDisplay;
 use std::process::ExitCode;
 
 use args::{Command, EscapeArgs, LSystemArgs, Source};
@@ -122,27 +125,21 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     // Everything is computed and every output checked before anything is written.
     let rendered = scene::render(&grammar, arguments.order, common.width(), common.height())
         .map_err(failed)?;
-    let out = common
-        .out
-        .clone()
-        .unwrap_or_else(|| Path::new(&format!("{}.png", name.to_lowercase())).to_path_buf());
-    let mut plan = output::Plan::new();
-    plan.add("--out", &out, |w| output::png(&rendered.display, w));
-    if let Some(path) = &arguments.segments {
-        let (grammar, order) = (&grammar, arguments.order);
-        // The same walk as the fit's sizing pass, which succeeded: it cannot fail here.
-        plan.add("--segments", path, move |w| {
-            scene::write_segments(grammar, order, w)
-        });
-    }
-    plan.write()?;
-    if common.stats {
-        println!("{}", scene::stats_line(&rendered));
-    }
-    if common.window {
-        show(&rendered.display)?;
-    }
-    Ok(())
+    let (grammar, order) = (&grammar, arguments.order);
+    deliver(
+        common,
+        &name.to_lowercase(),
+        &rendered.display,
+        |plan| {
+            if let Some(path) = &arguments.segments {
+                // The same walk as the fit's sizing pass, which succeeded: it cannot fail.
+                plan.add("--segments", path, move |w| {
+                    scene::write_segments(grammar, order, w)
+                });
+            }
+        },
+        &scene::stats_line(&rendered),
+    )
 }
 
 fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
@@ -168,23 +165,43 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
     window_available(common.window)?;
     // Everything is computed and every output checked before anything is written.
     let rendered = escape_scene::render(&request).map_err(|e| format!("{name}: {e}"))?;
+    deliver(
+        common,
+        name,
+        &rendered.display,
+        |plan| {
+            if let Some(path) = &arguments.dwell {
+                plan.add("--dwell", path, |w| {
+                    escape_scene::write_dwells(&rendered, w)
+                });
+            }
+        },
+        &escape_scene::stats_line(&rendered),
+    )
+}
+
+/// The end of every render: the picture to `--out` (default `NAME.png`) and the outputs
+/// `more` adds, all or none; then the `--stats` line and the window.
+fn deliver<'a>(
+    common: &args::Common,
+    name: &str,
+    display: &'a SimulatorDisplay<Rgb888>,
+    more: impl FnOnce(&mut output::Plan<'a>),
+    stats: &str,
+) -> Result<(), String> {
     let out = common
         .out
         .clone()
-        .unwrap_or_else(|| Path::new(&format!("{name}.png")).to_path_buf());
+        .unwrap_or_else(|| PathBuf::from(format!("{name}.png")));
     let mut plan = output::Plan::new();
-    plan.add("--out", &out, |w| output::png(&rendered.display, w));
-    if let Some(path) = &arguments.dwell {
-        plan.add("--dwell", path, |w| {
-            escape_scene::write_dwells(&rendered, w)
-        });
-    }
+    plan.add("--out", &out, |w| output::png(display, w));
+    more(&mut plan);
     plan.write()?;
     if common.stats {
-        println!("{}", escape_scene::stats_line(&rendered));
+        println!("{stats}");
     }
     if common.window {
-        show(&rendered.display)?;
+        show(display)?;
     }
     Ok(())
 }
@@ -198,9 +215,7 @@ fn window_available(asked: bool) -> Result<(), String> {
 }
 
 #[cfg(feature = "window")]
-fn show(
-    display: &embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>,
-) -> Result<(), String> {
+fn show(display: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
     use embedded_graphics_simulator::{OutputSettingsBuilder, Window};
     Window::new(
         "tinyfractal",
@@ -211,8 +226,6 @@ fn show(
 }
 
 #[cfg(not(feature = "window"))]
-fn show(
-    _: &embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>,
-) -> Result<(), String> {
+fn show(_: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
     Err("built without a window: run with `cargo run --release --features window -- ...` (needs SDL2)".into())
 }

@@ -34,12 +34,11 @@ pub struct Plan<'a> {
     outputs: Vec<Output<'a>>,
 }
 
-/// Where an output's bytes go.
-enum Destination {
-    /// A regular file (or none yet): through a temporary file renamed over `target`.
-    Replace { target: PathBuf },
-    /// Anything else (a FIFO, a device): written in place.
-    InPlace { target: PathBuf },
+/// Where an output's bytes go: through a temporary file renamed over `target` (a regular
+/// file, or none yet), or, for anything else (a FIFO, a device), into `target` in place.
+struct Destination {
+    target: PathBuf,
+    in_place: bool,
 }
 
 impl<'a> Plan<'a> {
@@ -61,73 +60,82 @@ impl<'a> Plan<'a> {
         });
     }
 
-    /// Checks every output, without writing anything: see the module docs.
-    pub fn check(&self) -> Result<(), String> {
-        let mut seen: Vec<(&'static str, PathBuf)> = Vec::new();
+    /// Where each output goes, checked without writing anything: see the module docs.
+    fn resolve(&self) -> Result<Vec<Destination>, String> {
+        let mut destinations: Vec<Destination> = Vec::new();
+        let mut identities: Vec<(&'static str, PathBuf)> = Vec::new();
         for output in &self.outputs {
             let destination = destination(output.option, &output.path)?;
-            let target = match &destination {
-                Destination::Replace { target } | Destination::InPlace { target } => target,
-            };
-            let identity = identity(target);
-            if let Some((other, _)) = seen.iter().find(|(_, seen)| *seen == identity) {
+            let identity = identity(&destination.target);
+            if let Some((other, _)) = identities.iter().find(|(_, seen)| *seen == identity) {
                 return Err(format!(
                     "{other} and {} both name {}: give each output its own file",
                     output.option,
                     output.path.display()
                 ));
             }
-            seen.push((output.option, identity));
+            identities.push((output.option, identity));
+            destinations.push(destination);
         }
-        Ok(())
+        Ok(destinations)
     }
 
     /// Writes every output, or none: see the module docs.
     pub fn write(self) -> Result<(), String> {
-        self.check()?;
+        let destinations = self.resolve()?;
         let mut staged = Vec::new();
         let mut in_place = Vec::new();
-        for output in self.outputs {
-            let failed = |e: io::Error| format!("cannot write {}: {e}", output.path.display());
-            match destination(output.option, &output.path)? {
-                Destination::Replace { target } => {
-                    let folder = folder_of(&target);
-                    let name = target.file_name().unwrap_or_default().to_string_lossy();
-                    let prefix = format!(".{name}.");
-                    let mut builder = tempfile::Builder::new();
-                    builder.prefix(&prefix).suffix(".tmp");
-                    #[cfg(unix)]
-                    builder.permissions(permissions(&target));
-                    let mut temporary = builder.tempfile_in(folder).map_err(failed)?;
-                    let mut writer = BufWriter::new(temporary.as_file_mut());
-                    (output.produce)(&mut writer)
-                        .and_then(|()| writer.flush())
-                        .map_err(failed)?;
-                    drop(writer);
-                    staged.push((temporary, target, output.path));
-                }
-                Destination::InPlace { target } => in_place.push((output, target)),
+        for (
+            output,
+            Destination {
+                target,
+                in_place: direct,
+            },
+        ) in self.outputs.into_iter().zip(destinations)
+        {
+            if direct {
+                in_place.push((output, target));
+                continue;
             }
+            let name = target.file_name().unwrap_or_default().to_string_lossy();
+            let prefix = format!(".{name}.");
+            let mut builder = tempfile::Builder::new();
+            builder.prefix(&prefix).suffix(".tmp");
+            #[cfg(unix)]
+            builder.permissions(permissions(&target));
+            let mut temporary = builder
+                .tempfile_in(folder_of(&target))
+                .map_err(|e| cannot_write(&output.path, &e))?;
+            stream(output.produce, temporary.as_file_mut(), &output.path)?;
+            staged.push((temporary, target, output.path));
         }
         // Every temporary file is complete: now the outputs that cannot be staged.
         for (output, target) in in_place {
-            let failed = |e: io::Error| format!("cannot write {}: {e}", output.path.display());
             let file = fs::OpenOptions::new()
                 .write(true)
                 .open(&target)
-                .map_err(failed)?;
-            let mut writer = BufWriter::new(file);
-            (output.produce)(&mut writer)
-                .and_then(|()| writer.flush())
-                .map_err(failed)?;
+                .map_err(|e| cannot_write(&output.path, &e))?;
+            stream(output.produce, file, &output.path)?;
         }
         for (temporary, target, path) in staged {
             temporary
                 .persist(&target)
-                .map_err(|e| format!("cannot write {}: {}", path.display(), e.error))?;
+                .map_err(|e| cannot_write(&path, &e.error))?;
         }
         Ok(())
     }
+}
+
+/// Produces an output's bytes into `file`, buffered.
+fn stream(produce: Producer<'_>, file: impl Write, path: &Path) -> Result<(), String> {
+    let mut writer = BufWriter::new(file);
+    produce(&mut writer)
+        .and_then(|()| writer.flush())
+        .map_err(|e| cannot_write(path, &e))
+}
+
+fn cannot_write(path: &Path, error: &io::Error) -> String {
+    format!("cannot write {}: {error}", path.display())
 }
 
 /// Where `path`'s bytes go, or why they cannot.
@@ -145,12 +153,21 @@ fn destination(option: &str, path: &Path) -> Result<Destination, String> {
             "{option} {}: is a folder, not a file",
             path.display()
         )),
-        Ok(meta) if meta.is_file() => Ok(Destination::Replace { target }),
-        Ok(_) => Ok(Destination::InPlace { target }),
+        Ok(meta) if meta.is_file() => Ok(Destination {
+            target,
+            in_place: false,
+        }),
+        Ok(_) => Ok(Destination {
+            target,
+            in_place: true,
+        }),
         Err(error) if error.kind() == io::ErrorKind::NotFound => {
             let folder = folder_of(&target);
             match fs::metadata(folder) {
-                Ok(meta) if meta.is_dir() => Ok(Destination::Replace { target }),
+                Ok(meta) if meta.is_dir() => Ok(Destination {
+                    target,
+                    in_place: false,
+                }),
                 Ok(_) => Err(format!(
                     "{option} {}: {} is not a folder",
                     path.display(),
