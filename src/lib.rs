@@ -112,7 +112,7 @@ mod render;
 
 pub use error::{DrawError, Error, FitError, Location, ReadError, ViewError, WalkError};
 pub use escape::drawing::{EscapeTime, Painter};
-pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, TILE};
+pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
 pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
 pub use lsystem::alphabet::Dialect;
 pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};

@@ -35,9 +35,32 @@ pub enum Algorithm {
     /// Every pixel computed (the cardioid/bulb test and exact periodicity never change a
     /// dwell).
     Exact,
-    /// Mariani–Silver subdivision, mirror symmetry and periodicity within 1/16 of a pixel.
+    /// Mariani–Silver subdivision, mirror symmetry and periodicity within 1/16 of a pixel,
+    /// at most [`MAX_FAST_TOLERANCE`]. The repeat test agrees with the exact orbit (tested over random
+    /// views); subdivision can fill a rectangle whose border is one dwell over a detail
+    /// smaller than a pixel (26 of 9 million pixels in random small views).
     #[default]
     Fast,
+}
+
+/// Largest periodicity tolerance of a fast render, 2⁻²² in Q60 bits.
+///
+/// A tolerance of 1/16 of a pixel alone grows with the pixel: on a 1×1 view it was 0.2,
+/// and orbits that escape later were called inside. Over 30,000 random small views, a cap
+/// of 2⁻¹⁸ still changed a dwell, 2⁻²⁰ changed none; 2⁻²² leaves a margin of four. It
+/// costs 22 % more iterations on the full view at 320×240 (interior orbits must converge
+/// further) and nothing on zooms, whose 1/16 pixel is already smaller.
+pub const MAX_FAST_TOLERANCE: i64 = 1 << 38;
+
+/// The periodicity tolerance of a fast render with pixel spacing `spacing` (Q60 bits):
+/// 1/16 of a pixel, at most [`MAX_FAST_TOLERANCE`].
+pub(crate) const fn fast_tolerance(spacing: i64) -> i64 {
+    let sixteenth = spacing >> 4;
+    if sixteenth < MAX_FAST_TOLERANCE {
+        sixteenth
+    } else {
+        MAX_FAST_TOLERANCE
+    }
 }
 
 /// What a render did.
@@ -102,7 +125,7 @@ impl Render {
     pub fn new(view: View, algorithm: Algorithm) -> Self {
         let periodicity = match algorithm {
             Algorithm::Exact => Periodicity::Exact,
-            Algorithm::Fast => Periodicity::Within(view.spacing >> 4),
+            Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
         };
         Self {
             kernel: Kernel::new(&view, periodicity),

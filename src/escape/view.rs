@@ -167,8 +167,9 @@ impl View {
         if spacing < 1 << 6 {
             return Err(Error::View(ViewError::ZoomTooDeep));
         }
-        // ceil(log2(1/d)) for d in Q60 bits, and ceil(log2(max)).
-        let zoom_bits = 60 - (63 - spacing.leading_zeros());
+        // ceil(log2(1/d)) for d in Q60 bits (0 for pixels 2 or more wide), and
+        // ceil(log2(max)).
+        let zoom_bits = 60u32.saturating_sub(63 - spacing.leading_zeros());
         let iteration_bits = 32 - max_iterations.saturating_sub(1).leading_zeros();
         let needed = match fractal {
             Fractal::Mandelbrot => zoom_bits + iteration_bits + 12,
