@@ -415,59 +415,158 @@ fn exact_julia_renders_turn_half_round_about_the_origin() {
 }
 
 #[test]
-fn bad_views_are_typed_errors() {
+fn bad_views_are_typed_errors_naming_the_failed_condition() {
     let c = (Coord::parse("-0.75").unwrap(), Coord::default());
     let w = Coord::parse("3.5").unwrap();
     let size = Size::new(32, 24);
     let m = Fractal::Mandelbrot;
-    assert_eq!(
-        View::new(m, c, Coord::default(), size, 100),
-        Err(Error::View(ViewError::ViewOutOfRange))
-    );
-    assert_eq!(
-        View::new(m, c, Coord::parse("-1").unwrap(), size, 100),
-        Err(Error::View(ViewError::ViewOutOfRange))
-    );
+    let failed =
+        |fractal, centre, width, size, max| match View::new(fractal, centre, width, size, max) {
+            Err(Error::View(e)) => (e, e.to_string()),
+            other => panic!("expected a view error, got {other:?}"),
+        };
+    for width in ["0", "-1"] {
+        let width = Coord::parse(width).unwrap();
+        let (error, message) = failed(m, c, width, size, 100);
+        assert_eq!(error, ViewError::WidthNotPositive { width });
+        assert!(
+            message.contains("width") && message.contains("not positive"),
+            "{message}"
+        );
+    }
     assert_eq!(
         View::new(m, c, w, Size::new(0, 5), 100),
         Err(Error::Fit(FitError::ZeroSizeTarget))
     );
-    assert_eq!(
-        View::new(m, c, w, size, 0),
-        Err(Error::View(ViewError::IterationsOutOfRange {
-            value: 0,
-            max: 65_535
-        }))
+    for value in [0, 1_000_000] {
+        assert_eq!(
+            View::new(m, c, w, size, value),
+            Err(Error::View(ViewError::IterationsOutOfRange {
+                value,
+                max: 65_535
+            }))
+        );
+    }
+    // Centre -0.75, width 7.9: the left edge's pixel centres reach -0.75 - 3.95 + 7.9/64.
+    let (error, message) = failed(m, c, Coord::parse("7.9").unwrap(), size, 100);
+    let ViewError::BeyondLimit { reach, limit } = error else {
+        panic!("{error:?}")
+    };
+    let expected_reach = 0.75 + 3.95 - 7.9 / 64.0;
+    assert!((reach.to_f64() - expected_reach).abs() < 1e-12, "{reach}");
+    assert_eq!(limit, Coord::parse("3.5").unwrap());
+    assert!(
+        message.contains("4.57656") && message.contains("±3.5"),
+        "{message}"
+    );
+    // A centre at 7 on 1 pixel reaches 7: still the reach, not a wrap.
+    let (error, _) = failed(
+        m,
+        (Coord::parse("7").unwrap(), Coord::default()),
+        w,
+        Size::new(1, 1),
+        10,
     );
     assert_eq!(
-        View::new(m, c, w, size, 1_000_000),
-        Err(Error::View(ViewError::IterationsOutOfRange {
-            value: 1_000_000,
-            max: 65_535
-        }))
+        error,
+        ViewError::BeyondLimit {
+            reach: Coord::parse("7").unwrap(),
+            limit
+        }
     );
+
+    // 2^-60 wide on 320 pixels: the spacing rounds to 0, below the finest 2^-54.
+    let (error, message) = failed(m, c, Coord::from_bits(1), Size::new(320, 240), 100);
     assert_eq!(
-        View::new(m, c, Coord::parse("7.9").unwrap(), size, 100),
-        Err(Error::View(ViewError::ViewOutOfRange))
+        error,
+        ViewError::ZoomTooDeep {
+            spacing: Coord::from_bits(0),
+            finest: Coord::from_bits(64)
+        }
     );
-    assert_eq!(
-        View::new(m, c, Coord::from_bits(1), Size::new(320, 240), 100),
-        Err(Error::View(ViewError::ZoomTooDeep))
+    assert!(
+        message.contains("5.55112e-17") && message.contains("deepest tier"),
+        "{message}"
     );
+    // 10^-14 on 320 pixels: a spacing of 36·2^-60 = 3.1225e-17 (Q60 bits, rounded).
+    let (error, message) = failed(
+        m,
+        c,
+        Coord::parse("0.00000000000001").unwrap(),
+        Size::new(320, 240),
+        100,
+    );
+    assert!(matches!(error, ViewError::ZoomTooDeep { .. }), "{error:?}");
+    assert!(message.contains("3.1225e-17"), "{message}");
+
     let far = Fractal::Julia {
         re: Coord::parse("1.5").unwrap(),
         im: Coord::parse("1.5").unwrap(),
     };
+    let (error, message) = failed(far, c, w, size, 100);
     assert_eq!(
-        View::new(far, c, w, size, 100),
-        Err(Error::View(ViewError::ViewOutOfRange))
+        error,
+        ViewError::JuliaParameterTooFar {
+            re: Coord::parse("1.5").unwrap(),
+            im: Coord::parse("1.5").unwrap()
+        }
+    );
+    assert!(
+        message.contains("(1.5, 1.5)") && message.contains("more than 2"),
+        "{message}"
     );
     assert_eq!(Coord::parse("8"), None);
     assert_eq!(Coord::parse("1e-3"), None);
     assert_eq!(Coord::from_f64(f64::NAN), None);
-    assert!(Error::View(ViewError::ZoomTooDeep)
-        .to_string()
-        .contains("deepest tier"));
+}
+
+/// A forced tier whose unit is larger than the pixel spacing cannot tell pixels apart; the
+/// view says so (the CLI warns), and names the tier the rule would choose.
+#[test]
+fn a_forced_tier_too_coarse_for_the_pixels_is_reported() {
+    let view = |width: &str| {
+        View::new(
+            Fractal::Mandelbrot,
+            // c = i, a Misiurewicz point: detail at every scale.
+            (Coord::default(), Coord::parse("1").unwrap()),
+            Coord::parse(width).unwrap(),
+            Size::new(64, 48),
+            1000,
+        )
+        .unwrap()
+    };
+    // Units: narrow 2^-12, medium 2^-24, standard 2^-28; spacings width/64.
+    let cases = [
+        ("3.5", Tier::Narrow, true),
+        ("0.0001", Tier::Narrow, false),
+        ("0.0001", Tier::Medium, true),
+        ("0.000000005", Tier::Medium, false),
+        ("0.000000005", Tier::Standard, false),
+        ("0.000001", Tier::Standard, true),
+        ("0.000000005", Tier::Deep, true),
+    ];
+    for (width, tier, resolves) in cases {
+        let automatic = view(width);
+        assert!(
+            automatic.resolves_pixels(),
+            "{width}: the automatic tier resolves"
+        );
+        let forced = automatic.with_tier(tier);
+        assert_eq!(forced.resolves_pixels(), resolves, "{width} {tier:?}");
+        assert_eq!(forced.automatic_tier(), automatic.tier());
+        // Independent check: a tier that cannot tell pixels apart gives the picture fewer
+        // distinct dwells than the automatic one (flat or in blocks).
+        if !resolves {
+            let distinct = |view: View| {
+                let mut values = render(view, Algorithm::Exact).0.values;
+                values.sort_unstable();
+                values.dedup();
+                values.len()
+            };
+            let (coarse, fine) = (distinct(forced), distinct(automatic));
+            assert!(coarse * 2 < fine, "{width} {tier:?}: {coarse} vs {fine}");
+        }
+    }
 }
 
 #[test]

@@ -101,17 +101,45 @@ pub fn write_dwells(rendered: &Rendered, out: &mut dyn Write) -> io::Result<()> 
     Ok(())
 }
 
-/// The one-line `--stats` report.
+/// The one-line `--stats` report; with `warning=tier_cannot_resolve automatic_tier=NAME`
+/// at the end when a forced tier cannot tell the pixels apart.
 pub fn stats_line(rendered: &Rendered) -> String {
     let s = rendered.stats;
+    let view = rendered.view;
+    let warning = if view.resolves_pixels() {
+        String::new()
+    } else {
+        format!(
+            " warning=tier_cannot_resolve automatic_tier={}",
+            view.automatic_tier().name()
+        )
+    };
     format!(
-        "iterations={} pixels={} draw_calls={} tier={} elapsed_ms={:.3}",
+        "iterations={} pixels={} draw_calls={} tier={} elapsed_ms={:.3}{warning}",
         s.iterations,
         s.pixels,
         s.draw_calls,
         s.tier.name(),
         rendered.elapsed.as_secs_f64() * 1e3
     )
+}
+
+/// The warning for a forced tier whose unit is larger than the pixel spacing (the render
+/// still runs: it is what was asked for, and shows why it is flat).
+pub fn tier_warning(view: &View) -> Option<String> {
+    if view.resolves_pixels() {
+        return None;
+    }
+    let tier = view.tier();
+    let unit = Coord::from_bits(1 << (Coord::FRAC_BITS - tier.precision_bits()));
+    Some(format!(
+        "--precision {} cannot tell this view's pixels apart (pixel spacing {} is below its \
+         unit {unit}): the picture comes out flat or in blocks; the automatic tier for this \
+         view is {} (leave out --precision)",
+        tier.name(),
+        view.spacing(),
+        view.automatic_tier().name()
+    ))
 }
 
 /// The palettes by name.

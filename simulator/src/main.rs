@@ -165,6 +165,9 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
     window_available(common.window)?;
     // Everything is computed and every output checked before anything is written.
     let rendered = escape_scene::render(&request).map_err(|e| format!("{name}: {e}"))?;
+    if let Some(message) = escape_scene::tier_warning(&rendered.view) {
+        warn(&message);
+    }
     deliver(
         common,
         name,
@@ -178,6 +181,11 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
         },
         &escape_scene::stats_line(&rendered),
     )
+}
+
+/// Says something the user should know on stderr; the run goes on.
+fn warn(message: &str) {
+    eprintln!("tinyfractal: warning: {message}");
 }
 
 /// The end of every render: the picture to `--out` (default `NAME.png`) and the outputs

@@ -342,7 +342,14 @@ fn escape_time_errors() {
     let dir = scratch("escape-errors");
     let out = dir.join("never.png");
     let cases: Vec<(Vec<&str>, &str)> = vec![
-        (vec!["mandelbrot", "--width", "0"], "view is out of range"),
+        (
+            vec!["mandelbrot", "--width", "0"],
+            "the width 0 is not positive",
+        ),
+        (
+            vec!["mandelbrot", "--width", "7.9"],
+            "reaches 4.68766 from 0 on an axis, beyond ±3.5",
+        ),
         (vec!["mandelbrot", "--max-iter", "0"], "max-iter 0"),
         (
             vec!["mandelbrot", "--max-iter", "100000"],
@@ -350,11 +357,14 @@ fn escape_time_errors() {
         ),
         (
             vec!["mandelbrot", "--width", "0.00000000000001"],
-            "too deep",
+            "pixel spacing of 3.1225e-17",
         ),
         (vec!["mandelbrot", "--size", "0x5"], "zero width or height"),
         (vec!["mandelbrot", "--center", "x,0"], "--center: `x`"),
-        (vec!["julia", "--c", "3,3"], "view is out of range"),
+        (
+            vec!["julia", "--c", "3,3"],
+            "the Julia parameter (3, 3) is more than 2 from 0",
+        ),
     ];
     for (args, message) in cases {
         let mut full = vec!["render"];
@@ -365,6 +375,60 @@ fn escape_time_errors() {
         let err = stderr(&output);
         assert!(err.contains(message), "{full:?}: {err}");
         assert!(!out.exists(), "{full:?} left a file");
+    }
+}
+
+/// A forced tier that cannot tell the pixels apart still draws (it was asked for), but
+/// says so on stderr and in `--stats`, naming the automatic tier; one that can, says nothing.
+#[test]
+fn a_forced_tier_too_coarse_for_the_view_warns() {
+    let dir = scratch("coarse-tier");
+    let out = dir.join("flat.png");
+    let render = |width: &str, tier: &str| {
+        run(&[
+            "render",
+            "mandelbrot",
+            "--width",
+            width,
+            "--precision",
+            tier,
+            "--size",
+            "64x48",
+            "--max-iter",
+            "200",
+            "--stats",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    for (width, tier, automatic) in [
+        ("0.0001", "narrow", "deep"),
+        ("0.000000005", "medium", "deep"),
+        ("0.000000005", "standard", "deep"),
+    ] {
+        let output = render(width, tier);
+        assert!(output.status.success(), "{}", stderr(&output));
+        let err = stderr(&output);
+        assert!(
+            err.contains(&format!(
+                "tinyfractal: warning: --precision {tier} cannot tell"
+            )) && err.contains(&format!("the automatic tier for this view is {automatic}")),
+            "{err}"
+        );
+        let stats = stdout(&output);
+        assert!(
+            stats.contains(&format!("tier={tier} elapsed_ms="))
+                && stats.trim_end().ends_with(&format!(
+                    "warning=tier_cannot_resolve automatic_tier={automatic}"
+                )),
+            "{stats}"
+        );
+    }
+    for (width, tier) in [("3.5", "narrow"), ("0.0001", "medium")] {
+        let output = render(width, tier);
+        assert!(output.status.success(), "{}", stderr(&output));
+        assert_eq!(stderr(&output), "");
+        assert!(!stdout(&output).contains("warning"));
     }
 }
 

@@ -2,7 +2,10 @@
 
 use core::fmt;
 
-/// The view cannot be computed.
+use crate::math::Coord;
+
+/// The view cannot be computed. Each variant names the one condition that failed and the
+/// value that failed it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum ViewError {
@@ -13,10 +16,34 @@ pub enum ViewError {
         /// The highest cap ([`MAX_ITERATIONS`](crate::MAX_ITERATIONS)).
         max: u32,
     },
-    /// The view has no positive width, reaches beyond ±3.5, or a Julia parameter has |k| > 2.
-    ViewOutOfRange,
-    /// The pixel spacing is finer than the deepest tier resolves (2⁻⁵⁴).
-    ZoomTooDeep,
+    /// The width is zero or negative.
+    WidthNotPositive {
+        /// The width given.
+        width: Coord,
+    },
+    /// A pixel's point is beyond ±`limit` on an axis (orbits of such points could overflow
+    /// a tier before they escape).
+    BeyondLimit {
+        /// The farthest coordinate of the view from 0, at most [`Coord`]'s range (just
+        /// under 8; farther is shown as that).
+        reach: Coord,
+        /// The limit, 3.5.
+        limit: Coord,
+    },
+    /// The Julia parameter is more than 2 from 0 (its set is then dust).
+    JuliaParameterTooFar {
+        /// The parameter's real part.
+        re: Coord,
+        /// The parameter's imaginary part.
+        im: Coord,
+    },
+    /// The pixel spacing (width ÷ pixels across) is finer than the deepest tier resolves.
+    ZoomTooDeep {
+        /// The spacing.
+        spacing: Coord,
+        /// The finest spacing supported, 2⁻⁵⁴.
+        finest: Coord,
+    },
 }
 
 impl fmt::Display for ViewError {
@@ -25,14 +52,23 @@ impl fmt::Display for ViewError {
             Self::IterationsOutOfRange { value, max } => {
                 write!(f, "max-iter {value} is out of range: use 1 to {max}")
             }
-            Self::ViewOutOfRange => write!(
+            Self::WidthNotPositive { width } => {
+                write!(f, "the width {width} is not positive: give a width above 0")
+            }
+            Self::BeyondLimit { reach, limit } => write!(
                 f,
-                "the view is out of range: the width must be positive, every point within \
-                 ±3.5, and a Julia parameter at most 2 from 0"
+                "the view reaches {reach} from 0 on an axis, beyond ±{limit}: every point \
+                 must be within ±{limit} (narrow the view or move its centre)"
             ),
-            Self::ZoomTooDeep => write!(
+            Self::JuliaParameterTooFar { re, im } => write!(
                 f,
-                "the zoom is too deep: pixel spacing below 2^-54 is finer than the deepest tier"
+                "the Julia parameter ({re}, {im}) is more than 2 from 0: its set is dust; \
+                 give a parameter with re² + im² ≤ 4"
+            ),
+            Self::ZoomTooDeep { spacing, finest } => write!(
+                f,
+                "the zoom is too deep: a pixel spacing of {spacing} (width ÷ pixels across) \
+                 is finer than the deepest tier's {finest}; widen the view or use fewer pixels"
             ),
         }
     }

@@ -12,7 +12,10 @@ pub const MAX_ITERATIONS: u32 = u16::MAX as u32;
 
 /// Largest |re| or |im| of any pixel of a view. Keeping points within 3.5 bounds every
 /// orbit value below 8 before it escapes, so no tier can overflow.
-const COORDINATE_LIMIT: i128 = 7 << 59; // 3.5 in Q60
+const COORDINATE_LIMIT: i64 = 7 << 59; // 3.5 in Q60
+
+/// The finest pixel spacing, 2⁻⁵⁴ in Q60 bits: the deep tier keeps 6 bits below it.
+const FINEST_SPACING: i64 = 1 << 6;
 
 /// Which escape-time fractal.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -101,6 +104,8 @@ pub struct View {
     pub(crate) size: Size,
     pub(crate) max_iterations: u32,
     pub(crate) tier: Tier,
+    /// The tier the automatic rule chose.
+    automatic: Tier,
 }
 
 impl View {
@@ -122,17 +127,19 @@ impl View {
             }));
         }
         if width.to_bits() <= 0 {
-            return Err(Error::View(ViewError::ViewOutOfRange));
+            return Err(Error::View(ViewError::WidthNotPositive { width }));
         }
+        let limit = Coord::from_bits(COORDINATE_LIMIT);
+        // At most the width, which fits: a Coord is below 8.
         let spacing = i64::try_from(div_round(
             i128::from(width.to_bits()),
             i128::from(size.width),
         ))
-        .map_err(|_| Error::View(ViewError::ViewOutOfRange))?;
+        .unwrap_or(i64::MAX);
         if let Fractal::Julia { re, im } = fractal {
             let modulus = i128::from(re.to_bits()).pow(2) + i128::from(im.to_bits()).pow(2);
             if modulus > 4 << 120 {
-                return Err(Error::View(ViewError::ViewOutOfRange));
+                return Err(Error::View(ViewError::JuliaParameterTooFar { re, im }));
             }
         }
         let tier = Self::tier_for(fractal, spacing, max_iterations)?;
@@ -143,14 +150,21 @@ impl View {
             size,
             max_iterations,
             tier,
+            automatic: tier,
         };
         // Every pixel within ±3.5: the corners are the extremes.
         let (w, h) = (i64::from(size.width), i64::from(size.height));
-        for (i, j) in [(0, 0), (w - 1, h - 1)] {
-            let (re, im) = view.point(i, j);
-            if re.abs() > COORDINATE_LIMIT || im.abs() > COORDINATE_LIMIT {
-                return Err(Error::View(ViewError::ViewOutOfRange));
-            }
+        let reach = [(0, 0), (w - 1, h - 1)]
+            .into_iter()
+            .map(|(i, j)| {
+                let (re, im) = view.point(i, j);
+                re.abs().max(im.abs())
+            })
+            .max()
+            .unwrap_or(0);
+        if reach > i128::from(limit.to_bits()) {
+            let reach = Coord::from_bits(i64::try_from(reach).unwrap_or(i64::MAX));
+            return Err(Error::View(ViewError::BeyondLimit { reach, limit }));
         }
         Ok(view)
     }
@@ -164,8 +178,11 @@ impl View {
     /// ≥ 99.5 % of dwells identical. Views needing more than 60 bits use the deep tier while
     /// the spacing itself is resolvable (≥ 2⁻⁵⁴).
     fn tier_for(fractal: Fractal, spacing: i64, max_iterations: u32) -> Result<Tier, Error> {
-        if spacing < 1 << 6 {
-            return Err(Error::View(ViewError::ZoomTooDeep));
+        if spacing < FINEST_SPACING {
+            return Err(Error::View(ViewError::ZoomTooDeep {
+                spacing: Coord::from_bits(spacing),
+                finest: Coord::from_bits(FINEST_SPACING),
+            }));
         }
         // ceil(log2(1/d)) for d in Q60 bits (0 for pixels 2 or more wide), and
         // ceil(log2(max)).
@@ -192,6 +209,20 @@ impl View {
     /// The tier this view computes in.
     pub const fn tier(&self) -> Tier {
         self.tier
+    }
+
+    /// The tier the automatic rule picks for this view (the one [`View::new`] chose).
+    pub const fn automatic_tier(&self) -> Tier {
+        self.automatic
+    }
+
+    /// Whether the tier tells neighbouring pixels apart: its unit is no larger than the
+    /// pixel spacing. If not, as for `Narrow` at a width of 10⁻⁴ or `Standard` at 5·10⁻⁹
+    /// on 320 pixels, whole blocks of pixels share one point and the picture comes out in
+    /// blocks or flat. The automatic tier always does; a forced one may not, and the CLI
+    /// warns then.
+    pub const fn resolves_pixels(&self) -> bool {
+        self.spacing >= 1 << (Coord::FRAC_BITS - self.tier.precision_bits())
     }
 
     /// The size in pixels.

@@ -1,6 +1,8 @@
 //! `Coord`: a point's coordinate on the complex plane, Q4.60.
 
-use super::decimal::parse_fixed;
+use core::fmt;
+
+use super::decimal::{parse_fixed, write_fixed};
 
 /// A coordinate of the complex plane: signed fixed point with 60 fractional bits (Q4.60),
 /// enough for the deepest tier. Built from decimal text exactly rounded, or checked `f64`.
@@ -22,10 +24,13 @@ impl Coord {
     }
 
     /// Parses decimal text such as `-0.743643887037151`; `None` if malformed or |value| ≥ 8.
-    pub fn parse(text: &str) -> Option<Self> {
-        parse_fixed(text, Self::FRAC_BITS)
-            .and_then(|bits| i64::try_from(bits).ok())
-            .map(Self)
+    pub const fn parse(text: &str) -> Option<Self> {
+        match parse_fixed(text, Self::FRAC_BITS) {
+            Some(bits) if bits >= i64::MIN as i128 && bits <= i64::MAX as i128 => {
+                Some(Self(bits as i64))
+            }
+            _ => None,
+        }
     }
 
     /// The nearest coordinate to an `f64` (set-up only); `None` if not finite or |value| ≥ 8.
@@ -38,5 +43,12 @@ impl Coord {
     /// The value as `f64` (for tests and host output).
     pub fn to_f64(self) -> f64 {
         self.0 as f64 / (1u64 << 60) as f64
+    }
+}
+
+/// Six significant digits, scientific below 10⁻⁴: for messages, not for reading back.
+impl fmt::Display for Coord {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write_fixed(f, i128::from(self.0), Self::FRAC_BITS)
     }
 }

@@ -7,34 +7,132 @@ use super::wide::div_round;
 /// `frac_bits` fractional bits (at most 62), rounded to nearest. Digits beyond the 19th
 /// after the point are checked but cannot matter at 62 bits or fewer (10⁻¹⁹ < 2⁻⁶²·2),
 /// so they are not used. `None` if malformed or beyond ±2⁶³.
-pub(crate) fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
-    let (negative, unsigned) = match text.as_bytes().first() {
-        Some(b'-') => (true, text.get(1..)?),
-        Some(b'+') => (false, text.get(1..)?),
-        _ => (false, text),
+pub(crate) const fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
+    // Written with index loops so that it is a `const fn`: constant tables of scenes are
+    // checked when they are compiled.
+    let bytes = text.as_bytes();
+    let (negative, mut at) = match bytes.first() {
+        Some(b'-') => (true, 1),
+        Some(b'+') => (false, 1),
+        _ => (false, 0),
     };
-    let (int_part, frac_part) = unsigned.split_once('.').unwrap_or((unsigned, ""));
-    let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
-    if (int_part.is_empty() && frac_part.is_empty())
-        || !all_digits(int_part)
-        || !all_digits(frac_part)
-    {
-        return None;
-    }
     let mut int: i128 = 0;
-    for digit in int_part.bytes() {
-        int = int.checked_mul(10)?.checked_add(i128::from(digit - b'0'))?;
-        if int > i128::from(i64::MAX) {
+    let mut int_digits = 0;
+    while let Some(&byte) = byte_at(bytes, at) {
+        if !byte.is_ascii_digit() {
+            break;
+        }
+        int = int * 10 + (byte - b'0') as i128;
+        if int > i64::MAX as i128 {
             return None;
         }
+        int_digits += 1;
+        at += 1;
     }
     let mut numerator: i128 = 0;
     let mut denominator: i128 = 1;
-    for digit in frac_part.bytes().take(19) {
-        numerator = numerator * 10 + i128::from(digit - b'0');
-        denominator *= 10;
+    let mut frac_digits = 0;
+    if let Some(b'.') = byte_at(bytes, at) {
+        at += 1;
+        while let Some(&byte) = byte_at(bytes, at) {
+            if !byte.is_ascii_digit() {
+                return None;
+            }
+            if frac_digits < 19 {
+                numerator = numerator * 10 + (byte - b'0') as i128;
+                denominator *= 10;
+            }
+            frac_digits += 1;
+            at += 1;
+        }
     }
-    let magnitude =
-        (int << frac_bits).checked_add(div_round(numerator << frac_bits, denominator))?;
+    if at != bytes.len() || int_digits + frac_digits == 0 {
+        return None;
+    }
+    let magnitude = (int << frac_bits) + div_round(numerator << frac_bits, denominator);
     Some(if negative { -magnitude } else { magnitude })
+}
+
+/// The byte at `index`, if any (`<[u8]>::get` is not const).
+const fn byte_at(bytes: &[u8], index: usize) -> Option<&u8> {
+    if index < bytes.len() {
+        bytes.split_at(index).1.first()
+    } else {
+        None
+    }
+}
+
+/// Significant digits [`write_fixed`] shows.
+const SHOWN_DIGITS: u32 = 6;
+
+/// Writes fixed point `bits` with `frac_bits` fractional bits (at most 62) in decimal, for
+/// messages: six significant digits rounded half up, trailing zeros dropped, and
+/// scientific notation below 10⁻⁴ (`1.38778e-17`). Integer parts of a million or more are
+/// written whole.
+pub(crate) fn write_fixed(
+    f: &mut core::fmt::Formatter<'_>,
+    bits: i128,
+    frac_bits: u32,
+) -> core::fmt::Result {
+    let sign = if bits < 0 { "-" } else { "" };
+    let magnitude = bits.unsigned_abs();
+    let mask = (1u128 << frac_bits) - 1;
+    let (integer, mut fraction) = (magnitude >> frac_bits, magnitude & mask);
+    if integer >= 10u128.pow(SHOWN_DIGITS) || magnitude == 0 {
+        return write!(f, "{sign}{integer}");
+    }
+    // `count` significant digits in `mantissa`; the first is worth 10^exponent.
+    let mut mantissa = u64::try_from(integer).unwrap_or(0);
+    let mut count = if integer > 0 { integer.ilog10() + 1 } else { 0 };
+    let mut exponent = count as i32 - 1;
+    while count <= SHOWN_DIGITS && fraction != 0 {
+        fraction *= 10;
+        let digit = u64::try_from(fraction >> frac_bits).unwrap_or(0);
+        fraction &= mask;
+        if count == 0 && digit == 0 {
+            exponent -= 1;
+        } else {
+            mantissa = mantissa * 10 + digit;
+            count += 1;
+        }
+    }
+    if count > SHOWN_DIGITS {
+        mantissa = (mantissa + 5) / 10;
+        count -= 1;
+        if mantissa == 10u64.pow(count) {
+            mantissa /= 10;
+            exponent += 1;
+        }
+    }
+    while count > 1 && mantissa % 10 == 0 {
+        mantissa /= 10;
+        count -= 1;
+    }
+    let split = |digits_before: u32| {
+        let unit = 10u64.pow(count.saturating_sub(digits_before));
+        (
+            mantissa / unit,
+            mantissa % unit,
+            count.saturating_sub(digits_before) as usize,
+        )
+    };
+    if exponent < -4 {
+        let (first, rest, width) = split(1);
+        return if width == 0 {
+            write!(f, "{sign}{first}e{exponent}")
+        } else {
+            write!(f, "{sign}{first}.{rest:0width$}e{exponent}")
+        };
+    }
+    if exponent < 0 {
+        let zeros = exponent.unsigned_abs() as usize - 1;
+        let width = count as usize;
+        return write!(f, "{sign}0.{:0<zeros$}{mantissa:0width$}", "");
+    }
+    let whole = exponent.unsigned_abs() + 1;
+    if count <= whole {
+        return write!(f, "{sign}{}", mantissa * 10u64.pow(whole - count));
+    }
+    let (int, rest, width) = split(whole);
+    write!(f, "{sign}{int}.{rest:0width$}")
 }

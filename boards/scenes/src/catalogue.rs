@@ -3,7 +3,6 @@
 //! every firmware and the measuring firmware read.
 
 use embedded_graphics::geometry::Size;
-use tinyfractal::ViewError;
 use tinyfractal::{Angle, Coord, Dialect, Error, Fractal, Grammar, Orientation, Real, View};
 
 /// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
@@ -48,7 +47,9 @@ pub enum Scene {
         /// Which way the first heading points.
         orientation: Orientation,
     },
-    /// A Mandelbrot (`julia: None`) or Julia view, as decimal text.
+    /// A Mandelbrot (`julia: None`) or Julia view, as decimal text: the catalogue's
+    /// entries are checked when compiled; in a scene built by hand, a number that does not
+    /// parse counts as 0.
     Escape {
         /// The Julia parameter, or `None` for the Mandelbrot set.
         julia: Option<(&'static str, &'static str)>,
@@ -82,24 +83,34 @@ impl Scene {
         else {
             return None;
         };
-        let coord = |text: &str| Coord::parse(text).ok_or(Error::View(ViewError::ViewOutOfRange));
-        Some((|| {
-            let fractal = match julia {
-                None => Fractal::Mandelbrot,
-                Some((re, im)) => Fractal::Julia {
-                    re: coord(re)?,
-                    im: coord(im)?,
-                },
-            };
-            View::new(
-                fractal,
-                (coord(centre.0)?, coord(centre.1)?),
-                coord(width)?,
-                size,
-                max_iterations,
-            )
-        })())
+        Some(escape_view(julia, centre, width, max_iterations, size))
     }
+}
+
+/// The view of an escape-time scene's numbers at `size`.
+pub(crate) fn escape_view(
+    julia: Option<(&str, &str)>,
+    centre: (&str, &str),
+    width: &str,
+    max_iterations: u32,
+    size: Size,
+) -> Result<View, Error> {
+    // Every catalogue number parses: `escape()` asserts it when the tables compile.
+    let coord = |text: &str| Coord::parse(text).unwrap_or_default();
+    let fractal = match julia {
+        None => Fractal::Mandelbrot,
+        Some((re, im)) => Fractal::Julia {
+            re: coord(re),
+            im: coord(im),
+        },
+    };
+    View::new(
+        fractal,
+        (coord(centre.0), coord(centre.1)),
+        coord(width),
+        size,
+        max_iterations,
+    )
 }
 
 /// A scene as a front end shows it: its name, its default size in pixels, and the host
@@ -213,6 +224,12 @@ const fn escape(
     size: Size,
     palette: &'static str,
 ) -> Entry {
+    // Checked when the tables are compiled: `Scene::view` can rely on it.
+    if let Some((re, im)) = julia {
+        assert!(Coord::parse(re).is_some() && Coord::parse(im).is_some());
+    }
+    assert!(Coord::parse(centre.0).is_some() && Coord::parse(centre.1).is_some());
+    assert!(Coord::parse(width).is_some());
     Entry {
         name,
         scene: Scene::Escape {

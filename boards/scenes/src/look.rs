@@ -4,10 +4,10 @@ use embedded_graphics::{
     pixelcolor::{Gray4, GrayColor, Rgb565, Rgb888},
     prelude::*,
 };
+use tinyfractal::FitError;
 use tinyfractal::{DrawError, Error, EscapeTime, Gradient, LSystem};
-use tinyfractal::{FitError, ViewError};
 
-use crate::catalogue::Scene;
+use crate::catalogue::{escape_view, Scene};
 
 /// The colours a display draws the scenes in.
 #[derive(Debug, Clone, Copy)]
@@ -86,10 +86,14 @@ impl Scene {
                 let stats = drawing.draw(target).map_err(DrawError::Target)?;
                 Ok(Work::Segments(stats.segments))
             }
-            Scene::Escape { .. } => {
-                let view = self
-                    .view(target.bounding_box().size)
-                    .unwrap_or(Err(Error::View(ViewError::ViewOutOfRange)))?;
+            Scene::Escape {
+                julia,
+                centre,
+                width,
+                max_iterations,
+            } => {
+                let size = target.bounding_box().size;
+                let view = escape_view(julia, centre, width, max_iterations, size)?;
                 let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
                     .ok_or(Error::Fit(FitError::EmptyPalette))?;
                 let stats = EscapeTime::new(view, palette)
