@@ -225,6 +225,31 @@ fn zero_size_targets_and_empty_palettes() {
             Err(Error::Fit(FitError::ZeroSizeTarget))
         );
     }
+    // "F+F" with 90° turns: one unit across and one up. One pixel across an axis it
+    // extends along is too small; an N×1 target holds a horizontal line (the turtle starts
+    // heading right).
+    for size in [Size::new(1, 10), Size::new(10, 1), Size::new(1, 1)] {
+        let fitted = system.fit(Rectangle::new(Point::zero(), size), &[BinaryColor::On]);
+        let error = Error::Fit(FitError::TargetTooSmall {
+            width: size.width,
+            height: size.height,
+        });
+        assert_eq!(fitted.map(|_| ()), Err(error));
+        assert!(error.to_string().contains("too small"), "{error}");
+    }
+    let level = Grammar::new(Dialect::Abop, "FF", Angle::Divisions(4)).unwrap();
+    let mut display = MockDisplay::<BinaryColor>::new();
+    LSystem::new(&level, 0)
+        .fit(
+            Rectangle::new(Point::zero(), Size::new(10, 1)),
+            &[BinaryColor::On],
+        )
+        .unwrap()
+        .draw(&mut display)
+        .unwrap();
+    // A line across (the fit keeps a margin where the target can afford it).
+    let drawn = display.affected_area().size;
+    assert!(drawn.height == 1 && drawn.width >= 6, "{drawn:?}");
     let no_colours: &[BinaryColor] = &[];
     assert_eq!(
         system

@@ -12,14 +12,27 @@ pub enum FitError {
     ZeroSizeTarget,
     /// The palette has no colours.
     EmptyPalette,
+    /// The target is one pixel across an axis the picture extends along: the picture
+    /// would shrink to a point.
+    TargetTooSmall {
+        /// The target's width in pixels.
+        width: u32,
+        /// The target's height in pixels.
+        height: u32,
+    },
 }
 
 impl fmt::Display for FitError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
+        match *self {
             Self::EmptyDrawing => write!(f, "the system draws nothing at this order"),
             Self::ZeroSizeTarget => write!(f, "the draw target has zero width or height"),
             Self::EmptyPalette => write!(f, "the palette is empty: give at least one colour"),
+            Self::TargetTooSmall { width, height } => write!(
+                f,
+                "the target ({width}x{height} pixels) is too small for this picture: it needs \
+                 at least 2 pixels along each axis the picture extends along"
+            ),
         }
     }
 }

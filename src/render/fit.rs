@@ -4,7 +4,7 @@
 
 use embedded_graphics::primitives::Rectangle;
 
-use crate::error::{Error, WalkError};
+use crate::error::{Error, FitError, WalkError};
 use crate::math::Real;
 
 /// Pixels left free around a fitted picture by default.
@@ -93,6 +93,13 @@ pub(crate) fn fit(
     .flatten()
     .min()
     .unwrap_or(Real::ONE);
+    let flat = |size: u32, extent: Real| size <= 1 && extent.to_bits() > 0;
+    if flat(area.size.width, extent_x) || flat(area.size.height, extent_y) {
+        return Err(Error::Fit(FitError::TargetTooSmall {
+            width: area.size.width,
+            height: area.size.height,
+        }));
+    }
     // The origin lands where the scaled picture's middle falls on the area's middle.
     let placed_middle = |low: Real, high: Real, start: i32, size: u32| -> Option<Real> {
         let middle = Real::from_bits(low.checked_add(high)?.to_bits() / 2);
