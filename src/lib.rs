@@ -110,13 +110,15 @@ mod lsystem;
 mod math;
 mod render;
 
-pub use error::{DrawError, Error, FitError, Location, ReadError, ViewError, WalkError};
+pub use error::{
+    DrawError, Error, FitError, Location, ReadError, ReadWarning, ViewError, WalkError,
+};
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
 pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
 pub use lsystem::alphabet::Dialect;
 pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
-pub use lsystem::fractint::{Entries, Entry, LFile};
+pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
 pub use lsystem::grammar::{Grammar, MAX_BODY_LEN, MAX_RULES};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};

@@ -9,7 +9,7 @@ use tinyfractal::{
     Angle, Dialect, DrawError, Error, Grammar, LFile, LSystem, Location, Placement, Real, Segments,
     MAX_RULES,
 };
-use tinyfractal::{FitError, ReadError, WalkError};
+use tinyfractal::{FitError, ReadError, ReadWarning, WalkError};
 
 fn fixture(name: &str) -> String {
     let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
@@ -88,6 +88,110 @@ fn file_errors_carry_their_place() {
     for (file, expected) in cases {
         assert_eq!(read_bad(file), expected, "{file}");
     }
+}
+
+/// A missing `}` before a `NAME {` line: the broken entry says so with both lines, and the
+/// next entry is still listed and drawn as written.
+#[test]
+fn a_missing_brace_before_the_next_entry_is_reported_with_both_lines() {
+    let text = fixture("error-missing-brace.l");
+    let file = LFile::new(&text);
+    let names: Vec<&str> = file.entries().map(|e| e.unwrap().name()).collect();
+    assert_eq!(names, ["Bad", "Next"]);
+    let error = read_bad("error-missing-brace.l");
+    assert_eq!(
+        error,
+        Error::Read(ReadError::EntryRunsIntoNext { entry: 1, next: 6 })
+    );
+    let message = error.to_string();
+    assert!(
+        message.contains("line 1")
+            && message.contains("line 6")
+            && message.contains("is a `}` missing"),
+        "{message}"
+    );
+    let next = file.find("next").unwrap();
+    let clean = Grammar::new(Dialect::Fractint, "F--F--F", Angle::Divisions(6))
+        .unwrap()
+        .with_rule('F', "F+F--F+F")
+        .unwrap();
+    assert!(Segments::new(&next, 3)
+        .unwrap()
+        .eq(Segments::new(&clean, 3).unwrap()));
+}
+
+/// What Fractint accepted draws as Fractint drew it (the last `Axiom` and `Angle` count;
+/// `U {` rewrites `U` to `{`; a lone `{` is a rule for `{`), and each is a warning.
+#[test]
+fn what_fractint_accepted_draws_the_same_with_warnings() {
+    let text = fixture("warn-missing-brace.l");
+    let entry = LFile::new(&text).entry("bad").unwrap();
+    let warnings: Vec<ReadWarning> = entry.warnings().collect();
+    assert_eq!(
+        warnings,
+        [
+            ReadWarning::BraceRule {
+                symbol: 'U',
+                line: 7
+            },
+            ReadWarning::RepeatedAngle { first: 3, again: 8 },
+            ReadWarning::RepeatedAxiom { first: 4, again: 9 },
+            ReadWarning::LoneBrace { line: 10 },
+        ]
+    );
+    for warning in &warnings {
+        let message = warning.to_string();
+        assert!(message.contains("is a `}` missing"), "{message}");
+    }
+    assert!(
+        warnings[1].to_string().contains("line 8") && warnings[1].to_string().contains("line 3")
+    );
+    // Fractint's reading, written out: the last angle and axiom, and the one F rule.
+    let fractint = Grammar::new(Dialect::Fractint, "F--F--F", Angle::Divisions(6))
+        .unwrap()
+        .with_rule('F', "F+F-F")
+        .unwrap();
+    let read = entry.grammar().unwrap();
+    for order in 0..4 {
+        assert!(
+            Segments::new(&read, order)
+                .unwrap()
+                .eq(Segments::new(&fractint, order).unwrap()),
+            "order {order}"
+        );
+    }
+    // A clean entry has no warnings.
+    let small = fixture("small.l");
+    for entry in LFile::new(&small).entries() {
+        assert_eq!(entry.unwrap().warnings().count(), 0);
+    }
+}
+
+/// Files that are not `.l` files, or numbers that are not divisions, are named as such.
+#[test]
+fn wrong_kinds_of_input_are_recognised() {
+    assert_eq!(
+        read_bad("error-angle-fraction.l"),
+        Error::Read(ReadError::AngleNotWhole { at: at(2, 9) })
+    );
+    assert!(read_bad("error-angle-fraction.l")
+        .to_string()
+        .contains("not a whole number"));
+    assert_eq!(
+        read_bad("error-ifs.l"),
+        Error::Read(ReadError::RowOfNumbers { line: 2 })
+    );
+    assert!(read_bad("error-ifs.l").to_string().contains("IFS file"));
+    assert_eq!(
+        read_bad("error-old-mac.l"),
+        Error::Read(ReadError::OldMacLineEndings)
+    );
+    let text = fixture("error-old-mac.l");
+    let first = LFile::new(&text).entries().next().unwrap();
+    assert_eq!(first, Err(Error::Read(ReadError::OldMacLineEndings)));
+    // The same file with CRLF line endings reads.
+    let crlf = text.replace('\r', "\r\n");
+    assert!(LFile::new(&crlf).find("bad").is_ok());
 }
 
 #[test]

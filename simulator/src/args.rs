@@ -5,6 +5,7 @@
 use std::ffi::OsString;
 use std::path::PathBuf;
 
+use clap::builder::NonEmptyStringValueParser;
 use clap::{error::ErrorKind, Args, CommandFactory, Parser, Subcommand, ValueEnum};
 
 /// What the user asked for.
@@ -149,7 +150,7 @@ struct LSystemOptions {
     )]
     file: Option<PathBuf>,
     /// The system in the file (case-insensitive)
-    #[arg(long, value_name = "NAME", requires = "file")]
+    #[arg(long, value_name = "NAME", requires = "file", value_parser = NonEmptyStringValueParser::new())]
     name: Option<String>,
     /// An inline system's axiom
     #[arg(long, value_name = "STR", allow_hyphen_values = true)]

@@ -93,9 +93,12 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     let (grammar, name) = match &arguments.source {
         Source::File { path, name } => {
             file_text = read_text(path)?;
-            let grammar = LFile::new(&file_text)
-                .find(name)
-                .map_err(|e| format!("{name} in {}: {e}", path.display()))?;
+            let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
+            let entry = LFile::new(&file_text).entry(name).map_err(failed)?;
+            let grammar = entry.grammar().map_err(failed)?;
+            for warning in entry.warnings() {
+                warn(&format!("{name} in {}: {warning}", path.display()));
+            }
             (grammar, name.clone())
         }
         Source::Inline {

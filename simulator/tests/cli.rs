@@ -712,6 +712,12 @@ fn every_usage_mistake_exits_2_and_names_the_accepted_values() {
             vec!["render", "lsystem", "--dialect", "x", "--axiom", "F"],
             "fractint, abop",
         ),
+        (
+            vec![
+                "render", "lsystem", "--file", "x.l", "--name", "", "--order", "1",
+            ],
+            "a value is required for '--name <NAME>'",
+        ),
     ] {
         let output = run(&args);
         assert_eq!(output.status.code(), Some(2), "{args:?}");
@@ -728,4 +734,72 @@ fn every_usage_mistake_exits_2_and_names_the_accepted_values() {
     ] {
         assert_eq!(run(&args).status.code(), Some(0), "{args:?}");
     }
+}
+
+fn data(name: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../tests/data")
+        .join(name)
+        .display()
+        .to_string()
+}
+
+/// The reader's warnings reach stderr and the picture is drawn (exit 0); its errors about
+/// a missing `}`, a fraction for an angle, an IFS file or old Mac line endings exit 1
+/// naming the cause, with no file left.
+#[test]
+fn reader_warnings_and_errors_reach_the_user() {
+    let dir = scratch("reader");
+    let out = dir.join("bad.png");
+    let render = |file: &str, name: &str| {
+        run(&[
+            "render",
+            "lsystem",
+            "--file",
+            &data(file),
+            "--name",
+            name,
+            "--order",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let output = render("warn-missing-brace.l", "bad");
+    assert!(output.status.success(), "{}", stderr(&output));
+    let err = stderr(&output);
+    assert_eq!(
+        err.matches("tinyfractal: warning: bad in ").count(),
+        4,
+        "{err}"
+    );
+    assert!(
+        err.contains("line 9 is a second `Axiom` (the first is on line 4)"),
+        "{err}"
+    );
+    assert!(out.exists());
+    std::fs::remove_file(&out).unwrap();
+    for (file, name, expected) in [
+        (
+            "error-missing-brace.l",
+            "bad",
+            "on line 1 runs into another entry's `NAME {` on line 6",
+        ),
+        ("error-angle-fraction.l", "bad", "not a whole number"),
+        ("error-ifs.l", "bad", "IFS file"),
+        ("error-old-mac.l", "bad", "carriage return alone"),
+    ] {
+        let output = render(file, name);
+        assert_eq!(output.status.code(), Some(1), "{file}");
+        assert!(
+            stderr(&output).contains(expected),
+            "{file}: {}",
+            stderr(&output)
+        );
+        assert!(!out.exists(), "{file} left a file");
+    }
+    // The entry after the missing `}` is listed and draws.
+    let listed = run(&["list", &data("error-missing-brace.l")]);
+    assert_eq!(stdout(&listed), "Bad\nNext\n");
+    assert!(render("error-missing-brace.l", "next").status.success());
 }

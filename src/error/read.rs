@@ -90,6 +90,87 @@ pub enum ReadError {
     },
     /// No system of that name is in the file.
     UnknownSystem,
+    /// A `.l` entry reaches a line that opens another entry (`NAME {`) before its `}`.
+    EntryRunsIntoNext {
+        /// The line the entry starts on.
+        entry: u32,
+        /// The line of the next entry's `NAME {`.
+        next: u32,
+    },
+    /// `Angle` is given a fraction; it counts divisions of a full turn.
+    AngleNotWhole {
+        /// Where the number is.
+        at: Location,
+    },
+    /// A `.l` entry line is a row of numbers, as in a Fractint IFS file (`.ifs`).
+    RowOfNumbers {
+        /// The line.
+        line: u32,
+    },
+    /// The file ends its lines with a lone carriage return (old Mac OS), so it reads as one
+    /// line.
+    OldMacLineEndings,
+}
+
+/// Something a `.l` entry does that Fractint accepted, and that is drawn as Fractint drew
+/// it, but that is most often a mistake, such as a missing `}` (see
+/// [`Entry::warnings`](crate::Entry::warnings)).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum ReadWarning {
+    /// A second `Axiom` line: the last one counts.
+    RepeatedAxiom {
+        /// The line of the first.
+        first: u32,
+        /// The line of this one.
+        again: u32,
+    },
+    /// A second `Angle` line: the last one counts.
+    RepeatedAngle {
+        /// The line of the first.
+        first: u32,
+        /// The line of this one.
+        again: u32,
+    },
+    /// A `U {` line: a rule rewriting `U` to `{` (which draws nothing).
+    BraceRule {
+        /// The symbol.
+        symbol: char,
+        /// The line.
+        line: u32,
+    },
+    /// A lone `{` line: a rule for the symbol `{`, rewriting it to nothing.
+    LoneBrace {
+        /// The line.
+        line: u32,
+    },
+}
+
+impl fmt::Display for ReadWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Self::RepeatedAxiom { first, again } => write!(
+                f,
+                "line {again} is a second `Axiom` (the first is on line {first}): the last \
+                 one counts, as in Fractint; is a `}}` missing before line {again}?"
+            ),
+            Self::RepeatedAngle { first, again } => write!(
+                f,
+                "line {again} is a second `Angle` (the first is on line {first}): the last \
+                 one counts, as in Fractint; is a `}}` missing before line {again}?"
+            ),
+            Self::BraceRule { symbol, line } => write!(
+                f,
+                "line {line} reads as a rule rewriting `{symbol}` to `{{`, as in Fractint; \
+                 is a `}}` missing before it?"
+            ),
+            Self::LoneBrace { line } => write!(
+                f,
+                "line {line}, a lone `{{`, reads as a rule for the symbol `{{`, as in \
+                 Fractint; is a `}}` missing before it?"
+            ),
+        }
+    }
 }
 
 impl fmt::Display for ReadError {
@@ -150,6 +231,26 @@ impl fmt::Display for ReadError {
                 at.line
             ),
             Self::UnknownSystem => write!(f, "no system of that name in the file"),
+            Self::EntryRunsIntoNext { entry, next } => write!(
+                f,
+                "the entry on line {entry} runs into another entry's `NAME {{` on line \
+                 {next}: is a `}}` missing before line {next}?"
+            ),
+            Self::AngleNotWhole { at } => write!(
+                f,
+                "the angle at {at} is not a whole number: `Angle n` counts divisions of a \
+                 full turn (`Angle 6` turns by 60°)"
+            ),
+            Self::RowOfNumbers { line } => write!(
+                f,
+                "line {line} is a row of numbers, as in a Fractint IFS file (`.ifs`), not an \
+                 L-system file (`.l`)"
+            ),
+            Self::OldMacLineEndings => write!(
+                f,
+                "the file ends its lines with a carriage return alone (old Mac OS), so it \
+                 reads as one line: convert it to LF or CRLF line endings"
+            ),
         }
     }
 }

@@ -4,11 +4,17 @@
 //! named `comment`, or with no name, are not systems; text after `;` is a comment; the line
 //! holding `{` is otherwise skipped; lines are case-insensitive and split on spaces, tabs
 //! and `=`; `Angle n`, `Axiom s` and `c=s` lines (repeated rule lines append); `}` ends it.
+//!
+//! Where a `}` is missing, Fractint read on into the next entry. A `NAME {` line inside an
+//! entry ends it here, and the entry reports that its `}` seems missing (Fractint called the
+//! line a syntax error); the next entry is read as written. What Fractint accepted is drawn
+//! as it drew it, with a [`ReadWarning`] to show: a second `Axiom` or `Angle` (the last one
+//! counts), a `U {` line (a rule rewriting `U` to `{`), a lone `{` (a rule for `{`).
 
 use super::alphabet::Dialect;
 use super::grammar::Grammar;
-use crate::error::{Error, Location, ReadError};
-use crate::math::{Angle, MAX_ANGLE_DIVISIONS};
+use crate::error::{Error, Location, ReadError, ReadWarning};
+use crate::math::{Angle, Real, MAX_ANGLE_DIVISIONS};
 
 /// A `.l` file's text.
 #[derive(Debug, Clone, Copy)]
@@ -34,10 +40,16 @@ impl<'a> LFile<'a> {
 
     /// The grammar of the entry called `name` (case-insensitive).
     pub fn find(&self, name: &str) -> Result<Grammar<'a>, Error> {
+        self.entry(name)?.grammar()
+    }
+
+    /// The entry called `name` (case-insensitive), for its [`warnings`](Entry::warnings)
+    /// as well as its grammar.
+    pub fn entry(&self, name: &str) -> Result<Entry<'a>, Error> {
         for entry in self.entries() {
             let entry = entry?;
             if entry.name.eq_ignore_ascii_case(name) {
-                return entry.grammar();
+                return Ok(entry);
             }
         }
         Err(Error::Read(ReadError::UnknownSystem))
@@ -53,6 +65,8 @@ pub struct Entry<'a> {
     body: &'a str,
     /// The line the body starts on.
     body_line: u32,
+    /// The line of a `NAME {` that ended the body before any `}`.
+    interrupted_by: Option<u32>,
 }
 
 impl<'a> Entry<'a> {
@@ -73,6 +87,12 @@ impl<'a> Entry<'a> {
 
     /// Reads the entry into a grammar (Fractint dialect).
     pub fn grammar(&self) -> Result<Grammar<'a>, Error> {
+        if let Some(next) = self.interrupted_by {
+            return Err(Error::Read(ReadError::EntryRunsIntoNext {
+                entry: self.line,
+                next,
+            }));
+        }
         let mut axiom = None;
         let mut angle = None;
         for (line, words) in self.lines() {
@@ -89,6 +109,9 @@ impl<'a> Entry<'a> {
                 );
             } else if keyword.eq_ignore_ascii_case("angle") {
                 let (value, column) = words.next().ok_or(Error::Read(ReadError::MissingAngle))?;
+                if value.contains('.') && Real::parse_signed(value).is_some() {
+                    return Err(Error::Read(ReadError::AngleNotWhole { at: at(column) }));
+                }
                 let parsed = value.parse::<i64>().ok();
                 let out_of_range = Error::Read(ReadError::AngleOutOfRange {
                     value: parsed.unwrap_or(0),
@@ -101,7 +124,12 @@ impl<'a> Entry<'a> {
                     .ok_or(out_of_range)?;
                 angle = Some(Angle::Divisions(divisions));
             } else if keyword.len() != 1 {
-                return Err(Error::Read(ReadError::UnknownLine { at: at(keyword_at) }));
+                let error = if Real::parse_signed(keyword).is_some() {
+                    ReadError::RowOfNumbers { line }
+                } else {
+                    ReadError::UnknownLine { at: at(keyword_at) }
+                };
+                return Err(Error::Read(error));
             } else {
                 words.next();
             }
@@ -123,6 +151,17 @@ impl<'a> Entry<'a> {
             }
         }
         Ok(grammar)
+    }
+
+    /// What this entry does that Fractint accepted but that is probably a mistake (most
+    /// often a missing `}`): the entry draws as Fractint drew it, and a front end shows these.
+    pub fn warnings(&self) -> Warnings<'a> {
+        Warnings {
+            lines: self.body.split('\n'),
+            line: self.body_line,
+            first_axiom: None,
+            first_angle: None,
+        }
     }
 
     /// The body's lines, comments removed, as words with their 1-based columns.
@@ -171,6 +210,84 @@ impl<'a> Iterator for Words<'a> {
     }
 }
 
+/// The warnings of an [`Entry`], in line order.
+#[derive(Debug, Clone)]
+pub struct Warnings<'a> {
+    lines: core::str::Split<'a, char>,
+    /// The number of the next line.
+    line: u32,
+    first_axiom: Option<u32>,
+    first_angle: Option<u32>,
+}
+
+impl Iterator for Warnings<'_> {
+    type Item = ReadWarning;
+
+    fn next(&mut self) -> Option<ReadWarning> {
+        loop {
+            let text = self.lines.next()?;
+            let line = self.line;
+            self.line = self.line.saturating_add(1);
+            let mut words = Words {
+                text: text.split(';').next().unwrap_or_default(),
+                position: 0,
+            }
+            .map(|(word, _)| word);
+            let Some(first) = words.next() else {
+                continue;
+            };
+            let repeated = |seen: &mut Option<u32>| match *seen {
+                Some(first) => Some(first),
+                None => {
+                    *seen = Some(line);
+                    None
+                }
+            };
+            if first.eq_ignore_ascii_case("axiom") {
+                if let Some(first) = repeated(&mut self.first_axiom) {
+                    return Some(ReadWarning::RepeatedAxiom { first, again: line });
+                }
+            } else if first.eq_ignore_ascii_case("angle") {
+                if let Some(first) = repeated(&mut self.first_angle) {
+                    return Some(ReadWarning::RepeatedAngle { first, again: line });
+                }
+            } else if first == "{" {
+                return Some(ReadWarning::LoneBrace { line });
+            } else if let (Some(symbol), Some("{")) = (single_char(first), words.next()) {
+                return Some(ReadWarning::BraceRule { symbol, line });
+            }
+        }
+    }
+}
+
+/// Whether a line (comment removed) opens an entry: a name of two or more characters, not
+/// `Axiom` or `Angle` and without `=`, then `{` or `(`.
+fn is_entry_header(code: &str) -> bool {
+    let line = code.trim_start_matches([' ', '\t', '\r']);
+    let name_length = line.find([' ', '\t', '(', '{', '\r']).unwrap_or(line.len());
+    let (name, rest) = line.split_at_checked(name_length).unwrap_or((line, ""));
+    name.len() > 1
+        && !name.contains('=')
+        && !name.eq_ignore_ascii_case("axiom")
+        && !name.eq_ignore_ascii_case("angle")
+        && rest.trim_start_matches([' ', '\t']).starts_with(['{', '('])
+}
+
+/// Whether the text's first line ends with a lone carriage return (old Mac OS files), which
+/// would make the whole file one line.
+fn ends_lines_with_cr_only(text: &str) -> bool {
+    text.find(['\r', '\n']).is_some_and(|end| {
+        text.get(end..)
+            .is_some_and(|rest| rest.starts_with('\r') && !rest.starts_with("\r\n"))
+    })
+}
+
+/// The character of a one-character word.
+fn single_char(word: &str) -> Option<char> {
+    let mut chars = word.chars();
+    chars.next().filter(|_| chars.next().is_none())
+}
+
 /// Iterator over the entries of a [`LFile`].
 #[derive(Debug, Clone)]
 pub struct Entries<'a> {
@@ -217,6 +334,10 @@ impl<'a> Iterator for Entries<'a> {
     type Item = Result<Entry<'a>, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
+        if self.position == 0 && ends_lines_with_cr_only(self.text) {
+            self.position = self.text.len();
+            return Some(Err(Error::Read(ReadError::OldMacLineEndings)));
+        }
         loop {
             // Skip blank space and comments up to a name.
             while let Some(byte) = self.peek() {
@@ -259,14 +380,30 @@ impl<'a> Iterator for Entries<'a> {
             }
             let body_start = self.position;
             let body_line = self.line;
-            if !self.skip_past(b'}') {
-                self.position = self.text.len();
-                return Some(Err(unterminated));
-            }
-            let body = self
-                .text
-                .get(body_start..self.position.saturating_sub(1))
-                .unwrap_or_default();
+            let mut interrupted_by = None;
+            let body_end = loop {
+                let rest = self.text.get(self.position..).unwrap_or_default();
+                if rest.is_empty() {
+                    return Some(Err(unterminated));
+                }
+                let line_length = rest.find('\n').map_or(rest.len(), |end| end + 1);
+                let line_text = rest.get(..line_length).unwrap_or_default();
+                let code = line_text.split(';').next().unwrap_or_default();
+                if let Some(brace) = code.find('}') {
+                    let end = self.position + brace;
+                    self.position = end + 1;
+                    break end;
+                }
+                if is_entry_header(code) {
+                    interrupted_by = Some(self.line);
+                    break self.position;
+                }
+                self.position += line_length;
+                if line_text.ends_with('\n') {
+                    self.line += 1;
+                }
+            };
+            let body = self.text.get(body_start..body_end).unwrap_or_default();
             if name.is_empty() || name.eq_ignore_ascii_case("comment") {
                 continue;
             }
@@ -275,6 +412,7 @@ impl<'a> Iterator for Entries<'a> {
                 line,
                 body,
                 body_line,
+                interrupted_by,
             }));
         }
     }
