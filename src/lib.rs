@@ -64,7 +64,7 @@
 //! [`FitError`], [`ViewError`], all inside [`Error`].
 //!
 //! ## Memory
-//! Nothing is allocated. A [`Grammar`] is about 0.9 KiB on a 32-bit MCU; a walk
+//! Nothing is allocated. A [`Grammar`] is about 1.7 KiB (its rules compiled); a walk
 //! ([`Segments`]) is at most 0.8 KiB with the default capacities, whatever the order; an
 //! escape-time [`Render`] about 2.7 KiB at any size, plus 0.5 KiB of stack while it runs.
 //!
@@ -119,7 +119,7 @@ pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
 pub use lsystem::alphabet::Dialect;
 pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
 pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
-pub use lsystem::grammar::{Grammar, MAX_BODY_LEN, MAX_RULES};
+pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};

@@ -59,13 +59,6 @@ fn file_errors_carry_their_place() {
             }),
         ),
         (
-            "error-missing-number.l",
-            Error::Read(ReadError::MissingNumber {
-                symbol: '@',
-                at: at(4, 6),
-            }),
-        ),
-        (
             "error-unterminated.l",
             Error::Read(ReadError::UnterminatedEntry { at: at(1, 1) }),
         ),
@@ -88,6 +81,32 @@ fn file_errors_carry_their_place() {
     for (file, expected) in cases {
         assert_eq!(read_bad(file), expected, "{file}");
     }
+}
+
+/// Numeric commands without digits take 0, as in Fractint (they were refused).
+#[test]
+fn numeric_commands_without_digits_take_zero() {
+    let text = fixture("no-digits.l");
+    let file = LFile::new(&text);
+    let segments = |name: &str, order: u32| -> Vec<_> {
+        Segments::new(&file.find(name).unwrap(), order)
+            .unwrap()
+            .map(Result::unwrap)
+            .collect()
+    };
+    for order in 0..3 {
+        assert_eq!(
+            segments("NoDigits", order),
+            segments("ExplicitZeros", order)
+        );
+    }
+    // `@` alone: a step of 0, so the segments after it are points.
+    let steps = segments("ZeroStep", 0);
+    assert_eq!(steps.len(), 3);
+    assert_ne!(steps[0].start, steps[0].end);
+    assert!(steps[1..]
+        .iter()
+        .all(|s| s.start == s.end && s.start == steps[0].end));
 }
 
 /// A missing `}` before a `NAME {` line: the broken entry says so with both lines, and the

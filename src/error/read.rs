@@ -57,13 +57,6 @@ pub enum ReadError {
         /// Where the character is.
         at: Location,
     },
-    /// A command that takes a number (`\ / @ C < >`) has none.
-    MissingNumber {
-        /// The command.
-        symbol: char,
-        /// Where it is.
-        at: Location,
-    },
     /// A number is malformed or outside its allowed range.
     NumberOutOfRange {
         /// The command it belongs to.
@@ -71,11 +64,18 @@ pub enum ReadError {
         /// Where it is.
         at: Location,
     },
-    /// An axiom or rule is longer than the walker can index.
-    BodyTooLong {
-        /// The longest body, in bytes ([`MAX_BODY_LEN`](crate::MAX_BODY_LEN)).
+    /// The axiom and the rules hold more symbols than a grammar can.
+    TooManySymbols {
+        /// The capacity ([`MAX_SYMBOLS`](crate::MAX_SYMBOLS)).
         max: usize,
-        /// Where it starts.
+        /// The first symbol that did not fit.
+        at: Location,
+    },
+    /// More distinct numeric commands (`@0.5`, `\30`, `C12`, ...) than a grammar can hold.
+    TooManyNumericCommands {
+        /// The capacity ([`MAX_NUMERIC_COMMANDS`](crate::MAX_NUMERIC_COMMANDS)).
+        max: usize,
+        /// The first one that did not fit.
         at: Location,
     },
     /// A `.l` entry is opened with `{` but never closed with `}`.
@@ -209,19 +209,20 @@ impl fmt::Display for ReadError {
             Self::NonAsciiSymbol { at } => {
                 write!(f, "non-ASCII character at {at}: symbols must be ASCII")
             }
-            Self::MissingNumber { symbol, at } => {
-                write!(f, "`{symbol}` at {at} needs a number after it")
-            }
             Self::NumberOutOfRange { symbol, at } => write!(
                 f,
                 "the number after `{symbol}` at {at} is malformed or out of range"
             ),
-            Self::BodyTooLong { max, at } => {
-                write!(
-                    f,
-                    "the text at {at} is longer than {max} bytes: split the rule"
-                )
-            }
+            Self::TooManySymbols { max, at } => write!(
+                f,
+                "the system holds more than {max} symbols (axiom and rules together): the \
+                 symbol at {at} does not fit"
+            ),
+            Self::TooManyNumericCommands { max, at } => write!(
+                f,
+                "the system uses more than {max} different numeric commands (`@0.5`, `C12`, \
+                 ...): the one at {at} does not fit"
+            ),
             Self::UnterminatedEntry { at } => {
                 write!(f, "the entry at {at} has no closing `}}`")
             }

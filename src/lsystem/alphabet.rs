@@ -1,7 +1,12 @@
 //! What the symbols mean: scanning one token (a symbol and its number, if any) from a body,
 //! and decoding a token into a turtle [`Command`] for each [`Dialect`].
+//!
+//! As in Fractint, a numeric command written without digits (`\`, `/`, `C`, `<`, `>`,
+//! `@`) takes the number 0: no turn, colour 0, no change, and for `@` a step of 0 (what
+//! follows draws points).
 
 use crate::error::{Error, Location, ReadError};
+use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 
 /// Which rules of notation a system follows.
@@ -44,10 +49,10 @@ pub(crate) enum Command {
     Around,
     /// Swap the meanings of `+`/`-` and `\`/`/`.
     Reverse,
-    /// Turn the free heading counter-clockwise by the given degrees (Q32 bits).
-    FreeLeft(i64),
-    /// Turn the free heading clockwise by the given degrees (Q32 bits).
-    FreeRight(i64),
+    /// Turn the free heading counter-clockwise by the given angle.
+    FreeLeft(BinaryAngle),
+    /// Turn the free heading clockwise by the given angle.
+    FreeRight(BinaryAngle),
     /// Multiply the step.
     Scale(Real),
     /// Set the colour index.
@@ -83,7 +88,7 @@ impl Dialect {
     }
 
     #[inline]
-    fn takes_number(self, symbol: u8) -> bool {
+    pub(crate) fn takes_number(self, symbol: u8) -> bool {
         self == Self::Fractint && matches!(symbol, b'\\' | b'/' | b'@' | b'c' | b'<' | b'>')
     }
 
@@ -116,15 +121,29 @@ impl Dialect {
 
     /// What a token makes the turtle do. `extra_draw` is the set of extra drawing symbols
     /// (ABOP only). Errors carry the column of the token within its body (`at`).
-    #[inline]
     pub(crate) fn decode(
         self,
         token: Token<'_>,
         extra_draw: SymbolSet,
         at: Location,
     ) -> Result<Command, Error> {
-        let symbol = token.symbol;
-        let command = match self {
+        if !self.takes_number(token.symbol) {
+            return Ok(self.plain_command(token.symbol, extra_draw));
+        }
+        Ok(match token.symbol {
+            b'\\' => Command::FreeLeft(degrees(token, at)?),
+            b'/' => Command::FreeRight(degrees(token, at)?),
+            b'@' => Command::Scale(scale(token, at)?),
+            b'c' => Command::SetColor(color(token, at)?),
+            b'<' => Command::RaiseColor(color(token, at)?),
+            _ => Command::LowerColor(color(token, at)?),
+        })
+    }
+
+    /// What a symbol that takes no number makes the turtle do.
+    #[inline]
+    pub(crate) fn plain_command(self, symbol: u8, extra_draw: SymbolSet) -> Command {
+        match self {
             Self::Fractint => match symbol {
                 b'f' => Command::Draw,
                 b'g' => Command::Move,
@@ -136,12 +155,6 @@ impl Dialect {
                 b'!' => Command::Reverse,
                 b'[' => Command::Push,
                 b']' => Command::Pop,
-                b'\\' => Command::FreeLeft(degrees(token, at)?),
-                b'/' => Command::FreeRight(degrees(token, at)?),
-                b'@' => Command::Scale(scale(token, at)?),
-                b'c' => Command::SetColor(color(token, at)?),
-                b'<' => Command::RaiseColor(color(token, at)?),
-                b'>' => Command::LowerColor(color(token, at)?),
                 _ => Command::Nothing,
             },
             Self::Abop => match symbol {
@@ -155,16 +168,8 @@ impl Dialect {
                 _ if extra_draw.contains(symbol) => Command::Draw,
                 _ => Command::Nothing,
             },
-        };
-        Ok(command)
+        }
     }
-}
-
-fn missing(token: Token<'_>, at: Location) -> Error {
-    Error::Read(ReadError::MissingNumber {
-        symbol: char::from(token.symbol),
-        at,
-    })
 }
 
 fn out_of_range(token: Token<'_>, at: Location) -> Error {
@@ -174,9 +179,10 @@ fn out_of_range(token: Token<'_>, at: Location) -> Error {
     })
 }
 
+/// The number of a numeric command: 0 when it has no digits, as in Fractint.
 fn number(token: Token<'_>, digits: &[u8], at: Location) -> Result<Real, Error> {
     if digits.is_empty() {
-        return Err(missing(token, at));
+        return Ok(Real::ZERO);
     }
     core::str::from_utf8(digits)
         .ok()
@@ -184,9 +190,11 @@ fn number(token: Token<'_>, digits: &[u8], at: Location) -> Result<Real, Error> 
         .ok_or(out_of_range(token, at))
 }
 
-/// Degrees for `\` and `/`, as Q32 bits.
-fn degrees(token: Token<'_>, at: Location) -> Result<i64, Error> {
-    Ok(number(token, token.argument, at)?.to_bits())
+/// The turn of `\` and `/`, from degrees.
+fn degrees(token: Token<'_>, at: Location) -> Result<BinaryAngle, Error> {
+    Ok(BinaryAngle::from_degrees_bits(
+        number(token, token.argument, at)?.to_bits(),
+    ))
 }
 
 /// The factor of `@`: `[I][Q]number` in either order, inverse and square root.
@@ -209,6 +217,10 @@ fn scale(token: Token<'_>, at: Location) -> Result<Real, Error> {
         return Err(out_of_range(token, at));
     }
     let mut factor = number(token, digits, at)?;
+    if digits.is_empty() && inverse == 0 {
+        // Fractint's `@` without a number: a step of 0.
+        return Ok(Real::ZERO);
+    }
     if root == 1 {
         factor = factor.checked_sqrt().ok_or(out_of_range(token, at))?;
     }
@@ -226,11 +238,8 @@ fn scale(token: Token<'_>, at: Location) -> Result<Real, Error> {
     Ok(factor)
 }
 
-/// A colour index or increment, 0 to 255.
+/// A colour index or increment, 0 to 255 (0 without digits).
 fn color(token: Token<'_>, at: Location) -> Result<u8, Error> {
-    if token.argument.is_empty() {
-        return Err(missing(token, at));
-    }
     let mut value: u32 = 0;
     for &digit in token.argument {
         if !digit.is_ascii_digit() || value > 255 {
@@ -277,7 +286,9 @@ mod tests {
         assert_eq!(decode(Dialect::Fractint, "<1"), Ok(Command::RaiseColor(1)));
         assert_eq!(
             decode(Dialect::Fractint, "\\22.5"),
-            Ok(Command::FreeLeft(22 << 32 | 1 << 31))
+            Ok(Command::FreeLeft(BinaryAngle::from_degrees_bits(
+                22 << 32 | 1 << 31
+            )))
         );
     }
 
@@ -299,9 +310,15 @@ mod tests {
             decode(Dialect::Fractint, "C256"),
             Err(Error::Read(ReadError::NumberOutOfRange { symbol: 'c', at }))
         );
+        // Without digits, as in Fractint: 0.
         assert_eq!(
             decode(Dialect::Fractint, "@"),
-            Err(Error::Read(ReadError::MissingNumber { symbol: '@', at }))
+            Ok(Command::Scale(Real::ZERO))
+        );
+        assert_eq!(decode(Dialect::Fractint, "C"), Ok(Command::SetColor(0)));
+        assert_eq!(
+            decode(Dialect::Fractint, "\\"),
+            Ok(Command::FreeLeft(BinaryAngle::default()))
         );
         assert_eq!(
             decode(Dialect::Fractint, "@0"),

@@ -1,12 +1,14 @@
-//! A grammar borrowed from text: axiom, single-symbol rules and the turn angle.
+//! A grammar compiled from text: axiom, single-symbol rules and the turn angle.
 //!
-//! Nothing is copied: the axiom and the rule bodies are slices of the caller's `&str`. Every
-//! body is checked once here (brackets balanced within it, numbers well-formed and in
-//! range), so the walker never meets malformed text and its errors are only about size.
+//! Each body is read once, when it is given, into ops of one byte: an ASCII symbol (its
+//! rule, if any, is found by a table lookup), or a reference to a numeric command whose
+//! number is already converted (`@0.5`, `\\30`, `C12`). Brackets are checked balanced
+//! within each body and every number in range, so the walk reads no text, parses nothing,
+//! and its errors are only about size.
 
 use heapless::Vec;
 
-use super::alphabet::{Dialect, SymbolSet, Token};
+use super::alphabet::{Command, Dialect, SymbolSet};
 use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
 use crate::math::Angle;
@@ -14,30 +16,50 @@ use crate::math::Angle;
 /// Most rule lines a grammar holds (Fractint allowed 25); lines for one symbol append.
 pub const MAX_RULES: usize = 32;
 
-/// Longest axiom or rule body, in bytes: the walker keeps positions in 16 bits.
-pub const MAX_BODY_LEN: usize = u16::MAX as usize;
+/// Most symbols a grammar holds, the axiom and every rule body together (a numeric command
+/// with its number counts one). Fractint's own files need at most 412.
+pub const MAX_SYMBOLS: usize = 512;
+
+/// Most distinct numeric commands (`@0.5`, `\\30`, `C12`, ...) a grammar holds.
+pub const MAX_NUMERIC_COMMANDS: usize = 32;
 
 const NO_RULE: u8 = u8::MAX;
 
-/// One rule line: a symbol and its replacement. Lines for the same symbol are chained.
+/// Ops at or above this are numeric commands: `op - NUMERIC` indexes the grammar's table.
+pub(crate) const NUMERIC: u8 = 0x80;
+
+/// Where a compiled body is in the grammar's ops.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Span {
+    start: u16,
+    end: u16,
+}
+
+/// One rule line: its compiled body. Lines for the same symbol are chained.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Rule<'a> {
-    pub(crate) body: &'a [u8],
+pub(crate) struct Rule {
+    pub(crate) body: Span,
     /// The index of the next line for the same symbol, or `NO_RULE`.
     pub(crate) next: u8,
 }
 
-/// An L-system: axiom, rules and angle, borrowed from text and checked.
+/// An L-system: axiom, rules and angle, compiled from text and checked.
 ///
-/// Worst-case RAM: `MAX_RULES` rule slices (two words and a byte each), a 128-byte lookup
-/// table and the sine/cosine table for up to `MAX_ANGLE_DIVISIONS / 2 + 1` headings
-/// (264 bytes): about 0.9 KiB on a 32-bit MCU.
+/// Worst-case RAM: the ops ([`MAX_SYMBOLS`] bytes), the numeric commands
+/// ([`MAX_NUMERIC_COMMANDS`] × 16 bytes), [`MAX_RULES`] rule spans (5 bytes each), a
+/// 128-byte lookup table and the sine/cosine table for up to `MAX_ANGLE_DIVISIONS / 2 + 1`
+/// headings (264 bytes): about 1.7 KiB. On a small MCU, build it in place
+/// ([`add_rule`](Self::add_rule), [`add_draw_symbols`](Self::add_draw_symbols)): each move
+/// of a grammar is a copy on the stack.
 #[derive(Debug, Clone)]
 pub struct Grammar<'a> {
     dialect: Dialect,
-    axiom: &'a [u8],
+    axiom_text: &'a str,
     angle: Angle,
-    rules: Vec<Rule<'a>, MAX_RULES>,
+    ops: Vec<u8, MAX_SYMBOLS>,
+    numeric: Vec<Command, MAX_NUMERIC_COMMANDS>,
+    axiom: Span,
+    rules: Vec<Rule, MAX_RULES>,
     /// First rule line for each ASCII symbol.
     first: [u8; 128],
     extra_draw: SymbolSet,
@@ -62,16 +84,19 @@ impl<'a> Grammar<'a> {
             return Err(Error::Read(ReadError::EmptyAxiom));
         }
         let headings = Headings::new(angle, at)?;
-        let grammar = Self {
+        let mut grammar = Self {
             dialect,
-            axiom: axiom.as_bytes(),
+            axiom_text: axiom,
             angle,
+            ops: Vec::new(),
+            numeric: Vec::new(),
+            axiom: Span::default(),
             rules: Vec::new(),
             first: [NO_RULE; 128],
             extra_draw: SymbolSet::default(),
             headings,
         };
-        grammar.check_body(axiom.as_bytes(), at)?;
+        grammar.axiom = grammar.compile(axiom.as_bytes(), at)?;
         Ok(grammar)
     }
 
@@ -110,19 +135,21 @@ impl<'a> Grammar<'a> {
                 at: rule_at,
             }));
         }
-        self.check_body(body.as_bytes(), at)?;
+        let too_many = Error::Read(ReadError::TooManyRules {
+            max: MAX_RULES,
+            at: rule_at,
+        });
+        if self.rules.is_full() {
+            return Err(too_many);
+        }
+        let compiled = self.compile(body.as_bytes(), at)?;
         let index = u8::try_from(self.rules.len()).unwrap_or(NO_RULE);
         self.rules
             .push(Rule {
-                body: body.as_bytes(),
+                body: compiled,
                 next: NO_RULE,
             })
-            .map_err(|_| {
-                Error::Read(ReadError::TooManyRules {
-                    max: MAX_RULES,
-                    at: rule_at,
-                })
-            })?;
+            .map_err(|_| too_many)?;
         // Chain it after the last line for the same symbol.
         match self.first_rule(symbol) {
             None => {
@@ -148,6 +175,12 @@ impl<'a> Grammar<'a> {
     /// Makes more symbols draw (ABOP edge-rewriting systems, e.g. `A` and `B` in the Gosper
     /// curve). Ignored by the Fractint dialect, where `F` and `D` draw.
     pub fn with_draw_symbols(mut self, symbols: &str) -> Result<Self, Error> {
+        self.add_draw_symbols(symbols)?;
+        Ok(self)
+    }
+
+    /// [`with_draw_symbols`](Self::with_draw_symbols) in place, without moving the grammar.
+    pub fn add_draw_symbols(&mut self, symbols: &str) -> Result<(), Error> {
         for (index, c) in symbols.char_indices() {
             let at = Location::column(u32::try_from(index + 1).unwrap_or(u32::MAX));
             let byte = u8::try_from(c)
@@ -156,7 +189,7 @@ impl<'a> Grammar<'a> {
                 .ok_or(Error::Read(ReadError::NonAsciiSymbol { at }))?;
             self.extra_draw.insert(byte);
         }
-        Ok(self)
+        Ok(())
     }
 
     /// The notation this grammar follows.
@@ -171,7 +204,7 @@ impl<'a> Grammar<'a> {
 
     /// The axiom as written.
     pub fn axiom(&self) -> &'a str {
-        core::str::from_utf8(self.axiom).unwrap_or_default()
+        self.axiom_text
     }
 
     /// Number of rule lines.
@@ -179,13 +212,27 @@ impl<'a> Grammar<'a> {
         self.rules.len()
     }
 
+    /// Symbols held, the axiom and all rule bodies together (at most [`MAX_SYMBOLS`]).
+    pub fn symbol_count(&self) -> usize {
+        self.ops.len()
+    }
+
+    /// The ops of a compiled body.
     #[inline]
-    pub(crate) fn axiom_bytes(&self) -> &'a [u8] {
-        self.axiom
+    pub(crate) fn ops(&self, span: Span) -> &[u8] {
+        self.ops
+            .get(usize::from(span.start)..usize::from(span.end))
+            .unwrap_or_default()
+    }
+
+    /// The axiom's ops.
+    #[inline]
+    pub(crate) fn axiom_ops(&self) -> &[u8] {
+        self.ops(self.axiom)
     }
 
     #[inline]
-    pub(crate) fn rule(&self, index: u8) -> Option<&Rule<'a>> {
+    pub(crate) fn rule(&self, index: u8) -> Option<&Rule> {
         self.rules.get(usize::from(index))
     }
 
@@ -203,20 +250,34 @@ impl<'a> Grammar<'a> {
         &self.headings
     }
 
-    /// Checks one body: ASCII, balanced brackets, every number decodes.
-    fn check_body(&self, body: &[u8], at: Location) -> Result<(), Error> {
+    /// Compiles one body into ops, checking it: ASCII, balanced brackets, every number in
+    /// range, and room left.
+    fn compile(&mut self, body: &[u8], at: Location) -> Result<Span, Error> {
         let located = |offset: usize| Location {
             line: at.line,
             column: at
                 .column
                 .saturating_add(u32::try_from(offset).unwrap_or(u32::MAX)),
         };
-        if body.len() > MAX_BODY_LEN {
-            return Err(Error::Read(ReadError::BodyTooLong {
-                max: MAX_BODY_LEN,
-                at,
-            }));
+        let start = self.ops.len();
+        let result = self.compile_into_ops(body, located);
+        if result.is_err() {
+            // A failed body leaves nothing behind.
+            self.ops.truncate(start);
         }
+        result?;
+        let position = |index: usize| u16::try_from(index).unwrap_or(u16::MAX);
+        Ok(Span {
+            start: position(start),
+            end: position(self.ops.len()),
+        })
+    }
+
+    fn compile_into_ops(
+        &mut self,
+        body: &[u8],
+        located: impl Fn(usize) -> Location,
+    ) -> Result<(), Error> {
         // Where the outermost open `[` is, for the message if it is never closed.
         let mut outermost_open = 0;
         let mut depth = 0usize;
@@ -240,7 +301,18 @@ impl<'a> Grammar<'a> {
                 }
                 _ => {}
             }
-            self.dialect.decode(token, self.extra_draw, here)?;
+            let command = self.dialect.decode(token, self.extra_draw, here)?;
+            let op = if self.dialect.takes_number(token.symbol) {
+                self.numeric_op(command, here)?
+            } else {
+                token.symbol
+            };
+            self.ops.push(op).map_err(|_| {
+                Error::Read(ReadError::TooManySymbols {
+                    max: MAX_SYMBOLS,
+                    at: here,
+                })
+            })?;
             position = next;
         }
         if depth > 0 {
@@ -251,10 +323,50 @@ impl<'a> Grammar<'a> {
         Ok(())
     }
 
-    /// Decodes a token of a body already checked by `check_body`.
+    /// The op of a numeric command: its index in the table, added if new.
+    fn numeric_op(&mut self, command: Command, at: Location) -> Result<u8, Error> {
+        let index = match self.numeric.iter().position(|&known| known == command) {
+            Some(index) => index,
+            None => {
+                self.numeric.push(command).map_err(|_| {
+                    Error::Read(ReadError::TooManyNumericCommands {
+                        max: MAX_NUMERIC_COMMANDS,
+                        at,
+                    })
+                })?;
+                self.numeric.len() - 1
+            }
+        };
+        // Below MAX_NUMERIC_COMMANDS = 64, so within 0x80..0xC0.
+        Ok(NUMERIC + u8::try_from(index).unwrap_or(0))
+    }
+
+    /// What the turtle does for an op.
     #[inline]
-    pub(crate) fn decode(&self, token: Token<'_>) -> Result<super::alphabet::Command, Error> {
-        self.dialect
-            .decode(token, self.extra_draw, Location::default())
+    pub(crate) fn command(&self, op: u8) -> Command {
+        if op >= NUMERIC {
+            self.numeric
+                .get(usize::from(op - NUMERIC))
+                .copied()
+                .unwrap_or(Command::Nothing)
+        } else {
+            self.dialect.plain_command(op, self.extra_draw)
+        }
+    }
+
+    /// The symbol an op was written as (lower-cased in the Fractint dialect).
+    pub(crate) fn symbol(&self, op: u8) -> u8 {
+        if op < NUMERIC {
+            return op;
+        }
+        match self.command(op) {
+            Command::FreeLeft(_) => b'\\',
+            Command::FreeRight(_) => b'/',
+            Command::Scale(_) => b'@',
+            Command::SetColor(_) => b'c',
+            Command::RaiseColor(_) => b'<',
+            Command::LowerColor(_) => b'>',
+            _ => b'?',
+        }
     }
 }

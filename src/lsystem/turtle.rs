@@ -188,8 +188,8 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 }
             }
             Command::Reverse => state.reversed = !state.reversed,
-            Command::FreeLeft(degrees) | Command::FreeRight(degrees) => {
-                let delta = BinaryAngle::from_degrees_bits(degrees).0;
+            Command::FreeLeft(turn) | Command::FreeRight(turn) => {
+                let delta = turn.0;
                 let left = matches!(command, Command::FreeLeft(_)) != state.reversed;
                 state.free.0 = if left {
                     state.free.0.wrapping_add(delta)
@@ -202,7 +202,8 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                     .step
                     .checked_mul(factor)
                     .ok_or(Error::Walk(WalkError::Overflow))?;
-                if state.step.abs() < MIN_STEP {
+                // A step of exactly 0 is Fractint's `@` without a number: points.
+                if state.step != Real::ZERO && state.step.abs() < MIN_STEP {
                     return Err(Error::Walk(WalkError::StepUnderflow));
                 }
             }
@@ -331,8 +332,8 @@ impl<const DEPTH: usize, const STACK: usize> Iterator for Segments<'_, '_, DEPTH
             return None;
         }
         loop {
-            let step = self.walker.next_token()?.and_then(|token| {
-                let command = self.walker.grammar().decode(token)?;
+            let step = self.walker.next_op()?.and_then(|op| {
+                let command = self.walker.grammar().command(op);
                 self.turtle.execute(command)
             });
             match step {

@@ -7,8 +7,7 @@
 
 use heapless::Vec;
 
-use super::alphabet::Token;
-use super::grammar::Grammar;
+use super::grammar::{Grammar, NUMERIC};
 use crate::error::{Error, WalkError};
 
 /// Frames a walker holds by default: orders 0 to 16.
@@ -98,25 +97,25 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
         self.grammar
     }
 
-    fn body(&self, rule: u8) -> &'a [u8] {
+    #[inline]
+    fn body(&self, rule: u8) -> &'g [u8] {
         if rule == AXIOM {
-            self.grammar.axiom_bytes()
+            self.grammar.axiom_ops()
         } else {
-            self.grammar.rule(rule).map_or(&[], |rule| rule.body)
+            self.grammar
+                .rule(rule)
+                .map_or(&[], |rule| self.grammar.ops(rule.body))
         }
     }
 
-    /// The next symbol to interpret.
-    pub(crate) fn next_token(&mut self) -> Option<Result<Token<'a>, Error>> {
+    /// The next op to interpret (see [`Grammar::command`]).
+    #[inline]
+    pub(crate) fn next_op(&mut self) -> Option<Result<u8, Error>> {
         loop {
             let depth = self.frames.len();
             let frame = *self.frames.last()?;
             let body = self.body(frame.rule);
-            let Some((token, next)) = self
-                .grammar
-                .dialect()
-                .scan(body, usize::from(frame.position))
-            else {
+            let Some(&op) = body.get(usize::from(frame.position)) else {
                 // End of this line: go on with the next line for the same symbol, if any.
                 let next_line = self.grammar.rule(frame.rule).map(|rule| rule.next);
                 match (next_line, self.frames.last_mut()) {
@@ -140,12 +139,12 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             }
             self.read += 1;
             if let Some(top) = self.frames.last_mut() {
-                // Bodies are at most 65,535 bytes (checked by the grammar).
-                top.position = u16::try_from(next).unwrap_or(u16::MAX);
+                // Bodies are at most MAX_SYMBOLS ops long.
+                top.position += 1;
             }
             let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
-            if level < self.order {
-                if let Some(rule) = self.grammar.first_rule(token.symbol) {
+            if level < self.order && op < NUMERIC {
+                if let Some(rule) = self.grammar.first_rule(op) {
                     // Cannot fail: `new` checked that order + 1 <= DEPTH.
                     if self.frames.push(Frame { rule, position: 0 }).is_ok() {
                         self.max_depth = self.max_depth.max(depth + 1);
@@ -153,7 +152,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                     }
                 }
             }
-            return Some(Ok(token));
+            return Some(Ok(op));
         }
     }
 }
@@ -163,7 +162,7 @@ impl<const DEPTH: usize> Iterator for Walker<'_, '_, DEPTH> {
     type Item = Result<char, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        self.next_token()
-            .map(|token| token.map(|token| char::from(token.symbol)))
+        self.next_op()
+            .map(|op| op.map(|op| char::from(self.grammar.symbol(op))))
     }
 }

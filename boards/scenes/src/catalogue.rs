@@ -24,10 +24,9 @@ impl System {
     /// stack, and the frame of a caller that draws both families should not hold them.
     #[inline(never)]
     pub fn grammar(&self) -> Result<Grammar<'static>, Error> {
+        // Built in place: a grammar is a few KiB, and every move is a copy on an MCU stack.
         let mut grammar = Grammar::new(Dialect::Abop, self.axiom, self.angle)?;
-        if !self.draw_symbols.is_empty() {
-            grammar = grammar.with_draw_symbols(self.draw_symbols)?;
-        }
+        grammar.add_draw_symbols(self.draw_symbols)?;
         for &(symbol, body) in self.rules {
             grammar.add_rule(symbol, body)?;
         }
