@@ -38,7 +38,10 @@ fn file_errors_carry_their_place() {
             "error-unclosed.l",
             Error::Read(ReadError::UnclosedBracket { at: at(4, 6) }),
         ),
-        ("error-empty-axiom.l", Error::Read(ReadError::EmptyAxiom)),
+        (
+            "error-missing-axiom.l",
+            Error::Read(ReadError::MissingAxiom),
+        ),
         (
             "error-missing-angle.l",
             Error::Read(ReadError::MissingAngle),
@@ -246,10 +249,8 @@ fn unknown_system_name() {
 #[test]
 fn inline_grammar_errors() {
     let new = |axiom| Grammar::new(Dialect::Abop, axiom, Angle::Divisions(4));
-    assert_eq!(
-        new("  ").map(|_| ()),
-        Err(Error::Read(ReadError::EmptyAxiom))
-    );
+    // An empty axiom is a system that draws nothing.
+    assert_eq!(Segments::new(&new("  ").unwrap(), 5).unwrap().count(), 0);
     assert_eq!(
         new("F]").map(|_| ()),
         Err(Error::Read(ReadError::UnbalancedBracket {
@@ -380,16 +381,45 @@ fn zero_size_targets_and_empty_palettes() {
             .map(|_| ()),
         Err(Error::Fit(FitError::EmptyPalette))
     );
-    let nothing = Grammar::new(Dialect::Abop, "+-X", Angle::Divisions(4)).unwrap();
-    assert_eq!(
-        LSystem::new(&nothing, 3)
-            .fit(
-                Rectangle::new(Point::zero(), Size::new(8, 8)),
-                &[BinaryColor::On]
-            )
-            .map(|_| ()),
-        Err(Error::Fit(FitError::EmptyDrawing))
-    );
+}
+
+/// A system that draws nothing at an order (rules that erase everything) is a valid, empty
+/// picture: `fit` gives a drawing that draws nothing, with or without the table; only
+/// `bounds` says there is nothing to measure.
+#[test]
+fn a_picture_of_nothing_is_valid() {
+    let text = fixture("draws-nothing.l");
+    let file = LFile::new(&text);
+    for name in ["Erased", "Turns", "EmptyAxiom"] {
+        let grammar = file.find(name).unwrap();
+        let system = LSystem::new(&grammar, 3);
+        let mut cells = vec![tinyfractal::Cell::default(); 1024];
+        for drawing in [
+            system
+                .fit(
+                    Rectangle::new(Point::zero(), Size::new(8, 8)),
+                    &[BinaryColor::On],
+                )
+                .unwrap(),
+            system
+                .fit_in(
+                    Rectangle::new(Point::zero(), Size::new(8, 8)),
+                    tinyfractal::Colors::new(&[BinaryColor::On]).unwrap(),
+                    &mut cells,
+                )
+                .unwrap(),
+        ] {
+            let mut display = MockDisplay::<BinaryColor>::new();
+            let stats = drawing.draw(&mut display).unwrap();
+            assert_eq!(stats.segments, 0, "{name}");
+            assert_eq!(display.affected_area().size, Size::zero(), "{name}");
+            assert_eq!(drawing.bounding_box().size, Size::zero(), "{name}");
+        }
+        assert_eq!(system.bounds(), Err(Error::Fit(FitError::EmptyDrawing)));
+    }
+    // At order 0 `Erased` draws its axiom.
+    let grammar = file.find("Erased").unwrap();
+    assert_eq!(Segments::new(&grammar, 0).unwrap().count(), 2);
 }
 
 #[test]

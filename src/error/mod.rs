@@ -45,7 +45,7 @@ impl fmt::Display for Location {
 /// Everything that can go wrong in tinyfractal, from reading a system to drawing it,
 /// grouped by stage so that each group stays small and each message says how to fix it.
 ///
-/// Match a group, then its variant: `Error::Read(ReadError::EmptyAxiom)`.
+/// Match a group, then its variant: `Error::Read(ReadError::MissingAxiom)`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Error {

@@ -19,8 +19,9 @@ pub enum ReadError {
         /// Where the `[` is.
         at: Location,
     },
-    /// The axiom is empty or only white space.
-    EmptyAxiom,
+    /// The system has no axiom (`Axiom s` in a `.l` file). An empty one is valid: it draws
+    /// nothing.
+    MissingAxiom,
     /// The system has no angle (`Angle n` in a `.l` file).
     MissingAngle,
     /// The angle is not usable: divisions must be 1 to `max`.
@@ -186,7 +187,7 @@ impl fmt::Display for ReadError {
                 f,
                 "`[` at {at} is never closed: add a `]` in the same axiom or rule"
             ),
-            Self::EmptyAxiom => write!(f, "the axiom is empty: give at least one symbol"),
+            Self::MissingAxiom => write!(f, "the system has no axiom: add a line `Axiom s`"),
             Self::MissingAngle => write!(f, "the system has no angle: add a line `Angle n`"),
             Self::AngleOutOfRange { value, max, at } => write!(
                 f,

@@ -274,7 +274,7 @@ mod tests {
     fn decode(dialect: Dialect, text: &str) -> Result<Command, Error> {
         let (token, _) = dialect
             .scan(text.as_bytes(), 0)
-            .ok_or(Error::Read(ReadError::EmptyAxiom))?;
+            .ok_or(Error::Read(ReadError::MissingAxiom))?;
         dialect.decode(token, SymbolSet::default(), Location::column(1))
     }
 

@@ -4,9 +4,10 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
 use super::grammar::Grammar;
-use super::turtle::{Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
+use super::table::{Cell, Summary, Table};
+use super::turtle::{Decision, Drawn, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 use super::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
-use crate::error::{DrawError, Error, FitError};
+use crate::error::{DrawError, Error, FitError, WalkError};
 use crate::math::Real;
 use crate::render::fit::{fit, Orientation, DEFAULT_MARGIN};
 use crate::render::palette::{Colors, Palette};
@@ -91,12 +92,15 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         Ok(Segments::with_capacity(self.grammar, self.order, start)?.with_budget(self.budget))
     }
 
-    /// Walks once in turtle units and returns the bounding box of what is drawn.
+    /// Walks once in turtle units and returns the bounding box of what is drawn
+    /// ([`FitError::EmptyDrawing`] if nothing is).
     pub fn bounds(&self) -> Result<Bounds, Error> {
-        self.bounds_from(Start::default())
+        self.bounds_from(Start::default())?
+            .ok_or(Error::Fit(FitError::EmptyDrawing))
     }
 
-    fn bounds_from(&self, start: Start) -> Result<Bounds, Error> {
+    /// The bounding box of what is drawn from `start`, by a walk; `None` if nothing is.
+    fn bounds_from(&self, start: Start) -> Result<Option<Bounds>, Error> {
         let mut bounds: Option<Bounds> = None;
         self.segments(start)?.try_for_each_segment(|segment| {
             for p in [segment.start, segment.end] {
@@ -108,7 +112,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             }
             Ok(())
         })?;
-        bounds.ok_or(Error::Fit(FitError::EmptyDrawing))
+        Ok(bounds)
     }
 
     /// Scales and centres the drawing into `area` (less the margin), colours from `palette`.
@@ -136,17 +140,51 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         area: Rectangle,
         palette: P,
     ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
+        self.fit_inner(area, palette, None)
+    }
+
+    /// [`fit_with`](Self::fit_with), measuring and drawing through the expansion table held
+    /// in `cells` ([`cells_needed`](crate::cells_needed) of them): the picture's box comes
+    /// from the table instead of a walk, and drawing skips what lies outside the target
+    /// and draws what lies within one pixel as that pixel, so its cost follows the picture,
+    /// not the segment count (the same pixels as a full draw). With too few cells, or a
+    /// system the table does not cover (free angles, `@`, `\`, `/`, `D`, `M`), it walks as
+    /// `fit_with` does.
+    pub fn fit_in<P: Palette>(
+        &self,
+        area: Rectangle,
+        palette: P,
+        cells: &'g mut [Cell],
+    ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
+        self.fit_inner(area, palette, Some(cells))
+    }
+
+    fn fit_inner<P: Palette>(
+        &self,
+        area: Rectangle,
+        palette: P,
+        mut cells: Option<&'g mut [Cell]>,
+    ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
-        let bounds = self.bounds()?;
-        let fitted = fit(
-            (bounds.min.x, bounds.min.y),
-            (bounds.max.x, bounds.max.y),
-            self.orientation,
-            &area,
-            self.margin,
-        )?;
+        let measured = cells
+            .as_deref_mut()
+            .and_then(|cells| Table::build(self.grammar, self.order, Real::ONE, cells))
+            .and_then(|table| table.picture(self.grammar, 0));
+        let bounds = match measured {
+            Some(summary) => summary.drawn.map(|drawn| Bounds {
+                min: point(drawn.min),
+                max: point(drawn.max),
+            }),
+            None => self.bounds_from(Start::default())?,
+        };
+        // A picture that draws nothing is valid: it is placed at the area's middle.
+        let (low, high) = bounds
+            .map_or(((Real::ZERO, Real::ZERO), (Real::ZERO, Real::ZERO)), |b| {
+                ((b.min.x, b.min.y), (b.max.x, b.max.y))
+            });
+        let fitted = fit(low, high, self.orientation, &area, self.margin)?;
         let (x, y) = self.orientation.to_picture(fitted.origin);
         self.prepared(
             Start {
@@ -155,6 +193,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
                 turns: 0,
             },
             palette,
+            cells,
         )
     }
 
@@ -186,30 +225,79 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
                 turns: placement.turns,
             },
             palette,
+            None,
         )
     }
 
+    /// Checks the drawing from `start` and measures its pixel box: from the table at this
+    /// step if `cells` can hold one, else by a walk.
     fn prepared<P: Palette>(
         &self,
         start: Start,
         palette: P,
+        cells: Option<&'g mut [Cell]>,
     ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
-        let pixels = self.bounds_from(start)?;
-        let corners = [self.pixel_of(pixels.min), self.pixel_of(pixels.max)];
-        let top_left = Point::new(
-            corners[0].x.min(corners[1].x),
-            corners[0].y.min(corners[1].y),
-        );
-        let bottom_right = Point::new(
-            corners[0].x.max(corners[1].x),
-            corners[0].y.max(corners[1].y),
-        );
+        let table =
+            cells.and_then(|cells| Table::build(self.grammar, self.order, start.step, cells));
+        let (pixels, table) = match table {
+            Some(table) => match self.checked_picture(&table, start)? {
+                Some(pixels) => (pixels, Some(table)),
+                None => (self.bounds_from(start)?, None),
+            },
+            None => (self.bounds_from(start)?, None),
+        };
+        // Nothing drawn: an empty box where the turtle starts.
+        let empty = Rectangle::new(self.pixel_of(start.position), Size::zero());
+        let bounding_box = pixels.map_or(empty, |pixels| {
+            let corners = [self.pixel_of(pixels.min), self.pixel_of(pixels.max)];
+            Rectangle::with_corners(
+                Point::new(
+                    corners[0].x.min(corners[1].x),
+                    corners[0].y.min(corners[1].y),
+                ),
+                Point::new(
+                    corners[0].x.max(corners[1].x),
+                    corners[0].y.max(corners[1].y),
+                ),
+            )
+        });
         Ok(LSystemDrawing {
             system: *self,
             start,
             palette,
-            bounding_box: Rectangle::with_corners(top_left, bottom_right),
+            bounding_box,
+            table,
         })
+    }
+
+    /// What the walk from `start` would check, from the table: every position in range and
+    /// the branches within the turtle stack. The drawn box, if any is drawn; `Ok(None)` inside
+    /// the outer `Option` when the table cannot say (then the caller walks).
+    fn checked_picture(
+        &self,
+        table: &Table<'_>,
+        start: Start,
+    ) -> Result<Option<Option<Bounds>>, Error> {
+        let Some(summary) = table.picture(self.grammar, start_heading(self.grammar, start.turns))
+        else {
+            return Ok(None);
+        };
+        let origin = (start.position.x, start.position.y);
+        if summary.visited.offset(origin).is_none() {
+            return Err(Error::Walk(WalkError::Overflow));
+        }
+        if usize::try_from(summary.nesting).map_or(true, |nesting| nesting > STACK) {
+            return Err(Error::Walk(WalkError::StackTooDeep { capacity: STACK }));
+        }
+        Ok(Some(
+            summary
+                .drawn
+                .and_then(|drawn| drawn.offset(origin))
+                .map(|drawn| Bounds {
+                    min: point(drawn.min),
+                    max: point(drawn.max),
+                }),
+        ))
     }
 
     /// The pixel for a point of a drawing pass (whose turtle works in pixels).
@@ -217,6 +305,19 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         let (x, y) = self.orientation.to_screen((p.x, p.y));
         Point::new(x.round_to_i32(), y.round_to_i32())
     }
+}
+
+/// A pair as a turtle point.
+fn point((x, y): (Real, Real)) -> TurtlePoint {
+    TurtlePoint { x, y }
+}
+
+/// The heading the turtle starts with after `turns` turns (as `Turtle::new` turns).
+fn start_heading(grammar: &Grammar<'_>, turns: i32) -> u16 {
+    let n = u32::from(grammar.headings().divisions().max(1));
+    let k = (turns.unsigned_abs() % 65_536) % n;
+    let heading = if turns >= 0 { k } else { (n - k) % n };
+    u16::try_from(heading).unwrap_or(0)
 }
 
 /// A slice of colours as a palette; an empty one is [`FitError::EmptyPalette`].
@@ -230,7 +331,7 @@ fn colors<C: PixelColor>(palette: &[C]) -> Result<Colors<'_, C>, Error> {
 /// "inside"): with a list of colours ([`Colors`], what `fit` and `place` build from a
 /// slice), `colours[i % len]`. Lines go to the target as horizontal and vertical runs
 /// through `fill_solid`; clipping is the target's.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct LSystemDrawing<
     'g,
     'a,
@@ -242,6 +343,8 @@ pub struct LSystemDrawing<
     start: Start,
     palette: P,
     bounding_box: Rectangle,
+    /// The expansion table at this drawing's step, when fitted with one.
+    table: Option<Table<'g>>,
 }
 
 impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, P, DEPTH, STACK> {
@@ -259,19 +362,84 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
         let clip = target.bounding_box();
         let mut segments = self.system.segments(self.start)?;
         let mut last_end = None;
-        for segment in segments.by_ref() {
-            let segment = segment?;
-            let (from, to) = (
-                self.system.pixel_of(segment.start),
-                self.system.pixel_of(segment.end),
-            );
-            let color = self.palette.color(u16::from(segment.color), u16::MAX);
-            // A continuing line does not draw its first pixel twice.
-            raster::draw_line(target, from, to, last_end == Some(from), color, &clip)
-                .map_err(DrawError::Target)?;
-            last_end = Some(to);
+        if let Some(table) = &self.table {
+            let decide = |cell: &Summary, start: TurtlePoint| self.decide(cell, start, &clip);
+            while let Some(drawn) = segments.next_guided(table, decide) {
+                match drawn? {
+                    Drawn::Segment(segment) => {
+                        last_end = self.draw_segment(target, segment, last_end, &clip)?;
+                    }
+                    Drawn::Dot(at, color) => {
+                        let pixel = self.system.pixel_of(at);
+                        let color = self.palette.color(u16::from(color), u16::MAX);
+                        if clip.contains(pixel) {
+                            target
+                                .fill_solid(&Rectangle::new(pixel, Size::new(1, 1)), color)
+                                .map_err(DrawError::Target)?;
+                        }
+                        last_end = Some(pixel);
+                    }
+                }
+            }
+        } else {
+            for segment in segments.by_ref() {
+                last_end = self.draw_segment(target, segment?, last_end, &clip)?;
+            }
         }
         Ok(segments.stats())
+    }
+
+    /// Draws one segment; returns its end pixel.
+    fn draw_segment<D>(
+        &self,
+        target: &mut D,
+        segment: super::turtle::Segment,
+        last_end: Option<Point>,
+        clip: &Rectangle,
+    ) -> Result<Option<Point>, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let (from, to) = (
+            self.system.pixel_of(segment.start),
+            self.system.pixel_of(segment.end),
+        );
+        let color = self.palette.color(u16::from(segment.color), u16::MAX);
+        // A continuing line does not draw its first pixel twice.
+        raster::draw_line(target, from, to, last_end == Some(from), color, clip)
+            .map_err(DrawError::Target)?;
+        Ok(Some(to))
+    }
+
+    /// What to do with an expansion starting at `start`: skip it if none of it is on the
+    /// target, draw it as a dot if it lies within one pixel in one colour, else walk in.
+    fn decide(&self, cell: &Summary, start: TurtlePoint, clip: &Rectangle) -> Decision {
+        let Some(drawn) = cell.drawn else {
+            return Decision::Skip;
+        };
+        let Some(drawn) = drawn.offset((start.x, start.y)) else {
+            return Decision::Expand;
+        };
+        let (a, b) = (
+            self.system.pixel_of(point(drawn.min)),
+            self.system.pixel_of(point(drawn.max)),
+        );
+        let (low, high) = (
+            Point::new(a.x.min(b.x), a.y.min(b.y)),
+            Point::new(a.x.max(b.x), a.y.max(b.y)),
+        );
+        let clip_end = clip.top_left + clip.size;
+        let outside = high.x < clip.top_left.x
+            || high.y < clip.top_left.y
+            || low.x >= clip_end.x
+            || low.y >= clip_end.y;
+        if outside {
+            Decision::Skip
+        } else if a == b && cell.colorless {
+            Decision::Dot
+        } else {
+            Decision::Expand
+        }
     }
 }
 

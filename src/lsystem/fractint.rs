@@ -138,7 +138,7 @@ impl<'a> Entry<'a> {
             }
         }
         let angle = angle.ok_or(Error::Read(ReadError::MissingAngle))?;
-        let (axiom, axiom_at) = axiom.ok_or(Error::Read(ReadError::EmptyAxiom))?;
+        let (axiom, axiom_at) = axiom.ok_or(Error::Read(ReadError::MissingAxiom))?;
         let mut grammar = Grammar::new_at(Dialect::Fractint, axiom, angle, axiom_at)?;
         for (line, mut words) in self.lines() {
             let Some((symbol, symbol_at)) = words.next() else {

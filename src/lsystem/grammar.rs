@@ -79,10 +79,8 @@ impl<'a> Grammar<'a> {
         angle: Angle,
         at: Location,
     ) -> Result<Self, Error> {
+        // An empty axiom is valid (Fractint drew it as an empty screen): it draws nothing.
         let axiom = axiom.trim();
-        if axiom.is_empty() {
-            return Err(Error::Read(ReadError::EmptyAxiom));
-        }
         let headings = Headings::new(angle, at)?;
         let mut grammar = Self {
             dialect,
@@ -234,6 +232,18 @@ impl<'a> Grammar<'a> {
     #[inline]
     pub(crate) fn rule(&self, index: u8) -> Option<&Rule> {
         self.rules.get(usize::from(index))
+    }
+
+    /// The rule line after `index` for the same symbol.
+    pub(crate) fn next_line(&self, index: u8) -> Option<u8> {
+        self.rule(index)
+            .map(|rule| rule.next)
+            .filter(|&next| next != NO_RULE)
+    }
+
+    /// Every op of the axiom and the rules.
+    pub(crate) fn all_ops(&self) -> &[u8] {
+        &self.ops
     }
 
     /// The first rule line for a (normalized) symbol.

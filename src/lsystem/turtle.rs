@@ -4,7 +4,8 @@ use heapless::Vec;
 
 use super::alphabet::{Command, Dialect};
 use super::grammar::Grammar;
-use super::walker::{Walker, DEFAULT_DEPTH};
+use super::table::{Summary, Table};
+use super::walker::{Next, Walker, DEFAULT_DEPTH};
 use crate::error::{Error, ReadError, WalkError};
 use crate::math::angle::Headings;
 use crate::math::trig::BinaryAngle;
@@ -236,6 +237,44 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     }
 }
 
+/// What a guided walk hands out.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Drawn {
+    /// A segment, as an unguided walk gives it.
+    Segment(Segment),
+    /// An expansion that lies within one pixel, drawn as that pixel: a point of it, and
+    /// the colour index it is drawn in throughout.
+    Dot(TurtlePoint, u8),
+}
+
+/// What a guided walk does with an expansion, seen from its table cell and where it starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Decision {
+    /// Walk into it.
+    Expand,
+    /// Move past it: nothing of it shows.
+    Skip,
+    /// Move past it, drawing it as one dot.
+    Dot,
+}
+
+impl<const STACK: usize> Turtle<'_, STACK> {
+    /// The turtle moved past an expansion summarised by `cell`; `None` on overflow.
+    fn pass(&mut self, cell: &Summary) -> Option<()> {
+        let state = &mut self.state;
+        state.position = TurtlePoint {
+            x: state.position.x.checked_add(cell.displacement.0)?,
+            y: state.position.y.checked_add(cell.displacement.1)?,
+        };
+        state.heading = cell.heading;
+        state.reversed = cell.reversed;
+        state.color = cell.color.apply(state.color);
+        let inside = usize::try_from(cell.nesting).unwrap_or(usize::MAX);
+        self.max_stack = self.max_stack.max(self.stack.len().saturating_add(inside));
+        Some(())
+    }
+}
+
 /// What a walk did, for statistics.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct WalkStats {
@@ -321,6 +360,76 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
             f(segment?)?;
         }
         Ok(self.stats())
+    }
+}
+
+impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> {
+    /// The heading and sense of `!` the turtle has now (for table lookups).
+    fn heading(&self) -> (u16, bool) {
+        (self.turtle.state.heading, self.turtle.state.reversed)
+    }
+
+    /// The next segment or dot, asking `decide(cell, start, colour)` at every expansion the
+    /// table covers. The table must be built for this walk's grammar, order and step.
+    pub(crate) fn next_guided(
+        &mut self,
+        table: &Table<'_>,
+        mut decide: impl FnMut(&Summary, TurtlePoint) -> Decision,
+    ) -> Option<Result<Drawn, Error>> {
+        if self.failed {
+            return None;
+        }
+        loop {
+            let (heading, reversed) = self.heading();
+            let position = self.turtle.state.position;
+            let mut decision = Decision::Expand;
+            let next = self.walker.next_with(|op, left| {
+                decision = table
+                    .cell(op, left, heading, reversed)
+                    .map_or(Decision::Expand, |cell| decide(cell, position));
+                decision == Decision::Expand
+            })?;
+            let step = next.and_then(|next| match next {
+                Next::Op(op) => {
+                    let command = self.walker.grammar().command(op);
+                    Ok(self.turtle.execute(command)?.map(Drawn::Segment))
+                }
+                Next::Declined { op, left } => {
+                    let cell = table
+                        .cell(op, left, heading, reversed)
+                        .ok_or(Error::Walk(WalkError::Overflow))?;
+                    let color = self.turtle.state.color;
+                    self.turtle
+                        .pass(cell)
+                        .ok_or(Error::Walk(WalkError::Overflow))?;
+                    self.segments = self.segments.saturating_add(cell.segments);
+                    self.walker.account(cell.symbols, cell.depth);
+                    Ok(match (decision, cell.drawn) {
+                        (Decision::Dot, Some(drawn)) => Some(Drawn::Dot(
+                            TurtlePoint {
+                                x: position.x.checked_add(drawn.min.0).unwrap_or(position.x),
+                                y: position.y.checked_add(drawn.min.1).unwrap_or(position.y),
+                            },
+                            color,
+                        )),
+                        _ => None,
+                    })
+                }
+            });
+            match step {
+                Ok(None) => {}
+                Ok(Some(drawn)) => {
+                    if let Drawn::Segment(_) = drawn {
+                        self.segments += 1;
+                    }
+                    return Some(Ok(drawn));
+                }
+                Err(error) => {
+                    self.failed = true;
+                    return Some(Err(error));
+                }
+            }
+        }
     }
 }
 

@@ -36,8 +36,25 @@ pub struct Walker<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH> {
     order: u32,
     frames: Vec<Frame, DEPTH>,
     read: u64,
+    /// Symbols inside expansions the caller declined (measured, not read).
+    declined: u64,
     budget: u64,
     max_depth: usize,
+}
+
+/// What the walker hands out: a symbol to interpret, or an expansion the caller declined
+/// (to account for it from the expansion table instead).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Next {
+    /// An op to interpret.
+    Op(u8),
+    /// A symbol with a rule, not expanded: `left` expansions were due.
+    Declined {
+        /// The symbol.
+        op: u8,
+        /// Expansions left for it.
+        left: u32,
+    },
 }
 
 impl<'g, 'a> Walker<'g, 'a> {
@@ -69,6 +86,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             order,
             frames,
             read: 0,
+            declined: 0,
             budget: DEFAULT_BUDGET,
             max_depth: 1,
         })
@@ -82,9 +100,19 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
         self
     }
 
-    /// Symbols read so far.
+    /// Symbols read so far (with those of declined expansions, as accounted).
     pub const fn symbols_read(&self) -> u64 {
-        self.read
+        self.read.saturating_add(self.declined)
+    }
+
+    /// Accounts for a declined expansion: the symbols inside it and the frames it reaches.
+    pub(crate) fn account(&mut self, symbols: u64, depth: u32) {
+        self.declined = self.declined.saturating_add(symbols);
+        let reached = self
+            .frames
+            .len()
+            .saturating_add(usize::try_from(depth).unwrap_or(usize::MAX));
+        self.max_depth = self.max_depth.max(reached);
     }
 
     /// The deepest expansion reached so far, in levels (the axiom is level 1).
@@ -111,6 +139,19 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
     /// The next op to interpret (see [`Grammar::command`]).
     #[inline]
     pub(crate) fn next_op(&mut self) -> Option<Result<u8, Error>> {
+        self.next_with(|_, _| true).map(|next| {
+            next.map(|next| match next {
+                Next::Op(op) | Next::Declined { op, .. } => op,
+            })
+        })
+    }
+
+    /// The next op to interpret, asking `expand(symbol, left)` before each expansion.
+    #[inline]
+    pub(crate) fn next_with(
+        &mut self,
+        mut expand: impl FnMut(u8, u32) -> bool,
+    ) -> Option<Result<Next, Error>> {
         loop {
             let depth = self.frames.len();
             let frame = *self.frames.last()?;
@@ -145,6 +186,10 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
             if level < self.order && op < NUMERIC {
                 if let Some(rule) = self.grammar.first_rule(op) {
+                    let left = self.order - level;
+                    if !expand(op, left) {
+                        return Some(Ok(Next::Declined { op, left }));
+                    }
                     // Cannot fail: `new` checked that order + 1 <= DEPTH.
                     if self.frames.push(Frame { rule, position: 0 }).is_ok() {
                         self.max_depth = self.max_depth.max(depth + 1);
@@ -152,7 +197,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                     }
                 }
             }
-            return Some(Ok(op));
+            return Some(Ok(Next::Op(op)));
         }
     }
 }
