@@ -128,6 +128,12 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     // Everything is computed and every output checked before anything is written.
     let rendered = scene::render(&grammar, arguments.order, common.width(), common.height())
         .map_err(failed)?;
+    if rendered.stats.segments == 0 {
+        eprintln!(
+            "tinyfractal: note: {name} draws nothing at order {}: the picture is empty",
+            arguments.order
+        );
+    }
     let (grammar, order) = (&grammar, arguments.order);
     deliver(
         common,

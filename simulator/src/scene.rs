@@ -5,14 +5,33 @@ use std::time::{Duration, Instant};
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
-use tinyfractal::{Error, Grammar, LSystem, Orientation, Segments, WalkStats};
+use tinyfractal::{
+    cells_needed, Cell, Colors, Error, Grammar, LSystem, Orientation, Segments, WalkStats,
+};
 
 use crate::palette::VGA;
+
+/// Expansion levels the CLI's walks hold: orders up to 256 (the core's default, for MCUs,
+/// is 17 levels).
+pub const DEPTH: usize = 257;
+
+/// Saved turtles the CLI's walks hold (the core's default is 20).
+pub const STACK: usize = 1024;
+
+/// Most expansion-table cells the CLI allocates (about 100 bytes each); a system needing
+/// more is walked.
+pub const MAX_CELLS: usize = 1 << 20;
+
+/// The CLI's L-system: desktop capacities.
+pub type HostSystem<'g, 'a> = LSystem<'g, 'a, DEPTH, STACK>;
 
 /// A rendered picture and what it took.
 pub struct Rendered {
     pub display: SimulatorDisplay<Rgb888>,
     pub stats: WalkStats,
+    /// Fitting (measuring and checking) and drawing.
+    pub fit: Duration,
+    pub draw: Duration,
     pub elapsed: Duration,
 }
 
@@ -41,19 +60,26 @@ pub fn render_oriented(
 ) -> Result<Rendered, Error> {
     let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(width, height));
     let started = Instant::now();
-    let drawing = LSystem::new(grammar, order)
-        .with_orientation(orientation)
-        .fit(display.bounding_box(), &VGA)?;
+    let system = HostSystem::with_capacity(grammar, order).with_orientation(orientation);
+    let palette = Colors::new(&VGA).ok_or(Error::Fit(tinyfractal::FitError::EmptyPalette))?;
+    let mut cells = cells_needed(grammar, order)
+        .filter(|&needed| needed <= MAX_CELLS)
+        .map_or_else(Vec::new, |needed| vec![Cell::default(); needed]);
+    let drawing = system.fit_in(display.bounding_box(), palette, &mut cells)?;
+    let fit = started.elapsed();
     let stats = drawing
         .try_draw(&mut display)
         .map_err(|error| match error {
             tinyfractal::DrawError::Fractal(error) => error,
             tinyfractal::DrawError::Target(never) => match never {},
         })?;
+    let elapsed = started.elapsed();
     Ok(Rendered {
         display,
         stats,
-        elapsed: started.elapsed(),
+        fit,
+        draw: elapsed - fit,
+        elapsed,
     })
 }
 
@@ -61,7 +87,9 @@ pub fn render_oriented(
 /// heading +x, step 1, y up): the engine's fixed-point values printed exactly. Streamed:
 /// a derivation of billions of segments needs no more memory than one.
 pub fn write_segments(grammar: &Grammar<'_>, order: u32, out: &mut dyn Write) -> io::Result<()> {
-    for segment in Segments::new(grammar, order).map_err(io::Error::other)? {
+    let walk = Segments::<'_, '_, DEPTH, STACK>::with_capacity(grammar, order, Default::default())
+        .map_err(io::Error::other)?;
+    for segment in walk {
         let s = segment.map_err(io::Error::other)?;
         writeln!(out, "{} {} {} {}", s.start.x, s.start.y, s.end.x, s.end.y)?;
     }
@@ -72,11 +100,13 @@ pub fn write_segments(grammar: &Grammar<'_>, order: u32, out: &mut dyn Write) ->
 pub fn stats_line(rendered: &Rendered) -> String {
     let s = rendered.stats;
     format!(
-        "segments={} max_stack={} max_depth={} symbols={} elapsed_ms={:.3}",
+        "segments={} max_stack={} max_depth={} symbols={} fit_ms={:.3} draw_ms={:.3} elapsed_ms={:.3}",
         s.segments,
         s.max_stack,
         s.max_depth,
         s.symbols,
+        rendered.fit.as_secs_f64() * 1e3,
+        rendered.draw.as_secs_f64() * 1e3,
         rendered.elapsed.as_secs_f64() * 1e3
     )
 }

@@ -55,7 +55,13 @@ fn renders_an_inline_system_with_segments_and_stats() {
     ]);
     assert!(output.status.success(), "{}", stderr(&output));
     let stats = stdout(&output);
-    for key in ["segments=48 ", "max_stack=0 ", "elapsed_ms="] {
+    for key in [
+        "segments=48 ",
+        "max_stack=0 ",
+        "fit_ms=",
+        "draw_ms=",
+        "elapsed_ms=",
+    ] {
         assert!(stats.contains(key), "{stats}");
     }
     let text = std::fs::read_to_string(&txt).unwrap();
@@ -143,17 +149,17 @@ fn errors_name_the_system_and_leave_no_file() {
                 "--axiom",
                 "F",
                 "--rule",
-                "F=[[[F]]]",
+                "F=[[[[[F]]]]]",
                 "--angle",
                 "4",
                 "--order",
-                "7",
+                "210",
             ],
-            "deeper than the turtle stack",
+            "deeper than the turtle stack (1024 levels)",
         ),
         (
             vec!["--axiom", "F", "--angle", "4", "--order", "1000"],
-            "order 1000 is too high",
+            "order 1000 is too high: this walker supports orders up to 256",
         ),
         (
             vec![
@@ -802,4 +808,101 @@ fn reader_warnings_and_errors_reach_the_user() {
     let listed = run(&["list", &data("error-missing-brace.l")]);
     assert_eq!(stdout(&listed), "Bad\nNext\n");
     assert!(render("error-missing-brace.l", "next").status.success());
+}
+
+/// A high order draws from the expansion table with the true statistics; a system that
+/// draws nothing writes an empty picture, says so, and exits 0; the walk holds desktop
+/// depths (hundreds of levels and saved turtles), not the MCU defaults.
+#[test]
+fn any_order_and_empty_pictures_and_desktop_capacities() {
+    let dir = scratch("orders");
+    let out = dir.join("koch.png");
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--axiom",
+        "F--F--F",
+        "--rule",
+        "F=F+F--F+F",
+        "--angle",
+        "6",
+        "--dialect",
+        "fractint",
+        "--order",
+        "16",
+        "--stats",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let stats = stdout(&output);
+    assert!(
+        stats.starts_with(&format!("segments={} ", 3 * 4u64.pow(16))),
+        "{stats}"
+    );
+    assert!(stats.contains(" max_depth=17 "), "{stats}");
+
+    let empty = dir.join("empty.png");
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--file",
+        &data("draws-nothing.l"),
+        "--name",
+        "erased",
+        "--order",
+        "3",
+        "--out",
+        empty.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(stderr(&output).contains("tinyfractal: note: erased draws nothing at order 3"));
+    assert!(empty.exists());
+
+    // Brackets nested 100 deep at order 1, and order 40 of a system that grows slowly.
+    let deep = format!("{}F{}", "[+".repeat(100), "]".repeat(100));
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--axiom",
+        "X",
+        "--rule",
+        &format!("X={deep}"),
+        "--angle",
+        "8",
+        "--order",
+        "1",
+        "--stats",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        stdout(&output).contains(" max_stack=100 "),
+        "{}",
+        stdout(&output)
+    );
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--axiom",
+        "A",
+        "--rule",
+        "A=F+B",
+        "--rule",
+        "B=A",
+        "--angle",
+        "4",
+        "--order",
+        "40",
+        "--stats",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        stdout(&output).contains(" max_depth=41 "),
+        "{}",
+        stdout(&output)
+    );
 }
