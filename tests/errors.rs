@@ -469,6 +469,45 @@ fn fixed_point_overflow_and_underflow_are_reported() {
     );
 }
 
+/// Steps that `@` shrinks below what a turtle unit resolves still fit and draw right: the
+/// fit measures in a larger unit. Checked against the spiral's box worked out in f64.
+#[test]
+fn steps_shrunk_below_the_unit_still_draw_right() {
+    let text = fixture("tiny-steps.l");
+    let grammar = LFile::new(&text).find("spiral").unwrap();
+    let order = 30;
+    // In turtle units the walk cannot measure it.
+    let system = LSystem::<'_, '_, 32, 20>::with_capacity(&grammar, order);
+    assert_eq!(system.bounds(), Err(Error::Walk(WalkError::StepUnderflow)));
+    let area = Rectangle::new(Point::zero(), Size::new(101, 61));
+    let drawing = system.fit(area, &[BinaryColor::On]).unwrap();
+    // The model: `(F+@.5)^30 A`, segment k of length 2^-k heading k quarter turns left.
+    let (mut x, mut y) = (0.0f64, 0.0f64);
+    let (mut min, mut max) = ((0.0f64, 0.0f64), (0.0f64, 0.0f64));
+    for k in 0..order {
+        let length = 0.5f64.powi(k as i32);
+        match k % 4 {
+            0 => x += length,
+            1 => y += length,
+            2 => x -= length,
+            _ => y -= length,
+        }
+        min = (min.0.min(x), min.1.min(y));
+        max = (max.0.max(x), max.1.max(y));
+    }
+    // Margins of 2: 96 by 56 pixels for the box, the tighter axis wins.
+    let scale = (96.0 / (max.0 - min.0)).min(56.0 / (max.1 - min.1));
+    let step = drawing.start().step.to_f64();
+    assert!(
+        (step - scale).abs() < 1e-6 * scale,
+        "step {step}, model {scale}"
+    );
+    let mut frame = common::Bitmap::new(101, 61);
+    let stats = drawing.draw(&mut frame).unwrap();
+    assert_eq!(stats.segments, u64::from(order));
+    assert_eq!(frame.outside, 0);
+}
+
 /// A target that fails on its first write: the error comes back out, typed.
 struct FailingTarget;
 

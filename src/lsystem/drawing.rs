@@ -95,14 +95,37 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     /// Walks once in turtle units and returns the bounding box of what is drawn
     /// ([`FitError::EmptyDrawing`] if nothing is).
     pub fn bounds(&self) -> Result<Bounds, Error> {
-        self.bounds_from(Start::default())?
+        self.bounds_from(Start::default(), false)?
             .ok_or(Error::Fit(FitError::EmptyDrawing))
     }
 
+    /// The bounding box of what is drawn, by a walk in turtle units, and the unit: one step,
+    /// or 2¹⁰, 2²⁰ or 2³⁰ of them where `@` shrinks steps below what one step resolves.
+    fn sized_bounds(&self) -> Result<(Option<Bounds>, Real), Error> {
+        let mut result = Err(Error::Walk(WalkError::StepUnderflow));
+        for shift in [0, 10, 20, 30] {
+            let unit = Real::from_int(1 << shift);
+            let start = Start {
+                step: unit,
+                ..Start::default()
+            };
+            result = self.bounds_from(start, false).map(|bounds| (bounds, unit));
+            if !matches!(result, Err(Error::Walk(WalkError::StepUnderflow))) {
+                break;
+            }
+        }
+        result
+    }
+
     /// The bounding box of what is drawn from `start`, by a walk; `None` if nothing is.
-    fn bounds_from(&self, start: Start) -> Result<Option<Bounds>, Error> {
+    /// `in_pixels`: the walk's unit is a pixel (see `Segments::in_pixels`).
+    fn bounds_from(&self, start: Start, in_pixels: bool) -> Result<Option<Bounds>, Error> {
         let mut bounds: Option<Bounds> = None;
-        self.segments(start)?.try_for_each_segment(|segment| {
+        let mut walk = self.segments(start)?;
+        if in_pixels {
+            walk = walk.in_pixels();
+        }
+        walk.try_for_each_segment(|segment| {
             for p in [segment.start, segment.end] {
                 let b = bounds.get_or_insert(Bounds { min: p, max: p });
                 b.min.x = b.min.x.min(p.x);
@@ -172,12 +195,15 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             .as_deref_mut()
             .and_then(|cells| Table::build(self.grammar, self.order, Real::ONE, cells))
             .and_then(|table| table.picture(self.grammar, 0));
-        let bounds = match measured {
-            Some(summary) => summary.drawn.map(|drawn| Bounds {
-                min: point(drawn.min),
-                max: point(drawn.max),
-            }),
-            None => self.bounds_from(Start::default())?,
+        let (bounds, unit) = match measured {
+            Some(summary) => (
+                summary.drawn.map(|drawn| Bounds {
+                    min: point(drawn.min),
+                    max: point(drawn.max),
+                }),
+                Real::ONE,
+            ),
+            None => self.sized_bounds()?,
         };
         // A picture that draws nothing is valid: it is placed at the area's middle.
         let (low, high) = bounds
@@ -186,10 +212,15 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             });
         let fitted = fit(low, high, self.orientation, &area, self.margin)?;
         let (x, y) = self.orientation.to_picture(fitted.origin);
+        // Pixels per picture unit, times the unit's steps: pixels per step.
+        let step = fitted
+            .scale
+            .checked_mul(unit)
+            .ok_or(Error::Walk(WalkError::Overflow))?;
         self.prepared(
             Start {
                 position: TurtlePoint { x, y },
-                step: fitted.scale,
+                step,
                 turns: 0,
             },
             palette,
@@ -242,9 +273,9 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         let (pixels, table) = match table {
             Some(table) => match self.checked_picture(&table, start)? {
                 Some(pixels) => (pixels, Some(table)),
-                None => (self.bounds_from(start)?, None),
+                None => (self.bounds_from(start, true)?, None),
             },
-            None => (self.bounds_from(start)?, None),
+            None => (self.bounds_from(start, true)?, None),
         };
         // Nothing drawn: an empty box where the turtle starts.
         let empty = Rectangle::new(self.pixel_of(start.position), Size::zero());
@@ -360,7 +391,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
         D: DrawTarget<Color = P::Color>,
     {
         let clip = target.bounding_box();
-        let mut segments = self.system.segments(self.start)?;
+        let mut segments = self.system.segments(self.start)?.in_pixels();
         let mut last_end = None;
         if let Some(table) = &self.table {
             let decide = |cell: &Summary, start: TurtlePoint| self.decide(cell, start, &clip);

@@ -15,7 +15,9 @@ use crate::math::Real;
 pub const DEFAULT_STACK: usize = 20;
 
 /// The smallest step, as a fraction of a unit: 2⁻²⁰. Below it a step keeps fewer than 12
-/// significant bits and the picture would be silently wrong, so it is an error instead.
+/// significant bits and a measurement in these units would be silently wrong, so it is an
+/// error instead: the fit then measures again in a larger unit. A walk in pixels (see
+/// [`Segments::in_pixels`]) takes any step: each rounds by at most 2⁻³³ pixel.
 const MIN_STEP: Real = Real::from_bits(1 << 12);
 
 /// A point in turtle space: y up, `+` turns counter-clockwise.
@@ -82,6 +84,8 @@ struct Turtle<'g, const STACK: usize> {
     state: State,
     stack: Vec<State, STACK>,
     max_stack: usize,
+    /// Steps below this (but 0) are [`WalkError::StepUnderflow`].
+    min_step: Real,
 }
 
 impl<'g, const STACK: usize> Turtle<'g, STACK> {
@@ -102,6 +106,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             },
             stack: Vec::new(),
             max_stack: 0,
+            min_step: MIN_STEP,
         };
         let left = start.turns >= 0;
         for _ in 0..start.turns.unsigned_abs() % 65_536 {
@@ -204,7 +209,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                     .checked_mul(factor)
                     .ok_or(Error::Walk(WalkError::Overflow))?;
                 // A step of exactly 0 is Fractint's `@` without a number: points.
-                if state.step != Real::ZERO && state.step.abs() < MIN_STEP {
+                if state.step != Real::ZERO && state.step.abs() < self.min_step {
                     return Err(Error::Walk(WalkError::StepUnderflow));
                 }
             }
@@ -332,6 +337,15 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
             segments: 0,
             failed: false,
         })
+    }
+
+    /// A walk whose unit is a pixel: steps shrunk by `@` below 2⁻²⁰ are taken, not refused
+    /// (each rounds by at most 2⁻³³ pixel, so a picture of fewer than 2³² segments is off
+    /// by less than half a pixel).
+    #[must_use]
+    pub(crate) fn in_pixels(mut self) -> Self {
+        self.turtle.min_step = Real::from_bits(1);
+        self
     }
 
     /// Ends the walk with [`WalkError::BudgetExhausted`] after `symbols` symbols.
