@@ -1,17 +1,22 @@
-//! L-system throughput: the Koch snowflake at order 8 (196,608 segments), walked alone and
-//! walked and rasterised into a 320×240 RGB565 framebuffer.
+//! L-system throughput: the Koch snowflake at order 8 (196,608 segments) into 320×240,
+//! side by side with the peer a new user would write: the `lindenmayer` crate's derivation
+//! iterator and an `f32` turtle (a sizing walk, then a drawing walk with Bresenham into a
+//! byte buffer).
 //!
-//! `cargo bench --bench lsystem`; the README quotes these numbers.
+//! `cargo bench --bench lsystem`; `benches/record` keeps the numbers the README quotes.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use std::hint::black_box;
-use tinyfractal::{Angle, Dialect, Grammar, LSystem, Segments};
+use tinyfractal::{cells_needed, Angle, Cell, Colors, Dialect, Grammar, LSystem, Segments};
 
 #[path = "../tests/support/frame.rs"]
 mod frame;
 
 type Framebuffer = frame::Frame<Rgb565>;
+
+const ORDER: u32 = 8;
+const SIZE: (usize, usize) = (320, 240);
 
 fn koch() -> Grammar<'static> {
     Grammar::new(Dialect::Fractint, "F--F--F", Angle::Divisions(6))
@@ -20,9 +25,71 @@ fn koch() -> Grammar<'static> {
         .unwrap()
 }
 
+/// The peer: `lindenmayer` derives, an `f32` turtle walks twice (size, then draw with
+/// Bresenham into one byte a pixel). Returns the segments drawn.
+fn peer(pixels: &mut [u8]) -> u64 {
+    let system = lindenmayer::LSystem::new(String::from("F--F--F"), &[('F', "F+F--F+F")]);
+    let turn = std::f32::consts::PI / 3.0;
+    let walk = |mut visit: Box<dyn FnMut(f32, f32, f32, f32) + '_>| {
+        let (mut x, mut y, mut heading) = (0.0f32, 0.0f32, 0.0f32);
+        for symbol in system.builder(ORDER as usize) {
+            match symbol {
+                'F' => {
+                    let (nx, ny) = (x + heading.cos(), y + heading.sin());
+                    visit(x, y, nx, ny);
+                    (x, y) = (nx, ny);
+                }
+                '+' => heading += turn,
+                '-' => heading -= turn,
+                _ => {}
+            }
+        }
+    };
+    let (mut min, mut max) = ((0.0f32, 0.0f32), (0.0f32, 0.0f32));
+    walk(Box::new(|_, _, x, y| {
+        min = (min.0.min(x), min.1.min(y));
+        max = (max.0.max(x), max.1.max(y));
+    }));
+    let (w, h) = (SIZE.0 as f32 - 5.0, SIZE.1 as f32 - 5.0);
+    let scale = (w / (max.0 - min.0)).min(h / (max.1 - min.1));
+    let mut segments = 0;
+    walk(Box::new(|x0, y0, x1, y1| {
+        let to_pixel = |x: f32, y: f32| {
+            (
+                ((x - min.0) * scale + 2.0) as i32,
+                (SIZE.1 as f32 - 3.0 - (y - min.1) * scale) as i32,
+            )
+        };
+        let ((mut x, mut y), (x1, y1)) = (to_pixel(x0, y0), to_pixel(x1, y1));
+        let (dx, dy) = ((x1 - x).abs(), -(y1 - y).abs());
+        let (sx, sy) = (if x < x1 { 1 } else { -1 }, if y < y1 { 1 } else { -1 });
+        let mut error = dx + dy;
+        loop {
+            if let Some(p) = pixels.get_mut(y as usize * SIZE.0 + x as usize) {
+                *p = 1;
+            }
+            if x == x1 && y == y1 {
+                break;
+            }
+            let twice = 2 * error;
+            if twice >= dy {
+                error += dy;
+                x += sx;
+            }
+            if twice <= dx {
+                error += dx;
+                y += sy;
+            }
+        }
+        segments += 1;
+    }));
+    segments
+}
+
 fn bench(c: &mut Criterion) {
     let grammar = koch();
-    let segments = 3 * 4u64.pow(8);
+    let segments = 3 * 4u64.pow(ORDER);
+    let size = Size::new(SIZE.0 as u32, SIZE.1 as u32);
     println!(
         "walker state (Segments, default capacities): {} bytes at any order",
         core::mem::size_of::<Segments<'static, 'static>>()
@@ -31,25 +98,66 @@ fn bench(c: &mut Criterion) {
     group.throughput(Throughput::Elements(segments));
     group.bench_function("segments (walk + turtle)", |b| {
         b.iter(|| {
-            let count = Segments::new(black_box(&grammar), 8).unwrap().count();
+            let count = Segments::new(black_box(&grammar), ORDER).unwrap().count();
             assert_eq!(count as u64, segments);
         })
     });
-    let mut framebuffer = Framebuffer::filled(Size::new(320, 240), Rgb565::BLACK);
-    let drawing = LSystem::new(&grammar, 8)
+    let mut framebuffer = Framebuffer::filled(size, Rgb565::BLACK);
+    let walked = LSystem::new(&grammar, ORDER)
         .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
         .unwrap();
-    group.bench_function("segments + rasterisation (320x240)", |b| {
-        b.iter(|| drawing.draw(black_box(&mut framebuffer)).unwrap())
-    });
-    group.bench_function("fit (sizing + checking passes)", |b| {
+    group.bench_function("fit (walks: sizing + checking passes)", |b| {
         b.iter(|| {
-            LSystem::new(black_box(&grammar), 8)
+            LSystem::new(black_box(&grammar), ORDER)
                 .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
                 .unwrap()
         })
     });
+    group.bench_function("draw (walk + rasterise)", |b| {
+        b.iter(|| walked.draw(black_box(&mut framebuffer)).unwrap())
+    });
+    let needed = cells_needed(&grammar, ORDER).unwrap();
+    let palette = [Rgb565::WHITE];
+    group.bench_function("fit (expansion table)", |b| {
+        let mut cells = vec![Cell::default(); needed];
+        b.iter(|| {
+            let drawing = LSystem::new(black_box(&grammar), ORDER)
+                .fit_in(size_box(size), Colors::new(&palette).unwrap(), &mut cells)
+                .unwrap();
+            black_box(drawing.bounding_box())
+        })
+    });
+    group.bench_function(
+        "draw (expansion table: culling, one pixel per sub-pixel subtree)",
+        |b| {
+            let mut cells = vec![Cell::default(); needed];
+            let drawing = LSystem::new(&grammar, ORDER)
+                .fit_in(size_box(size), Colors::new(&palette).unwrap(), &mut cells)
+                .unwrap();
+            b.iter(|| drawing.draw(black_box(&mut framebuffer)).unwrap())
+        },
+    );
+    group.bench_function("fit + draw (expansion table, as the CLI)", |b| {
+        let mut cells = vec![Cell::default(); needed];
+        b.iter(|| {
+            let drawing = LSystem::new(black_box(&grammar), ORDER)
+                .fit_in(size_box(size), Colors::new(&palette).unwrap(), &mut cells)
+                .unwrap();
+            drawing.draw(&mut framebuffer).unwrap()
+        })
+    });
+    group.bench_function(
+        "peer: lindenmayer + f32 turtle, two walks + Bresenham",
+        |b| {
+            let mut pixels = vec![0u8; SIZE.0 * SIZE.1];
+            b.iter(|| assert_eq!(peer(black_box(&mut pixels)), segments))
+        },
+    );
     group.finish();
+}
+
+fn size_box(size: Size) -> embedded_graphics::primitives::Rectangle {
+    embedded_graphics::primitives::Rectangle::new(Point::zero(), size)
 }
 
 criterion_group!(benches, bench);

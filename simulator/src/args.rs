@@ -72,6 +72,18 @@ pub struct LSystemArgs {
     pub order: u32,
     pub common: Common,
     pub segments: Option<PathBuf>,
+    /// `--view`: the window drawn, as fractions of the picture fitted to the whole target.
+    pub view: Option<View>,
+}
+
+/// A window of the fitted picture: `x0,y0,x1,y1` as fractions of the target it fills
+/// (0,0 top left, 1,1 bottom right; `0,0,1,1` is the whole picture).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct View {
+    pub x0: f64,
+    pub y0: f64,
+    pub x1: f64,
+    pub y1: f64,
 }
 
 /// `render mandelbrot` / `render julia`'s arguments, as text checked by the core.
@@ -187,8 +199,38 @@ struct LSystemOptions {
     /// Write every drawn segment, `x0 y0 x1 y1` in turtle units
     #[arg(long, value_name = "TXT")]
     segments: Option<PathBuf>,
+    /// Draw only this window of the picture: fractions of the target the whole picture
+    /// fills (0,0 top left, 1,1 bottom right), e.g. 0.4,0.4,0.6,0.6 to zoom 5 times
+    #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_view, allow_hyphen_values = true)]
+    view: Option<View>,
     #[command(flatten)]
     common: Common,
+}
+
+/// Smallest window side: a zoom of a million times keeps pixel positions in range.
+const MIN_VIEW_SIDE: f64 = 1e-6;
+
+fn parse_view(text: &str) -> Result<View, String> {
+    let bad = || {
+        format!(
+            "`{text}` is not X0,Y0,X1,Y1 with 0 <= X0 < X1 <= 1 and 0 <= Y0 < Y1 <= 1 \
+             (sides at least {MIN_VIEW_SIDE})"
+        )
+    };
+    let numbers: Vec<f64> = text
+        .split(',')
+        .map(|part| part.trim().parse::<f64>().map_err(|_| bad()))
+        .collect::<Result<_, _>>()?;
+    let [x0, y0, x1, y1] = numbers[..] else {
+        return Err(bad());
+    };
+    let within = |low: f64, high: f64| {
+        (0.0..=1.0).contains(&low) && high <= 1.0 && high - low >= MIN_VIEW_SIDE
+    };
+    if !(within(x0, x1) && within(y0, y1)) {
+        return Err(bad());
+    }
+    Ok(View { x0, y0, x1, y1 })
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -366,6 +408,7 @@ fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
         order: options.order,
         common: options.common,
         segments: options.segments,
+        view: options.view,
     })
 }
 

@@ -126,8 +126,14 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     window_available(common.window)?;
     let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);
     // Everything is computed and every output checked before anything is written.
-    let rendered = scene::render(&grammar, arguments.order, common.width(), common.height())
-        .map_err(failed)?;
+    let rendered = scene::render(
+        &grammar,
+        arguments.order,
+        common.width(),
+        common.height(),
+        arguments.view,
+    )
+    .map_err(failed)?;
     if rendered.stats.segments == 0 {
         eprintln!(
             "tinyfractal: note: {name} draws nothing at order {}: the picture is empty",

@@ -3,12 +3,13 @@
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
-use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
     cells_needed, Cell, Colors, Error, Grammar, LSystem, Orientation, Segments, WalkStats,
 };
 
+use crate::args::View;
 use crate::palette::VGA;
 
 /// Expansion levels the CLI's walks hold: orders up to 256 (the core's default, for MCUs,
@@ -36,18 +37,41 @@ pub struct Rendered {
 }
 
 /// Fits `grammar` at `order` into a `width`×`height` picture and draws it, heading right
-/// for Fractint systems and up for ABOP ones.
+/// for Fractint systems and up for ABOP ones; with a `view`, only that window of it.
 pub fn render(
     grammar: &Grammar<'_>,
     order: u32,
     width: u32,
     height: u32,
+    view: Option<View>,
 ) -> Result<Rendered, Error> {
     let orientation = match grammar.dialect() {
         tinyfractal::Dialect::Fractint => Orientation::Right,
         tinyfractal::Dialect::Abop => Orientation::Up,
     };
-    render_oriented(grammar, order, width, height, orientation)
+    render_window(grammar, order, width, height, orientation, view)
+}
+
+/// The area the whole picture is fitted to so that `view` of it fills a `width`×`height`
+/// target: the target scaled by the window's inverse and moved by its corner. The drawing
+/// culls the rest, so the cost follows what is visible.
+fn fitted_area(width: u32, height: u32, view: Option<View>) -> Result<Rectangle, Error> {
+    let target = Rectangle::new(Point::zero(), Size::new(width, height));
+    let Some(view) = view else {
+        return Ok(target);
+    };
+    let too_deep = Error::Walk(tinyfractal::WalkError::Overflow);
+    let scaled = |pixels: u32, low: f64, high: f64| -> Result<(i32, u32), Error> {
+        let size = (f64::from(pixels) / (high - low)).round();
+        let corner = (-low * size).round();
+        if size > f64::from(i32::MAX) || corner < f64::from(i32::MIN) {
+            return Err(too_deep);
+        }
+        Ok((corner as i32, size as u32))
+    };
+    let (x, w) = scaled(width, view.x0, view.x1)?;
+    let (y, h) = scaled(height, view.y0, view.y1)?;
+    Ok(Rectangle::new(Point::new(x, y), Size::new(w, h)))
 }
 
 /// Like [`render`], with the first heading pointing `orientation` on screen.
@@ -58,6 +82,17 @@ pub fn render_oriented(
     height: u32,
     orientation: Orientation,
 ) -> Result<Rendered, Error> {
+    render_window(grammar, order, width, height, orientation, None)
+}
+
+fn render_window(
+    grammar: &Grammar<'_>,
+    order: u32,
+    width: u32,
+    height: u32,
+    orientation: Orientation,
+    view: Option<View>,
+) -> Result<Rendered, Error> {
     let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(width, height));
     let started = Instant::now();
     let system = HostSystem::with_capacity(grammar, order).with_orientation(orientation);
@@ -65,7 +100,8 @@ pub fn render_oriented(
     let mut cells = cells_needed(grammar, order)
         .filter(|&needed| needed <= MAX_CELLS)
         .map_or_else(Vec::new, |needed| vec![Cell::default(); needed]);
-    let drawing = system.fit_in(display.bounding_box(), palette, &mut cells)?;
+    let area = fitted_area(width, height, view)?;
+    let drawing = system.fit_in(area, palette, &mut cells)?;
     let fit = started.elapsed();
     let stats = drawing
         .try_draw(&mut display)

@@ -906,3 +906,63 @@ fn any_order_and_empty_pictures_and_desktop_capacities() {
         stdout(&output)
     );
 }
+
+/// `--view` draws a window of the fitted picture: the top-left quarter at W×H is the
+/// top-left W×H of the whole picture drawn at 2W×2H, pixel for pixel; `0,0,1,1` is the
+/// picture itself; a malformed window is a usage error.
+#[test]
+fn view_draws_a_window_of_the_picture() {
+    let dir = scratch("view");
+    let render = |file: &str, size: &str, view: Option<&str>| {
+        let out = dir.join(file);
+        let mut args = vec![
+            "render",
+            "lsystem",
+            "--axiom",
+            "F--F--F",
+            "--rule",
+            "F=F+F--F+F",
+            "--angle",
+            "6",
+            "--dialect",
+            "fractint",
+            "--order",
+            "6",
+            "--size",
+            size,
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        if let Some(view) = view {
+            args.extend(["--view", view]);
+        }
+        let output = run(&args);
+        assert!(output.status.success(), "{}", stderr(&output));
+        image::open(&out).unwrap().to_rgb8()
+    };
+    let whole = render("whole.png", "160x120", None);
+    let same = render("same.png", "160x120", Some("0,0,1,1"));
+    assert_eq!(whole, same);
+    let double = render("double.png", "320x240", None);
+    let quarter = render("quarter.png", "160x120", Some("0,0,0.5,0.5"));
+    for y in 0..120 {
+        for x in 0..160 {
+            assert_eq!(
+                quarter.get_pixel(x, y),
+                double.get_pixel(x, y),
+                "({x}, {y})"
+            );
+        }
+    }
+    assert!(
+        quarter.pixels().any(|p| p.0 != [0, 0, 0]),
+        "something is drawn"
+    );
+    for bad in ["0,0,1", "0.5,0,0.5,1", "0,0,2,1", "a,b,c,d", "-0.1,0,1,1"] {
+        let output = run(&[
+            "render", "lsystem", "--axiom", "F", "--angle", "4", "--order", "1", "--view", bad,
+        ]);
+        assert_eq!(output.status.code(), Some(2), "{bad}");
+        assert!(stderr(&output).contains("X0,Y0,X1,Y1"), "{bad}");
+    }
+}

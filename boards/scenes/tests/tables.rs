@@ -133,18 +133,34 @@ fn lsystem_table(results: &Value) -> String {
     const SEGMENTS: u64 = 3 * 4u64.pow(8);
     let mut table = String::from("| what | time | segments per second |\n|---|---|---|\n");
     let times = &results["times_ns"];
+    let time = |key: &str| number(times, &format!("koch-snowflake-order-8 / {key}")).unwrap_or(0);
+    const PEER: &str = "peer: lindenmayer + f32 turtle, two walks + Bresenham";
+    const CLI: &str = "fit + draw (expansion table, as the CLI)";
     for (key, what) in [
         ("segments (walk + turtle)", "walk + turtle (`Segments`)"),
         (
-            "segments + rasterisation (320x240)",
-            "walk + turtle + rasterise into a 320×240 RGB565 framebuffer",
+            "fit (walks: sizing + checking passes)",
+            "fit by walking (sizing and checking passes)",
         ),
         (
-            "fit (sizing + checking passes)",
-            "fit (sizing pass + checking pass)",
+            "draw (walk + rasterise)",
+            "draw by walking, rasterised into a 320×240 RGB565 framebuffer",
+        ),
+        (
+            "fit (expansion table)",
+            "fit from the expansion table (`fit_in`)",
+        ),
+        (
+            "draw (expansion table: culling, one pixel per sub-pixel subtree)",
+            "draw through the table: culling, one pixel per sub-pixel subtree",
+        ),
+        (CLI, "**fit + draw through the table, as the CLI**"),
+        (
+            PEER,
+            "peer: `lindenmayer` crate + `f32` turtle, two walks + Bresenham",
         ),
     ] {
-        let ns = number(times, &format!("koch-snowflake-order-8 / {key}")).unwrap_or(0);
+        let ns = time(key);
         let per_second = SEGMENTS as f64 / (ns.max(1) as f64 / 1e9);
         table.push_str(&format!(
             "| {what} | {} | {:.0} M |\n",
@@ -152,6 +168,10 @@ fn lsystem_table(results: &Value) -> String {
             per_second / 1e6
         ));
     }
+    table.push_str(&format!(
+        "\nFit and draw through the table take {:.1}× less time than the peer.\n",
+        time(PEER) as f64 / time(CLI).max(1) as f64
+    ));
     table
 }
 
