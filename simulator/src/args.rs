@@ -120,7 +120,7 @@ enum Commands {
     /// Render one scene to PNG
     Render {
         #[command(subcommand)]
-        scene: Scene,
+        scene: Box<Scene>,
     },
     /// The systems in a .l file, one name a line
     List {
@@ -345,7 +345,7 @@ where
         Some(Commands::Gallery { out }) => Command::Gallery { out },
         Some(Commands::List { file }) => Command::List(file),
         Some(Commands::Completions { shell }) => Command::Completions(shell),
-        Some(Commands::Render { scene }) => match scene {
+        Some(Commands::Render { scene }) => match *scene {
             Scene::Lsystem(options) => Command::RenderLSystem(lsystem(options)?),
             Scene::Mandelbrot(options) => Command::RenderEscape(escape(None, options)),
             Scene::Julia(options) => Command::RenderEscape(escape(Some(options.c), options.view)),
