@@ -151,3 +151,13 @@ fn koch_at_order_16_draws_from_the_table() {
         Err(Error::Walk(tinyfractal::WalkError::BudgetExhausted { .. }))
     ));
 }
+
+/// The table's worst case per cell, as the docs state it.
+#[test]
+fn a_cell_is_at_most_128_bytes() {
+    let bytes = core::mem::size_of::<Cell>();
+    println!("Cell: {bytes} bytes");
+    assert!(bytes <= 128, "{bytes}");
+    // Koch1 at order 16: one symbol with a rule, 16 levels, 6 headings, 2 senses.
+    assert_eq!(cells_needed(&koch_snowflake(), 16), Some(192));
+}

@@ -141,7 +141,7 @@ impl Dialect {
     }
 
     /// What a symbol that takes no number makes the turtle do.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn plain_command(self, symbol: u8, extra_draw: SymbolSet) -> Command {
         match self {
             Self::Fractint => match symbol {

@@ -421,6 +421,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
     }
 
     /// Draws one segment; returns its end pixel.
+    #[inline(always)]
     fn draw_segment<D>(
         &self,
         target: &mut D,

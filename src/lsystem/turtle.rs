@@ -165,7 +165,9 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         }
     }
 
-    /// Carries out one command; returns the segment if it drew one.
+    /// Carries out one command; returns the segment if it drew one. Inlined into the walk
+    /// loops: a call per symbol costs more than most commands.
+    #[inline(always)]
     fn execute(&mut self, command: Command) -> Result<Option<Segment>, Error> {
         let state = &mut self.state;
         match command {

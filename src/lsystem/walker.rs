@@ -147,7 +147,8 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
     }
 
     /// The next op to interpret, asking `expand(symbol, left)` before each expansion.
-    #[inline]
+    /// Always inlined: with `expand` constant (the plain walk) the question disappears.
+    #[inline(always)]
     pub(crate) fn next_with(
         &mut self,
         mut expand: impl FnMut(u8, u32) -> bool,
