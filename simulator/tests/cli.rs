@@ -24,6 +24,23 @@ fn small_l() -> String {
         .to_string()
 }
 
+/// `render lsystem` of the Koch snowflake given inline (ABOP dialect unless `extra` says
+/// otherwise), with `extra` arguments.
+fn koch(extra: &[&str]) -> Output {
+    let mut args = vec![
+        "render",
+        "lsystem",
+        "--axiom",
+        "F--F--F",
+        "--rule",
+        "F=F+F--F+F",
+        "--angle",
+        "6",
+    ];
+    args.extend_from_slice(extra);
+    run(&args)
+}
+
 fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
 }
@@ -36,15 +53,7 @@ fn stdout(output: &Output) -> String {
 fn renders_an_inline_system_with_segments_and_stats() {
     let dir = scratch("inline");
     let (png, txt) = (dir.join("koch.png"), dir.join("koch.txt"));
-    let output = run(&[
-        "render",
-        "lsystem",
-        "--axiom",
-        "F--F--F",
-        "--rule",
-        "F=F+F--F+F",
-        "--angle",
-        "6",
+    let output = koch(&[
         "--order",
         "2",
         "--out",
@@ -680,15 +689,7 @@ fn paths_need_not_be_utf8() {
 fn segments_are_streamed() {
     let dir = scratch("stream");
     let txt = dir.join("koch.txt");
-    let output = run(&[
-        "render",
-        "lsystem",
-        "--axiom",
-        "F--F--F",
-        "--rule",
-        "F=F+F--F+F",
-        "--angle",
-        "6",
+    let output = koch(&[
         "--order",
         "7",
         "--size",
@@ -817,15 +818,7 @@ fn reader_warnings_and_errors_reach_the_user() {
 fn any_order_and_empty_pictures_and_desktop_capacities() {
     let dir = scratch("orders");
     let out = dir.join("koch.png");
-    let output = run(&[
-        "render",
-        "lsystem",
-        "--axiom",
-        "F--F--F",
-        "--rule",
-        "F=F+F--F+F",
-        "--angle",
-        "6",
+    let output = koch(&[
         "--dialect",
         "fractint",
         "--order",
@@ -860,51 +853,27 @@ fn any_order_and_empty_pictures_and_desktop_capacities() {
     assert!(empty.exists());
 
     // Brackets nested 100 deep at order 1, and order 40 of a system that grows slowly.
-    let deep = format!("{}F{}", "[+".repeat(100), "]".repeat(100));
-    let output = run(&[
-        "render",
-        "lsystem",
-        "--axiom",
-        "X",
-        "--rule",
-        &format!("X={deep}"),
-        "--angle",
-        "8",
-        "--order",
-        "1",
-        "--stats",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(output.status.success(), "{}", stderr(&output));
-    assert!(
-        stdout(&output).contains(" max_stack=100 "),
-        "{}",
-        stdout(&output)
-    );
-    let output = run(&[
-        "render",
-        "lsystem",
-        "--axiom",
-        "A",
-        "--rule",
-        "A=F+B",
-        "--rule",
-        "B=A",
-        "--angle",
-        "4",
-        "--order",
-        "40",
-        "--stats",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(output.status.success(), "{}", stderr(&output));
-    assert!(
-        stdout(&output).contains(" max_depth=41 "),
-        "{}",
-        stdout(&output)
-    );
+    let deep = format!("X={}F{}", "[+".repeat(100), "]".repeat(100));
+    let cases: [(&[&str], &str); 2] = [
+        (
+            &["--axiom", "X", "--rule", &deep, "--order", "1"],
+            " max_stack=100 ",
+        ),
+        (
+            &[
+                "--axiom", "A", "--rule", "A=F+B", "--rule", "B=A", "--order", "40",
+            ],
+            " max_depth=41 ",
+        ),
+    ];
+    for (system, expected) in cases {
+        let mut args = vec!["render", "lsystem", "--angle", "8", "--stats", "--out"];
+        args.push(out.to_str().unwrap());
+        args.extend_from_slice(system);
+        let output = run(&args);
+        assert!(output.status.success(), "{}", stderr(&output));
+        assert!(stdout(&output).contains(expected), "{}", stdout(&output));
+    }
 }
 
 /// `--view` draws a window of the fitted picture: the top-left quarter at W×H is the
@@ -916,14 +885,6 @@ fn view_draws_a_window_of_the_picture() {
     let render = |file: &str, size: &str, view: Option<&str>| {
         let out = dir.join(file);
         let mut args = vec![
-            "render",
-            "lsystem",
-            "--axiom",
-            "F--F--F",
-            "--rule",
-            "F=F+F--F+F",
-            "--angle",
-            "6",
             "--dialect",
             "fractint",
             "--order",
@@ -936,7 +897,7 @@ fn view_draws_a_window_of_the_picture() {
         if let Some(view) = view {
             args.extend(["--view", view]);
         }
-        let output = run(&args);
+        let output = koch(&args);
         assert!(output.status.success(), "{}", stderr(&output));
         image::open(&out).unwrap().to_rgb8()
     };
