@@ -508,6 +508,26 @@ fn steps_shrunk_below_the_unit_still_draw_right() {
     assert_eq!(frame.outside, 0);
 }
 
+/// Branches nested deeper than the MCU default (20 saved turtles) are a typed error naming
+/// the capacity there, and draw with a larger one (the CLI's is 1024).
+#[test]
+fn deep_nesting_needs_a_larger_stack_not_a_different_file() {
+    let text = fixture("deep-nesting.l");
+    let grammar = LFile::new(&text).find("deeptree").unwrap();
+    let area = Rectangle::new(Point::zero(), Size::new(64, 64));
+    assert_eq!(
+        LSystem::new(&grammar, 2)
+            .fit(area, &[BinaryColor::On])
+            .map(|_| ()),
+        Err(Error::Walk(WalkError::StackTooDeep { capacity: 20 }))
+    );
+    let drawing = LSystem::<'_, '_, 17, 64>::with_capacity(&grammar, 2)
+        .fit(area, &[BinaryColor::On])
+        .unwrap();
+    let stats = drawing.draw(&mut common::Bitmap::new(64, 64)).unwrap();
+    assert_eq!(stats.max_stack, 60);
+}
+
 /// A target that fails on its first write: the error comes back out, typed.
 struct FailingTarget;
 

@@ -927,3 +927,24 @@ fn view_draws_a_window_of_the_picture() {
         assert!(stderr(&output).contains("X0,Y0,X1,Y1"), "{bad}");
     }
 }
+
+/// Real files that nest deeper than an MCU's 20 saved turtles draw in the CLI.
+#[test]
+fn deep_files_draw_with_desktop_capacities() {
+    let out = scratch("deep").join("deep.png");
+    let output = run(&[
+        "render",
+        "lsystem",
+        "--file",
+        &data("deep-nesting.l"),
+        "--name",
+        "DeepTree",
+        "--order",
+        "3",
+        "--stats",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(stdout(&output).contains(" max_stack=90 "), "{}", stdout(&output));
+}

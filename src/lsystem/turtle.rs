@@ -299,7 +299,7 @@ pub struct WalkStats {
 ///
 /// This is the raw layer under [`LSystem`](crate::LSystem): no colours, no pixels. A main loop
 /// can pull a few segments at a time. Worst-case RAM is the walker (`DEPTH` × 4 bytes), the
-/// turtle state and its stack (`STACK` × 32 bytes) and two references: 0.8 KiB with the
+/// turtle state and its stack (`STACK` × 32 bytes) and two references: under 0.9 KiB with the
 /// defaults, whatever the order.
 ///
 /// After an `Err` the iterator ends.
