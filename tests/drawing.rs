@@ -235,7 +235,16 @@ fn colour_indices_through_any_palette() {
 fn walker_state_grows_by_its_capacities() {
     use core::mem::size_of;
     let size = |depth: usize, stack: usize| 4 * depth + 32 * stack + 148;
-    assert_eq!(size_of::<Segments<'static, 'static, 17, 20>>(), size(17, 20));
-    assert_eq!(size_of::<Segments<'static, 'static, 33, 64>>(), size(33, 64));
-    assert_eq!(size_of::<Segments<'static, 'static, 257, 1024>>(), size(257, 1024));
+    assert_eq!(
+        size_of::<Segments<'static, 'static, 17, 20>>(),
+        size(17, 20)
+    );
+    assert_eq!(
+        size_of::<Segments<'static, 'static, 33, 64>>(),
+        size(33, 64)
+    );
+    assert_eq!(
+        size_of::<Segments<'static, 'static, 257, 1024>>(),
+        size(257, 1024)
+    );
 }

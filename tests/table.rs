@@ -123,6 +123,45 @@ fn the_table_agrees_with_full_walks_on_the_corpus() {
     assert!(covered >= 60, "{covered} systems covered");
 }
 
+/// Free angles whose turns reach few headings exactly (22.5°, 45°, 90°) go through the
+/// table too; others (25.7°, 60° as a binary angle) do not.
+#[test]
+fn free_angles_of_power_of_two_divisions_agree_with_walks() {
+    use tinyfractal::{Angle, Dialect, Real};
+    let systems: [(&str, &[(char, &str)], &str); 4] = [
+        ("X", &[('X', "F-[[X]+X]+F[+FX]-X"), ('F', "FF")], "22.5"),
+        ("F", &[('F', "FF-[-F+F+F]+[+F-F-F]")], "22.5"),
+        ("F+F+F+F", &[('F', "F+F-F-FF+F+F-F")], "90"),
+        ("F", &[('F', "F+F--F|F+F")], "45"),
+    ];
+    for (axiom, rules, degrees) in systems {
+        let mut grammar =
+            Grammar::new(Dialect::Abop, axiom, Angle::parse_degrees(degrees).unwrap()).unwrap();
+        for &(symbol, body) in rules {
+            grammar.add_rule(symbol, body).unwrap();
+        }
+        assert!(cells_needed(&grammar, 3).is_some(), "{degrees}° is covered");
+        for order in 0..5 {
+            assert!(table_agrees_with_walk(
+                &grammar,
+                order,
+                &format!("{axiom} {degrees}° order {order}")
+            ));
+        }
+    }
+    for degrees in ["25.7", "60", "20"] {
+        let grammar = Grammar::new(
+            Dialect::Abop,
+            "F",
+            Angle::Degrees(Real::parse_decimal(degrees).unwrap()),
+        )
+        .unwrap()
+        .with_rule('F', "F+F")
+        .unwrap();
+        assert_eq!(cells_needed(&grammar, 3), None, "{degrees}°");
+    }
+}
+
 /// Koch1 at order 16: 3·4¹⁶ ≈ 1.3·10¹⁰ segments, drawn at 320×240 from the table, with
 /// the true segment count.
 #[test]

@@ -946,5 +946,9 @@ fn deep_files_draw_with_desktop_capacities() {
         out.to_str().unwrap(),
     ]);
     assert!(output.status.success(), "{}", stderr(&output));
-    assert!(stdout(&output).contains(" max_stack=90 "), "{}", stdout(&output));
+    assert!(
+        stdout(&output).contains(" max_stack=90 "),
+        "{}",
+        stdout(&output)
+    );
 }

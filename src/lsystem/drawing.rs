@@ -343,10 +343,13 @@ fn point((x, y): (Real, Real)) -> TurtlePoint {
     TurtlePoint { x, y }
 }
 
-/// The heading the turtle starts with after `turns` turns (as `Turtle::new` turns).
+/// The heading index the turtle starts with after `turns` turns (as `Turtle::new` turns).
 fn start_heading(grammar: &Grammar<'_>, turns: i32) -> u16 {
-    let n = u32::from(grammar.headings().divisions().max(1));
-    let k = (turns.unsigned_abs() % 65_536) % n;
+    let Some(cycle) = grammar.headings().cycle() else {
+        return 0;
+    };
+    let n = u32::from(cycle.count.max(1));
+    let k = ((turns.unsigned_abs() % 65_536) * u32::from(cycle.turn)) % n;
     let heading = if turns >= 0 { k } else { (n - k) % n };
     u16::try_from(heading).unwrap_or(0)
 }

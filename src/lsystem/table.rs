@@ -10,9 +10,11 @@
 //! does to the colour index, and the counts `--stats` reports. It is filled bottom-up, each
 //! cell from its rule bodies and the cells one level down.
 //!
-//! It does not apply (and the engine walks instead) to free angles, `@` scaling, `\`, `/`,
-//! `D` and `M` (steps of other lengths or headings), nor to branches nested deeper than
-//! [`MAX_BODY_NESTING`] inside one body.
+//! Free angles qualify when their turns reach few headings exactly: 90°, 45°, 22.5°, 11.25°
+//! and 5.625° (a binary angle that divides the turn by a power of two, at most 64
+//! headings). It does not apply (and the engine walks instead) to other free angles, `@`
+//! scaling, `\`, `/`, `D` and `M` (steps of other lengths or headings), nor to branches
+//! nested deeper than [`MAX_BODY_NESTING`] inside one body.
 //!
 //! Storage is the caller's: a slice of [`Cell`]s, `symbols with rules × order × n × 2` of
 //! them ([`cells_needed`]), about 100 bytes each; too few and the engine walks.
@@ -21,6 +23,7 @@ use heapless::Vec;
 
 use super::alphabet::{Command, Dialect};
 use super::grammar::{Grammar, NUMERIC};
+use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 
 /// Deepest bracket nesting inside one body the table follows.
@@ -117,8 +120,8 @@ pub(crate) struct Summary {
 /// How many cells a table for `grammar` at `order` needs, or `None` if the table does not
 /// apply to it (see the module docs).
 pub fn cells_needed(grammar: &Grammar<'_>, order: u32) -> Option<usize> {
-    let n = usize::from(grammar.headings().divisions());
-    if n == 0 || !table_applies(grammar) {
+    let n = usize::from(grammar.headings().cycle()?.count);
+    if !table_applies(grammar) {
         return None;
     }
     let symbols = (0..128u8)
@@ -152,6 +155,8 @@ pub(crate) struct Table<'c> {
     dense: [u8; 128],
     order: u32,
     divisions: u16,
+    /// What `+` adds to the heading.
+    turn: u16,
     /// v[h]: one step along each heading.
     vectors: Vec<(Real, Real), { crate::math::MAX_ANGLE_DIVISIONS as usize }>,
 }
@@ -162,6 +167,7 @@ struct Run<'r, 'g, 'a> {
     dense: &'r [u8; 128],
     order: u32,
     divisions: u16,
+    turn: u16,
     vectors: &'r [(Real, Real)],
     grammar: &'g Grammar<'a>,
 }
@@ -178,10 +184,16 @@ impl<'c> Table<'c> {
         let needed = cells_needed(grammar, order)?;
         let cells = cells.get_mut(..needed)?;
         let headings = grammar.headings();
-        let divisions = headings.divisions();
+        let cycle = headings.cycle()?;
+        let divisions = cycle.count;
         let mut vectors = Vec::new();
         for h in 0..divisions {
-            let (cos, sin) = headings.cos_sin(h);
+            // The turtle's own direction for the heading: the table, or the binary angle.
+            let (cos, sin) = if headings.divisions() > 0 {
+                headings.cos_sin(h)
+            } else {
+                BinaryAngle(u32::from(h) << cycle.shift).cos_sin()
+            };
             vectors.push((step.mul_q30(cos), step.mul_q30(sin))).ok()?;
         }
         let mut dense = [NONE; 128];
@@ -208,6 +220,7 @@ impl<'c> Table<'c> {
                             dense: &dense,
                             order,
                             divisions,
+                            turn: cycle.turn,
                             vectors: &vectors,
                             grammar,
                         };
@@ -223,6 +236,7 @@ impl<'c> Table<'c> {
             dense,
             order,
             divisions,
+            turn: cycle.turn,
             vectors,
         })
     }
@@ -257,6 +271,7 @@ impl<'c> Table<'c> {
             dense: &self.dense,
             order: self.order,
             divisions: self.divisions,
+            turn: self.turn,
             vectors: &self.vectors,
             grammar,
         };
@@ -389,9 +404,9 @@ impl Run<'_, '_, '_> {
                 Command::Left | Command::Right => {
                     let left_turn = matches!(self.grammar.command(op), Command::Left) != s.reversed;
                     s.heading = if left_turn {
-                        (s.heading + 1) % n
+                        (s.heading + self.turn) % n
                     } else {
-                        (s.heading + n - 1) % n
+                        (s.heading + n - self.turn) % n
                     };
                 }
                 Command::Around => s.heading = (s.heading + n - n / 2) % n,

@@ -273,7 +273,12 @@ impl<const STACK: usize> Turtle<'_, STACK> {
             x: state.position.x.checked_add(cell.displacement.0)?,
             y: state.position.y.checked_add(cell.displacement.1)?,
         };
-        state.heading = cell.heading;
+        if self.headings.divisions() > 0 {
+            state.heading = cell.heading;
+        } else {
+            let shift = self.headings.cycle()?.shift;
+            state.free = BinaryAngle(u32::from(cell.heading) << shift);
+        }
         state.reversed = cell.reversed;
         state.color = cell.color.apply(state.color);
         let inside = usize::try_from(cell.nesting).unwrap_or(usize::MAX);
@@ -380,9 +385,17 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
 }
 
 impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> {
-    /// The heading and sense of `!` the turtle has now (for table lookups).
+    /// The heading and sense of `!` the turtle has now (for table lookups): the division,
+    /// or the free heading's index in its cycle.
     fn heading(&self) -> (u16, bool) {
-        (self.turtle.state.heading, self.turtle.state.reversed)
+        let turtle = &self.turtle;
+        let heading = if turtle.headings.divisions() > 0 {
+            turtle.state.heading
+        } else {
+            let shift = turtle.headings.cycle().map_or(31, |cycle| cycle.shift);
+            u16::try_from(turtle.state.free.0 >> shift).unwrap_or(u16::MAX)
+        };
+        (heading, turtle.state.reversed)
     }
 
     /// The next segment or dot, asking `decide(cell, start, colour)` at every expansion the

@@ -75,6 +75,42 @@ impl Headings {
         self.divisions
     }
 
+    /// The headings a turtle can reach by turns, when they are few and exact: `Angle n`
+    /// gives n; a free angle whose binary turn δ generates at most `MAX_ANGLE_DIVISIONS`
+    /// binary angles (δ a multiple of 2³² / n for a power of two n: 90°, 45°, 22.5°, ...)
+    /// gives that n. `None` for any other free angle.
+    pub(crate) fn cycle(&self) -> Option<HeadingCycle> {
+        if self.divisions > 0 {
+            return Some(HeadingCycle {
+                count: self.divisions,
+                turn: 1,
+                shift: 0,
+            });
+        }
+        let delta = self.free_turn.0;
+        // Headings k·δ mod 2³² are the multiples of 2^z, z = trailing zeros of δ: 2^(32-z)
+        // of them (at least 2, so that `|`, half a turn, is one of them).
+        let zeros = delta.trailing_zeros().min(31);
+        let count = 1u64 << (32 - zeros);
+        (count <= u64::from(MAX_ANGLE_DIVISIONS)).then(|| HeadingCycle {
+            count: u16::try_from(count).unwrap_or(MAX_ANGLE_DIVISIONS),
+            turn: u16::try_from(u64::from(delta >> zeros) % count).unwrap_or(0),
+            shift: zeros,
+        })
+    }
+}
+
+/// The finite set of headings of a turtle: `count` of them, index h; `+` adds `turn`; for a
+/// free angle, heading h is the binary angle h << `shift` (for `Angle n`, `shift` is 0 and
+/// the heading is the division).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct HeadingCycle {
+    pub(crate) count: u16,
+    pub(crate) turn: u16,
+    pub(crate) shift: u32,
+}
+
+impl Headings {
     /// The binary-angle turn of `+` for a free angle.
     #[inline]
     pub(crate) const fn free_turn(&self) -> trig::BinaryAngle {
