@@ -128,7 +128,8 @@ fn the_table_agrees_with_full_walks_on_the_corpus() {
 #[test]
 fn free_angles_of_power_of_two_divisions_agree_with_walks() {
     use tinyfractal::{Angle, Dialect, Real};
-    let systems: [(&str, &[(char, &str)], &str); 4] = [
+    type Rules = &'static [(char, &'static str)];
+    let systems: [(&str, Rules, &str); 4] = [
         ("X", &[('X', "F-[[X]+X]+F[+FX]-X"), ('F', "FF")], "22.5"),
         ("F", &[('F', "FF-[-F+F+F]+[+F-F-F]")], "22.5"),
         ("F+F+F+F", &[('F', "F+F-F-FF+F+F-F")], "90"),
