@@ -74,3 +74,66 @@ proptest! {
         }
     }
 }
+
+/// Random systems through the expansion table and by walking: the same outcome (error or
+/// fit), the same pixels, the same statistics.
+mod table {
+    use super::*;
+    use tinyfractal::{cells_needed, Cell, Colors};
+
+    const BODY: &str = "FFFGG++--|![]XYAB";
+
+    fn body(max: usize) -> impl Strategy<Value = String> {
+        proptest::collection::vec(
+            proptest::sample::select(BODY.chars().collect::<Vec<_>>()),
+            0..max,
+        )
+        .prop_map(|chars| chars.into_iter().collect::<String>())
+        .prop_filter("balanced brackets", |s| {
+            let mut depth = 0i32;
+            s.chars().all(|c| {
+                depth += match c {
+                    '[' => 1,
+                    ']' => -1,
+                    _ => 0,
+                };
+                depth >= 0
+            }) && depth == 0
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+        #[test]
+        fn the_table_and_the_walk_agree(axiom in body(8), x in body(12), y in body(12),
+                                        divisions in 1u16..=16, order in 0u32..5,
+                                        width in 8u32..60, height in 8u32..60) {
+            let grammar = Grammar::new(Dialect::Fractint, &axiom, Angle::Divisions(divisions))
+                .and_then(|g| g.with_rule('X', &x))
+                .and_then(|g| g.with_rule('Y', &y));
+            let Ok(grammar) = grammar else { return Ok(()) };
+            let needed = cells_needed(&grammar, order).unwrap();
+            let mut cells = vec![Cell::default(); needed];
+            let system = LSystem::new(&grammar, order).with_budget(200_000);
+            let area = Rectangle::new(Point::new(1, 2), Size::new(width, height));
+            let palette = [BinaryColor::On];
+            let walked = system.fit(area, &palette);
+            let tabled = system.fit_in(area, Colors::new(&palette).unwrap(), &mut cells);
+            match (walked, tabled) {
+                (Ok(walked), Ok(tabled)) => {
+                    prop_assert_eq!(walked.start(), tabled.start());
+                    prop_assert_eq!(walked.bounding_box(), tabled.bounding_box());
+                    // A smaller frame than the area, so that some of it is culled.
+                    let (mut a, mut b) = (Bitmap::new(40, 30), Bitmap::new(40, 30));
+                    let stats = (walked.draw(&mut a).unwrap(), tabled.draw(&mut b).unwrap());
+                    prop_assert_eq!(stats.0, stats.1);
+                    prop_assert!(a.pixels == b.pixels, "pixels differ");
+                }
+                // The walk may stop at its budget where the table does not walk.
+                (Err(Error::Walk(tinyfractal::WalkError::BudgetExhausted { .. })), _) => {}
+                (walked, tabled) => prop_assert_eq!(walked.map(|_| ()), tabled.map(|_| ())),
+            }
+        }
+    }
+}
