@@ -122,7 +122,7 @@ pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
 pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
 pub use lsystem::table::{cells_needed, Cell, MAX_BODY_NESTING};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
-pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
+pub use lsystem::walker::{DerivedSymbol, Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
 pub use render::fit::{Orientation, DEFAULT_MARGIN};
 pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};

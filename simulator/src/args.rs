@@ -15,12 +15,22 @@ pub enum Command {
     RenderLSystem(LSystemArgs),
     /// `render mandelbrot ...` and `render julia --c RE,IM ...`
     RenderEscape(EscapeArgs),
+    /// `derive ...`
+    Derive(DeriveArgs),
     /// `list PATH.l`
     List(PathBuf),
     /// `gallery [--out DIR]`, and no arguments at all
     Gallery { out: PathBuf },
     /// `completions SHELL`
     Completions(clap_complete::Shell),
+}
+
+/// `derive`'s arguments.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeriveArgs {
+    pub source: Source,
+    pub order: u32,
+    pub max_length: u64,
 }
 
 /// Where the system comes from.
@@ -122,6 +132,8 @@ enum Commands {
         #[command(subcommand)]
         scene: Box<Scene>,
     },
+    /// Print the string a system derives at an order, on one line
+    Derive(DeriveOptions),
     /// The systems in a .l file, one name a line
     List {
         /// The .l file
@@ -153,6 +165,34 @@ enum Scene {
 
 #[derive(Debug, Args)]
 struct LSystemOptions {
+    #[command(flatten)]
+    system: SystemOptions,
+    /// Write every drawn segment, `x0 y0 x1 y1` in turtle units
+    #[arg(long, value_name = "TXT")]
+    segments: Option<PathBuf>,
+    /// Draw only this window of the picture: fractions of the target the whole picture
+    /// fills (0,0 top left, 1,1 bottom right), e.g. 0.4,0.4,0.6,0.6 to zoom 5 times
+    #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_view, allow_hyphen_values = true)]
+    view: Option<View>,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Args)]
+struct DeriveOptions {
+    #[command(flatten)]
+    system: SystemOptions,
+    /// The longest string printed, in symbols (a typed error past it)
+    #[arg(long = "max-length", value_name = "N", default_value_t = DEFAULT_MAX_LENGTH)]
+    max_length: u64,
+}
+
+/// `derive`'s default `--max-length`.
+pub const DEFAULT_MAX_LENGTH: u64 = 1_000_000;
+
+/// A system, from a file or inline, and its order: what `render lsystem` and `derive` share.
+#[derive(Debug, Args)]
+struct SystemOptions {
     /// A Fractint .l file (with --name)
     #[arg(
         long,
@@ -196,15 +236,6 @@ struct LSystemOptions {
     /// The order (derivation steps)
     #[arg(long, value_name = "N")]
     order: u32,
-    /// Write every drawn segment, `x0 y0 x1 y1` in turtle units
-    #[arg(long, value_name = "TXT")]
-    segments: Option<PathBuf>,
-    /// Draw only this window of the picture: fractions of the target the whole picture
-    /// fills (0,0 top left, 1,1 bottom right), e.g. 0.4,0.4,0.6,0.6 to zoom 5 times
-    #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_view, allow_hyphen_values = true)]
-    view: Option<View>,
-    #[command(flatten)]
-    common: Common,
 }
 
 /// Smallest window side: a zoom of a million times keeps pixel positions in range.
@@ -344,6 +375,11 @@ where
         },
         Some(Commands::Gallery { out }) => Command::Gallery { out },
         Some(Commands::List { file }) => Command::List(file),
+        Some(Commands::Derive(options)) => Command::Derive(DeriveArgs {
+            order: options.system.order,
+            source: source(options.system, false)?,
+            max_length: options.max_length,
+        }),
         Some(Commands::Completions { shell }) => Command::Completions(shell),
         Some(Commands::Render { scene }) => match *scene {
             Scene::Lsystem(options) => Command::RenderLSystem(lsystem(options)?),
@@ -368,7 +404,20 @@ fn usage(kind: ErrorKind, message: &str) -> clap::Error {
 }
 
 fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
-    let source = match (options.file, options.axiom) {
+    let order = options.system.order;
+    Ok(LSystemArgs {
+        source: source(options.system, true)?,
+        order,
+        common: options.common,
+        segments: options.segments,
+        view: options.view,
+    })
+}
+
+/// The system the options name. An inline system needs an angle to be drawn
+/// (`angle_required`); to be derived it does not (a quarter turn stands in).
+fn source(options: SystemOptions, angle_required: bool) -> Result<Source, clap::Error> {
+    Ok(match (options.file, options.axiom) {
         (Some(path), None) => Source::File {
             path,
             // `requires = "name"` makes it present.
@@ -378,6 +427,7 @@ fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
             let angle = match (options.angle, options.angle_deg) {
                 (Some(n), _) => tinyfractal::Angle::Divisions(n),
                 (None, Some(degrees)) => degrees,
+                (None, None) if !angle_required => tinyfractal::Angle::Divisions(4),
                 (None, None) => {
                     return Err(usage(
                         ErrorKind::MissingRequiredArgument,
@@ -402,13 +452,6 @@ fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
                 "give a system: --file PATH --name NAME, or --axiom STR",
             ))
         }
-    };
-    Ok(LSystemArgs {
-        source,
-        order: options.order,
-        common: options.common,
-        segments: options.segments,
-        view: options.view,
     })
 }
 

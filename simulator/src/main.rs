@@ -8,14 +8,15 @@ mod output;
 mod palette;
 mod scene;
 
+use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics_simulator::SimulatorDisplay;
 use std::process::ExitCode;
 
-use args::{Command, EscapeArgs, LSystemArgs, Source};
-use tinyfractal::{Grammar, LFile};
+use args::{Command, DeriveArgs, EscapeArgs, LSystemArgs, Source};
+use tinyfractal::{Grammar, LFile, Walker, DEFAULT_BUDGET};
 
 fn main() -> ExitCode {
     let command = match args::parse(std::env::args_os().skip(1)) {
@@ -37,6 +38,7 @@ fn main() -> ExitCode {
             Ok(())
         }
         Command::List(path) => list(&path),
+        Command::Derive(arguments) => derive(&arguments),
         Command::Gallery { out } => gallery::run(&out),
         Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
         Command::RenderEscape(escape) => render_escape(&escape),
@@ -88,11 +90,15 @@ fn list(path: &Path) -> Result<(), String> {
     Ok(())
 }
 
-fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
-    let file_text;
-    let (grammar, name) = match &arguments.source {
+/// The grammar a source names, and the name to report it by; warnings go to stderr.
+fn load<'a>(
+    source: &'a Source,
+    file_text: &'a mut String,
+) -> Result<(Grammar<'a>, String), String> {
+    Ok(match source {
         Source::File { path, name } => {
-            file_text = read_text(path)?;
+            *file_text = read_text(path)?;
+            let file_text: &'a String = file_text;
             let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
             let entry = LFile::new(&file_text).entry(name).map_err(failed)?;
             let grammar = entry.grammar().map_err(failed)?;
@@ -121,7 +127,51 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
             }
             (grammar, "lsystem".to_string())
         }
+    })
+}
+
+/// `derive`: the string at the order, on one line, if it is at most `--max-length` symbols
+/// (measured first, so nothing is printed past the limit).
+fn derive(arguments: &DeriveArgs) -> Result<(), String> {
+    let mut file_text = String::new();
+    let (grammar, name) = load(&arguments.source, &mut file_text)?;
+    let order = arguments.order;
+    let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
+    // Expansions that print nothing still take reads: bound them too.
+    let budget = arguments.max_length.saturating_mul(64).max(DEFAULT_BUDGET);
+    let walk = || {
+        Walker::<'_, '_, { scene::DEPTH }>::with_capacity(&grammar, order)
+            .map(|walker| walker.with_budget(budget))
+            .map_err(failed)
     };
+    let mut length = 0u64;
+    let mut counting = walk()?;
+    while let Some(symbol) = counting.next_symbol() {
+        symbol.map_err(failed)?;
+        length += 1;
+        if length > arguments.max_length {
+            return Err(format!(
+                "{name} at order {order}: the derived string is longer than {} symbols: \
+                 lower the order or raise --max-length",
+                arguments.max_length
+            ));
+        }
+    }
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    let mut printing = walk()?;
+    let written = (|| -> io::Result<()> {
+        while let Some(symbol) = printing.next_symbol() {
+            write!(out, "{}", symbol.map_err(io::Error::other)?)?;
+        }
+        writeln!(out)?;
+        out.flush()
+    })();
+    written.map_err(|e| format!("cannot write the derivation: {e}"))
+}
+
+fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
+    let mut file_text = String::new();
+    let (grammar, name) = load(&arguments.source, &mut file_text)?;
     let common = &arguments.common;
     window_available(common.window)?;
     let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);

@@ -952,3 +952,75 @@ fn deep_files_draw_with_desktop_capacities() {
         stdout(&output)
     );
 }
+
+/// `derive` prints the derived string on one line: Lindenmayer's algae as the lecture
+/// writes them, a Fractint file's numeric commands with their numbers, and a typed error
+/// (exit 1, nothing on stdout) past `--max-length`.
+#[test]
+fn derive_prints_the_derived_string() {
+    let algae = ["A", "AB", "ABA", "ABAAB", "ABAABABA", "ABAABABAABAAB"];
+    for (order, expected) in algae.iter().enumerate() {
+        let output = run(&[
+            "derive",
+            "--axiom",
+            "A",
+            "--rule",
+            "A=AB",
+            "--rule",
+            "B=A",
+            "--order",
+            &order.to_string(),
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        assert_eq!(stdout(&output), format!("{expected}\n"));
+    }
+    let dir = scratch("derive");
+    let file = dir.join("numbers.l");
+    std::fs::write(
+        &file,
+        "T {\n Angle 4\n Axiom F@.5F\\30/22.5C12<3>1@IQ3@2\n F=FF\n}\n",
+    )
+    .unwrap();
+    let output = run(&[
+        "derive",
+        "--file",
+        file.to_str().unwrap(),
+        "--name",
+        "t",
+        "--order",
+        "1",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    // 1/sqrt(3) = 0.57735 shows as 0.5774; 2 as 2; Fractint's symbols lower-cased.
+    assert_eq!(stdout(&output), "ff@0.5ff\\30/22.5c12<3>1@0.5774@2\n");
+    let output = run(&[
+        "derive",
+        "--axiom",
+        "A",
+        "--rule",
+        "A=AA",
+        "--order",
+        "10",
+        "--max-length",
+        "1000",
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(stdout(&output), "");
+    assert!(
+        stderr(&output).contains("longer than 1000 symbols"),
+        "{}",
+        stderr(&output)
+    );
+    let output = run(&[
+        "derive",
+        "--axiom",
+        "A",
+        "--rule",
+        "A=AA",
+        "--order",
+        "10",
+        "--max-length",
+        "1024",
+    ]);
+    assert_eq!(stdout(&output).trim_end().len(), 1024);
+}

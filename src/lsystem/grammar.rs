@@ -9,9 +9,10 @@
 use heapless::Vec;
 
 use super::alphabet::{Command, Dialect, SymbolSet};
+use super::walker::DerivedSymbol;
 use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
-use crate::math::Angle;
+use crate::math::{Angle, Real};
 
 /// Most rule lines a grammar holds (Fractint allowed 25); lines for one symbol append.
 pub const MAX_RULES: usize = 32;
@@ -362,6 +363,26 @@ impl<'a> Grammar<'a> {
                 .unwrap_or(Command::Nothing)
         } else {
             self.dialect.plain_command(op, self.extra_draw)
+        }
+    }
+
+    /// An op as a derived string prints it: its symbol and, for a numeric command, its
+    /// number (degrees for `\\` and `/`).
+    pub(crate) fn derived_symbol(&self, op: u8) -> DerivedSymbol {
+        let number = match self.command(op) {
+            Command::FreeLeft(turn) | Command::FreeRight(turn) => {
+                // A binary angle times 360 is its degrees in Q32 bits.
+                Some(Real::from_bits(i64::from(turn.0) * 360))
+            }
+            Command::Scale(factor) => Some(factor),
+            Command::SetColor(c) | Command::RaiseColor(c) | Command::LowerColor(c) => {
+                Some(Real::from_int(i32::from(c)))
+            }
+            _ => None,
+        };
+        DerivedSymbol {
+            symbol: char::from(self.symbol(op)),
+            number: number.filter(|_| op >= NUMERIC),
         }
     }
 

@@ -5,10 +5,14 @@
 //! A symbol with a rule is expanded (a frame is pushed) while order remains; any other symbol
 //! is handed out to be interpreted. Memory is `DEPTH` frames of 4 bytes, whatever the order.
 
+use core::fmt;
+
 use heapless::Vec;
 
 use super::grammar::{Grammar, NUMERIC};
 use crate::error::{Error, WalkError};
+use crate::math::wide::div_round;
+use crate::math::Real;
 
 /// Frames a walker holds by default: orders 0 to 16.
 pub const DEFAULT_DEPTH: usize = 17;
@@ -200,6 +204,55 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             }
             return Some(Ok(Next::Op(op)));
         }
+    }
+}
+
+/// One symbol of a derived string, as it prints: the symbol (lower-cased in the Fractint
+/// dialect) and, for a numeric command, its number (`@` the factor, `\` and `/` degrees,
+/// `C`, `<`, `>` the colour), shown with at most 4 decimals, trailing zeros dropped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DerivedSymbol {
+    /// The symbol.
+    pub symbol: char,
+    /// The number of a numeric command.
+    pub number: Option<Real>,
+}
+
+impl fmt::Display for DerivedSymbol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use fmt::Write;
+        f.write_char(self.symbol)?;
+        let Some(number) = self.number else {
+            return Ok(());
+        };
+        // Rounded half away from zero to 4 decimals.
+        let scaled = div_round(i128::from(number.to_bits()) * 10_000, 1 << Real::FRAC_BITS);
+        let sign = if scaled < 0 { "-" } else { "" };
+        let (whole, fraction) = (
+            scaled.unsigned_abs() / 10_000,
+            scaled.unsigned_abs() % 10_000,
+        );
+        write!(f, "{sign}{whole}")?;
+        if fraction > 0 {
+            let mut digits = fraction;
+            let mut width = 4;
+            while digits % 10 == 0 {
+                digits /= 10;
+                width -= 1;
+            }
+            write!(f, ".{digits:0width$}")?;
+        }
+        Ok(())
+    }
+}
+
+impl<const DEPTH: usize> Walker<'_, '_, DEPTH> {
+    /// The next symbol of the derived string, with its number if it has one (for printing
+    /// derivations; [`Iterator::next`] gives the bare symbols).
+    pub fn next_symbol(&mut self) -> Option<Result<DerivedSymbol, Error>> {
+        let grammar = self.grammar;
+        self.next_op()
+            .map(|op| op.map(|op| grammar.derived_symbol(op)))
     }
 }
 
