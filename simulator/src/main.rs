@@ -100,7 +100,7 @@ fn load<'a>(
             *file_text = read_text(path)?;
             let file_text: &'a String = file_text;
             let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
-            let entry = LFile::new(&file_text).entry(name).map_err(failed)?;
+            let entry = LFile::new(file_text).entry(name).map_err(failed)?;
             let grammar = entry.grammar().map_err(failed)?;
             for warning in entry.warnings() {
                 warn(&format!("{name} in {}: {warning}", path.display()));
