@@ -516,7 +516,7 @@ fn bad_views_are_typed_errors_naming_the_failed_condition() {
         "{message}"
     );
     assert_eq!(Coord::parse("8"), None);
-    assert_eq!(Coord::parse("1e-3"), None);
+    assert_eq!(Coord::parse("1e-3"), Coord::parse("0.001"));
     assert_eq!(Coord::from_f64(f64::NAN), None);
 }
 

@@ -26,3 +26,40 @@ fn coordinates_display_six_significant_digits() {
     assert_eq!(Coord::from_bits(1).to_string(), "8.67362e-19");
     assert_eq!(Coord::from_bits(i64::MAX).to_string(), "8");
 }
+
+/// Scientific notation, as people write it, exactly rounded: the Q60 bits equal those of
+/// the value worked out here as an exact fraction (mantissa × 2⁶⁰ / 10ᵏ, rounded half up).
+#[test]
+fn coordinates_accept_scientific_notation_exactly_rounded() {
+    let q60 = |mantissa: u128, k: u32| -> i64 {
+        let numerator = mantissa << 60;
+        let denominator = 10u128.pow(k);
+        ((numerator + denominator / 2) / denominator) as i64
+    };
+    let cases: [(&str, u128, u32, bool); 8] = [
+        ("1e-9", 1, 9, false),
+        ("2.5E-3", 25, 4, false),
+        ("-7.4e-1", 74, 2, true),
+        ("3.14159e+0", 314159, 5, false),
+        ("0.0001234e2", 1234, 5, false),
+        ("12345678901234567e-20", 12345678901234567, 20, false),
+        ("7E0", 7, 0, false),
+        (".5e1", 5, 0, false),
+    ];
+    for (text, mantissa, k, negative) in cases {
+        let bits = q60(mantissa, k);
+        let expected = if negative { -bits } else { bits };
+        assert_eq!(
+            Coord::parse(text).map(Coord::to_bits),
+            Some(expected),
+            "{text}"
+        );
+    }
+    assert_eq!(Coord::parse("1e-9"), Coord::parse("0.000000001"));
+    assert_eq!(Coord::parse("1e-400"), Some(Coord::default()));
+    for bad in [
+        "1e", "1e+", "e5", "1e5.5", "1e-", "1ee5", "1e400", "8e0", "1e1", "--1e-3", "1e-3x",
+    ] {
+        assert_eq!(Coord::parse(bad), None, "{bad}");
+    }
+}

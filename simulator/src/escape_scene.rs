@@ -34,7 +34,11 @@ pub struct Request<'a> {
 }
 
 fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
-    Coord::parse(text).ok_or_else(|| format!("{what}: `{text}` is not a number between -8 and 8"))
+    Coord::parse(text).ok_or_else(|| {
+        format!(
+            "{what}: `{text}` is not a number between -8 and 8 (write e.g. -0.75, 1e-9 or 2.5E-3)"
+        )
+    })
 }
 
 /// Checks and renders a request.

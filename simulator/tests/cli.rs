@@ -375,7 +375,10 @@ fn escape_time_errors() {
             "pixel spacing of 3.1225e-17",
         ),
         (vec!["mandelbrot", "--size", "0x5"], "zero width or height"),
-        (vec!["mandelbrot", "--center", "x,0"], "--center: `x`"),
+        (
+            vec!["mandelbrot", "--center", "x,0"],
+            "--center: `x` is not a number between -8 and 8 (write e.g. -0.75, 1e-9 or 2.5E-3)",
+        ),
         (
             vec!["julia", "--c", "3,3"],
             "the Julia parameter (3, 3) is more than 2 from 0",
@@ -1023,4 +1026,36 @@ fn derive_prints_the_derived_string() {
         "1024",
     ]);
     assert_eq!(stdout(&output).trim_end().len(), 1024);
+}
+
+/// Every CLI number takes scientific notation, as people write it.
+#[test]
+fn numbers_in_scientific_notation() {
+    let dir = scratch("scientific");
+    let (a, b) = (dir.join("a.txt"), dir.join("b.txt"));
+    for (width, centre, dwell) in [
+        ("1e-9", "-7.43643887e-1,1.31825904e-1", &a),
+        ("0.000000001", "-0.743643887,0.131825904", &b),
+    ] {
+        let output = run(&[
+            "render",
+            "mandelbrot",
+            "--width",
+            width,
+            "--center",
+            centre,
+            "--size",
+            "16x12",
+            "--max-iter",
+            "500",
+            "--stats",
+            "--out",
+            dir.join("m.png").to_str().unwrap(),
+            "--dwell",
+            dwell.to_str().unwrap(),
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        assert!(stdout(&output).contains("tier=deep"), "{}", stdout(&output));
+    }
+    assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
 }

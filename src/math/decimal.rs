@@ -3,10 +3,14 @@
 
 use super::wide::div_round;
 
-/// Parses a decimal number with an optional sign (`-0.75`, `.5`, `3`) into fixed point with
-/// `frac_bits` fractional bits (at most 62), rounded to nearest. Digits beyond the 19th
-/// after the point are checked but cannot matter at 62 bits or fewer (10⁻¹⁹ < 2⁻⁶²·2),
-/// so they are not used. `None` if malformed or beyond ±2⁶³.
+/// Significant digits a number keeps: 10¹⁹ < 2⁶⁴, so that shifted by up to 62 bits it still
+/// fits 128.
+const SIGNIFICANT_DIGITS: u32 = 19;
+
+/// Parses a decimal number with an optional sign and exponent (`-0.75`, `.5`, `3`, `1e-9`,
+/// `2.5E-3`) into fixed point with `frac_bits` fractional bits (at most 62), rounded to
+/// nearest from its first 19 significant digits (beyond them a digit moves the value by
+/// less than 10⁻¹⁹ of itself). `None` if malformed or beyond ±2⁶³.
 pub(crate) const fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
     // Written with index loops so that it is a `const fn`: constant tables of scenes are
     // checked when they are compiled.
@@ -16,40 +20,87 @@ pub(crate) const fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
         Some(b'+') => (false, 1),
         _ => (false, 0),
     };
-    let mut int: i128 = 0;
-    let mut int_digits = 0;
+    // The value is `digits` × 10^`exponent`.
+    let mut digits: u128 = 0;
+    let mut kept = 0;
+    let mut exponent: i64 = 0;
+    let mut any_digit = false;
+    let mut after_point = false;
     while let Some(&byte) = byte_at(bytes, at) {
-        if !byte.is_ascii_digit() {
+        if byte == b'.' && !after_point {
+            after_point = true;
+        } else if byte.is_ascii_digit() {
+            any_digit = true;
+            let digit = (byte - b'0') as u128;
+            if kept < SIGNIFICANT_DIGITS && (digits > 0 || digit > 0) {
+                digits = digits * 10 + digit;
+                kept += 1;
+                if after_point {
+                    exponent -= 1;
+                }
+            } else if digits == 0 {
+                // A leading zero: after the point it still moves the value down.
+                if after_point {
+                    exponent -= 1;
+                }
+            } else if !after_point {
+                // A digit past the kept ones, before the point: a power of ten.
+                exponent += 1;
+            }
+        } else {
             break;
         }
-        int = int * 10 + (byte - b'0') as i128;
-        if int > i64::MAX as i128 {
-            return None;
-        }
-        int_digits += 1;
         at += 1;
     }
-    let mut numerator: i128 = 0;
-    let mut denominator: i128 = 1;
-    let mut frac_digits = 0;
-    if let Some(b'.') = byte_at(bytes, at) {
-        at += 1;
-        while let Some(&byte) = byte_at(bytes, at) {
-            if !byte.is_ascii_digit() {
-                return None;
-            }
-            if frac_digits < 19 {
-                numerator = numerator * 10 + (byte - b'0') as i128;
-                denominator *= 10;
-            }
-            frac_digits += 1;
-            at += 1;
-        }
-    }
-    if at != bytes.len() || int_digits + frac_digits == 0 {
+    if !any_digit {
         return None;
     }
-    let magnitude = (int << frac_bits) + div_round(numerator << frac_bits, denominator);
+    if let Some(b'e' | b'E') = byte_at(bytes, at) {
+        at += 1;
+        let (minus, start) = match byte_at(bytes, at) {
+            Some(b'-') => (true, at + 1),
+            Some(b'+') => (false, at + 1),
+            _ => (false, at),
+        };
+        at = start;
+        let mut power: i64 = 0;
+        while let Some(&byte) = byte_at(bytes, at) {
+            if !byte.is_ascii_digit() || power > 9_999 {
+                return None;
+            }
+            power = power * 10 + (byte - b'0') as i64;
+            at += 1;
+        }
+        if at == start {
+            return None;
+        }
+        exponent += if minus { -power } else { power };
+    }
+    if at != bytes.len() {
+        return None;
+    }
+    let magnitude = if digits == 0 {
+        0
+    } else if exponent >= 0 {
+        if exponent > 38 {
+            return None;
+        }
+        let Some(whole) = digits.checked_mul(10u128.pow(exponent as u32)) else {
+            return None;
+        };
+        if whole > i64::MAX as u128 {
+            return None;
+        }
+        (whole << frac_bits) as i128
+    } else if exponent < -38 {
+        // Below 10⁻¹⁹: less than half a unit of 62 fractional bits.
+        0
+    } else {
+        div_round(
+            (digits << frac_bits) as i128,
+            10i128.pow((-exponent) as u32),
+        )
+    };
     Some(if negative { -magnitude } else { magnitude })
 }
 

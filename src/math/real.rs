@@ -179,7 +179,8 @@ mod tests {
         assert_eq!(Real::parse_decimal("3"), Some(Real::from_int(3)));
         let golden = Real::parse_decimal("1.618034").map(Real::to_f64);
         assert!((golden.unwrap_or(0.0) - 1.618034).abs() < 1e-9);
-        for bad in ["", ".", "1.2.3", "-1", "1e5", "99999999999", "-"] {
+        assert_eq!(Real::parse_decimal("1e5"), Some(Real::from_int(100_000)));
+        for bad in ["", ".", "1.2.3", "-1", "1e", "99999999999", "-"] {
             assert_eq!(Real::parse_decimal(bad), None, "{bad}");
         }
         assert_eq!(Real::parse_signed("-22.5"), Real::from_ratio(-45, 2));
