@@ -32,8 +32,8 @@ pub(crate) const NUMERIC: u8 = 0x80;
 /// Where a compiled body is in the grammar's ops.
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Span {
-    start: u16,
-    end: u16,
+    pub(crate) start: u16,
+    pub(crate) end: u16,
 }
 
 /// One rule line: its compiled body. Lines for the same symbol are chained.
@@ -228,6 +228,23 @@ impl<'a> Grammar<'a> {
     #[inline]
     pub(crate) fn axiom_ops(&self) -> &[u8] {
         self.ops(self.axiom)
+    }
+
+    /// Where the axiom's ops are.
+    pub(crate) const fn axiom_span(&self) -> Span {
+        self.axiom
+    }
+
+    /// Where a rule line's ops are (empty for no such line).
+    #[inline]
+    pub(crate) fn rule_span(&self, index: u8) -> Span {
+        self.rule(index).map_or(Span::default(), |rule| rule.body)
+    }
+
+    /// The op at `index` of all the ops (a walk's frames keep in-range positions).
+    #[inline(always)]
+    pub(crate) fn op(&self, index: u16) -> u8 {
+        self.ops.get(usize::from(index)).copied().unwrap_or(0)
     }
 
     #[inline]

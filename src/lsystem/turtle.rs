@@ -115,7 +115,9 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         Ok(turtle)
     }
 
-    /// One turn by the system's angle, counter-clockwise if `left`.
+    /// One turn by the system's angle, counter-clockwise if `left`. Headings wrap by a
+    /// comparison, not `%`: Cortex-M0 has no divide instruction.
+    #[inline(always)]
     fn turn(&mut self, left: bool) {
         let n = self.headings.divisions();
         let state = &mut self.state;
@@ -126,11 +128,17 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             } else {
                 state.free.0.wrapping_sub(delta)
             };
-        } else {
-            state.heading = if left {
-                (state.heading + 1) % n
+        } else if left {
+            state.heading = if state.heading + 1 >= n {
+                0
             } else {
-                (state.heading + n - 1) % n
+                state.heading + 1
+            };
+        } else {
+            state.heading = if state.heading == 0 {
+                n - 1
+            } else {
+                state.heading - 1
             };
         }
     }
@@ -192,7 +200,9 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 if n == 0 {
                     state.free.0 = state.free.0.wrapping_add(1 << 31);
                 } else {
-                    state.heading = (state.heading + n - n / 2) % n;
+                    // Half a turn: n - n/2 divisions (headings are below n).
+                    let turned = state.heading + (n - n / 2);
+                    state.heading = if turned >= n { turned - n } else { turned };
                 }
             }
             Command::Reverse => state.reversed = !state.reversed,
@@ -303,7 +313,7 @@ pub struct WalkStats {
 /// The segments an L-system draws at an order, in drawing order, computed on the fly.
 ///
 /// This is the raw layer under [`LSystem`](crate::LSystem): no colours, no pixels. A main loop
-/// can pull a few segments at a time. Worst-case RAM is the walker (`DEPTH` × 4 bytes), the
+/// can pull a few segments at a time. Worst-case RAM is the walker (`DEPTH` × 6 bytes), the
 /// turtle state and its stack (`STACK` × 32 bytes) and two references: under 0.9 KiB with the
 /// defaults, whatever the order.
 ///

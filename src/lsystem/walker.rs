@@ -3,13 +3,13 @@
 //!
 //! The walker keeps one frame per expansion level: which rule line it is reading and where.
 //! A symbol with a rule is expanded (a frame is pushed) while order remains; any other symbol
-//! is handed out to be interpreted. Memory is `DEPTH` frames of 4 bytes, whatever the order.
+//! is handed out to be interpreted. Memory is `DEPTH` frames of 6 bytes, whatever the order.
 
 use core::fmt;
 
 use heapless::Vec;
 
-use super::grammar::{Grammar, NUMERIC};
+use super::grammar::{Grammar, Span, NUMERIC};
 use crate::error::{Error, WalkError};
 use crate::math::wide::div_round;
 use crate::math::Real;
@@ -23,11 +23,23 @@ pub const DEFAULT_BUDGET: u64 = 1 << 28;
 /// Marks the axiom in `Frame::rule`.
 const AXIOM: u8 = u8::MAX;
 
-/// One expansion level: a rule line (or the axiom) and the read position in it.
+/// One expansion level: a rule line (or the axiom) and the read position in the grammar's
+/// ops, up to the line's end: reading a symbol is one comparison and one load.
 #[derive(Debug, Clone, Copy)]
 struct Frame {
-    rule: u8,
     position: u16,
+    end: u16,
+    rule: u8,
+}
+
+impl Frame {
+    fn at(rule: u8, span: Span) -> Self {
+        Self {
+            position: span.start,
+            end: span.end,
+            rule,
+        }
+    }
 }
 
 /// Iterates over the symbols of an L-system's derivation of a given order.
@@ -80,10 +92,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
         }
         let mut frames = Vec::new();
         frames
-            .push(Frame {
-                rule: AXIOM,
-                position: 0,
-            })
+            .push(Frame::at(AXIOM, grammar.axiom_span()))
             .map_err(|_| too_high)?;
         Ok(Self {
             grammar,
@@ -129,17 +138,6 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
         self.grammar
     }
 
-    #[inline]
-    fn body(&self, rule: u8) -> &'g [u8] {
-        if rule == AXIOM {
-            self.grammar.axiom_ops()
-        } else {
-            self.grammar
-                .rule(rule)
-                .map_or(&[], |rule| self.grammar.ops(rule.body))
-        }
-    }
-
     /// The next op to interpret (see [`Grammar::command`]).
     #[inline]
     pub(crate) fn next_op(&mut self) -> Option<Result<u8, Error>> {
@@ -159,35 +157,26 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
     ) -> Option<Result<Next, Error>> {
         loop {
             let depth = self.frames.len();
-            let frame = *self.frames.last()?;
-            let body = self.body(frame.rule);
-            let Some(&op) = body.get(usize::from(frame.position)) else {
+            let top = self.frames.last_mut()?;
+            if top.position >= top.end {
                 // End of this line: go on with the next line for the same symbol, if any.
-                let next_line = self.grammar.rule(frame.rule).map(|rule| rule.next);
-                match (next_line, self.frames.last_mut()) {
-                    (Some(next), Some(top)) if self.grammar.rule(next).is_some() => {
-                        *top = Frame {
-                            rule: next,
-                            position: 0,
-                        };
-                    }
-                    _ => {
+                match self.grammar.next_line(top.rule) {
+                    Some(next) => *top = Frame::at(next, self.grammar.rule_span(next)),
+                    None => {
                         self.frames.pop();
                     }
                 }
                 continue;
-            };
+            }
             if self.read >= self.budget {
                 self.frames.clear();
                 return Some(Err(Error::Walk(WalkError::BudgetExhausted {
                     budget: self.budget,
                 })));
             }
+            let op = self.grammar.op(top.position);
+            top.position += 1;
             self.read += 1;
-            if let Some(top) = self.frames.last_mut() {
-                // Bodies are at most MAX_SYMBOLS ops long.
-                top.position += 1;
-            }
             let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
             if level < self.order && op < NUMERIC {
                 if let Some(rule) = self.grammar.first_rule(op) {
@@ -196,7 +185,8 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                         return Some(Ok(Next::Declined { op, left }));
                     }
                     // Cannot fail: `new` checked that order + 1 <= DEPTH.
-                    if self.frames.push(Frame { rule, position: 0 }).is_ok() {
+                    let frame = Frame::at(rule, self.grammar.rule_span(rule));
+                    if self.frames.push(frame).is_ok() {
                         self.max_depth = self.max_depth.max(depth + 1);
                         continue;
                     }
