@@ -134,7 +134,7 @@ enum Commands {
     },
     /// Print the string a system derives at an order, on one line
     Derive(DeriveOptions),
-    /// The systems in a .l file, one name a line
+    /// The systems in a .l or .lsys file, one name a line
     List {
         /// The .l file
         #[arg(value_name = "PATH.l")]
@@ -193,7 +193,7 @@ pub const DEFAULT_MAX_LENGTH: u64 = 1_000_000;
 /// A system, from a file or inline, and its order: what `render lsystem` and `derive` share.
 #[derive(Debug, Args)]
 struct SystemOptions {
-    /// A Fractint .l file (with --name)
+    /// A Fractint .l file, or an .lsys file (with --name)
     #[arg(
         long,
         value_name = "PATH.l",

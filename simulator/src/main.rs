@@ -16,7 +16,7 @@ use embedded_graphics_simulator::SimulatorDisplay;
 use std::process::ExitCode;
 
 use args::{Command, DeriveArgs, EscapeArgs, LSystemArgs, Source};
-use tinyfractal::{Grammar, LFile, Walker, DEFAULT_BUDGET};
+use tinyfractal::{Grammar, LFile, LsysFile, Walker, DEFAULT_BUDGET};
 
 fn main() -> ExitCode {
     let command = match args::parse(std::env::args_os().skip(1)) {
@@ -81,11 +81,29 @@ fn read_text(path: &Path) -> Result<String, String> {
     })
 }
 
+/// Whether a file is in the `.lsys` notation (by its extension); `.l` otherwise.
+fn is_lsys(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|extension| extension == "lsys")
+}
+
 fn list(path: &Path) -> Result<(), String> {
     let text = read_text(path)?;
-    for entry in LFile::new(&text).entries() {
-        let entry = entry.map_err(|e| format!("{}: {e}", path.display()))?;
-        println!("{}", entry.name());
+    let failed = |e: tinyfractal::Error| format!("{}: {e}", path.display());
+    let names: Vec<&str> = if is_lsys(path) {
+        LsysFile::new(&text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect::<Result<_, _>>()
+    } else {
+        LFile::new(&text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect::<Result<_, _>>()
+    }
+    .map_err(failed)?;
+    for name in names {
+        println!("{name}");
     }
     Ok(())
 }
@@ -100,6 +118,10 @@ fn load<'a>(
             *file_text = read_text(path)?;
             let file_text: &'a String = file_text;
             let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
+            if is_lsys(path) {
+                let grammar = LsysFile::new(file_text).find(name).map_err(failed)?;
+                return Ok((grammar, name.clone()));
+            }
             let entry = LFile::new(file_text).entry(name).map_err(failed)?;
             let grammar = entry.grammar().map_err(failed)?;
             for warning in entry.warnings() {

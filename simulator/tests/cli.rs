@@ -1059,3 +1059,62 @@ fn numbers_in_scientific_notation() {
     }
     assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
 }
+
+/// `.lsys` files (by extension) work with `list`, `derive` and `render lsystem` as `.l`
+/// files do; notation not derived yet is an error naming it.
+#[test]
+fn lsys_files_list_derive_and_render() {
+    let abop = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../data/abop.lsys")
+        .display()
+        .to_string();
+    let listed = run(&["list", &abop]);
+    assert!(
+        stdout(&listed).starts_with("Fig1.24a\nFig1.24b\n"),
+        "{}",
+        stdout(&listed)
+    );
+    let derived = run(&["derive", "--file", &abop, "--name", "algae", "--order", "4"]);
+    assert_eq!(stdout(&derived), "ABAABABA\n");
+    let out = scratch("lsys").join("f.png");
+    let rendered = run(&[
+        "render",
+        "lsystem",
+        "--file",
+        &abop,
+        "--name",
+        "Fig1.24f",
+        "--order",
+        "5",
+        "--stats",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(rendered.status.success(), "{}", stderr(&rendered));
+    assert!(
+        stdout(&rendered).starts_with("segments=1488 "),
+        "{}",
+        stdout(&rendered)
+    );
+    let stochastic = scratch("lsys").join("s.lsys");
+    std::fs::write(
+        &stochastic,
+        "s {\n  axiom: F\n  angle: 30\n  F --> F[+F]F : 0.5\n}\n",
+    )
+    .unwrap();
+    let refused = run(&[
+        "derive",
+        "--file",
+        stochastic.to_str().unwrap(),
+        "--name",
+        "s",
+        "--order",
+        "2",
+    ]);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(
+        stderr(&refused).contains("probabilities (`--> succ : p`) at line 4, column 16"),
+        "{}",
+        stderr(&refused)
+    );
+}

@@ -11,7 +11,7 @@ mod view;
 mod walk;
 
 pub use fit::FitError;
-pub use read::{ReadError, ReadWarning};
+pub use read::{ReadError, ReadWarning, Unsupported};
 pub use view::ViewError;
 pub use walk::WalkError;
 

@@ -111,6 +111,52 @@ pub enum ReadError {
     /// The file ends its lines with a lone carriage return (old Mac OS), so it reads as one
     /// line.
     OldMacLineEndings,
+    /// A number (an `.lsys` angle) is malformed.
+    NotANumber {
+        /// Where it is.
+        at: Location,
+    },
+    /// An `.lsys` production's predecessor is not one symbol.
+    NotOneSymbol {
+        /// Where the predecessor is.
+        at: Location,
+    },
+    /// An `.lsys` production uses notation this reader does not derive yet.
+    Unsupported {
+        /// What it uses.
+        feature: Unsupported,
+        /// Where.
+        at: Location,
+    },
+}
+
+/// Notation of `.lsys` productions that is read but not derived yet.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Unsupported {
+    /// `lc < pred > rc`.
+    Context,
+    /// `pred : condition -->`.
+    Condition,
+    /// `--> successor : probability`.
+    Probability,
+    /// Modules with parameters, `A(x)`.
+    Parameters,
+    /// A second production for the same predecessor (which needs conditions or
+    /// probabilities to choose between them).
+    SecondProduction,
+}
+
+impl Unsupported {
+    const fn describe(self) -> &'static str {
+        match self {
+            Self::Context => "context-sensitive productions (`lc < pred > rc`)",
+            Self::Condition => "conditions (`pred : cond --> ...`)",
+            Self::Probability => "probabilities (`--> succ : p`)",
+            Self::Parameters => "modules with parameters (`A(x)`)",
+            Self::SecondProduction => "a second production for one predecessor",
+        }
+    }
 }
 
 /// Something a `.l` entry does that Fractint accepted, and that is drawn as Fractint drew
@@ -247,6 +293,20 @@ impl fmt::Display for ReadError {
                 f,
                 "line {line} is a row of numbers, as in a Fractint IFS file (`.ifs`), not an \
                  L-system file (`.l`)"
+            ),
+            Self::NotANumber { at } => write!(
+                f,
+                "the number at {at} is malformed: write e.g. 22.5, -90 or 1e-3"
+            ),
+            Self::NotOneSymbol { at } => write!(
+                f,
+                "the predecessor at {at} is not one symbol: write `X --> ...`"
+            ),
+            Self::Unsupported { feature, at } => write!(
+                f,
+                "{} at {at}: this reader does not derive them yet; use plain productions \
+                 `X --> ...` (see the README's `.lsys` section)",
+                feature.describe()
             ),
             Self::OldMacLineEndings => write!(
                 f,

@@ -329,6 +329,11 @@ impl<'a> Grammar<'a> {
                 }
                 _ => {}
             }
+            if token.symbol.is_ascii_whitespace() {
+                // Spaces between symbols (`.lsys` successors) are layout, not symbols.
+                position = next;
+                continue;
+            }
             let command = self.dialect.decode(token, self.extra_draw, here)?;
             let op = if self.dialect.takes_number(token.symbol) {
                 self.numeric_op(command, here)?

@@ -6,6 +6,7 @@ pub(crate) mod alphabet;
 pub(crate) mod drawing;
 pub(crate) mod fractint;
 pub(crate) mod grammar;
+pub(crate) mod lsys;
 pub(crate) mod table;
 pub(crate) mod turtle;
 pub(crate) mod walker;

@@ -1,0 +1,291 @@
+//! `.lsys` files: systems in a notation close to cpfg's, so that ABOP's examples paste in.
+//!
+//! ```text
+//! # A comment, to the end of the line.
+//! plant {
+//!   axiom: X
+//!   angle: 22.5            # degrees
+//!   X --> F-[[X]+X]+F[+FX]-X
+//!   F --> FF
+//! }
+//! ```
+//!
+//! Several systems to a file, each `name { ... }` on lines of their own. Inside, `key:
+//! value` lines (`axiom:`, `angle:` in degrees; `ignore:`, `seed:` and `define:` are read
+//! and kept for the productions that use them) and productions `pred --> successor`, one
+//! symbol to a string in ABOP's notation (case-sensitive; `F` draws, `f` moves, `+ - |`
+//! turn, `[ ]` branch; spaces between symbols are dropped). Productions with context
+//! (`lc < pred > rc`), conditions (`: cond`), probabilities or parameters are named in a
+//! [`ReadError::Unsupported`] error: this reader does not derive them yet.
+
+use super::alphabet::Dialect;
+use super::grammar::Grammar;
+use crate::error::{Error, Location, ReadError, Unsupported};
+use crate::math::Angle;
+
+/// A `.lsys` file's text.
+#[derive(Debug, Clone, Copy)]
+pub struct LsysFile<'a> {
+    text: &'a str,
+}
+
+/// One system of a `.lsys` file: its name and the lines between its braces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LsysEntry<'a> {
+    name: &'a str,
+    line: u32,
+    body: &'a str,
+    body_line: u32,
+}
+
+impl<'a> LsysFile<'a> {
+    /// Wraps the text of a `.lsys` file; nothing is read until asked.
+    pub const fn new(text: &'a str) -> Self {
+        Self { text }
+    }
+
+    /// The systems, in file order; a malformed block ends the iteration with its error.
+    pub fn entries(&self) -> LsysEntries<'a> {
+        LsysEntries {
+            text: self.text,
+            position: 0,
+            line: 0,
+            failed: false,
+        }
+    }
+
+    /// The system called `name` (case-insensitive, as in `.l` files).
+    pub fn entry(&self, name: &str) -> Result<LsysEntry<'a>, Error> {
+        for entry in self.entries() {
+            let entry = entry?;
+            if entry.name.eq_ignore_ascii_case(name) {
+                return Ok(entry);
+            }
+        }
+        Err(Error::Read(ReadError::UnknownSystem))
+    }
+
+    /// The grammar of the system called `name`.
+    pub fn find(&self, name: &str) -> Result<Grammar<'a>, Error> {
+        self.entry(name)?.grammar()
+    }
+}
+
+/// A line without its `#` comment and surrounding space.
+fn code(line: &str) -> &str {
+    line.split('#').next().unwrap_or_default().trim()
+}
+
+/// The name of a line `name {`, if it is one.
+fn opening(code: &str) -> Option<&str> {
+    let name = code.strip_suffix('{')?.trim_end();
+    (!name.is_empty() && !name.contains(char::is_whitespace)).then_some(name)
+}
+
+/// Iterator over the systems of an [`LsysFile`].
+#[derive(Debug, Clone)]
+pub struct LsysEntries<'a> {
+    text: &'a str,
+    /// Byte position of the next line.
+    position: usize,
+    /// Lines read so far.
+    line: u32,
+    failed: bool,
+}
+
+impl<'a> LsysEntries<'a> {
+    /// The next line and the byte position it starts at.
+    fn next_line(&mut self) -> Option<(&'a str, usize)> {
+        let rest = self
+            .text
+            .get(self.position..)
+            .filter(|rest| !rest.is_empty())?;
+        let length = rest.find('\n').map_or(rest.len(), |end| end + 1);
+        let start = self.position;
+        self.position += length;
+        self.line += 1;
+        rest.get(..length).map(|line| (line, start))
+    }
+
+    fn fail(&mut self, error: ReadError) -> Option<Result<LsysEntry<'a>, Error>> {
+        self.failed = true;
+        Some(Err(Error::Read(error)))
+    }
+}
+
+impl<'a> Iterator for LsysEntries<'a> {
+    type Item = Result<LsysEntry<'a>, Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.failed {
+            return None;
+        }
+        // Up to the next `name {`.
+        let (name, line) = loop {
+            let (text, _) = self.next_line()?;
+            let code = code(text);
+            if code.is_empty() {
+                continue;
+            }
+            match opening(code) {
+                Some(name) => break (name, self.line),
+                None => {
+                    let at = Location {
+                        line: self.line,
+                        column: 1,
+                    };
+                    return self.fail(ReadError::UnknownLine { at });
+                }
+            }
+        };
+        // The body: whole lines up to a line `}`.
+        let (body_start, body_line) = (self.position, line + 1);
+        loop {
+            let Some((text, start)) = self.next_line() else {
+                return self.fail(ReadError::UnterminatedEntry {
+                    at: Location { line, column: 1 },
+                });
+            };
+            let code = code(text);
+            if code == "}" {
+                let body = self.text.get(body_start..start).unwrap_or_default();
+                return Some(Ok(LsysEntry {
+                    name,
+                    line,
+                    body,
+                    body_line,
+                }));
+            }
+            if opening(code).is_some() {
+                let next = self.line;
+                return self.fail(ReadError::EntryRunsIntoNext { entry: line, next });
+            }
+        }
+    }
+}
+
+impl<'a> LsysEntry<'a> {
+    /// The system's name.
+    pub const fn name(&self) -> &'a str {
+        self.name
+    }
+
+    /// The 1-based line the system starts on.
+    pub const fn line(&self) -> u32 {
+        self.line
+    }
+}
+
+impl<'a> LsysEntry<'a> {
+    /// Reads the system into a grammar (ABOP's notation).
+    pub fn grammar(&self) -> Result<Grammar<'a>, Error> {
+        let mut axiom = None;
+        let mut angle = None;
+        for (line, text) in self.lines() {
+            let at = |column: usize| Location {
+                line,
+                column: u32::try_from(column + 1).unwrap_or(u32::MAX),
+            };
+            if let Some((key, value)) = key_value(text) {
+                let value_at = at(offset(text, value));
+                match key {
+                    "axiom" => axiom = Some((value, value_at)),
+                    "angle" => {
+                        let degrees = Angle::parse_degrees(value)
+                            .ok_or(Error::Read(ReadError::NotANumber { at: value_at }))?;
+                        angle = Some(degrees);
+                    }
+                    // Kept for the productions that use them, which are not derived yet.
+                    "ignore" | "seed" | "define" => {}
+                    _ => return Err(Error::Read(ReadError::UnknownLine { at: at(0) })),
+                }
+            } else if !text.contains("-->") {
+                let column = text.len() - text.trim_start().len();
+                return Err(Error::Read(ReadError::UnknownLine { at: at(column) }));
+            }
+        }
+        let angle = angle.ok_or(Error::Read(ReadError::MissingAngle))?;
+        let (axiom, axiom_at) = axiom.ok_or(Error::Read(ReadError::MissingAxiom))?;
+        let mut grammar = Grammar::new_at(Dialect::Abop, axiom, angle, axiom_at)?;
+        let mut seen = [false; 128];
+        for (line, text) in self.lines() {
+            let Some((left, right)) = text.split_once("-->") else {
+                continue;
+            };
+            let at = |part: &str| Location {
+                line,
+                column: u32::try_from(offset(text, part) + 1).unwrap_or(u32::MAX),
+            };
+            // Unsupported notation is reported at its first character.
+            let unsupported = |feature, part: &str, marks: &[char]| {
+                let from = part.find(marks).unwrap_or(0);
+                Error::Read(ReadError::Unsupported {
+                    feature,
+                    at: at(part.get(from..).unwrap_or(part)),
+                })
+            };
+            // `lc < pred > rc : condition`: context markers come before the condition.
+            let before_condition = left.split(':').next().unwrap_or(left);
+            if before_condition.contains(['<', '>']) {
+                return Err(unsupported(Unsupported::Context, left, &['<', '>']));
+            }
+            if left.contains(':') {
+                return Err(unsupported(Unsupported::Condition, left, &[':']));
+            }
+            if right.contains(':') {
+                return Err(unsupported(Unsupported::Probability, right, &[':']));
+            }
+            for part in [left, right] {
+                if part.contains('(') {
+                    return Err(unsupported(Unsupported::Parameters, part, &['(']));
+                }
+            }
+            let predecessor = left.trim();
+            let mut chars = predecessor.chars();
+            let (Some(symbol), None) = (chars.next(), chars.next()) else {
+                return Err(Error::Read(ReadError::NotOneSymbol {
+                    at: at(predecessor),
+                }));
+            };
+            let index = usize::from(u8::try_from(symbol).unwrap_or(0) & 0x7f);
+            if seen.get(index).copied().unwrap_or(false) {
+                return Err(unsupported(Unsupported::SecondProduction, predecessor, &[]));
+            }
+            if let Some(slot) = seen.get_mut(index) {
+                *slot = true;
+            }
+            let successor = right.trim();
+            grammar.add_rule_at(symbol, successor, at(successor))?;
+        }
+        Ok(grammar)
+    }
+
+    /// The body's lines with their numbers, comments removed, blank ones skipped.
+    fn lines(&self) -> impl Iterator<Item = (u32, &'a str)> + 'a {
+        let first = self.body_line;
+        self.body
+            .split('\n')
+            .enumerate()
+            .map(move |(index, line)| {
+                let number = first.saturating_add(u32::try_from(index).unwrap_or(u32::MAX));
+                (
+                    number,
+                    line.split('#').next().unwrap_or_default().trim_end(),
+                )
+            })
+            .filter(|(_, line)| !line.trim().is_empty())
+    }
+}
+
+/// `key: value` of a line, for the keys of the notation (`axiom:`, `angle:`, ...).
+fn key_value(line: &str) -> Option<(&str, &str)> {
+    let (key, value) = line.split_once(':')?;
+    let key = key.trim();
+    (!key.is_empty() && key.chars().all(|c| c.is_ascii_alphabetic()) && !line.contains("-->"))
+        .then(|| (key, value.trim()))
+}
+
+/// Where `part`, a slice of `line`, starts in it.
+fn offset(line: &str, part: &str) -> usize {
+    (part.as_ptr() as usize).saturating_sub(line.as_ptr() as usize)
+}

@@ -1,0 +1,163 @@
+//! `.lsys` files: ABOP's plants as the book prints them, against the same systems given
+//! as inline grammars; derivations; errors with their place.
+
+mod common;
+
+use common::shipped_file;
+use tinyfractal::{
+    Angle, Dialect, Error, Grammar, Location, LsysFile, ReadError, Segments, Unsupported, Walker,
+};
+
+/// A system as the book prints it: name, axiom, productions, angle in degrees.
+type BookSystem = (&'static str, &'static str, &'static [(char, &'static str)], &'static str);
+
+/// ABOP figure 1.24, typed from the book.
+const FIGURE_1_24: [BookSystem; 6] = [
+    ("Fig1.24a", "F", &[('F', "F[+F]F[-F]F")], "25.7"),
+    ("Fig1.24b", "F", &[('F', "F[+F]F[-F][F]")], "20"),
+    ("Fig1.24c", "F", &[('F', "FF-[-F+F+F]+[+F-F-F]")], "22.5"),
+    ("Fig1.24d", "X", &[('X', "F[+X]F[-X]+X"), ('F', "FF")], "20"),
+    (
+        "Fig1.24e",
+        "X",
+        &[('X', "F[+X][-X]FX"), ('F', "FF")],
+        "25.7",
+    ),
+    (
+        "Fig1.24f",
+        "X",
+        &[('X', "F-[[X]+X]+F[+FX]-X"), ('F', "FF")],
+        "22.5",
+    ),
+];
+
+#[test]
+fn the_books_plants_read_as_the_same_systems() {
+    let text = shipped_file("data/abop.lsys");
+    let file = LsysFile::new(&text);
+    let names: Vec<&str> = file.entries().map(|e| e.unwrap().name()).collect();
+    assert_eq!(
+        names,
+        [
+            "Fig1.24a", "Fig1.24b", "Fig1.24c", "Fig1.24d", "Fig1.24e", "Fig1.24f", "Algae",
+            "Lecture"
+        ]
+    );
+    for (name, axiom, rules, degrees) in FIGURE_1_24 {
+        let read = file.find(name).unwrap();
+        let mut inline =
+            Grammar::new(Dialect::Abop, axiom, Angle::parse_degrees(degrees).unwrap()).unwrap();
+        for &(symbol, body) in rules {
+            inline.add_rule(symbol, body).unwrap();
+        }
+        for order in 0..4 {
+            let a: Vec<_> = Segments::new(&read, order).unwrap().collect();
+            let b: Vec<_> = Segments::new(&inline, order).unwrap().collect();
+            assert_eq!(a, b, "{name} order {order}");
+        }
+    }
+}
+
+#[test]
+fn derivations_as_the_lecture_writes_them() {
+    let text = shipped_file("data/abop.lsys");
+    let file = LsysFile::new(&text);
+    let derive = |name: &str, order: u32| -> String {
+        let grammar = file.find(name).unwrap();
+        Walker::new(&grammar, order)
+            .unwrap()
+            .map(Result::unwrap)
+            .collect()
+    };
+    let algae: Vec<String> = (0..6).map(|order| derive("Algae", order)).collect();
+    assert_eq!(
+        algae,
+        ["A", "AB", "ABA", "ABAAB", "ABAABABA", "ABAABABAABAAB"]
+    );
+    // Spaces in a successor are layout.
+    assert_eq!(derive("Lecture", 1), "F[-L][+L]");
+    assert_eq!(derive("Lecture", 2), "F[-F[-L][+L]][+F[-L][+L]]");
+}
+
+fn error_of(text: &str) -> Error {
+    let file = LsysFile::new(text);
+    match file.entries().next() {
+        Some(Ok(entry)) => entry.grammar().map(|_| ()).unwrap_err(),
+        Some(Err(error)) => error,
+        None => panic!("no entry in {text:?}"),
+    }
+}
+
+#[test]
+fn errors_name_what_and_where() {
+    let at = |line, column| Location { line, column };
+    let cases: [(&str, Error); 9] = [
+        (
+            "p {\n  axiom: F\n  angle: 20\n  A < F > B --> FF\n}\n",
+            Error::Read(ReadError::Unsupported {
+                feature: Unsupported::Context,
+                at: at(4, 5),
+            }),
+        ),
+        (
+            "p {\n  axiom: F\n  angle: 20\n  F : t>1 --> FF\n}\n",
+            Error::Read(ReadError::Unsupported {
+                feature: Unsupported::Condition,
+                at: at(4, 5),
+            }),
+        ),
+        (
+            "p {\n  axiom: F\n  angle: 20\n  F --> FF : 0.5\n}\n",
+            Error::Read(ReadError::Unsupported {
+                feature: Unsupported::Probability,
+                at: at(4, 12),
+            }),
+        ),
+        (
+            "p {\n  axiom: A(1)\n  angle: 20\n  A(x) --> F\n}\n",
+            Error::Read(ReadError::Unsupported {
+                feature: Unsupported::Parameters,
+                at: at(4, 4),
+            }),
+        ),
+        (
+            "p {\n  axiom: F\n  angle: 20\n  F --> FF\n  F --> F+F\n}\n",
+            Error::Read(ReadError::Unsupported {
+                feature: Unsupported::SecondProduction,
+                at: at(5, 3),
+            }),
+        ),
+        (
+            "p {\n  axiom: F\n  angle: 20\n  FG --> FF\n}\n",
+            Error::Read(ReadError::NotOneSymbol { at: at(4, 3) }),
+        ),
+        (
+            "p {\n  axiom: F\n  angle: twenty\n}\n",
+            Error::Read(ReadError::NotANumber { at: at(3, 10) }),
+        ),
+        (
+            "p {\n  axiom: F\n  angle: 20\n  F = FF\n}\n",
+            Error::Read(ReadError::UnknownLine { at: at(4, 3) }),
+        ),
+        (
+            "p {\n  axiom: F\n  angle: 20\nq {\n  axiom: F\n}\n",
+            Error::Read(ReadError::EntryRunsIntoNext { entry: 1, next: 4 }),
+        ),
+    ];
+    for (text, expected) in cases {
+        assert_eq!(error_of(text), expected, "{text}");
+    }
+    assert_eq!(
+        error_of("p {\n  angle: 20\n  F --> FF\n}\n"),
+        Error::Read(ReadError::MissingAxiom)
+    );
+    assert_eq!(
+        error_of("p {\n  axiom: F\n"),
+        Error::Read(ReadError::UnterminatedEntry { at: at(1, 1) })
+    );
+    let message = error_of("p {\n  axiom: F\n  angle: 20\n  F --> FF : 0.5\n}\n").to_string();
+    assert!(
+        message.contains("probabilities") && message.contains("line 4, column 12"),
+        "{message}"
+    );
+}
