@@ -65,7 +65,7 @@
 //!
 //! ## Memory
 //! Nothing is allocated. A [`Grammar`] is about 1.7 KiB (its rules compiled); a walk
-//! ([`Segments`]) is under 0.9 KiB with the default capacities, whatever the order; an
+//! ([`Segments`]) is under 1 KiB with the default capacities, whatever the order; an
 //! escape-time [`Render`] about 2.7 KiB at any size, plus 0.5 KiB of stack while it runs.
 //!
 //! ## Numbers

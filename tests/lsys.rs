@@ -9,7 +9,12 @@ use tinyfractal::{
 };
 
 /// A system as the book prints it: name, axiom, productions, angle in degrees.
-type BookSystem = (&'static str, &'static str, &'static [(char, &'static str)], &'static str);
+type BookSystem = (
+    &'static str,
+    &'static str,
+    &'static [(char, &'static str)],
+    &'static str,
+);
 
 /// ABOP figure 1.24, typed from the book.
 const FIGURE_1_24: [BookSystem; 6] = [
@@ -40,7 +45,7 @@ fn the_books_plants_read_as_the_same_systems() {
         names,
         [
             "Fig1.24a", "Fig1.24b", "Fig1.24c", "Fig1.24d", "Fig1.24e", "Fig1.24f", "Algae",
-            "Lecture"
+            "Lecture", "Fig1.27"
         ]
     );
     for (name, axiom, rules, degrees) in FIGURE_1_24 {
@@ -107,10 +112,10 @@ fn errors_name_what_and_where() {
             }),
         ),
         (
-            "p {\n  axiom: F\n  angle: 20\n  F --> FF : 0.5\n}\n",
+            "p {\n  axiom: F\n  angle: 20\n  F --> FF : 0.5\n  F --> F\n}\n",
             Error::Read(ReadError::Unsupported {
-                feature: Unsupported::Probability,
-                at: at(4, 12),
+                feature: Unsupported::SecondProduction,
+                at: at(5, 3),
             }),
         ),
         (
@@ -155,9 +160,71 @@ fn errors_name_what_and_where() {
         error_of("p {\n  axiom: F\n"),
         Error::Read(ReadError::UnterminatedEntry { at: at(1, 1) })
     );
-    let message = error_of("p {\n  axiom: F\n  angle: 20\n  F --> FF : 0.5\n}\n").to_string();
+    assert_eq!(
+        error_of("p {\n  axiom: F\n  angle: 20\n  F --> F+F\n  F --> FF : 0.5\n}\n"),
+        Error::Read(ReadError::MixedProductions {
+            symbol: 'F',
+            at: at(5, 7)
+        })
+    );
+    assert_eq!(
+        error_of("p {\n  axiom: F\n  angle: 20\n  F --> FF : many\n}\n"),
+        Error::Read(ReadError::NotANumber { at: at(4, 14) })
+    );
+    let message = error_of("p {\n  axiom: F\n  angle: 20\n  F : t>1 --> FF\n}\n").to_string();
     assert!(
-        message.contains("probabilities") && message.contains("line 4, column 12"),
+        message.contains("conditions") && message.contains("line 4, column 5"),
         "{message}"
     );
+}
+
+/// Stochastic productions: every walk of a derivation makes the same choices (the fit's and
+/// the draw's, and two walks in a row), a seed changes them, and over many places each
+/// production is chosen about as often as its probability says (chi-square, 2 degrees of
+/// freedom, below 13.8: p = 0.001).
+#[test]
+fn stochastic_choices_are_repeatable_and_fair() {
+    let text = shipped_file("data/abop.lsys");
+    let file = LsysFile::new(&text);
+    let plant = file.find("Fig1.27").unwrap();
+    let derive = |grammar: &Grammar<'_>, order: u32| -> String {
+        Walker::new(grammar, order)
+            .unwrap()
+            .map(Result::unwrap)
+            .collect()
+    };
+    assert_eq!(derive(&plant, 4), derive(&plant, 4));
+    let walk: Vec<_> = Segments::new(&plant, 4).unwrap().collect();
+    assert_eq!(walk, Segments::new(&plant, 4).unwrap().collect::<Vec<_>>());
+    let reseeded = plant.clone().with_seed(2);
+    assert_ne!(derive(&plant, 4), derive(&reseeded, 4));
+
+    // 3000 A's (3 X, each 10 Y, each 10 Z, each 10 A), each rewritten once at order 4:
+    // B, C or D with 0.2, 0.3, 0.5.
+    let mut grammar = Grammar::new(Dialect::Abop, "XXX", Angle::Divisions(4)).unwrap();
+    for (symbol, body) in [
+        ('X', "YYYYYYYYYY"),
+        ('Y', "ZZZZZZZZZZ"),
+        ('Z', "AAAAAAAAAA"),
+    ] {
+        grammar.add_rule(symbol, body).unwrap();
+    }
+    for (body, p) in [("B", "0.2"), ("C", "0.3"), ("D", "0.5")] {
+        grammar
+            .add_alternative('A', body, tinyfractal::Real::parse_decimal(p).unwrap())
+            .unwrap();
+    }
+    for seed in [0, 1, 7, 12345] {
+        let derived = derive(&grammar.clone().with_seed(seed), 4);
+        assert_eq!(derived.len(), 3000);
+        let chi_square: f64 = [('B', 0.2), ('C', 0.3), ('D', 0.5)]
+            .iter()
+            .map(|&(symbol, p)| {
+                let observed = derived.chars().filter(|&c| c == symbol).count() as f64;
+                let expected = 3000.0 * p;
+                (observed - expected).powi(2) / expected
+            })
+            .sum();
+        assert!(chi_square < 13.8, "seed {seed}: chi-square {chi_square}");
+    }
 }

@@ -30,6 +30,8 @@ pub enum Command {
 pub struct DeriveArgs {
     pub source: Source,
     pub order: u32,
+    /// `--seed`, overriding the system's.
+    pub seed: Option<u32>,
     pub max_length: u64,
 }
 
@@ -80,6 +82,8 @@ impl Common {
 pub struct LSystemArgs {
     pub source: Source,
     pub order: u32,
+    /// `--seed`, overriding the system's.
+    pub seed: Option<u32>,
     pub common: Common,
     pub segments: Option<PathBuf>,
     /// `--view`: the window drawn, as fractions of the picture fitted to the whole target.
@@ -236,6 +240,9 @@ struct SystemOptions {
     /// The order (derivation steps)
     #[arg(long, value_name = "N")]
     order: u32,
+    /// The seed of stochastic productions (overrides the file's `seed:`)
+    #[arg(long, value_name = "N")]
+    seed: Option<u32>,
 }
 
 /// Smallest window side: a zoom of a million times keeps pixel positions in range.
@@ -377,6 +384,7 @@ where
         Some(Commands::List { file }) => Command::List(file),
         Some(Commands::Derive(options)) => Command::Derive(DeriveArgs {
             order: options.system.order,
+            seed: options.system.seed,
             source: source(options.system, false)?,
             max_length: options.max_length,
         }),
@@ -404,10 +412,11 @@ fn usage(kind: ErrorKind, message: &str) -> clap::Error {
 }
 
 fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
-    let order = options.system.order;
+    let (order, seed) = (options.system.order, options.system.seed);
     Ok(LSystemArgs {
         source: source(options.system, true)?,
         order,
+        seed,
         common: options.common,
         segments: options.segments,
         view: options.view,

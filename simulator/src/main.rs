@@ -156,7 +156,10 @@ fn load<'a>(
 /// (measured first, so nothing is printed past the limit).
 fn derive(arguments: &DeriveArgs) -> Result<(), String> {
     let mut file_text = String::new();
-    let (grammar, name) = load(&arguments.source, &mut file_text)?;
+    let (mut grammar, name) = load(&arguments.source, &mut file_text)?;
+    if let Some(seed) = arguments.seed {
+        grammar.set_seed(seed);
+    }
     let order = arguments.order;
     let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
     // Expansions that print nothing still take reads: bound them too.
@@ -193,7 +196,10 @@ fn derive(arguments: &DeriveArgs) -> Result<(), String> {
 
 fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     let mut file_text = String::new();
-    let (grammar, name) = load(&arguments.source, &mut file_text)?;
+    let (mut grammar, name) = load(&arguments.source, &mut file_text)?;
+    if let Some(seed) = arguments.seed {
+        grammar.set_seed(seed);
+    }
     let common = &arguments.common;
     window_available(common.window)?;
     let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);

@@ -1096,25 +1096,38 @@ fn lsys_files_list_derive_and_render() {
         "{}",
         stdout(&rendered)
     );
-    let stochastic = scratch("lsys").join("s.lsys");
+    let conditional = scratch("lsys").join("c.lsys");
     std::fs::write(
-        &stochastic,
-        "s {\n  axiom: F\n  angle: 30\n  F --> F[+F]F : 0.5\n}\n",
+        &conditional,
+        "c {\n  axiom: F\n  angle: 30\n  F : 1 --> F[+F]F\n}\n",
     )
     .unwrap();
     let refused = run(&[
         "derive",
         "--file",
-        stochastic.to_str().unwrap(),
+        conditional.to_str().unwrap(),
         "--name",
-        "s",
+        "c",
         "--order",
         "2",
     ]);
     assert_eq!(refused.status.code(), Some(1));
     assert!(
-        stderr(&refused).contains("probabilities (`--> succ : p`) at line 4, column 16"),
+        stderr(&refused).contains("conditions (`pred : cond --> ...`) at line 4, column 5"),
         "{}",
         stderr(&refused)
     );
+    // Stochastic: the file's seed, repeatable; --seed overrides it.
+    let plant = |seed: Option<&str>| {
+        let mut args = vec![
+            "derive", "--file", &abop, "--name", "Fig1.27", "--order", "3",
+        ];
+        if let Some(seed) = seed {
+            args.extend(["--seed", seed]);
+        }
+        stdout(&run(&args))
+    };
+    assert_eq!(plant(None), plant(None));
+    assert_eq!(plant(None), plant(Some("1")));
+    assert_ne!(plant(None), plant(Some("2")));
 }

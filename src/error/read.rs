@@ -121,6 +121,18 @@ pub enum ReadError {
         /// Where the predecessor is.
         at: Location,
     },
+    /// A stochastic production's probability is below 2⁻¹⁵ or above 3.99.
+    ProbabilityOutOfRange {
+        /// Where the production is.
+        at: Location,
+    },
+    /// One symbol has both stochastic alternatives and plain (appending) productions.
+    MixedProductions {
+        /// The symbol.
+        symbol: char,
+        /// Where the production that does not fit is.
+        at: Location,
+    },
     /// An `.lsys` production uses notation this reader does not derive yet.
     Unsupported {
         /// What it uses.
@@ -293,6 +305,16 @@ impl fmt::Display for ReadError {
                 f,
                 "line {line} is a row of numbers, as in a Fractint IFS file (`.ifs`), not an \
                  L-system file (`.l`)"
+            ),
+            Self::ProbabilityOutOfRange { at } => write!(
+                f,
+                "the probability of the production at {at} is out of range: give 0.0001 to 3.99, \
+                 e.g. 0.33"
+            ),
+            Self::MixedProductions { symbol, at } => write!(
+                f,
+                "the production for `{symbol}` at {at} mixes with the others for `{symbol}`: \
+                 give every one a probability, or give one production"
             ),
             Self::NotANumber { at } => write!(
                 f,

@@ -12,6 +12,7 @@ use super::alphabet::{Command, Dialect, SymbolSet};
 use super::walker::DerivedSymbol;
 use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
+use crate::math::wide::shift_round;
 use crate::math::{Angle, Real};
 
 /// Most rule lines a grammar holds (Fractint allowed 25); lines for one symbol append.
@@ -42,6 +43,10 @@ pub(crate) struct Rule {
     pub(crate) body: Span,
     /// The index of the next line for the same symbol, or `NO_RULE`.
     pub(crate) next: u8,
+    /// 0 for a line that appends to the ones before it (Fractint's repeated lines); else
+    /// this production's weight among the alternatives for its symbol (stochastic), in
+    /// units of 2⁻¹⁴ (16 bits keep a rule at 8 bytes).
+    pub(crate) weight: u16,
 }
 
 /// An L-system: axiom, rules and angle, compiled from text and checked.
@@ -65,6 +70,8 @@ pub struct Grammar<'a> {
     first: [u8; 128],
     extra_draw: SymbolSet,
     headings: Headings,
+    /// Seeds the choices among stochastic productions.
+    seed: u32,
 }
 
 impl<'a> Grammar<'a> {
@@ -94,6 +101,7 @@ impl<'a> Grammar<'a> {
             first: [NO_RULE; 128],
             extra_draw: SymbolSet::default(),
             headings,
+            seed: 0,
         };
         grammar.axiom = grammar.compile(axiom.as_bytes(), at)?;
         Ok(grammar)
@@ -112,11 +120,58 @@ impl<'a> Grammar<'a> {
         self.add_rule_at(symbol, body, Location::column(1))
     }
 
+    /// Adds a stochastic production `symbol → body` chosen with `probability` among the
+    /// alternatives for `symbol` (2⁻¹⁵ to 3.99; they need not sum to 1, only their ratios
+    /// count, to 2⁻¹⁴; the choice is a pure function
+    /// of the seed and the symbol's place in the derivation: see [`with_seed`](Self::with_seed)).
+    pub fn add_alternative(
+        &mut self,
+        symbol: char,
+        body: &'a str,
+        probability: Real,
+    ) -> Result<(), Error> {
+        self.add_production(symbol, body, Some(probability), Location::column(1))
+    }
+
+    /// Seeds the choices among stochastic productions: the same seed derives the same string
+    /// and draws the same picture on every walk and every target.
+    #[must_use]
+    pub const fn with_seed(mut self, seed: u32) -> Self {
+        self.seed = seed;
+        self
+    }
+
+    /// [`with_seed`](Self::with_seed) in place.
+    pub fn set_seed(&mut self, seed: u32) {
+        self.seed = seed;
+    }
+
+    /// The seed of the stochastic choices.
+    pub const fn seed(&self) -> u32 {
+        self.seed
+    }
+
+    /// Whether any symbol has stochastic productions.
+    pub(crate) fn is_stochastic(&self) -> bool {
+        self.rules.iter().any(|rule| rule.weight > 0)
+    }
+
     /// Adds a rule; `at` is where the body starts (for error messages).
     pub(crate) fn add_rule_at(
         &mut self,
         symbol: char,
         body: &'a str,
+        at: Location,
+    ) -> Result<(), Error> {
+        self.add_production(symbol, body, None, at)
+    }
+
+    /// Adds an appending line (`probability` `None`) or a stochastic alternative.
+    pub(crate) fn add_production(
+        &mut self,
+        symbol: char,
+        body: &'a str,
+        probability: Option<Real>,
         at: Location,
     ) -> Result<(), Error> {
         let rule_at = Location {
@@ -141,12 +196,33 @@ impl<'a> Grammar<'a> {
         if self.rules.is_full() {
             return Err(too_many);
         }
+        // Weights in units of 2⁻¹⁴: no floats; probabilities up to 3.99 (they need not sum
+        // to 1, only their ratios count).
+        let weight = match probability {
+            None => 0,
+            Some(p) => u16::try_from(shift_round(i128::from(p.to_bits()), 18))
+                .ok()
+                .filter(|&w| w > 0)
+                .ok_or(Error::Read(ReadError::ProbabilityOutOfRange {
+                    at: rule_at,
+                }))?,
+        };
+        // One symbol's productions are all appending lines or all alternatives.
+        if let Some(first) = self.first_rule(symbol).and_then(|index| self.rule(index)) {
+            if (first.weight > 0) != (weight > 0) {
+                return Err(Error::Read(ReadError::MixedProductions {
+                    symbol: char::from(symbol),
+                    at: rule_at,
+                }));
+            }
+        }
         let compiled = self.compile(body.as_bytes(), at)?;
         let index = u8::try_from(self.rules.len()).unwrap_or(NO_RULE);
         self.rules
             .push(Rule {
                 body: compiled,
                 next: NO_RULE,
+                weight,
             })
             .map_err(|_| too_many)?;
         // Chain it after the last line for the same symbol.
@@ -252,11 +328,41 @@ impl<'a> Grammar<'a> {
         self.rules.get(usize::from(index))
     }
 
-    /// The rule line after `index` for the same symbol.
+    /// The rule line after `index` that continues it (Fractint's repeated lines; none for a
+    /// stochastic alternative).
+    #[inline]
     pub(crate) fn next_line(&self, index: u8) -> Option<u8> {
         self.rule(index)
+            .filter(|rule| rule.weight == 0)
             .map(|rule| rule.next)
             .filter(|&next| next != NO_RULE)
+    }
+
+    /// The production to expand for a symbol whose first line is `first`: that line, or for
+    /// stochastic alternatives the one `key` picks, each with its weight's share of the
+    /// 2³² keys (a multiply and a shift: no division).
+    #[inline]
+    pub(crate) fn choose(&self, first: u8, key: u32) -> u8 {
+        let Some(rule) = self.rule(first).filter(|rule| rule.weight > 0) else {
+            return first;
+        };
+        let mut total: u64 = 0;
+        let mut line = Some((first, rule));
+        while let Some((_, rule)) = line {
+            total += u64::from(rule.weight);
+            line = self.rule(rule.next).map(|next| (rule.next, next));
+        }
+        let mut pick = (u64::from(key) * total) >> 32;
+        let mut line = Some((first, rule));
+        while let Some((index, rule)) = line {
+            let weight = u64::from(rule.weight);
+            if pick < weight {
+                return index;
+            }
+            pick -= weight;
+            line = self.rule(rule.next).map(|next| (rule.next, next));
+        }
+        first
     }
 
     /// Every op of the axiom and the rules.

@@ -11,17 +11,18 @@
 //! ```
 //!
 //! Several systems to a file, each `name { ... }` on lines of their own. Inside, `key:
-//! value` lines (`axiom:`, `angle:` in degrees; `ignore:`, `seed:` and `define:` are read
-//! and kept for the productions that use them) and productions `pred --> successor`, one
-//! symbol to a string in ABOP's notation (case-sensitive; `F` draws, `f` moves, `+ - |`
-//! turn, `[ ]` branch; spaces between symbols are dropped). Productions with context
-//! (`lc < pred > rc`), conditions (`: cond`), probabilities or parameters are named in a
-//! [`ReadError::Unsupported`] error: this reader does not derive them yet.
+//! value` lines (`axiom:`, `angle:` in degrees, `seed:` for the stochastic choices;
+//! `ignore:` and `define:` are read for the productions that will use them) and
+//! productions `pred --> successor`, one symbol to a string in ABOP's notation
+//! (case-sensitive; `F` draws, `f` moves, `+ - |` turn, `[ ]` branch; spaces between
+//! symbols are dropped), or stochastic alternatives `pred --> successor : probability`.
+//! Productions with context (`lc < pred > rc`), conditions (`: cond`) or parameters are
+//! named in a [`ReadError::Unsupported`] error: this reader does not derive them yet.
 
 use super::alphabet::Dialect;
 use super::grammar::Grammar;
 use crate::error::{Error, Location, ReadError, Unsupported};
-use crate::math::Angle;
+use crate::math::{Angle, Real};
 
 /// A `.lsys` file's text.
 #[derive(Debug, Clone, Copy)]
@@ -181,6 +182,7 @@ impl<'a> LsysEntry<'a> {
     pub fn grammar(&self) -> Result<Grammar<'a>, Error> {
         let mut axiom = None;
         let mut angle = None;
+        let mut seed = None;
         for (line, text) in self.lines() {
             let at = |column: usize| Location {
                 line,
@@ -195,8 +197,14 @@ impl<'a> LsysEntry<'a> {
                             .ok_or(Error::Read(ReadError::NotANumber { at: value_at }))?;
                         angle = Some(degrees);
                     }
+                    "seed" => {
+                        let number = value
+                            .parse::<u32>()
+                            .map_err(|_| Error::Read(ReadError::NotANumber { at: value_at }))?;
+                        seed = Some(number);
+                    }
                     // Kept for the productions that use them, which are not derived yet.
-                    "ignore" | "seed" | "define" => {}
+                    "ignore" | "define" => {}
                     _ => return Err(Error::Read(ReadError::UnknownLine { at: at(0) })),
                 }
             } else if !text.contains("-->") {
@@ -207,6 +215,7 @@ impl<'a> LsysEntry<'a> {
         let angle = angle.ok_or(Error::Read(ReadError::MissingAngle))?;
         let (axiom, axiom_at) = axiom.ok_or(Error::Read(ReadError::MissingAxiom))?;
         let mut grammar = Grammar::new_at(Dialect::Abop, axiom, angle, axiom_at)?;
+        grammar.set_seed(seed.unwrap_or(0));
         let mut seen = [false; 128];
         for (line, text) in self.lines() {
             let Some((left, right)) = text.split_once("-->") else {
@@ -232,9 +241,16 @@ impl<'a> LsysEntry<'a> {
             if left.contains(':') {
                 return Err(unsupported(Unsupported::Condition, left, &[':']));
             }
-            if right.contains(':') {
-                return Err(unsupported(Unsupported::Probability, right, &[':']));
-            }
+            // `--> successor : probability`: a stochastic alternative.
+            let (right, probability) = match right.rsplit_once(':') {
+                Some((successor, p)) => {
+                    let p = p.trim();
+                    let value = Real::parse_decimal(p)
+                        .ok_or(Error::Read(ReadError::NotANumber { at: at(p) }))?;
+                    (successor, Some(value))
+                }
+                None => (right, None),
+            };
             for part in [left, right] {
                 if part.contains('(') {
                     return Err(unsupported(Unsupported::Parameters, part, &['(']));
@@ -248,14 +264,14 @@ impl<'a> LsysEntry<'a> {
                 }));
             };
             let index = usize::from(u8::try_from(symbol).unwrap_or(0) & 0x7f);
-            if seen.get(index).copied().unwrap_or(false) {
+            if probability.is_none() && seen.get(index).copied().unwrap_or(false) {
                 return Err(unsupported(Unsupported::SecondProduction, predecessor, &[]));
             }
             if let Some(slot) = seen.get_mut(index) {
                 *slot = true;
             }
             let successor = right.trim();
-            grammar.add_rule_at(symbol, successor, at(successor))?;
+            grammar.add_production(symbol, successor, probability, at(successor))?;
         }
         Ok(grammar)
     }

@@ -121,7 +121,8 @@ pub(crate) struct Summary {
 /// apply to it (see the module docs).
 pub fn cells_needed(grammar: &Grammar<'_>, order: u32) -> Option<usize> {
     let n = usize::from(grammar.headings().cycle()?.count);
-    if !table_applies(grammar) {
+    // Stochastic choices differ from place to place: no two expansions are alike.
+    if !table_applies(grammar) || grammar.is_stochastic() {
         return None;
     }
     let symbols = (0..128u8)

@@ -313,8 +313,8 @@ pub struct WalkStats {
 /// The segments an L-system draws at an order, in drawing order, computed on the fly.
 ///
 /// This is the raw layer under [`LSystem`](crate::LSystem): no colours, no pixels. A main loop
-/// can pull a few segments at a time. Worst-case RAM is the walker (`DEPTH` × 6 bytes), the
-/// turtle state and its stack (`STACK` × 32 bytes) and two references: under 0.9 KiB with the
+/// can pull a few segments at a time. Worst-case RAM is the walker (`DEPTH` × 8 bytes), the
+/// turtle state and its stack (`STACK` × 32 bytes) and two references: under 1 KiB with the
 /// defaults, whatever the order.
 ///
 /// After an `Err` the iterator ends.

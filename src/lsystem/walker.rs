@@ -3,7 +3,12 @@
 //!
 //! The walker keeps one frame per expansion level: which rule line it is reading and where.
 //! A symbol with a rule is expanded (a frame is pushed) while order remains; any other symbol
-//! is handed out to be interpreted. Memory is `DEPTH` frames of 6 bytes, whatever the order.
+//! is handed out to be interpreted. Memory is `DEPTH` frames of 8 bytes, whatever the order.
+//!
+//! Stochastic productions are chosen by a hash of the expansion's place in the derivation
+//! tree (the parent's key and the symbol's position in its body) and the grammar's seed, not
+//! by a generator advanced in walk order: every walk of a derivation (the fit's and the
+//! draw's), on every target, makes the same choices.
 
 use core::fmt;
 
@@ -30,16 +35,41 @@ struct Frame {
     position: u16,
     end: u16,
     rule: u8,
+    /// This expansion's place in the derivation tree, hashed (16 bits keep a frame at 8
+    /// bytes): stochastic choices below it are functions of it, so every walk of one
+    /// derivation makes the same ones.
+    key: u16,
 }
 
 impl Frame {
-    fn at(rule: u8, span: Span) -> Self {
+    fn at(rule: u8, span: Span, key: u16) -> Self {
         Self {
             position: span.start,
             end: span.end,
             rule,
+            key,
         }
     }
+}
+
+/// MurmurHash3's 32-bit finaliser: every input bit moves every output bit.
+const fn mix(mut h: u32) -> u32 {
+    h ^= h >> 16;
+    h = h.wrapping_mul(0x85EB_CA6B);
+    h ^= h >> 13;
+    h = h.wrapping_mul(0xC2B2_AE35);
+    h ^ (h >> 16)
+}
+
+/// The hash of the expansion of the symbol at op `position` inside the expansion `parent`:
+/// 32 bits for the choice, of which the frame keeps 16.
+const fn child_key(parent: u16, position: u16) -> u32 {
+    mix((parent as u32).wrapping_mul(0x9E37_79B9) ^ ((position as u32) << 16))
+}
+
+/// The 16 bits of a key a frame keeps.
+const fn kept(key: u32) -> u16 {
+    (key >> 16) as u16
 }
 
 /// Iterates over the symbols of an L-system's derivation of a given order.
@@ -92,7 +122,11 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
         }
         let mut frames = Vec::new();
         frames
-            .push(Frame::at(AXIOM, grammar.axiom_span()))
+            .push(Frame::at(
+                AXIOM,
+                grammar.axiom_span(),
+                kept(mix(grammar.seed())),
+            ))
             .map_err(|_| too_high)?;
         Ok(Self {
             grammar,
@@ -161,7 +195,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             if top.position >= top.end {
                 // End of this line: go on with the next line for the same symbol, if any.
                 match self.grammar.next_line(top.rule) {
-                    Some(next) => *top = Frame::at(next, self.grammar.rule_span(next)),
+                    Some(next) => *top = Frame::at(next, self.grammar.rule_span(next), top.key),
                     None => {
                         self.frames.pop();
                     }
@@ -174,18 +208,22 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                     budget: self.budget,
                 })));
             }
-            let op = self.grammar.op(top.position);
+            let at = top.position;
+            let parent = top.key;
+            let op = self.grammar.op(at);
             top.position += 1;
             self.read += 1;
             let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
             if level < self.order && op < NUMERIC {
-                if let Some(rule) = self.grammar.first_rule(op) {
+                if let Some(first) = self.grammar.first_rule(op) {
                     let left = self.order - level;
                     if !expand(op, left) {
                         return Some(Ok(Next::Declined { op, left }));
                     }
+                    let key = child_key(parent, at);
+                    let rule = self.grammar.choose(first, key);
                     // Cannot fail: `new` checked that order + 1 <= DEPTH.
-                    let frame = Frame::at(rule, self.grammar.rule_span(rule));
+                    let frame = Frame::at(rule, self.grammar.rule_span(rule), kept(key));
                     if self.frames.push(frame).is_ok() {
                         self.max_depth = self.max_depth.max(depth + 1);
                         continue;
