@@ -111,7 +111,8 @@ mod math;
 mod render;
 
 pub use error::{
-    DrawError, Error, FitError, Location, ReadError, ReadWarning, Unsupported, ViewError, WalkError,
+    Arithmetic, DrawError, Error, FitError, Location, ReadError, ReadWarning, Unsupported,
+    ViewError, WalkError,
 };
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
@@ -121,6 +122,10 @@ pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
 pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
 pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
 pub use lsystem::lsys::{LsysEntries, LsysEntry, LsysFile};
+pub use lsystem::parametric::{
+    DerivedModule, ParametricGrammar, ParametricWalker, Values, MAX_ARGUMENTS, MAX_CONSTANTS,
+    MAX_MODULES, MAX_PARAMS, MAX_PRODUCTIONS,
+};
 pub use lsystem::table::{cells_needed, Cell, MAX_BODY_NESTING};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 pub use lsystem::walker::{DerivedSymbol, Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};

@@ -44,8 +44,16 @@ fn the_books_plants_read_as_the_same_systems() {
     assert_eq!(
         names,
         [
-            "Fig1.24a", "Fig1.24b", "Fig1.24c", "Fig1.24d", "Fig1.24e", "Fig1.24f", "Algae",
-            "Lecture", "Fig1.27"
+            "Fig1.24a",
+            "Fig1.24b",
+            "Fig1.24c",
+            "Fig1.24d",
+            "Fig1.24e",
+            "Fig1.24f",
+            "Algae",
+            "Lecture",
+            "Fig1.27",
+            "Parametric1.10"
         ]
     );
     for (name, axiom, rules, degrees) in FIGURE_1_24 {
@@ -227,4 +235,93 @@ fn stochastic_choices_are_repeatable_and_fair() {
             .sum();
         assert!(chi_square < 13.8, "seed {seed}: chi-square {chi_square}");
     }
+}
+
+/// ABOP 1.10's parametric example: the derivation the book prints, step by step.
+#[test]
+fn the_books_parametric_derivation() {
+    let text = shipped_file("data/abop.lsys");
+    let entry = LsysFile::new(&text).entry("Parametric1.10").unwrap();
+    assert!(entry.is_parametric());
+    let grammar = entry.parametric().unwrap();
+    let book = [
+        "B(2)A(4,4)",
+        "B(1)B(4)A(1,0)",
+        "B(0)B(3)A(2,1)",
+        "CB(2)A(4,3)",
+        "CB(1)A(8,7)",
+        "CB(0)B(8)A(1.1429,0)",
+    ];
+    for (order, expected) in book.iter().enumerate() {
+        let derived: String = tinyfractal::ParametricWalker::<17>::new(&grammar, order as u32)
+            .unwrap()
+            .map(|module| module.unwrap().to_string())
+            .collect();
+        assert_eq!(&derived, expected, "order {order}");
+    }
+    // The plain reader names what it cannot derive.
+    assert!(matches!(
+        entry.grammar(),
+        Err(Error::Read(ReadError::Unsupported {
+            feature: Unsupported::Condition,
+            ..
+        }))
+    ));
+}
+
+/// Expressions: precedence, constants, conditions with logic, and typed errors.
+#[test]
+fn parametric_expressions_and_their_errors() {
+    let derive = |text: &str, order: u32| -> Result<String, Error> {
+        let file = LsysFile::new(text);
+        let grammar = file.entries().next().unwrap()?.parametric()?;
+        tinyfractal::ParametricWalker::<17>::new(&grammar, order)?
+            .map(|module| module.map(|m| m.to_string()))
+            .collect()
+    };
+    let system = "p {\n  define: k = 2^3 - 1\n  axiom: A(1,2)\n  angle: 90\n  A(x,y) : x < 3 && !(y == 0) --> A(x+1, y*k - (x+y)/2)B(-x^2)\n}\n";
+    // A(1,2) -> A(2, 2*7 - 1.5 = 12.5)B(-1) -> A(3, 12.5*7 - 7.25 = 80.25)B(-4)B(-1)
+    assert_eq!(derive(system, 2).unwrap(), "A(3,80.25)B(-4)B(-1)");
+    let divide = "p {\n  axiom: A(0)\n  angle: 90\n  A(x) --> A(1/x)\n}\n";
+    assert_eq!(
+        derive(divide, 1),
+        Err(Error::Walk(tinyfractal::WalkError::Arithmetic {
+            symbol: 'A',
+            problem: tinyfractal::Arithmetic::DivisionByZero,
+        }))
+    );
+    let overflow = "p {\n  axiom: A(2)\n  angle: 90\n  A(x) --> A(x^16)\n}\n";
+    assert!(matches!(
+        derive(overflow, 2),
+        Err(Error::Walk(tinyfractal::WalkError::Arithmetic {
+            problem: tinyfractal::Arithmetic::OutOfRange,
+            ..
+        }))
+    ));
+    let unknown = "p {\n  axiom: A(2)\n  angle: 90\n  A(x) --> A(z)\n}\n";
+    assert_eq!(
+        derive(unknown, 1),
+        Err(Error::Read(ReadError::UnknownName {
+            at: Location {
+                line: 4,
+                column: 14
+            }
+        }))
+    );
+    let malformed = "p {\n  axiom: A(2)\n  angle: 90\n  A(x) --> A(x+)\n}\n";
+    assert!(matches!(
+        derive(malformed, 1),
+        Err(Error::Read(ReadError::Expression { .. }))
+    ));
+}
+
+/// The parametric engine's worst-case RAM, as its docs state it.
+#[test]
+fn parametric_memory_is_bounded() {
+    use core::mem::size_of;
+    let grammar = size_of::<tinyfractal::ParametricGrammar>();
+    let walk = size_of::<tinyfractal::ParametricWalker<'static, 17>>();
+    println!("ParametricGrammar: {grammar} bytes; ParametricWalker<17>: {walk} bytes");
+    assert!(grammar <= 11 * 1024, "{grammar}");
+    assert!(walk <= 1024, "{walk}");
 }

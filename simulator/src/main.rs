@@ -16,7 +16,9 @@ use embedded_graphics_simulator::SimulatorDisplay;
 use std::process::ExitCode;
 
 use args::{Command, DeriveArgs, EscapeArgs, LSystemArgs, Source};
-use tinyfractal::{Grammar, LFile, LsysFile, Walker, DEFAULT_BUDGET};
+use tinyfractal::{
+    Grammar, LFile, LsysFile, ParametricGrammar, ParametricWalker, Walker, DEFAULT_BUDGET,
+};
 
 fn main() -> ExitCode {
     let command = match args::parse(std::env::args_os().skip(1)) {
@@ -155,23 +157,43 @@ fn load<'a>(
 /// `derive`: the string at the order, on one line, if it is at most `--max-length` symbols
 /// (measured first, so nothing is printed past the limit).
 fn derive(arguments: &DeriveArgs) -> Result<(), String> {
+    if let Some(result) = derive_parametric(arguments) {
+        return result;
+    }
     let mut file_text = String::new();
     let (mut grammar, name) = load(&arguments.source, &mut file_text)?;
     if let Some(seed) = arguments.seed {
         grammar.set_seed(seed);
     }
+    let budget = derive_budget(arguments);
+    let walk = || {
+        Walker::<'_, '_, { scene::DEPTH }>::with_capacity(&grammar, arguments.order).map(|walker| {
+            let mut walker = walker.with_budget(budget);
+            core::iter::from_fn(move || walker.next_symbol())
+        })
+    };
+    print_derivation(walk, arguments, &name)
+}
+
+/// Reads a walk may take: expansions that print nothing still take reads, so they are
+/// bounded too.
+fn derive_budget(arguments: &DeriveArgs) -> u64 {
+    arguments.max_length.saturating_mul(64).max(DEFAULT_BUDGET)
+}
+
+/// Prints a derivation on one line if it has at most `--max-length` symbols: `walk` is
+/// walked once to count them, then again to print, so nothing is printed past the limit
+/// and nothing is kept in memory.
+fn print_derivation<W, I, T>(walk: W, arguments: &DeriveArgs, name: &str) -> Result<(), String>
+where
+    W: Fn() -> Result<I, tinyfractal::Error>,
+    I: Iterator<Item = Result<T, tinyfractal::Error>>,
+    T: std::fmt::Display,
+{
     let order = arguments.order;
     let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
-    // Expansions that print nothing still take reads: bound them too.
-    let budget = arguments.max_length.saturating_mul(64).max(DEFAULT_BUDGET);
-    let walk = || {
-        Walker::<'_, '_, { scene::DEPTH }>::with_capacity(&grammar, order)
-            .map(|walker| walker.with_budget(budget))
-            .map_err(failed)
-    };
     let mut length = 0u64;
-    let mut counting = walk()?;
-    while let Some(symbol) = counting.next_symbol() {
+    for symbol in walk().map_err(failed)? {
         symbol.map_err(failed)?;
         length += 1;
         if length > arguments.max_length {
@@ -183,9 +205,8 @@ fn derive(arguments: &DeriveArgs) -> Result<(), String> {
         }
     }
     let mut out = io::BufWriter::new(io::stdout().lock());
-    let mut printing = walk()?;
     let written = (|| -> io::Result<()> {
-        while let Some(symbol) = printing.next_symbol() {
+        for symbol in walk().map_err(io::Error::other)? {
             write!(out, "{}", symbol.map_err(io::Error::other)?)?;
         }
         writeln!(out)?;
@@ -194,7 +215,54 @@ fn derive(arguments: &DeriveArgs) -> Result<(), String> {
     written.map_err(|e| format!("cannot write the derivation: {e}"))
 }
 
+/// The parametric system a source names, if it is one (an `.lsys` entry with parameters
+/// or conditions), with its name.
+fn parametric(source: &Source) -> Option<Result<(ParametricGrammar, String), String>> {
+    let Source::File { path, name } = source else {
+        return None;
+    };
+    if !is_lsys(path) {
+        return None;
+    }
+    let text = match read_text(path) {
+        Ok(text) => text,
+        Err(error) => return Some(Err(error)),
+    };
+    let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
+    let entry = match LsysFile::new(&text).entry(name) {
+        Ok(entry) => entry,
+        Err(error) => return Some(Err(failed(error))),
+    };
+    entry.is_parametric().then(|| {
+        entry
+            .parametric()
+            .map(|grammar| (grammar, name.clone()))
+            .map_err(failed)
+    })
+}
+
+/// `derive` of a parametric system: `None` if the source is not one.
+fn derive_parametric(arguments: &DeriveArgs) -> Option<Result<(), String>> {
+    let (grammar, name) = match parametric(&arguments.source)? {
+        Ok(found) => found,
+        Err(error) => return Some(Err(error)),
+    };
+    let budget = derive_budget(arguments);
+    let walk = || {
+        ParametricWalker::<'_, { scene::DEPTH }>::new(&grammar, arguments.order)
+            .map(|walker| walker.with_budget(budget))
+    };
+    Some(print_derivation(walk, arguments, &name))
+}
+
 fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
+    if let Some(found) = parametric(&arguments.source) {
+        let (_, name) = found?;
+        return Err(format!(
+            "{name}: drawing parametric systems is not supported yet; `tinyfractal derive` \
+             prints their derivation"
+        ));
+    }
     let mut file_text = String::new();
     let (mut grammar, name) = load(&arguments.source, &mut file_text)?;
     if let Some(seed) = arguments.seed {

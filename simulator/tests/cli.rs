@@ -1096,16 +1096,16 @@ fn lsys_files_list_derive_and_render() {
         "{}",
         stdout(&rendered)
     );
-    let conditional = scratch("lsys").join("c.lsys");
+    let context = scratch("lsys").join("c.lsys");
     std::fs::write(
-        &conditional,
-        "c {\n  axiom: F\n  angle: 30\n  F : 1 --> F[+F]F\n}\n",
+        &context,
+        "c {\n  axiom: F\n  angle: 30\n  A < F --> F[+F]F\n}\n",
     )
     .unwrap();
     let refused = run(&[
         "derive",
         "--file",
-        conditional.to_str().unwrap(),
+        context.to_str().unwrap(),
         "--name",
         "c",
         "--order",
@@ -1113,10 +1113,36 @@ fn lsys_files_list_derive_and_render() {
     ]);
     assert_eq!(refused.status.code(), Some(1));
     assert!(
-        stderr(&refused).contains("conditions (`pred : cond --> ...`) at line 4, column 5"),
+        stderr(&refused)
+            .contains("context-sensitive productions (`lc < pred > rc`) at line 4, column 5"),
         "{}",
         stderr(&refused)
     );
+    // Parametric: derived as the book prints it; drawing them is refused by name.
+    let book = run(&[
+        "derive",
+        "--file",
+        &abop,
+        "--name",
+        "Parametric1.10",
+        "--order",
+        "5",
+    ]);
+    assert_eq!(stdout(&book), "CB(0)B(8)A(1.1429,0)\n");
+    let drawn = run(&[
+        "render",
+        "lsystem",
+        "--file",
+        &abop,
+        "--name",
+        "Parametric1.10",
+        "--order",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(drawn.status.code(), Some(1));
+    assert!(stderr(&drawn).contains("drawing parametric systems is not supported yet"));
     // Stochastic: the file's seed, repeatable; --seed overrides it.
     let plant = |seed: Option<&str>| {
         let mut args = vec![

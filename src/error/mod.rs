@@ -13,7 +13,7 @@ mod walk;
 pub use fit::FitError;
 pub use read::{ReadError, ReadWarning, Unsupported};
 pub use view::ViewError;
-pub use walk::WalkError;
+pub use walk::{Arithmetic, WalkError};
 
 /// Where in the source text a problem was found (1-based; `line` is 0 for text that did not
 /// come from a file, such as a rule passed on the command line).

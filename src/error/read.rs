@@ -121,6 +121,23 @@ pub enum ReadError {
         /// Where the predecessor is.
         at: Location,
     },
+    /// A parameter expression is malformed.
+    Expression {
+        /// Where it goes wrong.
+        at: Location,
+    },
+    /// An expression names something that is neither a parameter nor a constant.
+    UnknownName {
+        /// Where the name is.
+        at: Location,
+    },
+    /// A module has more parameters than a grammar holds.
+    TooManyParameters {
+        /// The capacity ([`MAX_PARAMS`](crate::MAX_PARAMS)).
+        max: usize,
+        /// Where the module is.
+        at: Location,
+    },
     /// A stochastic production's probability is below 2⁻¹⁵ or above 3.99.
     ProbabilityOutOfRange {
         /// Where the production is.
@@ -306,6 +323,18 @@ impl fmt::Display for ReadError {
                 "line {line} is a row of numbers, as in a Fractint IFS file (`.ifs`), not an \
                  L-system file (`.l`)"
             ),
+            Self::Expression { at } => write!(
+                f,
+                "the expression at {at} is malformed: write e.g. x*2, (x+y)/2 or t>1 && x!=0"
+            ),
+            Self::UnknownName { at } => write!(
+                f,
+                "the name at {at} is neither a parameter of the predecessor nor a `define:`d \
+                 constant"
+            ),
+            Self::TooManyParameters { max, at } => {
+                write!(f, "the module at {at} has more than {max} parameters")
+            }
             Self::ProbabilityOutOfRange { at } => write!(
                 f,
                 "the probability of the production at {at} is out of range: give 0.0001 to 3.99, \

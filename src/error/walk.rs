@@ -28,6 +28,26 @@ pub enum WalkError {
     Overflow,
     /// The step shrank (through `@`) below what fixed point can represent with precision.
     StepUnderflow,
+    /// A parameter expression of a parametric system cannot be evaluated.
+    Arithmetic {
+        /// The module whose parameters (or whose production's condition) it is.
+        symbol: char,
+        /// What went wrong.
+        problem: Arithmetic,
+    },
+}
+
+/// What went wrong evaluating an expression.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Arithmetic {
+    /// Division by zero.
+    DivisionByZero,
+    /// A result beyond the fixed-point range (±2³¹), a power that is not a whole number
+    /// from -64 to 64, or the square root of a negative number.
+    OutOfRange,
+    /// An expression nested deeper than the evaluation stack.
+    TooDeep,
 }
 
 impl fmt::Display for WalkError {
@@ -49,6 +69,17 @@ impl fmt::Display for WalkError {
                 f,
                 "turtle coordinates overflow the fixed-point range: lower the order or the step"
             ),
+            Self::Arithmetic { symbol, problem } => {
+                let what = match problem {
+                    Arithmetic::DivisionByZero => "divides by zero",
+                    Arithmetic::OutOfRange => {
+                        "leaves the fixed-point range (±2^31), takes a fractional power or \
+                         the root of a negative number"
+                    }
+                    Arithmetic::TooDeep => "nests deeper than the evaluation stack",
+                };
+                write!(f, "a parameter expression of module `{symbol}` {what}")
+            }
             Self::StepUnderflow => write!(
                 f,
                 "the step shrank below fixed-point precision (too many `@` scalings): lower the order"

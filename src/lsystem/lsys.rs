@@ -21,6 +21,7 @@
 
 use super::alphabet::Dialect;
 use super::grammar::Grammar;
+use super::parametric::{ParametricGrammar, Place, MAX_CONSTANTS};
 use crate::error::{Error, Location, ReadError, Unsupported};
 use crate::math::{Angle, Real};
 
@@ -291,6 +292,104 @@ impl<'a> LsysEntry<'a> {
             })
             .filter(|(_, line)| !line.trim().is_empty())
     }
+}
+
+impl<'a> LsysEntry<'a> {
+    /// Whether the system uses parameters or conditions (read it with
+    /// [`parametric`](Self::parametric) then).
+    pub fn is_parametric(&self) -> bool {
+        self.lines().any(|(_, text)| match key_value(text) {
+            Some((key, value)) => key == "axiom" && value.contains('('),
+            None => text.split_once("-->").is_some_and(|(left, right)| {
+                left.contains('(') || left.contains(':') || right.contains('(')
+            }),
+        })
+    }
+
+    /// Reads a parametric system: `define:`d constants, the axiom, and productions
+    /// `A(x,y) : condition --> successor` (ABOP 1.10). Context and probabilities are
+    /// [`ReadError::Unsupported`] here.
+    pub fn parametric(&self) -> Result<ParametricGrammar, Error> {
+        let mut constants: heapless::Vec<(&'a str, Real), MAX_CONSTANTS> = heapless::Vec::new();
+        let mut grammar = ParametricGrammar::new();
+        let mut axiom = None;
+        for (line, text) in self.lines() {
+            let place = |part: &str| Place {
+                base: Location {
+                    line,
+                    column: u32::try_from(offset(text, part) + 1).unwrap_or(u32::MAX),
+                },
+            };
+            let Some((key, value)) = key_value(text) else {
+                continue;
+            };
+            match key {
+                "axiom" => axiom = Some((value, place(value))),
+                "define" => {
+                    let (name, expression) =
+                        value
+                            .split_once('=')
+                            .ok_or(Error::Read(ReadError::Expression {
+                                at: place(value).at(0),
+                            }))?;
+                    let mut scratch = ParametricGrammar::new();
+                    let known: &[(&str, Real)] = &constants;
+                    let value =
+                        scratch.constant(expression.trim(), known, place(expression.trim()))?;
+                    constants.push((name.trim(), value)).map_err(|_| {
+                        Error::Read(ReadError::TooManyRules {
+                            max: MAX_CONSTANTS,
+                            at: place(value_text(text)).at(0),
+                        })
+                    })?;
+                }
+                _ => {}
+            }
+        }
+        let (text, place) = axiom.ok_or(Error::Read(ReadError::MissingAxiom))?;
+        grammar.set_axiom(text, &constants, place)?;
+        for (line, text) in self.lines() {
+            let Some((left, right)) = text.split_once("-->") else {
+                continue;
+            };
+            let place = |part: &str| Place {
+                base: Location {
+                    line,
+                    column: u32::try_from(offset(text, part) + 1).unwrap_or(u32::MAX),
+                },
+            };
+            let (predecessor, condition) = match left.split_once(':') {
+                Some((predecessor, condition)) => (predecessor, Some(condition.trim())),
+                None => (left, None),
+            };
+            if let Some(mark) = predecessor.find(['<', '>']) {
+                return Err(Error::Read(ReadError::Unsupported {
+                    feature: Unsupported::Context,
+                    at: place(predecessor.get(mark..).unwrap_or(predecessor)).at(0),
+                }));
+            }
+            if let Some(mark) = right.find(':') {
+                return Err(Error::Read(ReadError::Unsupported {
+                    feature: Unsupported::Probability,
+                    at: place(right.get(mark..).unwrap_or(right)).at(0),
+                }));
+            }
+            let predecessor = predecessor.trim();
+            let successor = right.trim();
+            grammar.add_production(
+                (predecessor, place(predecessor)),
+                condition.map(|condition| (condition, place(condition))),
+                (successor, place(successor)),
+                &constants,
+            )?;
+        }
+        Ok(grammar)
+    }
+}
+
+/// The value part of a `key: value` line.
+fn value_text(line: &str) -> &str {
+    line.split_once(':').map_or(line, |(_, value)| value.trim())
 }
 
 /// `key: value` of a line, for the keys of the notation (`axiom:`, `angle:`, ...).

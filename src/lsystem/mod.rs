@@ -7,6 +7,7 @@ pub(crate) mod drawing;
 pub(crate) mod fractint;
 pub(crate) mod grammar;
 pub(crate) mod lsys;
+pub(crate) mod parametric;
 pub(crate) mod table;
 pub(crate) mod turtle;
 pub(crate) mod walker;
