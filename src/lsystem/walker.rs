@@ -16,7 +16,7 @@ use heapless::Vec;
 
 use super::grammar::{Grammar, Span, NUMERIC};
 use crate::error::{Error, WalkError};
-use crate::math::wide::div_round;
+use crate::math::decimal::write_four_decimals;
 use crate::math::Real;
 
 /// Frames a walker holds by default: orders 0 to 16.
@@ -253,24 +253,7 @@ impl fmt::Display for DerivedSymbol {
         let Some(number) = self.number else {
             return Ok(());
         };
-        // Rounded half away from zero to 4 decimals.
-        let scaled = div_round(i128::from(number.to_bits()) * 10_000, 1 << Real::FRAC_BITS);
-        let sign = if scaled < 0 { "-" } else { "" };
-        let (whole, fraction) = (
-            scaled.unsigned_abs() / 10_000,
-            scaled.unsigned_abs() % 10_000,
-        );
-        write!(f, "{sign}{whole}")?;
-        if fraction > 0 {
-            let mut digits = fraction;
-            let mut width = 4;
-            while digits % 10 == 0 {
-                digits /= 10;
-                width -= 1;
-            }
-            write!(f, ".{digits:0width$}")?;
-        }
-        Ok(())
+        write_four_decimals(f, number)
     }
 }
 

@@ -1,6 +1,7 @@
 //! Decimal text to fixed point, exactly rounded: the one parser behind `Real`, `Coord`
 //! and angles in degrees.
 
+use super::real::Real;
 use super::wide::div_round;
 
 /// Significant digits a number keeps: 10¹⁹ < 2⁶⁴, so that shifted by up to 62 bits it still
@@ -186,4 +187,29 @@ pub(crate) fn write_fixed(
     }
     let (int, rest, width) = split(whole);
     write!(f, "{sign}{int}.{rest:0width$}")
+}
+
+/// `value` rounded half away from zero to 4 decimals, trailing zeros dropped: how derived
+/// strings print numbers (`A(1.1429,0)`, `@0.5`).
+pub(crate) fn write_four_decimals(
+    f: &mut core::fmt::Formatter<'_>,
+    value: Real,
+) -> core::fmt::Result {
+    let scaled = div_round(i128::from(value.to_bits()) * 10_000, 1 << Real::FRAC_BITS);
+    let sign = if scaled < 0 { "-" } else { "" };
+    let (whole, fraction) = (
+        scaled.unsigned_abs() / 10_000,
+        scaled.unsigned_abs() % 10_000,
+    );
+    write!(f, "{sign}{whole}")?;
+    if fraction > 0 {
+        let mut digits = fraction;
+        let mut width = 4;
+        while digits % 10 == 0 {
+            digits /= 10;
+            width -= 1;
+        }
+        write!(f, ".{digits:0width$}")?;
+    }
+    Ok(())
 }

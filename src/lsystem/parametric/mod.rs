@@ -28,7 +28,7 @@ use heapless::Vec;
 
 use self::expr::{compile, evaluate, Code, EvalError, Instr, Names, SyntaxError, MAX_CODE};
 use crate::error::{Arithmetic, Error, Location, ReadError, WalkError};
-use crate::math::wide::div_round;
+use crate::math::decimal::write_four_decimals;
 use crate::math::Real;
 
 /// Most parameters a module has.
@@ -408,27 +408,6 @@ impl fmt::Display for DerivedModule {
         }
         f.write_char(')')
     }
-}
-
-/// `value` rounded half away from zero to 4 decimals, trailing zeros dropped.
-pub(crate) fn write_four_decimals(f: &mut fmt::Formatter<'_>, value: Real) -> fmt::Result {
-    let scaled = div_round(i128::from(value.to_bits()) * 10_000, 1 << Real::FRAC_BITS);
-    let sign = if scaled < 0 { "-" } else { "" };
-    let (whole, fraction) = (
-        scaled.unsigned_abs() / 10_000,
-        scaled.unsigned_abs() % 10_000,
-    );
-    write!(f, "{sign}{whole}")?;
-    if fraction > 0 {
-        let mut digits = fraction;
-        let mut width = 4;
-        while digits % 10 == 0 {
-            digits /= 10;
-            width -= 1;
-        }
-        write!(f, ".{digits:0width$}")?;
-    }
-    Ok(())
 }
 
 /// One expansion level: the read position in a production's modules (or the axiom's), and
