@@ -53,7 +53,8 @@ fn the_books_plants_read_as_the_same_systems() {
             "Algae",
             "Lecture",
             "Fig1.27",
-            "Parametric1.10"
+            "Parametric1.10",
+            "RowOfTrees"
         ]
     );
     for (name, axiom, rules, degrees) in FIGURE_1_24 {
@@ -324,4 +325,52 @@ fn parametric_memory_is_bounded() {
     println!("ParametricGrammar: {grammar} bytes; ParametricWalker<17>: {walk} bytes");
     assert!(grammar <= 11 * 1024, "{grammar}");
     assert!(walk <= 1024, "{walk}");
+}
+
+/// A parametric system drawn: ABOP's row of trees (equation 1.5). Each F(x) becomes four
+/// segments whose turns cancel, so after n steps the curve ends at (1 + 2h·cos 86°)ⁿ on the
+/// x axis, h = sqrt(p·q), worked out here in f64.
+#[test]
+fn a_parametric_system_draws() {
+    use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
+    let text = shipped_file("data/abop.lsys");
+    let grammar = LsysFile::new(&text)
+        .entry("RowOfTrees")
+        .unwrap()
+        .parametric()
+        .unwrap();
+    let order = 4;
+    let segments: Vec<_> =
+        tinyfractal::ParametricSegments::<17, 20>::new(&grammar, order, Default::default())
+            .unwrap()
+            .map(Result::unwrap)
+            .collect();
+    assert_eq!(segments.len(), 4usize.pow(order));
+    let h = (0.3f64 * 0.7).sqrt();
+    let expected = (1.0 + 2.0 * h * 86f64.to_radians().cos()).powi(order as i32);
+    let end = segments.last().unwrap().end;
+    assert!(
+        (end.x.to_f64() - expected).abs() < 1e-6,
+        "{} vs {expected}",
+        end.x.to_f64()
+    );
+    assert!(end.y.to_f64().abs() < 1e-6, "{}", end.y.to_f64());
+    let drawing = tinyfractal::ParametricLSystem::<17, 20>::new(&grammar, order)
+        .fit(
+            Rectangle::new(Point::zero(), Size::new(120, 80)),
+            &[BinaryColor::On],
+        )
+        .unwrap();
+    let mut frame = common::Bitmap::new(120, 80);
+    let stats = drawing.draw(&mut frame).unwrap();
+    assert_eq!(stats.segments, 256);
+    assert_eq!(frame.outside, 0);
+    let bounds = drawing.bounding_box();
+    for y in 0..80 {
+        for x in 0..120 {
+            if frame.get(x, y) {
+                assert!(bounds.contains(Point::new(x, y)));
+            }
+        }
+    }
 }

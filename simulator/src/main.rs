@@ -255,13 +255,57 @@ fn derive_parametric(arguments: &DeriveArgs) -> Option<Result<(), String>> {
     Some(print_derivation(walk, arguments, &name))
 }
 
+/// `render lsystem` of a parametric `.lsys` system (no `--segments` or `--view` yet: they
+/// are refused by name).
+fn render_parametric(
+    arguments: &LSystemArgs,
+    grammar: &ParametricGrammar,
+    name: &str,
+) -> Result<(), String> {
+    if arguments.segments.is_some() || arguments.view.is_some() {
+        return Err(format!(
+            "{name}: --segments and --view are not supported for parametric systems yet"
+        ));
+    }
+    let common = &arguments.common;
+    window_available(common.window)?;
+    let order = arguments.order;
+    let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
+    let mut display = SimulatorDisplay::<Rgb888>::new(embedded_graphics::geometry::Size::new(
+        common.width(),
+        common.height(),
+    ));
+    let started = std::time::Instant::now();
+    let drawing = tinyfractal::ParametricLSystem::<'_, { scene::DEPTH }, { scene::STACK }>::new(
+        grammar, order,
+    )
+    .fit(
+        embedded_graphics::prelude::Dimensions::bounding_box(&display),
+        &palette::VGA,
+    )
+    .map_err(failed)?;
+    let fit = started.elapsed();
+    let stats = drawing
+        .try_draw(&mut display)
+        .map_err(|error| match error {
+            tinyfractal::DrawError::Fractal(error) => failed(error),
+            tinyfractal::DrawError::Target(never) => match never {},
+        })?;
+    let elapsed = started.elapsed();
+    let stats_line = format!(
+        "segments={} fit_ms={:.3} draw_ms={:.3} elapsed_ms={:.3}",
+        stats.segments,
+        fit.as_secs_f64() * 1e3,
+        (elapsed - fit).as_secs_f64() * 1e3,
+        elapsed.as_secs_f64() * 1e3
+    );
+    deliver(common, &name.to_lowercase(), &display, |_| {}, &stats_line)
+}
+
 fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     if let Some(found) = parametric(&arguments.source) {
-        let (_, name) = found?;
-        return Err(format!(
-            "{name}: drawing parametric systems is not supported yet; `tinyfractal derive` \
-             prints their derivation"
-        ));
+        let (grammar, name) = found?;
+        return render_parametric(arguments, &grammar, &name);
     }
     let mut file_text = String::new();
     let (mut grammar, name) = load(&arguments.source, &mut file_text)?;

@@ -1118,7 +1118,7 @@ fn lsys_files_list_derive_and_render() {
         "{}",
         stderr(&refused)
     );
-    // Parametric: derived as the book prints it; drawing them is refused by name.
+    // Parametric: derived as the book prints it, and drawn.
     let book = run(&[
         "derive",
         "--file",
@@ -1129,20 +1129,27 @@ fn lsys_files_list_derive_and_render() {
         "5",
     ]);
     assert_eq!(stdout(&book), "CB(0)B(8)A(1.1429,0)\n");
+    let trees = scratch("lsys").join("trees.png");
     let drawn = run(&[
         "render",
         "lsystem",
         "--file",
         &abop,
         "--name",
-        "Parametric1.10",
+        "RowOfTrees",
         "--order",
-        "2",
+        "4",
+        "--stats",
         "--out",
-        out.to_str().unwrap(),
+        trees.to_str().unwrap(),
     ]);
-    assert_eq!(drawn.status.code(), Some(1));
-    assert!(stderr(&drawn).contains("drawing parametric systems is not supported yet"));
+    assert!(drawn.status.success(), "{}", stderr(&drawn));
+    assert!(
+        stdout(&drawn).starts_with("segments=256 "),
+        "{}",
+        stdout(&drawn)
+    );
+    assert!(trees.exists());
     // Stochastic: the file's seed, repeatable; --seed overrides it.
     let plant = |seed: Option<&str>| {
         let mut args = vec![

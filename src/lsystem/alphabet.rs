@@ -61,6 +61,10 @@ pub(crate) enum Command {
     RaiseColor(u8),
     /// Lower the colour index.
     LowerColor(u8),
+    /// Step `length` steps along the main heading, drawing (a parametric `F(l)`).
+    DrawBy(Real),
+    /// Step `length` steps along the main heading without drawing (`f(l)`).
+    MoveBy(Real),
     /// Save the turtle.
     Push,
     /// Restore the turtle.

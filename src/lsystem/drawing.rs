@@ -120,22 +120,11 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     /// The bounding box of what is drawn from `start`, by a walk; `None` if nothing is.
     /// `in_pixels`: the walk's unit is a pixel (see `Segments::in_pixels`).
     fn bounds_from(&self, start: Start, in_pixels: bool) -> Result<Option<Bounds>, Error> {
-        let mut bounds: Option<Bounds> = None;
         let mut walk = self.segments(start)?;
         if in_pixels {
             walk = walk.in_pixels();
         }
-        walk.try_for_each_segment(|segment| {
-            for p in [segment.start, segment.end] {
-                let b = bounds.get_or_insert(Bounds { min: p, max: p });
-                b.min.x = b.min.x.min(p.x);
-                b.min.y = b.min.y.min(p.y);
-                b.max.x = b.max.x.max(p.x);
-                b.max.y = b.max.y.max(p.y);
-            }
-            Ok(())
-        })?;
-        Ok(bounds)
+        measure(walk)
     }
 
     /// Scales and centres the drawing into `area` (less the margin), colours from `palette`.
@@ -277,21 +266,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             },
             None => (self.bounds_from(start, true)?, None),
         };
-        // Nothing drawn: an empty box where the turtle starts.
-        let empty = Rectangle::new(self.pixel_of(start.position), Size::zero());
-        let bounding_box = pixels.map_or(empty, |pixels| {
-            let corners = [self.pixel_of(pixels.min), self.pixel_of(pixels.max)];
-            Rectangle::with_corners(
-                Point::new(
-                    corners[0].x.min(corners[1].x),
-                    corners[0].y.min(corners[1].y),
-                ),
-                Point::new(
-                    corners[0].x.max(corners[1].x),
-                    corners[0].y.max(corners[1].y),
-                ),
-            )
-        });
+        let bounding_box = pixel_box(self.orientation, pixels, start);
         Ok(LSystemDrawing {
             system: *self,
             start,
@@ -333,9 +308,71 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 
     /// The pixel for a point of a drawing pass (whose turtle works in pixels).
     fn pixel_of(&self, p: TurtlePoint) -> Point {
-        let (x, y) = self.orientation.to_screen((p.x, p.y));
-        Point::new(x.round_to_i32(), y.round_to_i32())
+        pixel_of(self.orientation, p)
     }
+}
+
+/// The pixel a point of a drawing pass (whose turtle works in pixels) lands on.
+pub(crate) fn pixel_of(orientation: Orientation, p: TurtlePoint) -> Point {
+    let (x, y) = orientation.to_screen((p.x, p.y));
+    Point::new(x.round_to_i32(), y.round_to_i32())
+}
+
+/// The box of the segments' ends; `None` if there are none.
+pub(crate) fn measure(
+    segments: impl Iterator<Item = Result<super::turtle::Segment, Error>>,
+) -> Result<Option<Bounds>, Error> {
+    let mut bounds: Option<Bounds> = None;
+    for segment in segments {
+        let segment = segment?;
+        for p in [segment.start, segment.end] {
+            let b = bounds.get_or_insert(Bounds { min: p, max: p });
+            b.min.x = b.min.x.min(p.x);
+            b.min.y = b.min.y.min(p.y);
+            b.max.x = b.max.x.max(p.x);
+            b.max.y = b.max.y.max(p.y);
+        }
+    }
+    Ok(bounds)
+}
+
+/// The pixel box of a drawing pass's `pixels` (turtle points in pixels); for a picture of
+/// nothing, an empty box where the turtle starts.
+pub(crate) fn pixel_box(
+    orientation: Orientation,
+    pixels: Option<Bounds>,
+    start: Start,
+) -> Rectangle {
+    let empty = Rectangle::new(pixel_of(orientation, start.position), Size::zero());
+    pixels.map_or(empty, |pixels| {
+        let (a, b) = (
+            pixel_of(orientation, pixels.min),
+            pixel_of(orientation, pixels.max),
+        );
+        Rectangle::with_corners(
+            Point::new(a.x.min(b.x), a.y.min(b.y)),
+            Point::new(a.x.max(b.x), a.y.max(b.y)),
+        )
+    })
+}
+
+/// Draws one segment in pixels with `color`; returns its end pixel. A continuing line does
+/// not draw its first pixel twice.
+#[inline(always)]
+pub(crate) fn draw_segment<D: DrawTarget>(
+    target: &mut D,
+    orientation: Orientation,
+    segment: super::turtle::Segment,
+    color: D::Color,
+    last_end: Option<Point>,
+    clip: &Rectangle,
+) -> Result<Point, D::Error> {
+    let (from, to) = (
+        pixel_of(orientation, segment.start),
+        pixel_of(orientation, segment.end),
+    );
+    raster::draw_line(target, from, to, last_end == Some(from), color, clip)?;
+    Ok(to)
 }
 
 /// A pair as a turtle point.
@@ -435,15 +472,17 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
     where
         D: DrawTarget<Color = P::Color>,
     {
-        let (from, to) = (
-            self.system.pixel_of(segment.start),
-            self.system.pixel_of(segment.end),
-        );
         let color = self.palette.color(u16::from(segment.color), u16::MAX);
-        // A continuing line does not draw its first pixel twice.
-        raster::draw_line(target, from, to, last_end == Some(from), color, clip)
-            .map_err(DrawError::Target)?;
-        Ok(Some(to))
+        draw_segment(
+            target,
+            self.system.orientation,
+            segment,
+            color,
+            last_end,
+            clip,
+        )
+        .map(Some)
+        .map_err(DrawError::Target)
     }
 
     /// What to do with an expansion starting at `start`: skip it if none of it is on the

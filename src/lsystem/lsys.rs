@@ -325,6 +325,12 @@ impl<'a> LsysEntry<'a> {
             };
             match key {
                 "axiom" => axiom = Some((value, place(value))),
+                "angle" => {
+                    let at = place(value).at(0);
+                    let degrees = Angle::parse_degrees(value)
+                        .ok_or(Error::Read(ReadError::NotANumber { at }))?;
+                    grammar.set_angle(degrees, at)?;
+                }
                 "define" => {
                     let (name, expression) =
                         value

@@ -456,7 +456,9 @@ impl Run<'_, '_, '_> {
                 | Command::FreeLeft(_)
                 | Command::FreeRight(_)
                 | Command::DrawFree
-                | Command::MoveFree => return None,
+                | Command::MoveFree
+                | Command::DrawBy(_)
+                | Command::MoveBy(_) => return None,
             }
         }
         Some(s)

@@ -78,7 +78,7 @@ struct State {
 
 /// The turtle: a state and a stack of saved states (`STACK` deep).
 #[derive(Debug, Clone)]
-struct Turtle<'g, const STACK: usize> {
+pub(crate) struct Turtle<'g, const STACK: usize> {
     headings: &'g Headings,
     dialect: Dialect,
     state: State,
@@ -89,13 +89,17 @@ struct Turtle<'g, const STACK: usize> {
 }
 
 impl<'g, const STACK: usize> Turtle<'g, STACK> {
-    fn new(grammar: &'g Grammar<'_>, start: Start) -> Result<Self, Error> {
+    pub(crate) fn new(
+        headings: &'g Headings,
+        dialect: Dialect,
+        start: Start,
+    ) -> Result<Self, Error> {
         if start.step.abs() < MIN_STEP {
             return Err(Error::Walk(WalkError::StepUnderflow));
         }
         let mut turtle = Self {
-            headings: grammar.headings(),
-            dialect: grammar.dialect(),
+            headings,
+            dialect,
             state: State {
                 position: start.position,
                 step: start.step,
@@ -144,9 +148,13 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     }
 
     /// Moves one step along `(cos, sin)` and returns the segment it covered.
-    fn advance(&mut self, (cos, sin): (i32, i32)) -> Result<Segment, Error> {
+    fn advance(&mut self, direction: (i32, i32)) -> Result<Segment, Error> {
+        self.advance_by(self.state.step, direction)
+    }
+
+    /// Moves `step` along `(cos, sin)` and returns the segment it covered.
+    fn advance_by(&mut self, step: Real, (cos, sin): (i32, i32)) -> Result<Segment, Error> {
         let start = self.state.position;
-        let step = self.state.step;
         let end = TurtlePoint {
             x: start
                 .x
@@ -176,11 +184,19 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     /// Carries out one command; returns the segment if it drew one. Inlined into the walk
     /// loops: a call per symbol costs more than most commands.
     #[inline(always)]
-    fn execute(&mut self, command: Command) -> Result<Option<Segment>, Error> {
+    pub(crate) fn execute(&mut self, command: Command) -> Result<Option<Segment>, Error> {
         let state = &mut self.state;
         match command {
             Command::Draw => return self.advance(self.main_direction()).map(Some),
             Command::DrawFree => return self.advance(self.state.free.cos_sin()).map(Some),
+            Command::DrawBy(length) | Command::MoveBy(length) => {
+                let step = state
+                    .step
+                    .checked_mul(length)
+                    .ok_or(Error::Walk(WalkError::Overflow))?;
+                let segment = self.advance_by(step, self.main_direction())?;
+                return Ok(matches!(command, Command::DrawBy(_)).then_some(segment));
+            }
             Command::Move => {
                 self.advance(self.main_direction())?;
             }
@@ -350,7 +366,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
     ) -> Result<Self, Error> {
         Ok(Self {
             walker: Walker::with_capacity(grammar, order)?,
-            turtle: Turtle::new(grammar, start)?,
+            turtle: Turtle::new(grammar.headings(), grammar.dialect(), start)?,
             segments: 0,
             failed: false,
         })

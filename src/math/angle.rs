@@ -40,6 +40,19 @@ pub(crate) struct Headings {
 }
 
 impl Headings {
+    /// Four divisions of a full turn: a default that always exists.
+    pub(crate) fn quarter_turns() -> Self {
+        let mut half_table = Vec::new();
+        for k in 0..=2 {
+            let _ = half_table.push(trig::sin_cos(k, 4));
+        }
+        Self {
+            half_table,
+            divisions: 4,
+            free_turn: trig::BinaryAngle::default(),
+        }
+    }
+
     pub(crate) fn new(angle: Angle, at: Location) -> Result<Self, Error> {
         let mut headings = Self {
             half_table: Vec::new(),

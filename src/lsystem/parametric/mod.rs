@@ -17,9 +17,10 @@
 //! grammar 10.4 KiB (8 KiB of it the expression code, 16 bytes an instruction); a walk
 //! `DEPTH` frames of 48 bytes (the bound parameter values), 856 bytes for orders up to 16.
 //!
-//! This version derives parametric systems (`tinyfractal derive`); drawing them, and the
-//! turtle modules with parameters (`F(l)`, `+(a)`, ...), come next.
+//! [`ParametricLSystem`](crate::ParametricLSystem) draws them: `F(l)`, `f(l)`, `+(a)`,
+//! `-(a)` take their parameter as length and degrees.
 
+pub(crate) mod draw;
 pub(crate) mod expr;
 
 use core::fmt;
@@ -28,8 +29,9 @@ use heapless::Vec;
 
 use self::expr::{compile, evaluate, Code, EvalError, Instr, Names, SyntaxError, MAX_CODE};
 use crate::error::{Arithmetic, Error, Location, ReadError, WalkError};
+use crate::math::angle::Headings;
 use crate::math::decimal::write_four_decimals;
-use crate::math::Real;
+use crate::math::{Angle, Real};
 
 /// Most parameters a module has.
 pub const MAX_PARAMS: usize = 4;
@@ -68,6 +70,9 @@ struct Production {
 /// A parametric system, compiled from text.
 #[derive(Debug, Clone)]
 pub struct ParametricGrammar {
+    /// The turtle's directions for `+` and `-` without a parameter (a quarter turn unless
+    /// set).
+    headings: Headings,
     code: Vec<Instr, MAX_CODE>,
     arguments: Vec<Code, MAX_ARGUMENTS>,
     modules: Vec<Module, MAX_MODULES>,
@@ -130,6 +135,7 @@ impl ParametricGrammar {
     /// An empty system.
     pub fn new() -> Self {
         Self {
+            headings: Headings::quarter_turns(),
             code: Vec::new(),
             arguments: Vec::new(),
             modules: Vec::new(),
@@ -203,6 +209,16 @@ impl ParametricGrammar {
         }
         let position = |index: usize| u16::try_from(index).unwrap_or(u16::MAX);
         Ok((position(start), position(self.modules.len())))
+    }
+
+    /// Sets the angle of `+` and `-` without a parameter.
+    pub(crate) fn set_angle(&mut self, angle: Angle, at: Location) -> Result<(), Error> {
+        self.headings = Headings::new(angle, at)?;
+        Ok(())
+    }
+
+    pub(crate) const fn headings(&self) -> &Headings {
+        &self.headings
     }
 
     /// The value of a constant expression (a `define:`).
@@ -374,6 +390,11 @@ pub struct Values {
 }
 
 impl Values {
+    /// The first value, if any.
+    pub fn first(&self) -> Option<Real> {
+        self.as_slice().first().copied()
+    }
+
     /// The values, in order.
     pub fn as_slice(&self) -> &[Real] {
         self.values
