@@ -312,6 +312,18 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     }
 }
 
+/// A draw's outcome as `Drawable::draw` reports it: the target's errors. The engine's
+/// cannot happen there: constructing the drawing walked the same derivation without one.
+pub(crate) fn only_target_errors<E>(
+    result: Result<WalkStats, DrawError<E>>,
+) -> Result<WalkStats, E> {
+    match result {
+        Ok(stats) => Ok(stats),
+        Err(DrawError::Target(error)) => Err(error),
+        Err(DrawError::Fractal(_)) => Ok(WalkStats::default()),
+    }
+}
+
 /// The pixel a point of a drawing pass (whose turtle works in pixels) lands on.
 pub(crate) fn pixel_of(orientation: Orientation, p: TurtlePoint) -> Point {
     let (x, y) = orientation.to_screen((p.x, p.y));
@@ -527,12 +539,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> Drawable
     where
         D: DrawTarget<Color = P::Color>,
     {
-        match self.try_draw(target) {
-            Ok(stats) => Ok(stats),
-            Err(DrawError::Target(error)) => Err(error),
-            // Unreachable: construction walked the same derivation without error.
-            Err(DrawError::Fractal(_)) => Ok(WalkStats::default()),
-        }
+        only_target_errors(self.try_draw(target))
     }
 }
 

@@ -9,8 +9,10 @@ use embedded_graphics::primitives::Rectangle;
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, FitError};
 use crate::lsystem::alphabet::{Command, Dialect};
-use crate::lsystem::drawing::{draw_segment, measure, pixel_box, Bounds};
-use crate::lsystem::turtle::{Segment, Start, Turtle, TurtlePoint, WalkStats, DEFAULT_STACK};
+use crate::lsystem::drawing::{draw_segment, measure, only_target_errors, pixel_box, Bounds};
+use crate::lsystem::turtle::{
+    next_segment, Segment, Start, Turtle, TurtlePoint, WalkStats, DEFAULT_STACK,
+};
 use crate::lsystem::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
@@ -76,26 +78,14 @@ impl<const DEPTH: usize, const STACK: usize> Iterator for ParametricSegments<'_,
     type Item = Result<Segment, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        if self.failed {
-            return None;
-        }
-        loop {
-            let step = self
-                .walker
-                .next()?
-                .and_then(|module| self.turtle.execute(command(&module)));
-            match step {
-                Ok(None) => {}
-                Ok(Some(segment)) => {
-                    self.segments += 1;
-                    return Some(Ok(segment));
-                }
-                Err(error) => {
-                    self.failed = true;
-                    return Some(Err(error));
-                }
-            }
-        }
+        let (walker, turtle) = (&mut self.walker, &mut self.turtle);
+        next_segment(&mut self.failed, &mut self.segments, || {
+            Some(
+                walker
+                    .next()?
+                    .and_then(|module| turtle.execute(command(&module))),
+            )
+        })
     }
 }
 
@@ -228,12 +218,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> Drawable
     where
         D: DrawTarget<Color = P::Color>,
     {
-        match self.try_draw(target) {
-            Ok(stats) => Ok(stats),
-            Err(DrawError::Target(error)) => Err(error),
-            // Unreachable: fitting walked the same derivation without error.
-            Err(DrawError::Fractal(_)) => Ok(WalkStats::default()),
-        }
+        only_target_errors(self.try_draw(target))
     }
 }
 
