@@ -16,6 +16,10 @@ pub struct System {
     pub angle: Angle,
     /// Symbols besides `F` that draw a line (edge-rewriting systems).
     pub draw_symbols: &'static str,
+    /// Stochastic productions: symbol, body, probability.
+    pub alternatives: &'static [(char, &'static str, Real)],
+    /// The seed of the stochastic choices.
+    pub seed: u32,
 }
 
 impl System {
@@ -30,6 +34,10 @@ impl System {
         for &(symbol, body) in self.rules {
             grammar.add_rule(symbol, body)?;
         }
+        for &(symbol, body, probability) in self.alternatives {
+            grammar.add_alternative(symbol, body, probability)?;
+        }
+        grammar.set_seed(self.seed);
         Ok(grammar)
     }
 }
@@ -140,6 +148,8 @@ pub const KOCH_SNOWFLAKE: System = System {
     rules: &[('F', "F+F--F+F")],
     angle: Angle::Divisions(6),
     draw_symbols: "",
+    alternatives: &[],
+    seed: 0,
 };
 /// The Heighway dragon.
 pub const DRAGON: System = System {
@@ -147,6 +157,8 @@ pub const DRAGON: System = System {
     rules: &[('X', "X+YF+"), ('Y', "-FX-Y")],
     angle: Angle::Divisions(4),
     draw_symbols: "",
+    alternatives: &[],
+    seed: 0,
 };
 /// The Hilbert curve.
 pub const HILBERT: System = System {
@@ -154,6 +166,8 @@ pub const HILBERT: System = System {
     rules: &[('A', "+BF-AFA-FB+"), ('B', "-AF+BFB+FA-")],
     angle: Angle::Divisions(4),
     draw_symbols: "",
+    alternatives: &[],
+    seed: 0,
 };
 /// The Sierpiński arrowhead (edge rewriting: `A` and `B` draw).
 pub const SIERPINSKI_ARROWHEAD: System = System {
@@ -161,6 +175,8 @@ pub const SIERPINSKI_ARROWHEAD: System = System {
     rules: &[('A', "B-A-B"), ('B', "A+B+A")],
     angle: Angle::Divisions(6),
     draw_symbols: "AB",
+    alternatives: &[],
+    seed: 0,
 };
 /// The Gosper curve (ABOP fig. 1.11a, edge rewriting).
 pub const GOSPER: System = System {
@@ -168,6 +184,8 @@ pub const GOSPER: System = System {
     rules: &[('A', "A-B--B+A++AA+B-"), ('B', "+A-BB--B-A++A+B")],
     angle: Angle::Divisions(6),
     draw_symbols: "AB",
+    alternatives: &[],
+    seed: 0,
 };
 /// ABOP fig. 1.24d: a plant, 20°.
 pub const PLANT: System = System {
@@ -175,6 +193,8 @@ pub const PLANT: System = System {
     rules: &[('X', "F[+X]F[-X]+X"), ('F', "FF")],
     angle: Angle::Degrees(Real::from_int(20)),
     draw_symbols: "",
+    alternatives: &[],
+    seed: 0,
 };
 /// ABOP fig. 1.24f: a fern-like plant, 22.5°.
 pub const FERN: System = System {
@@ -182,6 +202,8 @@ pub const FERN: System = System {
     rules: &[('X', "F-[[X]+X]+F[+FX]-X"), ('F', "FF")],
     angle: degrees(45, 2),
     draw_symbols: "",
+    alternatives: &[],
+    seed: 0,
 };
 /// ABOP fig. 1.25: a bush, 22.5°.
 pub const BUSH: System = System {
@@ -189,7 +211,32 @@ pub const BUSH: System = System {
     rules: &[('F', "FF-[-F+F+F]+[+F-F-F]")],
     angle: degrees(45, 2),
     draw_symbols: "",
+    alternatives: &[],
+    seed: 0,
 };
+
+/// ABOP fig. 1.27: a stochastic plant, 25.7°, whose choices are the same on every walk and
+/// every core (the QEMU checksums prove it).
+pub const STOCHASTIC_PLANT: System = System {
+    axiom: "F",
+    rules: &[],
+    angle: degrees(257, 10),
+    draw_symbols: "",
+    alternatives: &[
+        ('F', "F[+F]F[-F]F", ratio(33, 100)),
+        ('F', "F[+F]F", ratio(33, 100)),
+        ('F', "F[-F]F", ratio(34, 100)),
+    ],
+    seed: 1,
+};
+
+/// A probability as a ratio.
+const fn ratio(numerator: i64, denominator: i64) -> Real {
+    match Real::from_ratio(numerator, denominator) {
+        Some(value) => value,
+        None => panic!("a probability ratio out of range"),
+    }
+}
 
 const GALLERY_SIZE: Size = Size::new(320, 240);
 /// The LM3S6965EVB's OLED, where the board scenes are checked and measured.
@@ -270,9 +317,10 @@ pub const GALLERY: [Entry; 12] = [
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]
-pub const SCENES: [Entry; 5] = [
+pub const SCENES: [Entry; 6] = [
     lsystem("plant", &FERN, 5, Orientation::Up, OLED),
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 4, Orientation::Right, OLED),
+    lsystem("stochastic-plant", &STOCHASTIC_PLANT, 4, Orientation::Up, OLED),
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.6", 100, OLED, "classic"),
     // Width 10^-7: needs the 60-bit tier with 128-bit products.

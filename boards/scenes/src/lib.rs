@@ -15,7 +15,7 @@ mod wait;
 
 pub use catalogue::{
     Entry, Scene, System, BUSH, DRAGON, FERN, GALLERY, GOSPER, HILBERT, KOCH_SNOWFLAKE, PLANT,
-    SCENES, SIERPINSKI_ARROWHEAD,
+    SCENES, SIERPINSKI_ARROWHEAD, STOCHASTIC_PLANT,
 };
 pub use look::{Look, Work, COLOUR, GREY};
 pub use wait::wait_for_press_or;
