@@ -255,18 +255,13 @@ fn derive_parametric(arguments: &DeriveArgs) -> Option<Result<(), String>> {
     Some(print_derivation(walk, arguments, &name))
 }
 
-/// `render lsystem` of a parametric `.lsys` system (no `--segments` or `--view` yet: they
-/// are refused by name).
+/// `render lsystem` of a parametric `.lsys` system. `--view` fits the whole picture to the
+/// enlarged area and lets the target clip the rest (no expansion table here).
 fn render_parametric(
     arguments: &LSystemArgs,
     grammar: &ParametricGrammar,
     name: &str,
 ) -> Result<(), String> {
-    if arguments.segments.is_some() || arguments.view.is_some() {
-        return Err(format!(
-            "{name}: --segments and --view are not supported for parametric systems yet"
-        ));
-    }
     let common = &arguments.common;
     window_available(common.window)?;
     let order = arguments.order;
@@ -280,7 +275,7 @@ fn render_parametric(
         grammar, order,
     )
     .fit(
-        embedded_graphics::prelude::Dimensions::bounding_box(&display),
+        scene::fitted_area(common.width(), common.height(), arguments.view).map_err(failed)?,
         &palette::VGA,
     )
     .map_err(failed)?;
@@ -299,7 +294,19 @@ fn render_parametric(
         (elapsed - fit).as_secs_f64() * 1e3,
         elapsed.as_secs_f64() * 1e3
     );
-    deliver(common, &name.to_lowercase(), &display, |_| {}, &stats_line)
+    deliver(
+        common,
+        &name.to_lowercase(),
+        &display,
+        |plan| {
+            if let Some(path) = &arguments.segments {
+                plan.add("--segments", path, move |w| {
+                    scene::write_parametric_segments(grammar, order, w)
+                });
+            }
+        },
+        &stats_line,
+    )
 }
 
 fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {

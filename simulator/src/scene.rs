@@ -6,7 +6,8 @@ use std::time::{Duration, Instant};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    cells_needed, Cell, Colors, Error, Grammar, LSystem, Orientation, Segments, WalkStats,
+    cells_needed, Cell, Colors, Error, Grammar, LSystem, Orientation, ParametricGrammar,
+    ParametricSegments, Segments, WalkStats,
 };
 
 use crate::args::View;
@@ -55,7 +56,7 @@ pub fn render(
 /// The area the whole picture is fitted to so that `view` of it fills a `width`×`height`
 /// target: the target scaled by the window's inverse and moved by its corner. The drawing
 /// culls the rest, so the cost follows what is visible.
-fn fitted_area(width: u32, height: u32, view: Option<View>) -> Result<Rectangle, Error> {
+pub fn fitted_area(width: u32, height: u32, view: Option<View>) -> Result<Rectangle, Error> {
     let target = Rectangle::new(Point::zero(), Size::new(width, height));
     let Some(view) = view else {
         return Ok(target);
@@ -125,6 +126,24 @@ fn render_window(
 pub fn write_segments(grammar: &Grammar<'_>, order: u32, out: &mut dyn Write) -> io::Result<()> {
     let walk = Segments::<'_, '_, DEPTH, STACK>::with_capacity(grammar, order, Default::default())
         .map_err(io::Error::other)?;
+    write_all_segments(walk, out)
+}
+
+/// [`write_segments`] for a parametric system.
+pub fn write_parametric_segments(
+    grammar: &ParametricGrammar,
+    order: u32,
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    let walk = ParametricSegments::<'_, DEPTH, STACK>::new(grammar, order, Default::default())
+        .map_err(io::Error::other)?;
+    write_all_segments(walk, out)
+}
+
+fn write_all_segments(
+    walk: impl Iterator<Item = Result<tinyfractal::Segment, Error>>,
+    out: &mut dyn Write,
+) -> io::Result<()> {
     for segment in walk {
         let s = segment.map_err(io::Error::other)?;
         writeln!(out, "{} {} {} {}", s.start.x, s.start.y, s.end.x, s.end.y)?;
