@@ -194,27 +194,8 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             ),
             None => self.sized_bounds()?,
         };
-        // A picture that draws nothing is valid: it is placed at the area's middle.
-        let (low, high) = bounds
-            .map_or(((Real::ZERO, Real::ZERO), (Real::ZERO, Real::ZERO)), |b| {
-                ((b.min.x, b.min.y), (b.max.x, b.max.y))
-            });
-        let fitted = fit(low, high, self.orientation, &area, self.margin)?;
-        let (x, y) = self.orientation.to_picture(fitted.origin);
-        // Pixels per picture unit, times the unit's steps: pixels per step.
-        let step = fitted
-            .scale
-            .checked_mul(unit)
-            .ok_or(Error::Walk(WalkError::Overflow))?;
-        self.prepared(
-            Start {
-                position: TurtlePoint { x, y },
-                step,
-                turns: 0,
-            },
-            palette,
-            cells,
-        )
+        let start = fitted_start(bounds, unit, self.orientation, &area, self.margin)?;
+        self.prepared(start, palette, cells)
     }
 
     /// Draws from an explicit placement, colours from `palette`. The drawing is walked once
@@ -387,6 +368,33 @@ pub(crate) fn draw_segment<D: DrawTarget>(
     Ok(to)
 }
 
+/// Where the turtle starts, and its step in pixels, for a picture whose drawn box is
+/// `bounds` in units of `unit` steps, fitted into `area` less `margin`. A picture that draws
+/// nothing is valid: it is placed at the area's middle.
+pub(crate) fn fitted_start(
+    bounds: Option<Bounds>,
+    unit: Real,
+    orientation: Orientation,
+    area: &Rectangle,
+    margin: u32,
+) -> Result<Start, Error> {
+    let (low, high) = bounds.map_or(((Real::ZERO, Real::ZERO), (Real::ZERO, Real::ZERO)), |b| {
+        ((b.min.x, b.min.y), (b.max.x, b.max.y))
+    });
+    let fitted = fit(low, high, orientation, area, margin)?;
+    let (x, y) = orientation.to_picture(fitted.origin);
+    // Pixels per picture unit, times the unit's steps: pixels per step.
+    let step = fitted
+        .scale
+        .checked_mul(unit)
+        .ok_or(Error::Walk(WalkError::Overflow))?;
+    Ok(Start {
+        position: TurtlePoint { x, y },
+        step,
+        turns: 0,
+    })
+}
+
 /// A pair as a turtle point.
 fn point((x, y): (Real, Real)) -> TurtlePoint {
     TurtlePoint { x, y }
@@ -404,7 +412,7 @@ fn start_heading(grammar: &Grammar<'_>, turns: i32) -> u16 {
 }
 
 /// A slice of colours as a palette; an empty one is [`FitError::EmptyPalette`].
-fn colors<C: PixelColor>(palette: &[C]) -> Result<Colors<'_, C>, Error> {
+pub(crate) fn colors<C: PixelColor>(palette: &[C]) -> Result<Colors<'_, C>, Error> {
     Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))
 }
 

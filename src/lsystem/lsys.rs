@@ -21,7 +21,7 @@
 
 use super::alphabet::Dialect;
 use super::grammar::Grammar;
-use super::parametric::{ParametricGrammar, Place, MAX_CONSTANTS};
+use super::parametric::{constant, ParametricGrammar, Place, MAX_CONSTANTS};
 use crate::error::{Error, Location, ReadError, Unsupported};
 use crate::math::{Angle, Real};
 
@@ -338,10 +338,8 @@ impl<'a> LsysEntry<'a> {
                             .ok_or(Error::Read(ReadError::Expression {
                                 at: place(value).at(0),
                             }))?;
-                    let mut scratch = ParametricGrammar::new();
-                    let known: &[(&str, Real)] = &constants;
-                    let value =
-                        scratch.constant(expression.trim(), known, place(expression.trim()))?;
+                    let expression = expression.trim();
+                    let value = constant(expression, &constants, place(expression))?;
                     constants.push((name.trim(), value)).map_err(|_| {
                         Error::Read(ReadError::TooManyRules {
                             max: MAX_CONSTANTS,

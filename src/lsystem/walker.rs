@@ -52,6 +52,23 @@ impl Frame {
     }
 }
 
+/// The error for an `order` that needs more than `depth` levels (the axiom's, and one an
+/// expansion).
+pub(crate) fn order_too_high(order: u32, depth: usize) -> Error {
+    Error::Walk(WalkError::OrderTooHigh {
+        order,
+        max: u32::try_from(depth.saturating_sub(1)).unwrap_or(u32::MAX),
+    })
+}
+
+/// Checks that `order` needs at most `depth` levels.
+pub(crate) fn check_order(order: u32, depth: usize) -> Result<(), Error> {
+    if usize::try_from(order).map_or(true, |order| order >= depth) {
+        return Err(order_too_high(order, depth));
+    }
+    Ok(())
+}
+
 /// MurmurHash3's 32-bit finaliser: every input bit moves every output bit.
 const fn mix(mut h: u32) -> u32 {
     h ^= h >> 16;
@@ -113,13 +130,7 @@ impl<'g, 'a> Walker<'g, 'a> {
 impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
     /// A walk of `grammar` at `order`; fails if the order needs more than `DEPTH` levels.
     pub fn with_capacity(grammar: &'g Grammar<'a>, order: u32) -> Result<Self, Error> {
-        let too_high = Error::Walk(WalkError::OrderTooHigh {
-            order,
-            max: u32::try_from(DEPTH.saturating_sub(1)).unwrap_or(u32::MAX),
-        });
-        if usize::try_from(order).map_or(true, |order| order >= DEPTH) {
-            return Err(too_high);
-        }
+        check_order(order, DEPTH)?;
         let mut frames = Vec::new();
         frames
             .push(Frame::at(
@@ -127,7 +138,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                 grammar.axiom_span(),
                 kept(mix(grammar.seed())),
             ))
-            .map_err(|_| too_high)?;
+            .map_err(|_| order_too_high(order, DEPTH))?;
         Ok(Self {
             grammar,
             order,

@@ -9,14 +9,14 @@ use embedded_graphics::primitives::Rectangle;
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, FitError};
 use crate::lsystem::alphabet::{Command, Dialect};
-use crate::lsystem::drawing::{draw_segment, measure, only_target_errors, pixel_box, Bounds};
-use crate::lsystem::turtle::{
-    next_segment, Segment, Start, Turtle, TurtlePoint, WalkStats, DEFAULT_STACK,
+use crate::lsystem::drawing::{
+    colors, draw_segment, fitted_start, measure, only_target_errors, pixel_box, Bounds,
 };
+use crate::lsystem::turtle::{next_segment, Segment, Start, Turtle, WalkStats, DEFAULT_STACK};
 use crate::lsystem::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
-use crate::render::fit::{fit, Orientation, DEFAULT_MARGIN};
+use crate::render::fit::{Orientation, DEFAULT_MARGIN};
 use crate::render::palette::{Colors, Palette};
 
 /// What the turtle does for a derived module.
@@ -141,19 +141,9 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
-        let palette = Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))?;
+        let palette = colors(palette)?;
         let bounds = measure(self.segments(Start::default())?)?;
-        let (low, high) = bounds
-            .map_or(((Real::ZERO, Real::ZERO), (Real::ZERO, Real::ZERO)), |b| {
-                ((b.min.x, b.min.y), (b.max.x, b.max.y))
-            });
-        let fitted = fit(low, high, self.orientation, &area, DEFAULT_MARGIN)?;
-        let (x, y) = self.orientation.to_picture(fitted.origin);
-        let start = Start {
-            position: TurtlePoint { x, y },
-            step: fitted.scale,
-            turns: 0,
-        };
+        let start = fitted_start(bounds, Real::ONE, self.orientation, &area, DEFAULT_MARGIN)?;
         let pixels: Option<Bounds> = measure(self.segments(start)?)?;
         Ok(ParametricDrawing {
             system: *self,

@@ -28,6 +28,7 @@ use core::fmt;
 use heapless::Vec;
 
 use self::expr::{compile, evaluate, Code, EvalError, Instr, Names, SyntaxError, MAX_CODE};
+use super::walker::{check_order, order_too_high};
 use crate::error::{Arithmetic, Error, Location, ReadError, WalkError};
 use crate::math::angle::Headings;
 use crate::math::decimal::write_four_decimals;
@@ -111,6 +112,21 @@ fn syntax(error: SyntaxError, place: Place, offset: usize) -> Error {
             at: place.at(offset + at),
         },
     })
+}
+
+/// The value of a constant expression (a `define:`), evaluated once and not kept.
+pub(crate) fn constant(
+    text: &str,
+    constants: &[(&str, Real)],
+    place: Place,
+) -> Result<Real, Error> {
+    let names = Names {
+        params: &[],
+        constants,
+    };
+    let mut code: Vec<Instr, MAX_CODE> = Vec::new();
+    compile(text, &names, &mut code).map_err(|e| syntax(e, place, 0))?;
+    evaluate(&code, &[]).map_err(|_| Error::Read(ReadError::Expression { at: place.at(0) }))
 }
 
 /// The index of the `)` that closes the `(` at `open`, if any.
@@ -219,22 +235,6 @@ impl ParametricGrammar {
 
     pub(crate) const fn headings(&self) -> &Headings {
         &self.headings
-    }
-
-    /// The value of a constant expression (a `define:`).
-    pub(crate) fn constant(
-        &mut self,
-        text: &str,
-        constants: &[(&str, Real)],
-        place: Place,
-    ) -> Result<Real, Error> {
-        let names = Names {
-            params: &[],
-            constants,
-        };
-        let code = compile(text, &names, &mut self.code).map_err(|e| syntax(e, place, 0))?;
-        evaluate(self.code(code), &[])
-            .map_err(|_| Error::Read(ReadError::Expression { at: place.at(0) }))
     }
 
     /// Sets the axiom, e.g. `B(2)A(4,4)`.
@@ -454,13 +454,7 @@ pub struct ParametricWalker<'g, const DEPTH: usize = { super::walker::DEFAULT_DE
 impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
     /// A walk of `grammar` at `order`; fails if the order needs more than `DEPTH` levels.
     pub fn new(grammar: &'g ParametricGrammar, order: u32) -> Result<Self, Error> {
-        let too_high = Error::Walk(WalkError::OrderTooHigh {
-            order,
-            max: u32::try_from(DEPTH.saturating_sub(1)).unwrap_or(u32::MAX),
-        });
-        if usize::try_from(order).map_or(true, |order| order >= DEPTH) {
-            return Err(too_high);
-        }
+        check_order(order, DEPTH)?;
         let mut frames = Vec::new();
         let (position, end) = grammar.axiom;
         frames
@@ -469,7 +463,7 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
                 end,
                 bound: Values::default(),
             })
-            .map_err(|_| too_high)?;
+            .map_err(|_| order_too_high(order, DEPTH))?;
         Ok(Self {
             grammar,
             order,
