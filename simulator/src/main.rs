@@ -110,26 +110,35 @@ fn list(path: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// The grammar a source names, and the name to report it by; warnings go to stderr.
-fn load<'a>(
-    source: &'a Source,
-    file_text: &'a mut String,
-) -> Result<(Grammar<'a>, String), String> {
+/// A system as a source names it: plain (Fractint, ABOP, stochastic) or parametric.
+enum Loaded<'a> {
+    Plain(Box<Grammar<'a>>),
+    Parametric(Box<ParametricGrammar>),
+}
+
+/// The system a source names, and the name to report it by; warnings go to stderr. The
+/// file is read once, here.
+fn load<'a>(source: &'a Source, file_text: &'a mut String) -> Result<(Loaded<'a>, String), String> {
     Ok(match source {
         Source::File { path, name } => {
             *file_text = read_text(path)?;
             let file_text: &'a String = file_text;
             let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
             if is_lsys(path) {
-                let grammar = LsysFile::new(file_text).find(name).map_err(failed)?;
-                return Ok((grammar, name.clone()));
+                let entry = LsysFile::new(file_text).entry(name).map_err(failed)?;
+                let loaded = if entry.is_parametric() {
+                    Loaded::Parametric(Box::new(entry.parametric().map_err(failed)?))
+                } else {
+                    Loaded::Plain(Box::new(entry.grammar().map_err(failed)?))
+                };
+                return Ok((loaded, name.clone()));
             }
             let entry = LFile::new(file_text).entry(name).map_err(failed)?;
             let grammar = entry.grammar().map_err(failed)?;
             for warning in entry.warnings() {
                 warn(&format!("{name} in {}: {warning}", path.display()));
             }
-            (grammar, name.clone())
+            (Loaded::Plain(Box::new(grammar)), name.clone())
         }
         Source::Inline {
             axiom,
@@ -149,7 +158,7 @@ fn load<'a>(
                     .with_rule(*symbol, body)
                     .map_err(|e| format!("{label}: rule {symbol}={body}: {e}"))?;
             }
-            (grammar, "lsystem".to_string())
+            (Loaded::Plain(Box::new(grammar)), "lsystem".to_string())
         }
     })
 }
@@ -157,15 +166,22 @@ fn load<'a>(
 /// `derive`: the string at the order, on one line, if it is at most `--max-length` symbols
 /// (measured first, so nothing is printed past the limit).
 fn derive(arguments: &DeriveArgs) -> Result<(), String> {
-    if let Some(result) = derive_parametric(arguments) {
-        return result;
-    }
     let mut file_text = String::new();
-    let (mut grammar, name) = load(&arguments.source, &mut file_text)?;
+    let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    let budget = derive_budget(arguments);
+    let mut grammar = match loaded {
+        Loaded::Plain(grammar) => *grammar,
+        Loaded::Parametric(grammar) => {
+            let walk = || {
+                ParametricWalker::<'_, { scene::DEPTH }>::new(&grammar, arguments.order)
+                    .map(|walker| walker.with_budget(budget))
+            };
+            return print_derivation(walk, arguments, &name);
+        }
+    };
     if let Some(seed) = arguments.seed {
         grammar.set_seed(seed);
     }
-    let budget = derive_budget(arguments);
     let walk = || {
         Walker::<'_, '_, { scene::DEPTH }>::with_capacity(&grammar, arguments.order).map(|walker| {
             let mut walker = walker.with_budget(budget);
@@ -213,46 +229,6 @@ where
         out.flush()
     })();
     written.map_err(|e| format!("cannot write the derivation: {e}"))
-}
-
-/// The parametric system a source names, if it is one (an `.lsys` entry with parameters
-/// or conditions), with its name.
-fn parametric(source: &Source) -> Option<Result<(ParametricGrammar, String), String>> {
-    let Source::File { path, name } = source else {
-        return None;
-    };
-    if !is_lsys(path) {
-        return None;
-    }
-    let text = match read_text(path) {
-        Ok(text) => text,
-        Err(error) => return Some(Err(error)),
-    };
-    let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
-    let entry = match LsysFile::new(&text).entry(name) {
-        Ok(entry) => entry,
-        Err(error) => return Some(Err(failed(error))),
-    };
-    entry.is_parametric().then(|| {
-        entry
-            .parametric()
-            .map(|grammar| (grammar, name.clone()))
-            .map_err(failed)
-    })
-}
-
-/// `derive` of a parametric system: `None` if the source is not one.
-fn derive_parametric(arguments: &DeriveArgs) -> Option<Result<(), String>> {
-    let (grammar, name) = match parametric(&arguments.source)? {
-        Ok(found) => found,
-        Err(error) => return Some(Err(error)),
-    };
-    let budget = derive_budget(arguments);
-    let walk = || {
-        ParametricWalker::<'_, { scene::DEPTH }>::new(&grammar, arguments.order)
-            .map(|walker| walker.with_budget(budget))
-    };
-    Some(print_derivation(walk, arguments, &name))
 }
 
 /// `render lsystem` of a parametric `.lsys` system. `--view` fits the whole picture to the
@@ -310,12 +286,12 @@ fn render_parametric(
 }
 
 fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
-    if let Some(found) = parametric(&arguments.source) {
-        let (grammar, name) = found?;
-        return render_parametric(arguments, &grammar, &name);
-    }
     let mut file_text = String::new();
-    let (mut grammar, name) = load(&arguments.source, &mut file_text)?;
+    let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    let mut grammar = match loaded {
+        Loaded::Plain(grammar) => *grammar,
+        Loaded::Parametric(grammar) => return render_parametric(arguments, &grammar, &name),
+    };
     if let Some(seed) = arguments.seed {
         grammar.set_seed(seed);
     }
