@@ -122,6 +122,7 @@ pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
 pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
 pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
 pub use lsystem::lsys::{LsysEntries, LsysEntry, LsysFile};
+pub use lsystem::parametric::context::MAX_CONTEXT_SLOTS;
 pub use lsystem::parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
 pub use lsystem::parametric::{
     DerivedModule, ParametricGrammar, ParametricWalker, Values, MAX_ARGUMENTS, MAX_CONSTANTS,

@@ -143,6 +143,13 @@ pub enum ReadError {
         /// Where the production is.
         at: Location,
     },
+    /// The probabilities of one left side's productions do not sum to 1.
+    ProbabilitiesDoNotSum {
+        /// What they sum to.
+        sum: crate::math::Real,
+        /// Where the first of them is.
+        at: Location,
+    },
     /// One symbol has both stochastic alternatives and plain (appending) productions.
     MixedProductions {
         /// The symbol.
@@ -150,7 +157,9 @@ pub enum ReadError {
         /// Where the production that does not fit is.
         at: Location,
     },
-    /// An `.lsys` production uses notation this reader does not derive yet.
+    /// An `.lsys` production uses notation the plain reader
+    /// ([`LsysEntry::grammar`](crate::LsysEntry::grammar)) does not take: read it with
+    /// [`LsysEntry::parametric`](crate::LsysEntry::parametric).
     Unsupported {
         /// What it uses.
         feature: Unsupported,
@@ -159,7 +168,8 @@ pub enum ReadError {
     },
 }
 
-/// Notation of `.lsys` productions that is read but not derived yet.
+/// Notation of `.lsys` productions that only the general reader
+/// ([`LsysEntry::parametric`](crate::LsysEntry::parametric)) takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Unsupported {
@@ -167,8 +177,6 @@ pub enum Unsupported {
     Context,
     /// `pred : condition -->`.
     Condition,
-    /// `--> successor : probability`.
-    Probability,
     /// Modules with parameters, `A(x)`.
     Parameters,
     /// A second production for the same predecessor (which needs conditions or
@@ -181,7 +189,6 @@ impl Unsupported {
         match self {
             Self::Context => "context-sensitive productions (`lc < pred > rc`)",
             Self::Condition => "conditions (`pred : cond --> ...`)",
-            Self::Probability => "probabilities (`--> succ : p`)",
             Self::Parameters => "modules with parameters (`A(x)`)",
             Self::SecondProduction => "a second production for one predecessor",
         }
@@ -353,10 +360,18 @@ impl fmt::Display for ReadError {
                 f,
                 "the predecessor at {at} is not one symbol: write `X --> ...`"
             ),
+            Self::ProbabilitiesDoNotSum { sum, at } => {
+                write!(f, "the probabilities of the productions from {at} sum to ")?;
+                crate::math::decimal::write_four_decimals(f, sum)?;
+                write!(
+                    f,
+                    ", not 1: make them add up to 1, e.g. 0.33, 0.33 and 0.34"
+                )
+            }
             Self::Unsupported { feature, at } => write!(
                 f,
-                "{} at {at}: this reader does not derive them yet; use plain productions \
-                 `X --> ...` (see the README's `.lsys` section)",
+                "{} at {at}: the plain reader does not take them; read the system with \
+                 `LsysEntry::parametric` (the CLI does; see the README's `.lsys` section)",
                 feature.describe()
             ),
             Self::OldMacLineEndings => write!(

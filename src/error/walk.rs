@@ -24,6 +24,12 @@ pub enum WalkError {
         /// The budget, in symbols read.
         budget: u64,
     },
+    /// Branches nest deeper than a context-sensitive walk can keep left contexts for.
+    ContextsTooDeep {
+        /// The capacity ([`MAX_CONTEXT_SLOTS`](crate::MAX_CONTEXT_SLOTS)): one slot per
+        /// level below each open branch.
+        capacity: usize,
+    },
     /// Turtle coordinates or the step left the fixed-point range.
     Overflow,
     /// The step shrank (through `@`) below what fixed point can represent with precision.
@@ -64,6 +70,11 @@ impl fmt::Display for WalkError {
             Self::BudgetExhausted { budget } => write!(
                 f,
                 "the derivation needs more than {budget} symbols: lower the order or raise the budget"
+            ),
+            Self::ContextsTooDeep { capacity } => write!(
+                f,
+                "branches nest too deep to keep the left contexts of a context-sensitive system \
+                 ({capacity} slots, one per level below each open branch): lower the order"
             ),
             Self::Overflow => write!(
                 f,

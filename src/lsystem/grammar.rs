@@ -9,7 +9,7 @@
 use heapless::Vec;
 
 use super::alphabet::{Command, Dialect, SymbolSet};
-use super::walker::DerivedSymbol;
+use super::walker::{pick, DerivedSymbol};
 use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
 use crate::math::wide::shift_round;
@@ -352,7 +352,7 @@ impl<'a> Grammar<'a> {
             total += u64::from(rule.weight);
             line = self.rule(rule.next).map(|next| (rule.next, next));
         }
-        let mut pick = (u64::from(key) * total) >> 32;
+        let mut pick = pick(key, total);
         let mut line = Some((first, rule));
         while let Some((index, rule)) = line {
             let weight = u64::from(rule.weight);

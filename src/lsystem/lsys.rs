@@ -218,6 +218,7 @@ impl<'a> LsysEntry<'a> {
         let mut grammar = Grammar::new_at(Dialect::Abop, axiom, angle, axiom_at)?;
         grammar.set_seed(seed.unwrap_or(0));
         let mut seen = [false; 128];
+        let mut sums = ProbabilitySums::default();
         for (line, text) in self.lines() {
             let Some((left, right)) = text.split_once("-->") else {
                 continue;
@@ -248,6 +249,7 @@ impl<'a> LsysEntry<'a> {
                     let p = p.trim();
                     let value = Real::parse_decimal(p)
                         .ok_or(Error::Read(ReadError::NotANumber { at: at(p) }))?;
+                    sums.add(left, value, at(left.trim_start()))?;
                     (successor, Some(value))
                 }
                 None => (right, None),
@@ -274,6 +276,7 @@ impl<'a> LsysEntry<'a> {
             let successor = right.trim();
             grammar.add_production(symbol, successor, probability, at(successor))?;
         }
+        sums.check()?;
         Ok(grammar)
     }
 
@@ -301,7 +304,7 @@ impl<'a> LsysEntry<'a> {
         self.lines().any(|(_, text)| match key_value(text) {
             Some((key, value)) => key == "axiom" && value.contains('('),
             None => text.split_once("-->").is_some_and(|(left, right)| {
-                left.contains('(') || left.contains(':') || right.contains('(')
+                left.contains(['(', ':', '<', '>']) || right.contains('(')
             }),
         })
     }
@@ -331,6 +334,15 @@ impl<'a> LsysEntry<'a> {
                         .ok_or(Error::Read(ReadError::NotANumber { at }))?;
                     grammar.set_angle(degrees, at)?;
                 }
+                "ignore" => grammar.set_ignore(value),
+                "seed" => {
+                    let seed = value.parse::<u32>().map_err(|_| {
+                        Error::Read(ReadError::NotANumber {
+                            at: place(value).at(0),
+                        })
+                    })?;
+                    grammar.set_seed(seed);
+                }
                 "define" => {
                     let (name, expression) =
                         value
@@ -352,6 +364,7 @@ impl<'a> LsysEntry<'a> {
         }
         let (text, place) = axiom.ok_or(Error::Read(ReadError::MissingAxiom))?;
         grammar.set_axiom(text, &constants, place)?;
+        let mut sums = ProbabilitySums::default();
         for (line, text) in self.lines() {
             let Some((left, right)) = text.split_once("-->") else {
                 continue;
@@ -362,32 +375,69 @@ impl<'a> LsysEntry<'a> {
                     column: u32::try_from(offset(text, part) + 1).unwrap_or(u32::MAX),
                 },
             };
-            let (predecessor, condition) = match left.split_once(':') {
-                Some((predecessor, condition)) => (predecessor, Some(condition.trim())),
+            let (left_side, condition) = match left.split_once(':') {
+                Some((left_side, condition)) => (left_side, Some(condition.trim())),
                 None => (left, None),
             };
-            if let Some(mark) = predecessor.find(['<', '>']) {
-                return Err(Error::Read(ReadError::Unsupported {
-                    feature: Unsupported::Context,
-                    at: place(predecessor.get(mark..).unwrap_or(predecessor)).at(0),
-                }));
-            }
-            if let Some(mark) = right.find(':') {
-                return Err(Error::Read(ReadError::Unsupported {
-                    feature: Unsupported::Probability,
-                    at: place(right.get(mark..).unwrap_or(right)).at(0),
-                }));
-            }
-            let predecessor = predecessor.trim();
-            let successor = right.trim();
+            // `--> successor : probability`.
+            let (successor, probability) = match right.rsplit_once(':') {
+                Some((successor, p)) => {
+                    let p = p.trim();
+                    let value = constant(p, &constants, place(p))?;
+                    sums.add(left, value, place(left.trim_start()).at(0))?;
+                    (successor, Some((value, place(p).at(0))))
+                }
+                None => (right, None),
+            };
+            let left_side = left_side.trim();
+            let successor = successor.trim();
             grammar.add_production(
-                (predecessor, place(predecessor)),
+                (left_side, place(left_side)),
                 condition.map(|condition| (condition, place(condition))),
                 (successor, place(successor)),
+                probability,
                 &constants,
             )?;
         }
+        sums.check()?;
         Ok(grammar)
+    }
+}
+
+/// Most distinct left sides with probabilities in one system.
+const MAX_STOCHASTIC_SIDES: usize = 16;
+
+/// The probabilities given for each left side (contexts, predecessor and condition as
+/// written), which must sum to 1.
+#[derive(Debug, Default)]
+struct ProbabilitySums<'a> {
+    sides: heapless::Vec<(&'a str, Real, Location), MAX_STOCHASTIC_SIDES>,
+}
+
+impl<'a> ProbabilitySums<'a> {
+    fn add(&mut self, side: &'a str, probability: Real, at: Location) -> Result<(), Error> {
+        let same = |known: &str| known.split_whitespace().eq(side.split_whitespace());
+        if let Some((_, sum, _)) = self.sides.iter_mut().find(|(known, ..)| same(known)) {
+            *sum = Real::from_bits(sum.to_bits().saturating_add(probability.to_bits()));
+            return Ok(());
+        }
+        self.sides.push((side, probability, at)).map_err(|_| {
+            Error::Read(ReadError::TooManyRules {
+                max: MAX_STOCHASTIC_SIDES,
+                at,
+            })
+        })
+    }
+
+    /// Each sum is 1 to within 0.005 (three thirds written `0.333` pass).
+    fn check(&self) -> Result<(), Error> {
+        let tolerance = (1u64 << Real::FRAC_BITS) / 200;
+        for &(_, sum, at) in &self.sides {
+            if sum.to_bits().abs_diff(Real::ONE.to_bits()) > tolerance {
+                return Err(Error::Read(ReadError::ProbabilitiesDoNotSum { sum, at }));
+            }
+        }
+        Ok(())
     }
 }
 

@@ -70,7 +70,7 @@ pub(crate) fn check_order(order: u32, depth: usize) -> Result<(), Error> {
 }
 
 /// MurmurHash3's 32-bit finaliser: every input bit moves every output bit.
-const fn mix(mut h: u32) -> u32 {
+pub(crate) const fn mix(mut h: u32) -> u32 {
     h ^= h >> 16;
     h = h.wrapping_mul(0x85EB_CA6B);
     h ^= h >> 13;
@@ -80,12 +80,18 @@ const fn mix(mut h: u32) -> u32 {
 
 /// The hash of the expansion of the symbol at op `position` inside the expansion `parent`:
 /// 32 bits for the choice, of which the frame keeps 16.
-const fn child_key(parent: u16, position: u16) -> u32 {
+pub(crate) const fn child_key(parent: u16, position: u16) -> u32 {
     mix((parent as u32).wrapping_mul(0x9E37_79B9) ^ ((position as u32) << 16))
 }
 
+/// Where `key` falls among `total` units of weight: each unit gets an equal share of the
+/// 2³² keys (a multiply and a shift, no division).
+pub(crate) const fn pick(key: u32, total: u64) -> u64 {
+    (key as u64 * total) >> 32
+}
+
 /// The 16 bits of a key a frame keeps.
-const fn kept(key: u32) -> u16 {
+pub(crate) const fn kept(key: u32) -> u16 {
     (key >> 16) as u16
 }
 

@@ -1,7 +1,7 @@
-//! Parametric L-systems (ABOP 1.10): modules with fixed-point parameters, productions with
-//! conditions, successors whose parameters are expressions of the predecessor's, derived
-//! with bounded memory like every other system: each frame of the walk keeps the
-//! parameters of the module it expands, and nothing else.
+//! The general L-system engine (ABOP 1.8–1.10): modules with fixed-point parameters,
+//! productions with contexts, conditions and probabilities, successors whose parameters
+//! are expressions of the bound ones, derived with bounded memory like every other system:
+//! each frame of the walk keeps the parameters its production bound, and nothing else.
 //!
 //! ```text
 //! axiom: B(2)A(4,4)
@@ -9,17 +9,30 @@
 //! A(x,y) : y > 3  --> B(x)A(x/y,0)
 //! B(x)   : x < 1  --> C
 //! B(x)   : x >= 1 --> B(x-1)
+//! b < a --> b                  # a context on either side, one module each
+//! F(l) --> F(l*0.9) : 0.5      # stochastic: among the applicable ones, by probability
+//! F(l) --> F(l*1.1) : 0.5
 //! ```
 //!
 //! A module is rewritten by the first production for its symbol and number of parameters
-//! whose condition holds; a module with none is kept. Capacities are named constants; a
-//! system beyond them is a typed error naming the limit. Worst-case RAM (tested): the
-//! grammar 10.4 KiB (8 KiB of it the expression code, 16 bytes an instruction); a walk
-//! `DEPTH` frames of 48 bytes (the bound parameter values), 856 bytes for orders up to 16.
+//! whose contexts match and whose condition holds (when that one has a probability: one of
+//! the applicable ones with probabilities, chosen by a hash of the module's place in the
+//! derivation and the seed, so that every walk chooses alike); a module with none is kept.
+//! A production binds its contexts' and its predecessor's parameters, in that order, at
+//! most [`MAX_PARAMS`] together. Contexts are found without the string: see
+//! [`context`](self::context).
+//!
+//! Capacities are named constants; a system beyond them is a typed error naming the limit.
+//! Worst-case RAM (tested): the grammar 11 KiB (8 KiB of it the expression code, 16
+//! bytes an instruction); a walk about 400 bytes a level of `DEPTH` (its frame of 56
+//! bytes, and for contexts a left context and 4 remembered expansions) and 12.3 KiB for
+//! the left contexts saved at open branches: 21 KiB for orders up to 16; context searches
+//! use stack as [`context`](self::context) says.
 //!
 //! [`ParametricLSystem`](crate::ParametricLSystem) draws them: `F(l)`, `f(l)`, `+(a)`,
 //! `-(a)` take their parameter as length and degrees.
 
+pub(crate) mod context;
 pub(crate) mod draw;
 pub(crate) mod expr;
 
@@ -27,11 +40,14 @@ use core::fmt;
 
 use heapless::Vec;
 
+use self::context::{expand_in_context, Branches, Expansions, Levels};
 use self::expr::{compile, evaluate, Code, EvalError, Instr, Names, SyntaxError, MAX_CODE};
-use super::walker::{check_order, order_too_high};
+use super::alphabet::SymbolSet;
+use super::walker::{check_order, child_key, kept, mix, order_too_high, pick};
 use crate::error::{Arithmetic, Error, Location, ReadError, WalkError};
 use crate::math::angle::Headings;
 use crate::math::decimal::write_four_decimals;
+use crate::math::wide::shift_round;
 use crate::math::{Angle, Real};
 
 /// Most parameters a module has.
@@ -57,15 +73,39 @@ struct Module {
     arguments: u8,
 }
 
-/// `symbol(params) : condition --> successor`.
-#[derive(Debug, Clone, Copy)]
-struct Production {
+/// A module of a production's left side: its symbol and number of parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Pattern {
     symbol: u8,
     params: u8,
+}
+
+impl Pattern {
+    fn matches(self, module: &Neighbour) -> bool {
+        self.symbol == module.symbol && self.params == module.values.count
+    }
+}
+
+/// `lc < pred > rc : condition --> successor : probability`.
+#[derive(Debug, Clone, Copy)]
+struct Production {
+    left: Option<Pattern>,
+    predecessor: Pattern,
+    right: Option<Pattern>,
     condition: Option<Code>,
+    /// 0 for a deterministic production; else its weight among the applicable stochastic
+    /// ones, in units of 2⁻¹⁴.
+    weight: u16,
     /// Its modules, `start..end`.
     start: u16,
     end: u16,
+}
+
+/// A module next to the one being rewritten, as a context sees it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Neighbour {
+    pub(crate) symbol: u8,
+    pub(crate) values: Values,
 }
 
 /// A parametric system, compiled from text.
@@ -79,6 +119,12 @@ pub struct ParametricGrammar {
     modules: Vec<Module, MAX_MODULES>,
     productions: Vec<Production, MAX_PRODUCTIONS>,
     axiom: (u16, u16),
+    /// Symbols a context skips (`ignore:`).
+    ignore: SymbolSet,
+    /// Symbols with a production that has a context.
+    contextual: SymbolSet,
+    /// Seeds the choices among stochastic productions.
+    seed: u32,
 }
 
 /// What a text position is, for errors: `base` is where `text` starts.
@@ -88,6 +134,14 @@ pub(crate) struct Place {
 }
 
 impl Place {
+    /// The place of `part`, a slice of `whole`, whose place this is.
+    pub(crate) fn within(self, whole: &str, part: &str) -> Self {
+        let offset = (part.as_ptr() as usize).saturating_sub(whole.as_ptr() as usize);
+        Self {
+            base: self.at(offset),
+        }
+    }
+
     pub(crate) fn at(self, offset: usize) -> Location {
         Location {
             line: self.base.line,
@@ -157,7 +211,76 @@ impl ParametricGrammar {
             modules: Vec::new(),
             productions: Vec::new(),
             axiom: (0, 0),
+            ignore: SymbolSet::default(),
+            contextual: SymbolSet::default(),
+            seed: 0,
         }
+    }
+
+    /// Seeds the choices among stochastic productions (see
+    /// [`Grammar::with_seed`](crate::Grammar::with_seed)).
+    pub fn set_seed(&mut self, seed: u32) {
+        self.seed = seed;
+    }
+
+    /// The seed of the stochastic choices.
+    pub const fn seed(&self) -> u32 {
+        self.seed
+    }
+
+    /// Sets the symbols contexts skip (`ignore: +-F`); spaces are not symbols.
+    pub(crate) fn set_ignore(&mut self, symbols: &str) {
+        for symbol in symbols.bytes().filter(|b| !b.is_ascii_whitespace()) {
+            self.ignore.insert(symbol);
+        }
+    }
+
+    /// Whether any production has a context.
+    pub(crate) fn has_context(&self) -> bool {
+        self.productions
+            .iter()
+            .any(|p| p.left.is_some() || p.right.is_some())
+    }
+
+    /// Whether `symbol` has a production with a context: its rewriting can change from one
+    /// level to the next as its neighbours do.
+    pub(crate) fn is_contextual(&self, symbol: u8) -> bool {
+        self.contextual.contains(symbol)
+    }
+
+    /// Whether contexts skip `symbol`.
+    pub(crate) fn is_ignored(&self, symbol: u8) -> bool {
+        self.ignore.contains(symbol)
+    }
+
+    /// The module at `index` of all modules (frames keep in-range positions).
+    fn module(&self, index: u16) -> Module {
+        self.modules
+            .get(usize::from(index))
+            .copied()
+            .unwrap_or(Module {
+                symbol: 0,
+                first_argument: 0,
+                arguments: 0,
+            })
+    }
+
+    /// The position after the `]` that closes the `[` at `open`, within `..end`.
+    fn branch_end(&self, open: u16, end: u16) -> u16 {
+        let mut depth = 0usize;
+        for index in open..end {
+            match self.module(index).symbol {
+                b'[' => depth += 1,
+                b']' => {
+                    depth = depth.saturating_sub(1);
+                    if depth == 0 {
+                        return index + 1;
+                    }
+                }
+                _ => {}
+            }
+        }
+        end
     }
 
     /// Compiles a string of modules (`B(2)A(4,4)`, `F(l)[+(a)X(l*0.9)]`) whose parameter
@@ -172,6 +295,8 @@ impl ParametricGrammar {
         let start = self.modules.len();
         let bytes = text.as_bytes();
         let mut at = 0;
+        // Branches balance within each string, so a context can skip one without leaving it.
+        let (mut depth, mut outermost_open) = (0usize, 0);
         while let Some(&symbol) = bytes.get(at) {
             if symbol.is_ascii_whitespace() {
                 at += 1;
@@ -179,6 +304,23 @@ impl ParametricGrammar {
             }
             if !symbol.is_ascii() {
                 return Err(Error::Read(ReadError::NonAsciiSymbol { at: place.at(at) }));
+            }
+            match symbol {
+                b'[' => {
+                    if depth == 0 {
+                        outermost_open = at;
+                    }
+                    depth += 1;
+                }
+                b']' => {
+                    depth =
+                        depth
+                            .checked_sub(1)
+                            .ok_or(Error::Read(ReadError::UnbalancedBracket {
+                                at: place.at(at),
+                            }))?;
+                }
+                _ => {}
             }
             let first_argument = u16::try_from(self.arguments.len()).unwrap_or(u16::MAX);
             let mut arguments = 0u8;
@@ -223,6 +365,11 @@ impl ParametricGrammar {
                 })?;
             at = next;
         }
+        if depth > 0 {
+            return Err(Error::Read(ReadError::UnclosedBracket {
+                at: place.at(outermost_open),
+            }));
+        }
         let position = |index: usize| u16::try_from(index).unwrap_or(u16::MAX);
         Ok((position(start), position(self.modules.len())))
     }
@@ -248,66 +395,75 @@ impl ParametricGrammar {
         Ok(())
     }
 
-    /// Adds `predecessor : condition --> successor`; `predecessor` is `A` or `A(x,y)`.
-    pub(crate) fn add_production(
+    /// Adds `lc < pred > rc : condition --> successor : probability`: `left_side` is
+    /// `A`, `A(x,y)` or with contexts `B(z) < A(x) > C`; the parameters of the contexts and
+    /// the predecessor together are at most [`MAX_PARAMS`].
+    pub(crate) fn add_production<'t>(
         &mut self,
-        predecessor: (&str, Place),
+        left_side: (&'t str, Place),
         condition: Option<(&str, Place)>,
         successor: (&str, Place),
+        probability: Option<(Real, Location)>,
         constants: &[(&str, Real)],
     ) -> Result<(), Error> {
-        let (text, place) = predecessor;
-        let text = text.trim();
-        let bytes = text.as_bytes();
-        let symbol = *bytes
-            .first()
-            .filter(|b| b.is_ascii() && !b.is_ascii_whitespace())
-            .ok_or(Error::Read(ReadError::NotOneSymbol { at: place.at(0) }))?;
-        let mut params: Vec<&str, MAX_PARAMS> = Vec::new();
-        match bytes.get(1) {
-            None => {}
-            Some(b'(') if text.ends_with(')') => {
-                for name in text.get(2..text.len() - 1).unwrap_or_default().split(',') {
-                    let name = name.trim();
-                    let valid = !name.is_empty()
-                        && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
-                    if !valid {
-                        return Err(Error::Read(ReadError::Expression { at: place.at(2) }));
-                    }
-                    params.push(name).map_err(|_| {
-                        Error::Read(ReadError::TooManyParameters {
-                            max: MAX_PARAMS,
-                            at: place.at(0),
-                        })
-                    })?;
-                }
-            }
-            Some(_) => return Err(Error::Read(ReadError::NotOneSymbol { at: place.at(0) })),
+        let (text, place) = left_side;
+        let mut names: Vec<&'t str, MAX_PARAMS> = Vec::new();
+        let (left, rest) = match text.split_once('<') {
+            Some((left, rest)) => (Some(left), rest),
+            None => (None, text),
+        };
+        let (predecessor, right) = match rest.split_once('>') {
+            Some((predecessor, right)) => (predecessor, Some(right)),
+            None => (rest, None),
+        };
+        let mut pattern_of = |part: &'t str| pattern(part, place.within(text, part), &mut names);
+        let left = left.map(&mut pattern_of).transpose()?;
+        let predecessor_place = place.within(text, predecessor.trim_start());
+        let predecessor = pattern_of(predecessor)?;
+        let right = right.map(&mut pattern_of).transpose()?;
+        if matches!(predecessor.symbol, b'[' | b']') {
+            return Err(Error::Read(ReadError::ReservedRule {
+                symbol: char::from(predecessor.symbol),
+                at: predecessor_place.at(0),
+            }));
         }
         let condition = match condition {
             None => None,
             Some((text, place)) => {
                 let names = Names {
-                    params: &params,
+                    params: &names,
                     constants,
                 };
                 Some(compile(text, &names, &mut self.code).map_err(|e| syntax(e, place, 0))?)
             }
         };
-        let (text, place) = successor;
-        let (start, end) = self.modules_of(text, &params, constants, place)?;
+        // Weights in units of 2⁻¹⁴, as in the plain grammar.
+        let weight = match probability {
+            None => 0,
+            Some((p, at)) => u16::try_from(shift_round(i128::from(p.to_bits()), 18))
+                .ok()
+                .filter(|&w| w > 0)
+                .ok_or(Error::Read(ReadError::ProbabilityOutOfRange { at }))?,
+        };
+        let (text, successor_place) = successor;
+        let (start, end) = self.modules_of(text, &names, constants, successor_place)?;
+        if left.is_some() || right.is_some() {
+            self.contextual.insert(predecessor.symbol);
+        }
         self.productions
             .push(Production {
-                symbol,
-                params: u8::try_from(params.len()).unwrap_or(u8::MAX),
+                left,
+                predecessor,
+                right,
                 condition,
+                weight,
                 start,
                 end,
             })
             .map_err(|_| {
                 Error::Read(ReadError::TooManyRules {
                     max: MAX_PRODUCTIONS,
-                    at: place.at(0),
+                    at: predecessor_place.at(0),
                 })
             })
     }
@@ -336,22 +492,124 @@ impl ParametricGrammar {
         Ok(values)
     }
 
-    /// The first production that rewrites `symbol` with `values`.
-    fn production_for(&self, symbol: u8, values: &Values) -> Result<Option<u8>, EvalError> {
+    /// The parameters a production binds (its contexts' and its predecessor's, in order)
+    /// if it rewrites `module` between `left` and `right` and its condition holds.
+    fn binding(
+        &self,
+        production: &Production,
+        module: &Neighbour,
+        left: Option<&Neighbour>,
+        right: Option<&Neighbour>,
+    ) -> Result<Option<Values>, EvalError> {
+        let mut bound = Values::default();
+        let contexts = [(production.left, left), (production.right, right)];
+        if !production.predecessor.matches(module) {
+            return Ok(None);
+        }
+        for (pattern, neighbour) in contexts {
+            match (pattern, neighbour) {
+                (None, _) => {}
+                (Some(pattern), Some(neighbour)) if pattern.matches(neighbour) => {}
+                (Some(_), _) => return Ok(None),
+            }
+        }
+        let parts = [
+            production.left.and(left),
+            Some(module),
+            production.right.and(right),
+        ];
+        for part in parts.into_iter().flatten() {
+            for &value in part.values.as_slice() {
+                if let Some(slot) = bound.values.get_mut(usize::from(bound.count)) {
+                    *slot = value;
+                    bound.count += 1;
+                }
+            }
+        }
+        let holds = match production.condition {
+            None => true,
+            Some(code) => evaluate(self.code(code), bound.as_slice())? != Real::ZERO,
+        };
+        Ok(holds.then_some(bound))
+    }
+
+    /// The production that rewrites `module` between `left` and `right` (contexts as
+    /// found, skipping ignored symbols), and the parameters it binds: the first that
+    /// applies, or when that one is stochastic, one of the applicable stochastic ones
+    /// picked by `key` with its weight's share.
+    fn production_for(
+        &self,
+        module: &Neighbour,
+        left: Option<&Neighbour>,
+        right: Option<&Neighbour>,
+        key: u32,
+    ) -> Result<Option<(u8, Values)>, EvalError> {
+        let mut total = 0u64;
         for (index, production) in self.productions.iter().enumerate() {
-            if production.symbol != symbol || production.params != values.count {
+            let Some(bound) = self.binding(production, module, left, right)? else {
+                continue;
+            };
+            if production.weight == 0 {
+                if total == 0 {
+                    return Ok(u8::try_from(index).ok().map(|index| (index, bound)));
+                }
                 continue;
             }
-            let holds = match production.condition {
-                None => true,
-                Some(code) => evaluate(self.code(code), values.as_slice())? != Real::ZERO,
-            };
-            if holds {
-                return Ok(u8::try_from(index).ok());
+            total += u64::from(production.weight);
+        }
+        let mut pick = pick(key, total);
+        for (index, production) in self.productions.iter().enumerate() {
+            if production.weight == 0 {
+                continue;
             }
+            let Some(bound) = self.binding(production, module, left, right)? else {
+                continue;
+            };
+            let weight = u64::from(production.weight);
+            if pick < weight {
+                return Ok(u8::try_from(index).ok().map(|index| (index, bound)));
+            }
+            pick -= weight;
         }
         Ok(None)
     }
+}
+
+/// A module pattern `A` or `A(x,y)` of a left side; its parameter names join `names`.
+fn pattern<'a>(
+    text: &'a str,
+    place: Place,
+    names: &mut Vec<&'a str, MAX_PARAMS>,
+) -> Result<Pattern, Error> {
+    let text = text.trim();
+    let bytes = text.as_bytes();
+    let symbol = *bytes
+        .first()
+        .filter(|b| b.is_ascii() && !b.is_ascii_whitespace())
+        .ok_or(Error::Read(ReadError::NotOneSymbol { at: place.at(0) }))?;
+    let mut params = 0u8;
+    match bytes.get(1) {
+        None => {}
+        Some(b'(') if text.ends_with(')') => {
+            for name in text.get(2..text.len() - 1).unwrap_or_default().split(',') {
+                let name = name.trim();
+                let valid = !name.is_empty()
+                    && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+                if !valid {
+                    return Err(Error::Read(ReadError::Expression { at: place.at(2) }));
+                }
+                names.push(name).map_err(|_| {
+                    Error::Read(ReadError::TooManyParameters {
+                        max: MAX_PARAMS,
+                        at: place.at(0),
+                    })
+                })?;
+                params += 1;
+            }
+        }
+        Some(_) => return Err(Error::Read(ReadError::NotOneSymbol { at: place.at(0) })),
+    }
+    Ok(Pattern { symbol, params })
 }
 
 impl Default for ParametricGrammar {
@@ -431,24 +689,142 @@ impl fmt::Display for DerivedModule {
     }
 }
 
-/// One expansion level: the read position in a production's modules (or the axiom's), and
-/// the values its predecessor's parameters are bound to.
+/// One expansion level: a production's modules (or the axiom's, or one module kept for a
+/// level), the read position in them, and the values its predecessor bound.
 #[derive(Debug, Clone, Copy)]
-struct Frame {
+pub(crate) struct Frame {
     position: u16,
     end: u16,
+    /// This expansion's place in the derivation tree, hashed: stochastic choices below it
+    /// are functions of it (as in the plain walker).
+    key: u16,
+    /// The same place hashed to 64 bits: which expansion a context search remembered.
+    path: u64,
     bound: Values,
 }
 
+/// The place of the expansion of the module at `at` inside the expansion `parent` (the
+/// SplitMix64 finaliser over both).
+pub(crate) const fn path_of(parent: u64, at: u16) -> u64 {
+    let mut z = parent
+        .wrapping_add(0x9E37_79B9_7F4A_7C15)
+        .wrapping_add((at as u64) << 40);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// Symbols read by a walk and by its context searches, against a budget.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Work {
+    read: u64,
+    budget: u64,
+}
+
+impl Work {
+    fn tick(&mut self) -> Result<(), Error> {
+        if self.read >= self.budget {
+            return Err(Error::Walk(WalkError::BudgetExhausted {
+                budget: self.budget,
+            }));
+        }
+        self.read += 1;
+        Ok(())
+    }
+}
+
+/// The typed error for an expression of `symbol`'s that cannot be evaluated.
+fn arithmetic(symbol: u8, problem: EvalError) -> Error {
+    Error::Walk(WalkError::Arithmetic {
+        symbol: char::from(symbol),
+        problem: match problem {
+            EvalError::DivisionByZero => Arithmetic::DivisionByZero,
+            EvalError::OutOfRange => Arithmetic::OutOfRange,
+            EvalError::TooDeep => Arithmetic::TooDeep,
+        },
+    })
+}
+
+/// What a read module becomes one level down.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Expansion {
+    /// Its production's successor, with the parameters it bound.
+    Successor(Frame),
+    /// Itself, to be looked at again one level down (its neighbours may change there).
+    Kept(Frame),
+    /// Itself at every level down (no production can ever rewrite it).
+    Final,
+}
+
+impl ParametricGrammar {
+    /// The module at `at` of a frame whose predecessor bound `bound`, with its values.
+    fn read(&self, at: u16, bound: &Values) -> Result<Neighbour, Error> {
+        let module = self.module(at);
+        let values = self
+            .values(&module, bound.as_slice())
+            .map_err(|problem| arithmetic(module.symbol, problem))?;
+        Ok(Neighbour {
+            symbol: module.symbol,
+            values,
+        })
+    }
+
+    /// How `module`, read at `at` in the frame `parent`, expands between `left` and
+    /// `right`.
+    fn expand(
+        &self,
+        module: &Neighbour,
+        at: u16,
+        parent: &Frame,
+        contexts: (Option<&Neighbour>, Option<&Neighbour>),
+    ) -> Result<Expansion, Error> {
+        let key = child_key(parent.key, at);
+        let (left, right) = contexts;
+        let choice = self
+            .production_for(module, left, right, key)
+            .map_err(|problem| arithmetic(module.symbol, problem))?;
+        let kept = kept(key);
+        let path = path_of(parent.path, at);
+        Ok(match choice {
+            Some((index, bound)) => {
+                let production = self.productions.get(usize::from(index));
+                let (position, end) = production.map_or((0, 0), |p| (p.start, p.end));
+                Expansion::Successor(Frame {
+                    position,
+                    end,
+                    key: kept,
+                    path,
+                    bound,
+                })
+            }
+            None if self.is_contextual(module.symbol) => Expansion::Kept(Frame {
+                position: at,
+                end: at + 1,
+                key: kept,
+                path,
+                bound: parent.bound,
+            }),
+            None => Expansion::Final,
+        })
+    }
+}
+
 /// The modules of a parametric system's derivation at an order, in order, without
-/// building the string. Yields `Err` once (an arithmetic error, the budget) and ends.
+/// building the string. Yields `Err` once (an arithmetic error, the budget, a capacity)
+/// and ends.
+///
+/// For context-sensitive systems it also keeps, per level, the module a left context
+/// sees, and finds right contexts by reading ahead from its frames (the README's `.lsys`
+/// section says how, and what it costs).
 #[derive(Debug, Clone)]
 pub struct ParametricWalker<'g, const DEPTH: usize = { super::walker::DEFAULT_DEPTH }> {
     grammar: &'g ParametricGrammar,
     order: u32,
     frames: Vec<Frame, DEPTH>,
-    read: u64,
-    budget: u64,
+    work: Work,
+    levels: Levels<DEPTH>,
+    branches: Branches,
+    expansions: Expansions<DEPTH>,
 }
 
 impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
@@ -461,6 +837,8 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
             .push(Frame {
                 position,
                 end,
+                key: kept(mix(grammar.seed)),
+                path: 0,
                 bound: Values::default(),
             })
             .map_err(|_| order_too_high(order, DEPTH))?;
@@ -468,16 +846,100 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
             grammar,
             order,
             frames,
-            read: 0,
-            budget: super::walker::DEFAULT_BUDGET,
+            work: Work {
+                read: 0,
+                budget: super::walker::DEFAULT_BUDGET,
+            },
+            levels: Levels::new(),
+            branches: Branches::new(),
+            expansions: Expansions::new(),
         })
     }
 
-    /// Stops the walk with [`WalkError::BudgetExhausted`] after `symbols` modules are read.
+    /// Stops the walk with [`WalkError::BudgetExhausted`] after `symbols` modules are read
+    /// (context searches included).
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
-        self.budget = symbols;
+        self.work.budget = symbols;
         self
+    }
+
+    /// Modules read so far, context searches included.
+    pub const fn symbols_read(&self) -> u64 {
+        self.work.read
+    }
+
+    /// The next module, or `None` at the end.
+    fn step(&mut self) -> Result<Option<DerivedModule>, Error> {
+        let grammar = self.grammar;
+        let contextual = grammar.has_context();
+        let order = usize::try_from(self.order).unwrap_or(usize::MAX);
+        loop {
+            let level = self.frames.len().wrapping_sub(1);
+            let Some(top) = self.frames.last_mut() else {
+                return Ok(None);
+            };
+            if top.position >= top.end {
+                self.frames.pop();
+                continue;
+            }
+            self.work.tick()?;
+            let at = top.position;
+            top.position += 1;
+            let parent = *top;
+            let module = grammar.read(at, &parent.bound)?;
+            let derived = DerivedModule {
+                symbol: char::from(module.symbol),
+                values: module.values,
+            };
+            if level >= order {
+                return Ok(Some(derived));
+            }
+            if contextual {
+                match module.symbol {
+                    b'[' => {
+                        self.branches.open(&self.levels, level, order)?;
+                        return Ok(Some(derived));
+                    }
+                    b']' => {
+                        self.branches.close(&mut self.levels, level, order);
+                        return Ok(Some(derived));
+                    }
+                    _ => {}
+                }
+            }
+            let expansion = if grammar.is_contextual(module.symbol) {
+                expand_in_context(
+                    grammar,
+                    &module,
+                    (at, true),
+                    &self.frames,
+                    &self.levels,
+                    &mut self.expansions,
+                    &mut self.work,
+                )?
+            } else {
+                grammar.expand(&module, at, &parent, (None, None))?
+            };
+            if contextual {
+                self.levels.visit(grammar, level, &module);
+            }
+            let frame = match expansion {
+                Expansion::Successor(frame) | Expansion::Kept(frame) => frame,
+                Expansion::Final => {
+                    if contextual {
+                        for below in level + 1..order {
+                            self.levels.visit(grammar, below, &module);
+                        }
+                    }
+                    return Ok(Some(derived));
+                }
+            };
+            // Cannot fail: `new` checked that order + 1 <= DEPTH.
+            self.frames
+                .push(frame)
+                .map_err(|_| order_too_high(self.order, DEPTH))?;
+        }
     }
 }
 
@@ -485,72 +947,12 @@ impl<const DEPTH: usize> Iterator for ParametricWalker<'_, DEPTH> {
     type Item = Result<DerivedModule, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        let grammar = self.grammar;
-        loop {
-            let depth = self.frames.len();
-            let top = self.frames.last_mut()?;
-            if top.position >= top.end {
-                self.frames.pop();
-                continue;
-            }
-            if self.read >= self.budget {
+        match self.step() {
+            Ok(module) => module.map(Ok),
+            Err(error) => {
                 self.frames.clear();
-                return Some(Err(Error::Walk(WalkError::BudgetExhausted {
-                    budget: self.budget,
-                })));
+                Some(Err(error))
             }
-            self.read += 1;
-            let module = grammar
-                .modules
-                .get(usize::from(top.position))
-                .copied()
-                .unwrap_or(Module {
-                    symbol: 0,
-                    first_argument: 0,
-                    arguments: 0,
-                });
-            top.position += 1;
-            let bound = top.bound;
-            let failed = |problem: EvalError, frames: &mut Vec<Frame, DEPTH>| {
-                frames.clear();
-                Some(Err(Error::Walk(WalkError::Arithmetic {
-                    symbol: char::from(module.symbol),
-                    problem: match problem {
-                        EvalError::DivisionByZero => Arithmetic::DivisionByZero,
-                        EvalError::OutOfRange => Arithmetic::OutOfRange,
-                        EvalError::TooDeep => Arithmetic::TooDeep,
-                    },
-                })))
-            };
-            let values = match grammar.values(&module, bound.as_slice()) {
-                Ok(values) => values,
-                Err(problem) => return failed(problem, &mut self.frames),
-            };
-            let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
-            if level < self.order {
-                match grammar.production_for(module.symbol, &values) {
-                    Err(problem) => return failed(problem, &mut self.frames),
-                    Ok(Some(index)) => {
-                        let production = grammar.productions.get(usize::from(index));
-                        if let Some(production) = production {
-                            let frame = Frame {
-                                position: production.start,
-                                end: production.end,
-                                bound: values,
-                            };
-                            // Cannot fail: `new` checked that order + 1 <= DEPTH.
-                            if self.frames.push(frame).is_ok() {
-                                continue;
-                            }
-                        }
-                    }
-                    Ok(None) => {}
-                }
-            }
-            return Some(Ok(DerivedModule {
-                symbol: char::from(module.symbol),
-                values,
-            }));
         }
     }
 }
