@@ -377,3 +377,33 @@ fn a_parametric_system_draws() {
         }
     }
 }
+
+/// Stochastic productions with parameters and conditions: the same seed gives the same
+/// string on every walk, another seed another string, and each alternative is taken about
+/// as often as its probability says (512 choices; within 4 standard deviations).
+#[test]
+fn stochastic_parametric_choices_are_stable_and_fair() {
+    let text = |seed: u32| {
+        format!(
+            "s {{\n  axiom: S(0)\n  angle: 90\n  seed: {seed}\n  S(n) : n < 9 --> S(n+1)S(n+1)\n  \
+             S(n) : n >= 9 --> X(n)\n  X(n) --> B(n) : 0.25\n  X(n) --> C(n*2) : 0.75\n}}\n"
+        )
+    };
+    let derive = |seed: u32| -> String {
+        let text = text(seed);
+        let file = LsysFile::new(&text);
+        let grammar = file.entries().next().unwrap().unwrap().parametric().unwrap();
+        tinyfractal::ParametricWalker::<17>::new(&grammar, 11)
+            .unwrap()
+            .map(|module| module.unwrap().to_string())
+            .collect()
+    };
+    let first = derive(7);
+    assert_eq!(first, derive(7));
+    assert_ne!(first, derive(8));
+    let b = first.matches("B(9)").count() as f64;
+    let c = first.matches("C(18)").count() as f64;
+    assert_eq!(b + c, 512.0, "{first}");
+    let sd = (512.0f64 * 0.25 * 0.75).sqrt();
+    assert!((b - 128.0).abs() < 4.0 * sd, "{b} of 512");
+}
