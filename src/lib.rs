@@ -124,6 +124,7 @@ pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS
 pub use lsystem::lsys::{LsysEntries, LsysEntry, LsysFile};
 pub use lsystem::parametric::context::MAX_CONTEXT_SLOTS;
 pub use lsystem::parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
+pub use lsystem::parametric::space::{Segment3, Segments3, DEPTH_LEVELS};
 pub use lsystem::parametric::{
     DerivedModule, ParametricGrammar, ParametricWalker, Values, MAX_ARGUMENTS, MAX_CONSTANTS,
     MAX_MODULES, MAX_PARAMS, MAX_PRODUCTIONS,
@@ -134,4 +135,5 @@ pub use lsystem::walker::{DerivedSymbol, Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
 pub use render::fit::{Orientation, DEFAULT_MARGIN};
 pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};
+pub use render::projection::Projection;
 pub use render::sink::{DwellBuffer, DwellSink};

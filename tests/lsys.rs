@@ -392,7 +392,13 @@ fn stochastic_parametric_choices_are_stable_and_fair() {
     let derive = |seed: u32| -> String {
         let text = text(seed);
         let file = LsysFile::new(&text);
-        let grammar = file.entries().next().unwrap().unwrap().parametric().unwrap();
+        let grammar = file
+            .entries()
+            .next()
+            .unwrap()
+            .unwrap()
+            .parametric()
+            .unwrap();
         tinyfractal::ParametricWalker::<17>::new(&grammar, 11)
             .unwrap()
             .map(|module| module.unwrap().to_string())

@@ -88,6 +88,10 @@ pub struct LSystemArgs {
     pub segments: Option<PathBuf>,
     /// `--view`: the window drawn, as fractions of the picture fitted to the whole target.
     pub view: Option<View>,
+    /// `--projection`: draw in 3D, seen this way (3D systems are, isometric by default).
+    pub projection: Option<tinyfractal::Projection>,
+    /// `--depth-cue`: colour 3D lines by depth, nearer brighter.
+    pub depth_cue: bool,
 }
 
 /// A window of the fitted picture: `x0,y0,x1,y1` as fractions of the target it fills
@@ -178,8 +182,29 @@ struct LSystemOptions {
     /// fills (0,0 top left, 1,1 bottom right), e.g. 0.4,0.4,0.6,0.6 to zoom 5 times
     #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_view, allow_hyphen_values = true)]
     view: Option<View>,
+    /// Draw an .lsys system with the 3D turtle, seen from the front, isometric, or in
+    /// perspective (systems using & ^ \ / $ are drawn in 3D anyway, isometric by default)
+    #[arg(long, value_name = "VIEW", value_parser = parse_projection)]
+    projection: Option<tinyfractal::Projection>,
+    /// In 3D, colour each line by its depth, nearer brighter
+    #[arg(long = "depth-cue")]
+    depth_cue: bool,
     #[command(flatten)]
     common: Common,
+}
+
+/// `front`, `iso` or `perspective`.
+fn parse_projection(text: &str) -> Result<tinyfractal::Projection, String> {
+    match text {
+        "front" => Ok(tinyfractal::Projection::Front),
+        "iso" | "isometric" => Ok(tinyfractal::Projection::Isometric),
+        "perspective" => Ok(tinyfractal::Projection::Perspective {
+            distance: tinyfractal::Real::from_int(3),
+        }),
+        other => Err(format!(
+            "unknown projection `{other}`: give front, iso or perspective"
+        )),
+    }
 }
 
 #[derive(Debug, Args)]
@@ -420,6 +445,8 @@ fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
         common: options.common,
         segments: options.segments,
         view: options.view,
+        projection: options.projection,
+        depth_cue: options.depth_cue,
     })
 }
 

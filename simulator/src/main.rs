@@ -171,7 +171,10 @@ fn derive(arguments: &DeriveArgs) -> Result<(), String> {
     let budget = derive_budget(arguments);
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
-        Loaded::Parametric(grammar) => {
+        Loaded::Parametric(mut grammar) => {
+            if let Some(seed) = arguments.seed {
+                grammar.set_seed(seed);
+            }
             let walk = || {
                 ParametricWalker::<'_, { scene::DEPTH }>::new(&grammar, arguments.order)
                     .map(|walker| walker.with_budget(budget))
@@ -247,14 +250,24 @@ fn render_parametric(
         common.height(),
     ));
     let started = std::time::Instant::now();
-    let drawing = tinyfractal::ParametricLSystem::<'_, { scene::DEPTH }, { scene::STACK }>::new(
+    let mut system = tinyfractal::ParametricLSystem::<'_, { scene::DEPTH }, { scene::STACK }>::new(
         grammar, order,
     )
-    .fit(
-        scene::fitted_area(common.width(), common.height(), arguments.view).map_err(failed)?,
-        &palette::VGA,
-    )
-    .map_err(failed)?;
+    .with_depth_cue(arguments.depth_cue);
+    if let Some(projection) = arguments.projection {
+        system = system.with_projection(projection);
+    }
+    let palette: &[Rgb888] = if system.projection().is_some() && arguments.depth_cue {
+        &palette::DEPTH_GREENS
+    } else {
+        &palette::VGA
+    };
+    let drawing = system
+        .fit(
+            scene::fitted_area(common.width(), common.height(), arguments.view).map_err(failed)?,
+            palette,
+        )
+        .map_err(failed)?;
     let fit = started.elapsed();
     let stats = drawing
         .try_draw(&mut display)
@@ -276,8 +289,9 @@ fn render_parametric(
         &display,
         |plan| {
             if let Some(path) = &arguments.segments {
-                plan.add("--segments", path, move |w| {
-                    scene::write_parametric_segments(grammar, order, w)
+                plan.add("--segments", path, move |w| match system.projection() {
+                    Some(_) => scene::write_segments_3d(&system, w),
+                    None => scene::write_parametric_segments(grammar, order, w),
                 });
             }
         },
@@ -290,7 +304,12 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     let (loaded, name) = load(&arguments.source, &mut file_text)?;
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
-        Loaded::Parametric(grammar) => return render_parametric(arguments, &grammar, &name),
+        Loaded::Parametric(mut grammar) => {
+            if let Some(seed) = arguments.seed {
+                grammar.set_seed(seed);
+            }
+            return render_parametric(arguments, &grammar, &name);
+        }
     };
     if let Some(seed) = arguments.seed {
         grammar.set_seed(seed);

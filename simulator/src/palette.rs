@@ -3,6 +3,18 @@
 
 use embedded_graphics::pixelcolor::Rgb888;
 
+/// Depth cue: 16 greens from dim (far) to bright (near).
+pub const DEPTH_GREENS: [Rgb888; 16] = {
+    let mut levels = [Rgb888::new(0, 0, 0); 16];
+    let mut i = 0;
+    while i < 16 {
+        let v = 64 + (i as u8) * 12;
+        levels[i] = Rgb888::new(v / 2, v, v / 2);
+        i += 1;
+    }
+    levels
+};
+
 pub const VGA: [Rgb888; 16] = [
     Rgb888::new(0xFF, 0xFF, 0xFF),
     Rgb888::new(0x00, 0x00, 0xAA),

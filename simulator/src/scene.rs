@@ -140,6 +140,19 @@ pub fn write_parametric_segments(
     write_all_segments(walk, out)
 }
 
+/// `--segments` of a system drawn in 3D: `x0 y0 z0 x1 y1 z1` a line, in turtle units.
+pub fn write_segments_3d(
+    system: &tinyfractal::ParametricLSystem<'_, DEPTH, STACK>,
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    for segment in system.segments_3d().map_err(io::Error::other)? {
+        let s = segment.map_err(io::Error::other)?;
+        let ([x0, y0, z0], [x1, y1, z1]) = (s.start, s.end);
+        writeln!(out, "{x0} {y0} {z0} {x1} {y1} {z1}")?;
+    }
+    Ok(())
+}
+
 fn write_all_segments(
     walk: impl Iterator<Item = Result<tinyfractal::Segment, Error>>,
     out: &mut dyn Write,

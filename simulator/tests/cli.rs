@@ -1160,3 +1160,71 @@ fn lsys_files_list_derive_and_render() {
     assert_eq!(plant(None), plant(Some("1")));
     assert_ne!(plant(None), plant(Some("2")));
 }
+
+/// 3D systems: drawn with the 3D turtle; `--segments` writes `x0 y0 z0 x1 y1 z1`, and the
+/// 3D Hilbert curve's are unit steps on its grid; `--projection` takes three views.
+#[test]
+fn three_d_systems_render_and_write_segments() {
+    let abop = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../data/abop.lsys")
+        .to_string_lossy()
+        .into_owned();
+    let dir = scratch("space");
+    let segments = dir.join("hilbert.txt");
+    for projection in ["front", "iso", "perspective"] {
+        let out = dir.join(format!("{projection}.png"));
+        let rendered = run(&[
+            "render",
+            "lsystem",
+            "--file",
+            &abop,
+            "--name",
+            "Hilbert3D",
+            "--order",
+            "2",
+            "--projection",
+            projection,
+            "--depth-cue",
+            "--size",
+            "64x64",
+            "--out",
+            out.to_str().unwrap(),
+            "--segments",
+            segments.to_str().unwrap(),
+            "--stats",
+        ]);
+        assert_eq!(rendered.status.code(), Some(0), "{}", stderr(&rendered));
+        assert!(
+            stdout(&rendered).starts_with("segments=63 "),
+            "{}",
+            stdout(&rendered)
+        );
+        assert!(out.exists());
+    }
+    let text = std::fs::read_to_string(&segments).unwrap();
+    assert_eq!(text.lines().count(), 63);
+    for line in text.lines() {
+        let v: Vec<f64> = line.split(' ').map(|n| n.parse().unwrap()).collect();
+        assert_eq!(v.len(), 6, "{line}");
+        let length = ((v[3] - v[0]).powi(2) + (v[4] - v[1]).powi(2) + (v[5] - v[2]).powi(2)).sqrt();
+        assert!((length - 1.0).abs() < 1e-6, "{line}");
+    }
+    let refused = run(&[
+        "render",
+        "lsystem",
+        "--file",
+        &abop,
+        "--name",
+        "Hilbert3D",
+        "--order",
+        "2",
+        "--projection",
+        "sideways",
+    ]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(
+        stderr(&refused).contains("give front, iso or perspective"),
+        "{}",
+        stderr(&refused)
+    );
+}

@@ -298,13 +298,16 @@ impl<'a> LsysEntry<'a> {
 }
 
 impl<'a> LsysEntry<'a> {
-    /// Whether the system uses parameters or conditions (read it with
-    /// [`parametric`](Self::parametric) then).
+    /// Whether the system needs the general engine (read it with
+    /// [`parametric`](Self::parametric) then): parameters, conditions, contexts, or modules
+    /// only it interprets, the 3D turns `& ^ \\ / $`, the scale symbols `r R`, the colour
+    /// modules `' ; ,` and the cut `%`.
     pub fn is_parametric(&self) -> bool {
+        let general = |string: &str| string.contains(GENERAL_MODULES);
         self.lines().any(|(_, text)| match key_value(text) {
-            Some((key, value)) => key == "axiom" && value.contains('('),
+            Some((key, value)) => key == "axiom" && (value.contains('(') || general(value)),
             None => text.split_once("-->").is_some_and(|(left, right)| {
-                left.contains(['(', ':', '<', '>']) || right.contains('(')
+                left.contains(['(', ':', '<', '>']) || right.contains('(') || general(right)
             }),
         })
     }
@@ -440,6 +443,9 @@ impl<'a> ProbabilitySums<'a> {
         Ok(())
     }
 }
+
+/// Modules only the general engine interprets.
+const GENERAL_MODULES: [char; 11] = ['&', '^', '\\', '/', '$', 'r', 'R', '\'', ';', ',', '%'];
 
 /// The value part of a `key: value` line.
 fn value_text(line: &str) -> &str {

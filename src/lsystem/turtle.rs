@@ -521,11 +521,11 @@ impl<const DEPTH: usize, const STACK: usize> Iterator for Segments<'_, '_, DEPTH
 /// until the walk ends; the first error ends it (the parametric walk's loop; the plain
 /// walk writes it out for speed).
 #[inline(always)]
-pub(crate) fn next_segment(
+pub(crate) fn next_segment<S>(
     failed: &mut bool,
     segments: &mut u64,
-    mut step: impl FnMut() -> Option<Result<Option<Segment>, Error>>,
-) -> Option<Result<Segment, Error>> {
+    mut step: impl FnMut() -> Option<Result<Option<S>, Error>>,
+) -> Option<Result<S, Error>> {
     if *failed {
         return None;
     }

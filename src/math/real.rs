@@ -84,6 +84,18 @@ impl Real {
         self.0.checked_sub(other.0).map(Self)
     }
 
+    /// Saturating addition.
+    #[inline]
+    pub fn saturating_add(self, other: Self) -> Self {
+        Self(self.0.saturating_add(other.0))
+    }
+
+    /// Saturating subtraction.
+    #[inline]
+    pub fn saturating_sub(self, other: Self) -> Self {
+        Self(self.0.saturating_sub(other.0))
+    }
+
     /// Checked multiplication, rounded to nearest.
     pub fn checked_mul(self, other: Self) -> Option<Self> {
         let product = i128::from(self.to_bits()) * i128::from(other.to_bits());

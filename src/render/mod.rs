@@ -4,5 +4,6 @@
 
 pub(crate) mod fit;
 pub(crate) mod palette;
+pub(crate) mod projection;
 pub(crate) mod raster;
 pub(crate) mod sink;

@@ -6,6 +6,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
+use super::space::{Segments3, SpaceFit};
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, FitError};
 use crate::lsystem::alphabet::{Command, Dialect};
@@ -18,24 +19,97 @@ use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 use crate::render::fit::{Orientation, DEFAULT_MARGIN};
 use crate::render::palette::{Colors, Palette};
+use crate::render::projection::Projection;
+#[cfg(doc)]
+use crate::DEPTH_LEVELS;
 
-/// What the turtle does for a derived module.
+/// √2, the lecture's `R` (Q32).
+const SQRT_2: Real = Real::from_bits(6_074_001_000);
+/// 1/√2, the lecture's `r` (Q32).
+const INV_SQRT_2: Real = Real::from_bits(3_037_000_500);
+
+/// A change of the colour index.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum ColorChange {
+    Set(u8),
+    Raise,
+    Lower,
+}
+
+impl ColorChange {
+    pub(crate) fn apply(self, color: u8) -> u8 {
+        match self {
+            Self::Set(c) => c,
+            Self::Raise => color.wrapping_add(1),
+            Self::Lower => color.wrapping_sub(1),
+        }
+    }
+}
+
+/// What a module makes the 2D and the 3D turtle alike do (turns differ).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Action {
+    /// `F(l)`, `f(l)`: `length` steps, drawing or not.
+    Step {
+        length: Real,
+        draw: bool,
+    },
+    /// `r` and `R`: the step times 1/√2 or √2 (the lecture's scale symbols).
+    Scale(Real),
+    /// `'(c)`, `;(c)`, `,(c)` set the colour index; `'` (ABOP) and `;` (cpfg) raise it,
+    /// `,` lowers it.
+    Color(ColorChange),
+    Push,
+    Pop,
+    /// Anything else, `!(w)` (line width) included: lines are one pixel wide.
+    Nothing,
+}
+
+pub(crate) fn turtle_action(module: &DerivedModule) -> Action {
+    let value = module.values.first();
+    let color = |c: Real| u8::try_from(c.round_to_i32().clamp(0, 255)).unwrap_or(0);
+    match (module.symbol, value) {
+        ('F' | 'f', length) => Action::Step {
+            length: length.unwrap_or(Real::ONE),
+            draw: module.symbol == 'F',
+        },
+        ('r', _) => Action::Scale(INV_SQRT_2),
+        ('R', _) => Action::Scale(SQRT_2),
+        ('\'' | ';' | ',', Some(c)) => Action::Color(ColorChange::Set(color(c))),
+        ('\'' | ';', None) => Action::Color(ColorChange::Raise),
+        (',', None) => Action::Color(ColorChange::Lower),
+        ('[', _) => Action::Push,
+        (']', _) => Action::Pop,
+        _ => Action::Nothing,
+    }
+}
+
+/// What the 2D turtle does for a derived module.
 fn command(module: &DerivedModule) -> Command {
     let value = module.values.first();
     let turn = |degrees: Real| BinaryAngle::from_degrees_bits(degrees.to_bits());
     match (module.symbol, value) {
-        ('F', None) => Command::Draw,
-        ('F', Some(length)) => Command::DrawBy(length),
-        ('f', None) => Command::Move,
-        ('f', Some(length)) => Command::MoveBy(length),
         ('+', None) => Command::Left,
         ('+', Some(degrees)) => Command::FreeLeft(turn(degrees)),
         ('-', None) => Command::Right,
         ('-', Some(degrees)) => Command::FreeRight(turn(degrees)),
         ('|', _) => Command::Around,
-        ('[', _) => Command::Push,
-        (']', _) => Command::Pop,
-        _ => Command::Nothing,
+        _ => match turtle_action(module) {
+            Action::Step { draw: true, .. } if value.is_none() => Command::Draw,
+            Action::Step { draw: false, .. } if value.is_none() => Command::Move,
+            Action::Step { length, draw: true } => Command::DrawBy(length),
+            Action::Step {
+                length,
+                draw: false,
+            } => Command::MoveBy(length),
+            Action::Scale(factor) => Command::Scale(factor),
+            Action::Color(ColorChange::Set(c)) => Command::SetColor(c),
+            Action::Color(ColorChange::Raise) => Command::RaiseColor(1),
+            Action::Color(ColorChange::Lower) => Command::LowerColor(1),
+            Action::Push => Command::Push,
+            Action::Pop => Command::Pop,
+            Action::Nothing => Command::Nothing,
+        },
     }
 }
 
@@ -100,6 +174,9 @@ pub struct ParametricLSystem<
     order: u32,
     orientation: Orientation,
     budget: u64,
+    /// How a 3D system is seen (`None`: isometric if it turns in space, else 2D).
+    projection: Option<Projection>,
+    depth_cue: bool,
 }
 
 impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, STACK> {
@@ -110,7 +187,40 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
             order,
             orientation: Orientation::Up,
             budget: DEFAULT_BUDGET,
+            projection: None,
+            depth_cue: false,
         }
+    }
+
+    /// Draws with the 3D turtle, seen through `projection` (systems whose modules turn in
+    /// space, `& ^ \\ / $`, are drawn in 3D anyway, isometric unless set).
+    #[must_use]
+    pub const fn with_projection(mut self, projection: Projection) -> Self {
+        self.projection = Some(projection);
+        self
+    }
+
+    /// In 3D, colours each line by its depth instead of its colour index: the palette's
+    /// first [`DEPTH_LEVELS`] colours, farthest first (give them dark to bright for nearer
+    /// brighter).
+    #[must_use]
+    pub const fn with_depth_cue(mut self, depth_cue: bool) -> Self {
+        self.depth_cue = depth_cue;
+        self
+    }
+
+    /// The projection it is drawn with, if in 3D.
+    pub fn projection(&self) -> Option<Projection> {
+        match self.projection {
+            Some(projection) => Some(projection),
+            None if self.grammar.is_3d() => Some(Projection::default()),
+            None => None,
+        }
+    }
+
+    /// The 3D segments, in turtle units.
+    pub fn segments_3d(&self) -> Result<Segments3<'g, DEPTH, STACK>, Error> {
+        Ok(Segments3::new(self.grammar, self.order)?.with_budget(self.budget))
     }
 
     /// Which way the first heading points on screen.
@@ -142,6 +252,22 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let palette = colors(palette)?;
+        if let Some(projection) = self.projection() {
+            let space = SpaceFit::new(
+                || self.segments_3d(),
+                projection,
+                self.depth_cue,
+                &area,
+                DEFAULT_MARGIN,
+            )?;
+            return Ok(ParametricDrawing {
+                system: *self,
+                start: Start::default(),
+                palette,
+                bounding_box: space.bounding_box,
+                space: Some(space),
+            });
+        }
         let bounds = measure(self.segments(Start::default())?)?;
         let start = fitted_start(bounds, Real::ONE, self.orientation, &area, DEFAULT_MARGIN)?;
         let pixels: Option<Bounds> = measure(self.segments(start)?)?;
@@ -150,6 +276,7 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
             start,
             palette,
             bounding_box: pixel_box(self.orientation, pixels, start),
+            space: None,
         })
     }
 }
@@ -166,6 +293,7 @@ pub struct ParametricDrawing<
     start: Start,
     palette: P,
     bounding_box: Rectangle,
+    space: Option<SpaceFit>,
 }
 
 impl<P: Palette, const DEPTH: usize, const STACK: usize> ParametricDrawing<'_, P, DEPTH, STACK> {
@@ -174,6 +302,14 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> ParametricDrawing<'_, P
     where
         D: DrawTarget<Color = P::Color>,
     {
+        if let Some(space) = self.space {
+            let mut segments = self.system.segments_3d()?;
+            space.draw(target, segments.by_ref(), &self.palette)?;
+            return Ok(WalkStats {
+                segments: segments.segments(),
+                ..WalkStats::default()
+            });
+        }
         let clip = target.bounding_box();
         let mut segments = self.system.segments(self.start)?;
         let mut last_end = None;

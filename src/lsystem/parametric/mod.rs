@@ -35,6 +35,7 @@
 pub(crate) mod context;
 pub(crate) mod draw;
 pub(crate) mod expr;
+pub(crate) mod space;
 
 use core::fmt;
 
@@ -111,8 +112,9 @@ pub(crate) struct Neighbour {
 /// A parametric system, compiled from text.
 #[derive(Debug, Clone)]
 pub struct ParametricGrammar {
-    /// The turtle's directions for `+` and `-` without a parameter (a quarter turn unless
-    /// set).
+    /// The turn of `+` and `-` without a parameter (a quarter turn unless set).
+    angle: Angle,
+    /// Its directions for the 2D turtle.
     headings: Headings,
     code: Vec<Instr, MAX_CODE>,
     arguments: Vec<Code, MAX_ARGUMENTS>,
@@ -125,6 +127,8 @@ pub struct ParametricGrammar {
     contextual: SymbolSet,
     /// Seeds the choices among stochastic productions.
     seed: u32,
+    /// Whether any module turns in space (`& ^ \\ / $`).
+    three_d: bool,
 }
 
 /// What a text position is, for errors: `base` is where `text` starts.
@@ -205,6 +209,7 @@ impl ParametricGrammar {
     /// An empty system.
     pub fn new() -> Self {
         Self {
+            angle: Angle::Divisions(4),
             headings: Headings::quarter_turns(),
             code: Vec::new(),
             arguments: Vec::new(),
@@ -214,6 +219,7 @@ impl ParametricGrammar {
             ignore: SymbolSet::default(),
             contextual: SymbolSet::default(),
             seed: 0,
+            three_d: false,
         }
     }
 
@@ -233,6 +239,11 @@ impl ParametricGrammar {
         for symbol in symbols.bytes().filter(|b| !b.is_ascii_whitespace()) {
             self.ignore.insert(symbol);
         }
+    }
+
+    /// Whether any module turns in space (`& ^ \\ / $`): the system is drawn in 3D.
+    pub fn is_3d(&self) -> bool {
+        self.three_d
     }
 
     /// Whether any production has a context.
@@ -305,6 +316,7 @@ impl ParametricGrammar {
             if !symbol.is_ascii() {
                 return Err(Error::Read(ReadError::NonAsciiSymbol { at: place.at(at) }));
             }
+            self.three_d |= b"&^\\/$".contains(&symbol);
             match symbol {
                 b'[' => {
                     if depth == 0 {
@@ -377,7 +389,13 @@ impl ParametricGrammar {
     /// Sets the angle of `+` and `-` without a parameter.
     pub(crate) fn set_angle(&mut self, angle: Angle, at: Location) -> Result<(), Error> {
         self.headings = Headings::new(angle, at)?;
+        self.angle = angle;
         Ok(())
+    }
+
+    /// The turn of `+` and `-` without a parameter.
+    pub const fn angle(&self) -> Angle {
+        self.angle
     }
 
     pub(crate) const fn headings(&self) -> &Headings {

@@ -1,0 +1,373 @@
+//! The 3D turtle (ABOP 1.5): a position and an orientation (heading, left, up) in fixed
+//! point, turned by `+ - & ^ \ / |` and `$`, and the segments it draws.
+//!
+//! | module | turns |
+//! |---|---|
+//! | `+(a)` `-(a)` | about up: the heading towards left, or right |
+//! | `&(a)` `^(a)` | about left: pitch down, or up |
+//! | `\(a)` `/(a)` | about the heading: roll left, or right |
+//! | `\|` | half a turn about up |
+//! | `$` | roll until left is horizontal |
+//!
+//! Without a parameter a turn is the system's `angle:`. The turtle starts at the origin
+//! heading up (+y), left towards −x and up towards the viewer (+z), so a system turned only
+//! by `+` and `-` draws in the plane z = 0 exactly as the 2D turtle heading up would.
+//! `F(l)`, `f(l)`, `[ ]`, `r`, `R` and the colour modules act as in 2D.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+use heapless::Vec;
+
+use super::draw::{turtle_action, Action};
+use super::{DerivedModule, ParametricGrammar, ParametricWalker};
+use crate::error::{DrawError, Error, WalkError};
+use crate::lsystem::turtle::{next_segment, DEFAULT_STACK};
+use crate::lsystem::walker::DEFAULT_DEPTH;
+use crate::math::frame3::{Axis, Frame3};
+use crate::math::trig::BinaryAngle;
+use crate::math::{Angle, Real};
+use crate::render::fit::{fit, Orientation};
+use crate::render::palette::Palette;
+use crate::render::projection::{Eye, Projection, Seen};
+use crate::render::raster::draw_line;
+
+/// One drawn line in space (x right, y up, z towards the viewer), in turtle units.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Segment3 {
+    /// Where the line starts.
+    pub start: [Real; 3],
+    /// Where it ends.
+    pub end: [Real; 3],
+    /// The colour index (`'` `;` `,`), 0 unless set.
+    pub color: u8,
+}
+
+/// Everything `[` saves.
+#[derive(Debug, Clone, Copy)]
+struct State3 {
+    position: [Real; 3],
+    frame: Frame3,
+    step: Real,
+    color: u8,
+}
+
+/// The system's turn as a binary angle.
+pub(crate) fn binary_angle(angle: Angle) -> BinaryAngle {
+    match angle {
+        Angle::Divisions(n) => {
+            let n = u64::from(n.max(1));
+            BinaryAngle(u32::try_from(((1u64 << 32) + n / 2) / n).unwrap_or(0))
+        }
+        Angle::Degrees(degrees) => BinaryAngle::from_degrees_bits(degrees.to_bits()),
+    }
+}
+
+/// The 3D turtle: a state and a stack of saved states (`STACK` deep).
+#[derive(Debug, Clone)]
+pub(crate) struct Turtle3<const STACK: usize> {
+    turn: BinaryAngle,
+    state: State3,
+    stack: Vec<State3, STACK>,
+}
+
+impl<const STACK: usize> Turtle3<STACK> {
+    pub(crate) fn new(turn: BinaryAngle) -> Self {
+        Self {
+            turn,
+            state: State3 {
+                position: [Real::ZERO; 3],
+                frame: Frame3::default(),
+                step: Real::ONE,
+                color: 0,
+            },
+            stack: Vec::new(),
+        }
+    }
+
+    fn rotate(&mut self, axis: Axis, degrees: Option<Real>, positive: bool) {
+        let angle = degrees.map_or(self.turn, |d| BinaryAngle::from_degrees_bits(d.to_bits()));
+        let angle = if positive {
+            angle
+        } else {
+            BinaryAngle(angle.0.wrapping_neg())
+        };
+        self.state.frame.rotate(axis, angle);
+    }
+
+    /// Moves `length` steps along the heading; the segment if `draw`.
+    fn advance(&mut self, length: Real, draw: bool) -> Result<Option<Segment3>, Error> {
+        let overflow = Error::Walk(WalkError::Overflow);
+        let length = length.checked_mul(self.state.step).ok_or(overflow)?;
+        let delta = self.state.frame.step(length);
+        let start = self.state.position;
+        let mut end = start;
+        for (e, d) in end.iter_mut().zip(delta) {
+            *e = e.checked_add(d).ok_or(overflow)?;
+        }
+        self.state.position = end;
+        Ok(draw.then_some(Segment3 {
+            start,
+            end,
+            color: self.state.color,
+        }))
+    }
+
+    /// Does what `module` says; the segment it draws, if any.
+    pub(crate) fn execute(&mut self, module: &DerivedModule) -> Result<Option<Segment3>, Error> {
+        let value = module.values.first();
+        let positive = matches!(module.symbol, '+' | '&' | '\\');
+        match module.symbol {
+            '+' | '-' => self.rotate(Axis::Up, value, positive),
+            '&' | '^' => self.rotate(Axis::Left, value, positive),
+            '\\' | '/' => self.rotate(Axis::Heading, value, positive),
+            '|' => self.state.frame.rotate(Axis::Up, BinaryAngle(1 << 31)),
+            '$' => self.state.frame.roll_to_horizontal(),
+            _ => match turtle_action(module) {
+                Action::Step { length, draw } => return self.advance(length, draw),
+                Action::Scale(factor) => {
+                    self.state.step = self
+                        .state
+                        .step
+                        .checked_mul(factor)
+                        .ok_or(Error::Walk(WalkError::Overflow))?;
+                }
+                Action::Color(color) => self.state.color = color.apply(self.state.color),
+                Action::Push => self
+                    .stack
+                    .push(self.state)
+                    .map_err(|_| Error::Walk(WalkError::StackTooDeep { capacity: STACK }))?,
+                Action::Pop => {
+                    if let Some(state) = self.stack.pop() {
+                        self.state = state;
+                    }
+                }
+                Action::Nothing => {}
+            },
+        }
+        Ok(None)
+    }
+}
+
+/// The segments a 3D system draws at an order, in turtle units, computed on the fly.
+#[derive(Debug, Clone)]
+pub struct Segments3<'g, const DEPTH: usize = DEFAULT_DEPTH, const STACK: usize = DEFAULT_STACK> {
+    walker: ParametricWalker<'g, DEPTH>,
+    turtle: Turtle3<STACK>,
+    segments: u64,
+    failed: bool,
+}
+
+impl<'g, const DEPTH: usize, const STACK: usize> Segments3<'g, DEPTH, STACK> {
+    /// The segments of `grammar` at `order`, from the origin, one unit a step.
+    pub fn new(grammar: &'g ParametricGrammar, order: u32) -> Result<Self, Error> {
+        Ok(Self {
+            walker: ParametricWalker::new(grammar, order)?,
+            turtle: Turtle3::new(binary_angle(grammar.angle())),
+            segments: 0,
+            failed: false,
+        })
+    }
+
+    /// Caps the walk at `symbols` modules.
+    #[must_use]
+    pub fn with_budget(mut self, symbols: u64) -> Self {
+        self.walker = self.walker.with_budget(symbols);
+        self
+    }
+
+    /// Segments drawn so far.
+    pub const fn segments(&self) -> u64 {
+        self.segments
+    }
+}
+
+impl<const DEPTH: usize, const STACK: usize> Iterator for Segments3<'_, DEPTH, STACK> {
+    type Item = Result<Segment3, Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let (walker, turtle) = (&mut self.walker, &mut self.turtle);
+        next_segment(&mut self.failed, &mut self.segments, || {
+            Some(walker.next()?.and_then(|module| turtle.execute(&module)))
+        })
+    }
+}
+
+/// Depth-cue levels: the palette's first `DEPTH_LEVELS` colours, farthest first.
+pub const DEPTH_LEVELS: u16 = 16;
+
+/// How a 3D picture lands on the target: its projection, the perspective eye, pixels per
+/// picture unit and the screen position of the origin, and its depth range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct SpaceFit {
+    projection: Projection,
+    eye: Option<Eye>,
+    scale: Real,
+    origin: (Real, Real),
+    depth: (Real, Real),
+    depth_cue: bool,
+    /// The pixel box of the drawn segments.
+    pub(crate) bounding_box: Rectangle,
+}
+
+/// The extent of a projected picture.
+#[derive(Debug, Clone, Copy)]
+struct Extent {
+    low: Seen,
+    high: Seen,
+}
+
+/// The projected extent of `segments`, or `None` for a picture of nothing.
+fn extent(
+    segments: impl Iterator<Item = Result<Segment3, Error>>,
+    projection: Projection,
+    eye: Option<Eye>,
+) -> Result<Option<Extent>, Error> {
+    let mut extent: Option<Extent> = None;
+    for segment in segments {
+        let segment = segment?;
+        for p in [segment.start, segment.end] {
+            let seen = projection.project(p, eye);
+            let e = extent.get_or_insert(Extent {
+                low: seen,
+                high: seen,
+            });
+            e.low.x = e.low.x.min(seen.x);
+            e.low.y = e.low.y.min(seen.y);
+            e.low.depth = e.low.depth.min(seen.depth);
+            e.high.x = e.high.x.max(seen.x);
+            e.high.y = e.high.y.max(seen.y);
+            e.high.depth = e.high.depth.max(seen.depth);
+        }
+    }
+    Ok(extent)
+}
+
+fn middle(a: Real, b: Real) -> Real {
+    Real::from_bits(a.to_bits() / 2 + b.to_bits() / 2)
+}
+
+impl SpaceFit {
+    /// Fits the picture `segments()` draws into `area` less `margin`: one walk to measure
+    /// (two for a perspective, whose eye is placed from the first).
+    pub(crate) fn new<I>(
+        segments: impl Fn() -> Result<I, Error>,
+        projection: Projection,
+        depth_cue: bool,
+        area: &Rectangle,
+        margin: u32,
+    ) -> Result<Self, Error>
+    where
+        I: Iterator<Item = Result<Segment3, Error>>,
+    {
+        let mut seen = extent(segments()?, projection, None)?;
+        let mut eye = None;
+        if let (Projection::Perspective { distance }, Some(e)) = (projection, seen) {
+            // Half the box's three extents together bound its radius from above.
+            let sum = e
+                .high
+                .x
+                .saturating_sub(e.low.x)
+                .saturating_add(e.high.y.saturating_sub(e.low.y))
+                .saturating_add(e.high.depth.saturating_sub(e.low.depth));
+            let radius = Real::from_bits(sum.to_bits() / 2).max(Real::ONE);
+            let distance = distance.max(Real::from_ratio(11, 10).unwrap_or(Real::ONE));
+            eye = Some(Eye {
+                middle: Seen {
+                    x: middle(e.low.x, e.high.x),
+                    y: middle(e.low.y, e.high.y),
+                    depth: middle(e.low.depth, e.high.depth),
+                },
+                distance: radius
+                    .checked_mul(distance)
+                    .ok_or(Error::Walk(WalkError::Overflow))?,
+            });
+            seen = extent(segments()?, projection, eye)?;
+        }
+        let zero = Seen {
+            x: Real::ZERO,
+            y: Real::ZERO,
+            depth: Real::ZERO,
+        };
+        let e = seen.unwrap_or(Extent {
+            low: zero,
+            high: zero,
+        });
+        let fitted = fit(
+            (e.low.x, e.low.y),
+            (e.high.x, e.high.y),
+            Orientation::Right,
+            area,
+            margin,
+        )?;
+        let mut space = Self {
+            projection,
+            eye,
+            scale: fitted.scale,
+            origin: fitted.origin,
+            depth: (e.low.depth, e.high.depth),
+            depth_cue,
+            bounding_box: Rectangle::zero(),
+        };
+        let (a, b) = (space.pixel(e.low), space.pixel(e.high));
+        space.bounding_box = if seen.is_some() {
+            Rectangle::with_corners(a, b)
+        } else {
+            Rectangle::new(a, Size::zero())
+        };
+        Ok(space)
+    }
+
+    /// The pixel a seen point lands on.
+    fn pixel(&self, seen: Seen) -> Point {
+        let scaled = |v: Real| v.checked_mul(self.scale).unwrap_or(Real::ZERO);
+        Point::new(
+            self.origin.0.saturating_add(scaled(seen.x)).round_to_i32(),
+            self.origin.1.saturating_sub(scaled(seen.y)).round_to_i32(),
+        )
+    }
+
+    /// The depth-cue level of a depth: 0 farthest to `DEPTH_LEVELS - 1` nearest.
+    fn level(&self, depth: Real) -> u16 {
+        let (low, high) = self.depth;
+        let span = high.to_bits().saturating_sub(low.to_bits());
+        if span <= 0 {
+            return DEPTH_LEVELS - 1;
+        }
+        let into = i128::from(depth.to_bits().saturating_sub(low.to_bits()));
+        let level = into * i128::from(DEPTH_LEVELS - 1) / i128::from(span);
+        u16::try_from(level.clamp(0, i128::from(DEPTH_LEVELS - 1))).unwrap_or(0)
+    }
+
+    /// Draws `segments`: each line in its colour index, or with depth cue in the
+    /// palette's colour for its middle's depth (`DEPTH_LEVELS` levels, nearer later).
+    pub(crate) fn draw<D, P>(
+        &self,
+        target: &mut D,
+        segments: impl Iterator<Item = Result<Segment3, Error>>,
+        palette: &P,
+    ) -> Result<(), DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+        P: Palette,
+    {
+        let clip = target.bounding_box();
+        let mut last_end = None;
+        for segment in segments {
+            let segment = segment?;
+            let (a, b) = (
+                self.projection.project(segment.start, self.eye),
+                self.projection.project(segment.end, self.eye),
+            );
+            let color = if self.depth_cue {
+                palette.color(self.level(middle(a.depth, b.depth)), DEPTH_LEVELS - 1)
+            } else {
+                palette.color(u16::from(segment.color), u16::MAX)
+            };
+            let (from, to) = (self.pixel(a), self.pixel(b));
+            draw_line(target, from, to, last_end == Some(from), color, &clip)
+                .map_err(DrawError::Target)?;
+            last_end = Some(to);
+        }
+        Ok(())
+    }
+}
