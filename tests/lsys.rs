@@ -57,7 +57,9 @@ fn the_books_plants_read_as_the_same_systems() {
             "RowOfTrees",
             "Fig1.31a",
             "Fig1.31b",
-            "Fig1.31e"
+            "Fig1.31e",
+            "Hilbert3D",
+            "Fig1.25"
         ]
     );
     for (name, axiom, rules, degrees) in FIGURE_1_24 {
