@@ -143,6 +143,17 @@ pub enum ReadError {
         /// Where the production is.
         at: Location,
     },
+    /// A module has a number of parameters no production for its symbol takes.
+    WrongArity {
+        /// The module's symbol.
+        symbol: char,
+        /// Its parameters.
+        found: u8,
+        /// What a production for it takes.
+        expected: u8,
+        /// Where the module is.
+        at: Location,
+    },
     /// The probabilities of one left side's productions do not sum to 1.
     ProbabilitiesDoNotSum {
         /// What they sum to.
@@ -359,6 +370,16 @@ impl fmt::Display for ReadError {
             Self::NotOneSymbol { at } => write!(
                 f,
                 "the predecessor at {at} is not one symbol: write `X --> ...`"
+            ),
+            Self::WrongArity {
+                symbol,
+                found,
+                expected,
+                at,
+            } => write!(
+                f,
+                "the module `{symbol}` at {at} has {found} parameters, but the productions for \
+                 `{symbol}` take {expected}: no production can rewrite it"
             ),
             Self::ProbabilitiesDoNotSum { sum, at } => {
                 write!(f, "the probabilities of the productions from {at} sum to ")?;

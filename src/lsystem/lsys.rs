@@ -403,6 +403,7 @@ impl<'a> LsysEntry<'a> {
             )?;
         }
         sums.check()?;
+        grammar.check_arities()?;
         Ok(grammar)
     }
 }

@@ -235,7 +235,8 @@ fn read_ahead<const DEPTH: usize>(
                 top.position = grammar.branch_end(at, top.end);
                 continue;
             }
-            b']' => return Ok(None),
+            // The end of the branch, or a cut: the rest of the branch is gone.
+            b']' | b'%' => return Ok(None),
             _ => {}
         }
         top.position += 1;

@@ -1,6 +1,6 @@
 //! Arithmetic and logic over module parameters, compiled once into postfix code and
 //! evaluated in fixed point with a bounded stack: `x*2`, `x+y`, `y <= 3 && !(x == 0)`,
-//! `l/1.456`, `2^n`, `sqrt(x)`.
+//! `l/1.456`, `2^n`, `sqrt(x)`, `sin(a)`, `cos(a)`, `tan(a)` (degrees).
 //!
 //! Precedence, loosest first: `||`, `&&`, comparisons (`< <= > >= == !=`), `+ -`, `* /`,
 //! unary `- !`, `^` (right-associative), then numbers, names and parentheses. Truth is 1,
@@ -8,6 +8,7 @@
 
 use heapless::Vec;
 
+use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 
 /// Most instructions of all a system's expressions together.
@@ -38,6 +39,10 @@ pub(crate) enum Instr {
     And,
     Or,
     Sqrt,
+    /// Sine, cosine and tangent of degrees.
+    Sin,
+    Cos,
+    Tan,
 }
 
 /// Where an expression's code is.
@@ -266,12 +271,19 @@ impl<const N: usize> Parser<'_, '_, '_, '_, N> {
                 core::str::from_utf8(self.bytes.get(start..start + length).unwrap_or_default())
                     .unwrap_or_default();
             self.at = start + length;
-            if name == "sqrt" && self.eat("(") {
+            let function = match name {
+                "sqrt" => Some(Instr::Sqrt),
+                "sin" => Some(Instr::Sin),
+                "cos" => Some(Instr::Cos),
+                "tan" => Some(Instr::Tan),
+                _ => None,
+            };
+            if let Some(function) = function.filter(|_| self.eat("(")) {
                 self.or()?;
                 if !self.eat(")") {
                     return Err(SyntaxError::Unexpected(self.at));
                 }
-                return self.emit(Instr::Sqrt);
+                return self.emit(function);
             }
             if let Some(index) = self.names.params.iter().position(|&p| p == name) {
                 return self.emit(Instr::Param(u8::try_from(index).unwrap_or(u8::MAX)));
@@ -330,6 +342,20 @@ pub(crate) fn evaluate(code: &[Instr], params: &[Real]) -> Result<Real, EvalErro
                 .unwrap_or(Real::ZERO)
                 .checked_sqrt()
                 .ok_or(EvalError::OutOfRange)?,
+            Instr::Sin | Instr::Cos | Instr::Tan => {
+                let degrees = stack.pop().unwrap_or(Real::ZERO);
+                let (cos, sin) = BinaryAngle::from_degrees_bits(degrees.to_bits()).cos_sin();
+                // Q30 to Q32.
+                let real = |q30: i32| Real::from_bits(i64::from(q30) << 2);
+                match instr {
+                    Instr::Sin => real(sin),
+                    Instr::Cos => real(cos),
+                    _ if cos == 0 => return Err(EvalError::DivisionByZero),
+                    _ => real(sin)
+                        .checked_div(real(cos))
+                        .ok_or(EvalError::OutOfRange)?,
+                }
+            }
             binary => {
                 let b = stack.pop().unwrap_or(Real::ZERO);
                 let a = stack.pop().unwrap_or(Real::ZERO);

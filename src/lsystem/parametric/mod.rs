@@ -23,7 +23,7 @@
 //! [`context`](self::context).
 //!
 //! Capacities are named constants; a system beyond them is a typed error naming the limit.
-//! Worst-case RAM (tested): the grammar 11 KiB (8 KiB of it the expression code, 16
+//! Worst-case RAM (tested): the grammar 11.8 KiB (8 KiB of it the expression code, 16
 //! bytes an instruction); a walk about 400 bytes a level of `DEPTH` (its frame of 56
 //! bytes, and for contexts a left context and 4 remembered expansions) and 12.3 KiB for
 //! the left contexts saved at open branches: 21 KiB for orders up to 16; context searches
@@ -72,6 +72,8 @@ struct Module {
     symbol: u8,
     first_argument: u16,
     arguments: u8,
+    /// Where it is in its string's text (for errors).
+    offset: u16,
 }
 
 /// A module of a production's left side: its symbol and number of parameters.
@@ -100,6 +102,8 @@ struct Production {
     /// Its modules, `start..end`.
     start: u16,
     end: u16,
+    /// Where its successor's text is (for errors).
+    successor_at: Place,
 }
 
 /// A module next to the one being rewritten, as a context sees it.
@@ -121,6 +125,7 @@ pub struct ParametricGrammar {
     modules: Vec<Module, MAX_MODULES>,
     productions: Vec<Production, MAX_PRODUCTIONS>,
     axiom: (u16, u16),
+    axiom_at: Place,
     /// Symbols a context skips (`ignore:`).
     ignore: SymbolSet,
     /// Symbols with a production that has a context.
@@ -216,6 +221,9 @@ impl ParametricGrammar {
             modules: Vec::new(),
             productions: Vec::new(),
             axiom: (0, 0),
+            axiom_at: Place {
+                base: Location::column(1),
+            },
             ignore: SymbolSet::default(),
             contextual: SymbolSet::default(),
             seed: 0,
@@ -273,6 +281,7 @@ impl ParametricGrammar {
                 symbol: 0,
                 first_argument: 0,
                 arguments: 0,
+                offset: 0,
             })
     }
 
@@ -368,6 +377,7 @@ impl ParametricGrammar {
                     symbol,
                     first_argument,
                     arguments,
+                    offset: u16::try_from(at).unwrap_or(u16::MAX),
                 })
                 .map_err(|_| {
                     Error::Read(ReadError::TooManySymbols {
@@ -410,6 +420,7 @@ impl ParametricGrammar {
         place: Place,
     ) -> Result<(), Error> {
         self.axiom = self.modules_of(text, &[], constants, place)?;
+        self.axiom_at = place;
         Ok(())
     }
 
@@ -477,6 +488,7 @@ impl ParametricGrammar {
                 weight,
                 start,
                 end,
+                successor_at: successor_place,
             })
             .map_err(|_| {
                 Error::Read(ReadError::TooManyRules {
@@ -508,6 +520,38 @@ impl ParametricGrammar {
         }
         values.count = module.arguments;
         Ok(values)
+    }
+
+    /// Checks that every module whose symbol has productions has as many parameters as
+    /// one of them takes: a module no production can ever rewrite is most often a typo.
+    pub(crate) fn check_arities(&self) -> Result<(), Error> {
+        let strings = core::iter::once((self.axiom, self.axiom_at)).chain(
+            self.productions
+                .iter()
+                .map(|p| ((p.start, p.end), p.successor_at)),
+        );
+        for ((start, end), place) in strings {
+            for index in start..end {
+                let module = self.module(index);
+                let mut arities = self
+                    .productions
+                    .iter()
+                    .filter(|p| p.predecessor.symbol == module.symbol)
+                    .map(|p| p.predecessor.params);
+                let Some(expected) = arities.clone().next() else {
+                    continue;
+                };
+                if !arities.any(|params| params == module.arguments) {
+                    return Err(Error::Read(ReadError::WrongArity {
+                        symbol: char::from(module.symbol),
+                        found: module.arguments,
+                        expected,
+                        at: place.at(usize::from(module.offset)),
+                    }));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The parameters a production binds (its contexts' and its predecessor's, in order)
@@ -882,6 +926,27 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
         self
     }
 
+    /// `%` (cpfg, L-Py): drops the rest of the branch it is in, up to the `]` that closes
+    /// the branch (left to be read), or to the end of the string. The rest of the branch
+    /// may go on beyond the frame `%` is in: it is then the rest of the frame above, and so
+    /// up, skipped unexpanded.
+    fn cut(&mut self) {
+        let grammar = self.grammar;
+        let mut depth = 0usize;
+        while let Some(top) = self.frames.last_mut() {
+            while top.position < top.end {
+                match grammar.module(top.position).symbol {
+                    b'[' => depth += 1,
+                    b']' if depth == 0 => return,
+                    b']' => depth -= 1,
+                    _ => {}
+                }
+                top.position += 1;
+            }
+            self.frames.pop();
+        }
+    }
+
     /// Modules read so far, context searches included.
     pub const fn symbols_read(&self) -> u64 {
         self.work.read
@@ -906,6 +971,10 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
             top.position += 1;
             let parent = *top;
             let module = grammar.read(at, &parent.bound)?;
+            if module.symbol == b'%' {
+                self.cut();
+                continue;
+            }
             let derived = DerivedModule {
                 symbol: char::from(module.symbol),
                 values: module.values,
