@@ -124,6 +124,7 @@ pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS
 pub use lsystem::lsys::{LsysEntries, LsysEntry, LsysFile};
 pub use lsystem::parametric::context::MAX_CONTEXT_SLOTS;
 pub use lsystem::parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
+pub use lsystem::parametric::environment::{Environment, TurtleState};
 pub use lsystem::parametric::space::{Segment3, Segments3, DEPTH_LEVELS};
 pub use lsystem::parametric::{
     DerivedModule, ParametricGrammar, ParametricWalker, Values, MAX_ARGUMENTS, MAX_CONSTANTS,

@@ -59,7 +59,8 @@ fn the_books_plants_read_as_the_same_systems() {
             "Fig1.31b",
             "Fig1.31e",
             "Hilbert3D",
-            "Fig1.25"
+            "Fig1.25",
+            "Topiary"
         ]
     );
     for (name, axiom, rules, degrees) in FIGURE_1_24 {
@@ -422,7 +423,13 @@ fn stochastic_parametric_choices_are_stable_and_fair() {
 fn cut_drops_the_rest_of_the_branch() {
     let derive = |text: &str, order: u32| -> String {
         let file = LsysFile::new(text);
-        let grammar = file.entries().next().unwrap().unwrap().parametric().unwrap();
+        let grammar = file
+            .entries()
+            .next()
+            .unwrap()
+            .unwrap()
+            .parametric()
+            .unwrap();
         tinyfractal::ParametricWalker::<17>::new(&grammar, order)
             .unwrap()
             .map(|module| module.unwrap().to_string())
@@ -448,7 +455,8 @@ fn trigonometry_and_arity() {
             .map(|module| module.map(|m| m.to_string()))
             .collect()
     };
-    let trig = "p {\n  axiom: A(30)\n  angle: 90\n  A(x) --> B(sin(x), cos(2*x), tan(45), sin(-x))\n}\n";
+    let trig =
+        "p {\n  axiom: A(30)\n  angle: 90\n  A(x) --> B(sin(x), cos(2*x), tan(45), sin(-x))\n}\n";
     assert_eq!(derive(trig, 1).unwrap(), "B(0.5,0.5,1,-0.5)");
     let vertical = "p {\n  axiom: A(90)\n  angle: 90\n  A(x) --> B(tan(x))\n}\n";
     assert!(matches!(
@@ -465,7 +473,10 @@ fn trigonometry_and_arity() {
             symbol: 'A',
             found: 2,
             expected: 1,
-            at: Location { line: 4, column: 12 },
+            at: Location {
+                line: 4,
+                column: 12
+            },
         }))
     );
     let unbalanced = "p {\n  axiom: A(1)\n  angle: 90\n  A(x) --> A((x+1)\n}\n";

@@ -92,6 +92,8 @@ pub struct LSystemArgs {
     pub projection: Option<tinyfractal::Projection>,
     /// `--depth-cue`: colour 3D lines by depth, nearer brighter.
     pub depth_cue: bool,
+    /// `--environment`: the world an open system grows in.
+    pub environment: Option<crate::environment::Shape>,
 }
 
 /// A window of the fitted picture: `x0,y0,x1,y1` as fractions of the target it fills
@@ -189,6 +191,10 @@ struct LSystemOptions {
     /// In 3D, colour each line by its depth, nearer brighter
     #[arg(long = "depth-cue")]
     depth_cue: bool,
+    /// The world an open system (env(k) in its productions) grows in: circle:R or heart:R,
+    /// R in turtle units, the shape standing on the turtle's start; env(0) is 1 inside
+    #[arg(long, value_name = "SHAPE:R", value_parser = crate::environment::Shape::parse)]
+    environment: Option<crate::environment::Shape>,
     #[command(flatten)]
     common: Common,
 }
@@ -447,6 +453,7 @@ fn lsystem(options: LSystemOptions) -> Result<LSystemArgs, clap::Error> {
         view: options.view,
         projection: options.projection,
         depth_cue: options.depth_cue,
+        environment: options.environment,
     })
 }
 

@@ -2,6 +2,7 @@
 //! with the `window` feature, `--window` also shows them.
 
 mod args;
+mod environment;
 mod escape_scene;
 mod gallery;
 mod output;
@@ -256,6 +257,9 @@ fn render_parametric(
     .with_depth_cue(arguments.depth_cue);
     if let Some(projection) = arguments.projection {
         system = system.with_projection(projection);
+    }
+    if let Some(shape) = &arguments.environment {
+        system = system.with_environment(shape);
     }
     let palette: &[Rgb888] = if system.projection().is_some() && arguments.depth_cue {
         &palette::DEPTH_GREENS

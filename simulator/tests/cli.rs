@@ -1228,3 +1228,45 @@ fn three_d_systems_render_and_write_segments() {
         stderr(&refused)
     );
 }
+
+/// Open systems: `--environment` gives the world; without one the error says so; a bad
+/// shape is a usage error.
+#[test]
+fn open_systems_grow_in_an_environment() {
+    let abop = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../data/abop.lsys")
+        .to_string_lossy()
+        .into_owned();
+    let out = scratch("open").join("topiary.png");
+    let args = |extra: &[&'static str]| {
+        let mut args = vec![
+            "render", "lsystem", "--file", &abop, "--name", "Topiary", "--order", "6", "--size",
+            "64x64", "--stats", "--out",
+        ];
+        args.push(out.to_str().unwrap());
+        args.extend_from_slice(extra);
+        args
+    };
+    let grown = run(&args(&["--environment", "heart:1.5"]));
+    assert_eq!(grown.status.code(), Some(0), "{}", stderr(&grown));
+    let wide = run(&args(&["--environment", "circle:50"]));
+    let count = |o: &Output| -> u64 {
+        stdout(o).split_whitespace().next().unwrap()["segments=".len()..]
+            .parse()
+            .unwrap()
+    };
+    // Pruned by the heart, it grows fewer shoots than in a circle it never leaves (3^6
+    // apices at order 6: 1 + 3 + ... + 3^5 = 364 segments).
+    assert_eq!(count(&wide), 364);
+    assert!(count(&grown) < 364, "{}", stdout(&grown));
+    let bare = run(&args(&[]));
+    assert_eq!(bare.status.code(), Some(1));
+    assert!(stderr(&bare).contains("--environment"), "{}", stderr(&bare));
+    let bad = run(&args(&["--environment", "square:3"]));
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(
+        stderr(&bad).contains("give circle or heart"),
+        "{}",
+        stderr(&bad)
+    );
+}

@@ -193,6 +193,8 @@ pub enum Unsupported {
     /// A second production for the same predecessor (which needs conditions or
     /// probabilities to choose between them).
     SecondProduction,
+    /// An open system (`env(k)`) with contexts: no reader takes them together.
+    EnvironmentWithContext,
 }
 
 impl Unsupported {
@@ -202,6 +204,9 @@ impl Unsupported {
             Self::Condition => "conditions (`pred : cond --> ...`)",
             Self::Parameters => "modules with parameters (`A(x)`)",
             Self::SecondProduction => "a second production for one predecessor",
+            Self::EnvironmentWithContext => {
+                "an environment (`env(k)`) in a system with contexts (`lc < pred > rc`)"
+            }
         }
     }
 }
@@ -389,6 +394,15 @@ impl fmt::Display for ReadError {
                     ", not 1: make them add up to 1, e.g. 0.33, 0.33 and 0.34"
                 )
             }
+            Self::Unsupported {
+                feature: Unsupported::EnvironmentWithContext,
+                at,
+            } => write!(
+                f,
+                "{} at {at}: context searches expand modules ahead of the turtle, where no \
+                 environment can be asked; use one or the other",
+                Unsupported::EnvironmentWithContext.describe()
+            ),
             Self::Unsupported { feature, at } => write!(
                 f,
                 "{} at {at}: the plain reader does not take them; read the system with \

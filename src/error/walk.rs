@@ -24,6 +24,12 @@ pub enum WalkError {
         /// The budget, in symbols read.
         budget: u64,
     },
+    /// A condition or parameter asks the environment (`env(k)`) and the walk has none: open
+    /// systems are drawn with an [`Environment`](crate::Environment).
+    NoEnvironment {
+        /// The module whose production or parameters ask.
+        symbol: char,
+    },
     /// Branches nest deeper than a context-sensitive walk can keep left contexts for.
     ContextsTooDeep {
         /// The capacity ([`MAX_CONTEXT_SLOTS`](crate::MAX_CONTEXT_SLOTS)): one slot per
@@ -70,6 +76,11 @@ impl fmt::Display for WalkError {
             Self::BudgetExhausted { budget } => write!(
                 f,
                 "the derivation needs more than {budget} symbols: lower the order or raise the budget"
+            ),
+            Self::NoEnvironment { symbol } => write!(
+                f,
+                "the productions of `{symbol}` ask their environment (`env(k)`), and there is \
+                 none: draw the system with an environment (the CLI's --environment)"
             ),
             Self::ContextsTooDeep { capacity } => write!(
                 f,

@@ -303,7 +303,7 @@ impl<'a> LsysEntry<'a> {
     /// only it interprets, the 3D turns `& ^ \\ / $`, the scale symbols `r R`, the colour
     /// modules `' ; ,` and the cut `%`.
     pub fn is_parametric(&self) -> bool {
-        let general = |string: &str| string.contains(GENERAL_MODULES);
+        let general = |string: &str| string.contains(GENERAL_MODULES) || string.contains("env(");
         self.lines().any(|(_, text)| match key_value(text) {
             Some((key, value)) => key == "axiom" && (value.contains('(') || general(value)),
             None => text.split_once("-->").is_some_and(|(left, right)| {
@@ -404,6 +404,7 @@ impl<'a> LsysEntry<'a> {
         }
         sums.check()?;
         grammar.check_arities()?;
+        grammar.check_open()?;
         Ok(grammar)
     }
 }

@@ -203,7 +203,8 @@ pub(crate) fn expand_in_context<const DEPTH: usize>(
         let _ = cursor.push(*frame);
     }
     let right = read_ahead(grammar, level, &mut cursor, &mut ahead, expansions, work)?;
-    let expansion = grammar.expand(module, at, &parent, (left.as_ref(), right.as_ref()))?;
+    // Contexts and environments do not mix (refused when read): no query here.
+    let expansion = grammar.expand(module, at, &parent, (left.as_ref(), right.as_ref()), None)?;
     expansions.put(level, id, expansion);
     Ok(expansion)
 }
@@ -241,7 +242,7 @@ fn read_ahead<const DEPTH: usize>(
         }
         top.position += 1;
         let parent = *top;
-        let module = grammar.read(at, &parent.bound)?;
+        let module = grammar.read(at, &parent.bound, None)?;
         if level >= target {
             if grammar.is_ignored(symbol) {
                 continue;
@@ -259,7 +260,7 @@ fn read_ahead<const DEPTH: usize>(
                 work,
             )?
         } else {
-            grammar.expand(&module, at, &parent, (None, None))?
+            grammar.expand(&module, at, &parent, (None, None), None)?
         };
         ahead.visit(grammar, level, &module);
         match expansion {

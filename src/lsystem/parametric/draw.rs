@@ -6,6 +6,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
+use super::environment::{Environment, Held};
 use super::space::{Segments3, SpaceFit};
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, FitError};
@@ -177,6 +178,7 @@ pub struct ParametricLSystem<
     /// How a 3D system is seen (`None`: isometric if it turns in space, else 2D).
     projection: Option<Projection>,
     depth_cue: bool,
+    environment: Option<Held<'g>>,
 }
 
 impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, STACK> {
@@ -189,7 +191,16 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
             budget: DEFAULT_BUDGET,
             projection: None,
             depth_cue: false,
+            environment: None,
         }
+    }
+
+    /// Grows an open system in `environment` (`env(k)` asks it about the turtle); open
+    /// systems are drawn with the 3D turtle, from the front unless a projection is set.
+    #[must_use]
+    pub const fn with_environment(mut self, environment: &'g dyn Environment) -> Self {
+        self.environment = Some(Held(environment));
+        self
     }
 
     /// Draws with the 3D turtle, seen through `projection` (systems whose modules turn in
@@ -214,13 +225,18 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
         match self.projection {
             Some(projection) => Some(projection),
             None if self.grammar.is_3d() => Some(Projection::default()),
+            None if self.grammar.uses_environment() => Some(Projection::Front),
             None => None,
         }
     }
 
     /// The 3D segments, in turtle units.
     pub fn segments_3d(&self) -> Result<Segments3<'g, DEPTH, STACK>, Error> {
-        Ok(Segments3::new(self.grammar, self.order)?.with_budget(self.budget))
+        let segments = Segments3::new(self.grammar, self.order)?.with_budget(self.budget);
+        Ok(match self.environment {
+            Some(Held(environment)) => segments.with_environment(environment),
+            None => segments,
+        })
     }
 
     /// Which way the first heading points on screen.

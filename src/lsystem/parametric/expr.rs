@@ -43,7 +43,13 @@ pub(crate) enum Instr {
     Sin,
     Cos,
     Tan,
+    /// `env(k)`: the environment's answer to query `k` where the walk is.
+    Env,
 }
+
+/// What answers `env(k)` during a walk: the environment, asked about the turtle where the
+/// module is expanded.
+pub(crate) type Query<'q> = Option<&'q dyn Fn(Real) -> Real>;
 
 /// Where an expression's code is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -72,6 +78,8 @@ pub(crate) enum EvalError {
     OutOfRange,
     /// Nested deeper than [`MAX_EVAL_DEPTH`].
     TooDeep,
+    /// `env(k)` with no environment to answer.
+    NoEnvironment,
 }
 
 /// Names an expression may use: the predecessor's parameters (by position) and the
@@ -276,6 +284,7 @@ impl<const N: usize> Parser<'_, '_, '_, '_, N> {
                 "sin" => Some(Instr::Sin),
                 "cos" => Some(Instr::Cos),
                 "tan" => Some(Instr::Tan),
+                "env" => Some(Instr::Env),
                 _ => None,
             };
             if let Some(function) = function.filter(|_| self.eat("(")) {
@@ -323,8 +332,8 @@ fn power(base: Real, exponent: Real) -> Result<Real, EvalError> {
     Ok(result)
 }
 
-/// Evaluates `code` with the predecessor's parameters `params`.
-pub(crate) fn evaluate(code: &[Instr], params: &[Real]) -> Result<Real, EvalError> {
+/// Evaluates `code` with the bound parameters `params`; `query` answers `env(k)`.
+pub(crate) fn evaluate(code: &[Instr], params: &[Real], query: Query) -> Result<Real, EvalError> {
     let mut stack: Vec<Real, MAX_EVAL_DEPTH> = Vec::new();
     for &instr in code {
         let value = match instr {
@@ -342,6 +351,10 @@ pub(crate) fn evaluate(code: &[Instr], params: &[Real]) -> Result<Real, EvalErro
                 .unwrap_or(Real::ZERO)
                 .checked_sqrt()
                 .ok_or(EvalError::OutOfRange)?,
+            Instr::Env => {
+                let query = query.ok_or(EvalError::NoEnvironment)?;
+                query(stack.pop().unwrap_or(Real::ZERO))
+            }
             Instr::Sin | Instr::Cos | Instr::Tan => {
                 let degrees = stack.pop().unwrap_or(Real::ZERO);
                 let (cos, sin) = BinaryAngle::from_degrees_bits(degrees.to_bits()).cos_sin();

@@ -34,6 +34,7 @@
 
 pub(crate) mod context;
 pub(crate) mod draw;
+pub(crate) mod environment;
 pub(crate) mod expr;
 pub(crate) mod space;
 
@@ -42,10 +43,10 @@ use core::fmt;
 use heapless::Vec;
 
 use self::context::{expand_in_context, Branches, Expansions, Levels};
-use self::expr::{compile, evaluate, Code, EvalError, Instr, Names, SyntaxError, MAX_CODE};
+use self::expr::{compile, evaluate, Code, EvalError, Instr, Names, Query, SyntaxError, MAX_CODE};
 use super::alphabet::SymbolSet;
 use super::walker::{check_order, child_key, kept, mix, order_too_high, pick};
-use crate::error::{Arithmetic, Error, Location, ReadError, WalkError};
+use crate::error::{Arithmetic, Error, Location, ReadError, Unsupported, WalkError};
 use crate::math::angle::Headings;
 use crate::math::decimal::write_four_decimals;
 use crate::math::wide::shift_round;
@@ -189,7 +190,7 @@ pub(crate) fn constant(
     };
     let mut code: Vec<Instr, MAX_CODE> = Vec::new();
     compile(text, &names, &mut code).map_err(|e| syntax(e, place, 0))?;
-    evaluate(&code, &[]).map_err(|_| Error::Read(ReadError::Expression { at: place.at(0) }))
+    evaluate(&code, &[], None).map_err(|_| Error::Read(ReadError::Expression { at: place.at(0) }))
 }
 
 /// The index of the `)` that closes the `(` at `open`, if any.
@@ -252,6 +253,29 @@ impl ParametricGrammar {
     /// Whether any module turns in space (`& ^ \\ / $`): the system is drawn in 3D.
     pub fn is_3d(&self) -> bool {
         self.three_d
+    }
+
+    /// Whether any expression asks the environment (`env(k)`): an open system.
+    pub fn uses_environment(&self) -> bool {
+        self.code.contains(&Instr::Env)
+    }
+
+    /// Open systems do not combine with contexts: a context search expands modules ahead of
+    /// the turtle, which an environment would have to answer about.
+    pub(crate) fn check_open(&self) -> Result<(), Error> {
+        let contextual = self
+            .productions
+            .iter()
+            .find(|p| p.left.is_some() || p.right.is_some());
+        match contextual {
+            Some(production) if self.uses_environment() => {
+                Err(Error::Read(ReadError::Unsupported {
+                    feature: Unsupported::EnvironmentWithContext,
+                    at: production.successor_at.at(0),
+                }))
+            }
+            _ => Ok(()),
+        }
     }
 
     /// Whether any production has a context.
@@ -505,7 +529,7 @@ impl ParametricGrammar {
     }
 
     /// The values of a module's parameters, given its production's bound ones.
-    fn values(&self, module: &Module, bound: &[Real]) -> Result<Values, EvalError> {
+    fn values(&self, module: &Module, bound: &[Real], query: Query) -> Result<Values, EvalError> {
         let mut values = Values::default();
         for index in 0..usize::from(module.arguments) {
             let code = self
@@ -513,7 +537,7 @@ impl ParametricGrammar {
                 .get(usize::from(module.first_argument) + index)
                 .copied()
                 .unwrap_or_default();
-            let value = evaluate(self.code(code), bound)?;
+            let value = evaluate(self.code(code), bound, query)?;
             if let Some(slot) = values.values.get_mut(index) {
                 *slot = value;
             }
@@ -562,6 +586,7 @@ impl ParametricGrammar {
         module: &Neighbour,
         left: Option<&Neighbour>,
         right: Option<&Neighbour>,
+        query: Query,
     ) -> Result<Option<Values>, EvalError> {
         let mut bound = Values::default();
         let contexts = [(production.left, left), (production.right, right)];
@@ -590,7 +615,7 @@ impl ParametricGrammar {
         }
         let holds = match production.condition {
             None => true,
-            Some(code) => evaluate(self.code(code), bound.as_slice())? != Real::ZERO,
+            Some(code) => evaluate(self.code(code), bound.as_slice(), query)? != Real::ZERO,
         };
         Ok(holds.then_some(bound))
     }
@@ -605,10 +630,11 @@ impl ParametricGrammar {
         left: Option<&Neighbour>,
         right: Option<&Neighbour>,
         key: u32,
+        query: Query,
     ) -> Result<Option<(u8, Values)>, EvalError> {
         let mut total = 0u64;
         for (index, production) in self.productions.iter().enumerate() {
-            let Some(bound) = self.binding(production, module, left, right)? else {
+            let Some(bound) = self.binding(production, module, left, right, query)? else {
                 continue;
             };
             if production.weight == 0 {
@@ -624,7 +650,7 @@ impl ParametricGrammar {
             if production.weight == 0 {
                 continue;
             }
-            let Some(bound) = self.binding(production, module, left, right)? else {
+            let Some(bound) = self.binding(production, module, left, right, query)? else {
                 continue;
             };
             let weight = u64::from(production.weight);
@@ -803,6 +829,11 @@ fn arithmetic(symbol: u8, problem: EvalError) -> Error {
             EvalError::DivisionByZero => Arithmetic::DivisionByZero,
             EvalError::OutOfRange => Arithmetic::OutOfRange,
             EvalError::TooDeep => Arithmetic::TooDeep,
+            EvalError::NoEnvironment => {
+                return Error::Walk(WalkError::NoEnvironment {
+                    symbol: char::from(symbol),
+                })
+            }
         },
     })
 }
@@ -820,10 +851,10 @@ pub(crate) enum Expansion {
 
 impl ParametricGrammar {
     /// The module at `at` of a frame whose predecessor bound `bound`, with its values.
-    fn read(&self, at: u16, bound: &Values) -> Result<Neighbour, Error> {
+    fn read(&self, at: u16, bound: &Values, query: Query) -> Result<Neighbour, Error> {
         let module = self.module(at);
         let values = self
-            .values(&module, bound.as_slice())
+            .values(&module, bound.as_slice(), query)
             .map_err(|problem| arithmetic(module.symbol, problem))?;
         Ok(Neighbour {
             symbol: module.symbol,
@@ -839,11 +870,12 @@ impl ParametricGrammar {
         at: u16,
         parent: &Frame,
         contexts: (Option<&Neighbour>, Option<&Neighbour>),
+        query: Query,
     ) -> Result<Expansion, Error> {
         let key = child_key(parent.key, at);
         let (left, right) = contexts;
         let choice = self
-            .production_for(module, left, right, key)
+            .production_for(module, left, right, key, query)
             .map_err(|problem| arithmetic(module.symbol, problem))?;
         let kept = kept(key);
         let path = path_of(parent.path, at);
@@ -947,13 +979,25 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
         }
     }
 
+    /// The next module; `query` answers `env(k)` (the environment, about the turtle where
+    /// the walk is).
+    pub(crate) fn next_queried(&mut self, query: Query) -> Option<Result<DerivedModule, Error>> {
+        match self.step(query) {
+            Ok(module) => module.map(Ok),
+            Err(error) => {
+                self.frames.clear();
+                Some(Err(error))
+            }
+        }
+    }
+
     /// Modules read so far, context searches included.
     pub const fn symbols_read(&self) -> u64 {
         self.work.read
     }
 
     /// The next module, or `None` at the end.
-    fn step(&mut self) -> Result<Option<DerivedModule>, Error> {
+    fn step(&mut self, query: Query) -> Result<Option<DerivedModule>, Error> {
         let grammar = self.grammar;
         let contextual = grammar.has_context();
         let order = usize::try_from(self.order).unwrap_or(usize::MAX);
@@ -970,7 +1014,7 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
             let at = top.position;
             top.position += 1;
             let parent = *top;
-            let module = grammar.read(at, &parent.bound)?;
+            let module = grammar.read(at, &parent.bound, query)?;
             if module.symbol == b'%' {
                 self.cut();
                 continue;
@@ -1006,7 +1050,7 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
                     &mut self.work,
                 )?
             } else {
-                grammar.expand(&module, at, &parent, (None, None))?
+                grammar.expand(&module, at, &parent, (None, None), query)?
             };
             if contextual {
                 self.levels.visit(grammar, level, &module);
@@ -1034,12 +1078,6 @@ impl<const DEPTH: usize> Iterator for ParametricWalker<'_, DEPTH> {
     type Item = Result<DerivedModule, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        match self.step() {
-            Ok(module) => module.map(Ok),
-            Err(error) => {
-                self.frames.clear();
-                Some(Err(error))
-            }
-        }
+        self.next_queried(None)
     }
 }

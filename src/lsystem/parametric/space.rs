@@ -19,6 +19,7 @@ use embedded_graphics::primitives::Rectangle;
 use heapless::Vec;
 
 use super::draw::{turtle_action, Action};
+use super::environment::{Environment, Held, TurtleState};
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, WalkError};
 use crate::lsystem::turtle::{next_segment, DEFAULT_STACK};
@@ -71,6 +72,18 @@ pub(crate) struct Turtle3<const STACK: usize> {
 }
 
 impl<const STACK: usize> Turtle3<STACK> {
+    /// Where it is and heads, for an environment.
+    pub(crate) fn state(&self) -> TurtleState {
+        TurtleState {
+            position: self.state.position,
+            heading: self
+                .state
+                .frame
+                .heading
+                .map(|h| Real::from_bits(i64::from(h) << 2)),
+        }
+    }
+
     pub(crate) fn new(turn: BinaryAngle) -> Self {
         Self {
             turn,
@@ -153,6 +166,7 @@ impl<const STACK: usize> Turtle3<STACK> {
 pub struct Segments3<'g, const DEPTH: usize = DEFAULT_DEPTH, const STACK: usize = DEFAULT_STACK> {
     walker: ParametricWalker<'g, DEPTH>,
     turtle: Turtle3<STACK>,
+    environment: Option<Held<'g>>,
     segments: u64,
     failed: bool,
 }
@@ -163,6 +177,7 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments3<'g, DEPTH, STACK> {
         Ok(Self {
             walker: ParametricWalker::new(grammar, order)?,
             turtle: Turtle3::new(binary_angle(grammar.angle())),
+            environment: None,
             segments: 0,
             failed: false,
         })
@@ -172,6 +187,13 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments3<'g, DEPTH, STACK> {
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
         self.walker = self.walker.with_budget(symbols);
+        self
+    }
+
+    /// Grows an open system in `environment`: `env(k)` asks it about the turtle.
+    #[must_use]
+    pub fn with_environment(mut self, environment: &'g dyn Environment) -> Self {
+        self.environment = Some(Held(environment));
         self
     }
 
@@ -185,9 +207,19 @@ impl<const DEPTH: usize, const STACK: usize> Iterator for Segments3<'_, DEPTH, S
     type Item = Result<Segment3, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
-        let (walker, turtle) = (&mut self.walker, &mut self.turtle);
+        let (walker, turtle, environment) = (&mut self.walker, &mut self.turtle, self.environment);
         next_segment(&mut self.failed, &mut self.segments, || {
-            Some(walker.next()?.and_then(|module| turtle.execute(&module)))
+            let module = match environment {
+                Some(Held(environment)) => {
+                    // Every module expanded before the next one is handed out is where
+                    // the turtle stands now.
+                    let state = turtle.state();
+                    let ask = |query: Real| environment.query(query, &state);
+                    walker.next_queried(Some(&ask))
+                }
+                None => walker.next(),
+            }?;
+            Some(module.and_then(|module| turtle.execute(&module)))
         })
     }
 }
