@@ -26,7 +26,7 @@ pub struct TurtleState {
 /// [`query`](Self::query)`(k, turtle)`.
 ///
 /// ```
-/// use tinyfractal::{Environment, Real, TurtleState};
+/// use tinyfractal::{Environment, LsysFile, Real, Segments3, TurtleState};
 ///
 /// /// 1 inside a circle of radius 10 about the origin, else 0.
 /// struct Circle;
@@ -37,6 +37,13 @@ pub struct TurtleState {
 ///         if x * x + y * y <= 100.0 { Real::ONE } else { Real::ZERO }
 ///     }
 /// }
+///
+/// // A shoot that grows a step wherever its apex is inside: at y = 0, 1, ..., 10.
+/// let text = "shoot {\n axiom: A\n angle: 90\n A : env(0) > 0 --> FA\n A : env(0) == 0 -->\n}\n";
+/// let grammar = LsysFile::new(text).entry("shoot")?.parametric()?;
+/// let steps = Segments3::<17, 16>::new(&grammar, 16)?.with_environment(&Circle).count();
+/// assert_eq!(steps, 11);
+/// # Ok::<(), tinyfractal::Error>(())
 /// ```
 pub trait Environment {
     /// The answer to query `query` (the `k` of `env(k)`) about `turtle`.
