@@ -60,7 +60,11 @@ fn the_books_plants_read_as_the_same_systems() {
             "Fig1.31e",
             "Hilbert3D",
             "Fig1.25",
-            "Topiary"
+            "Topiary",
+            "MonopodialTree",
+            "SympodialTree",
+            "LectureScaled",
+            "LectureParametric"
         ]
     );
     for (name, axiom, rules, degrees) in FIGURE_1_24 {

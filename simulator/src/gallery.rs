@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use tinyfractal_scenes::{Scene, GALLERY};
+use tinyfractal_scenes::{Scene, GALLERY, GENERAL_GALLERY};
 
 fn row(scene: &str, detail: &str, work: &str, elapsed: std::time::Duration, file: &Path) {
     println!(
@@ -105,6 +105,31 @@ pub fn run(out: &Path) -> Result<(), String> {
                 })
             }
         };
+        report(entry.name, result, &path);
+    }
+    for entry in &GENERAL_GALLERY {
+        let path = out.join(format!("{}.png", entry.name));
+        let result = tinyfractal::LsysFile::new(entry.source)
+            .entry(entry.system)
+            .and_then(|system| system.parametric())
+            .and_then(|grammar| {
+                crate::scene::render_general(
+                    &grammar,
+                    entry.order,
+                    (entry.size.width, entry.size.height),
+                    None,
+                    &crate::scene::GeneralLook::default(),
+                )
+            })
+            .map_err(|e| e.to_string())
+            .and_then(|rendered| {
+                save(&rendered.display, &path)?;
+                Ok((
+                    format!("order {}", entry.order),
+                    format!("{} segments", rendered.stats.segments),
+                    rendered.elapsed,
+                ))
+            });
         report(entry.name, result, &path);
     }
     if ok {

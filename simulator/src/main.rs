@@ -246,47 +246,28 @@ fn render_parametric(
     window_available(common.window)?;
     let order = arguments.order;
     let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
-    let mut display = SimulatorDisplay::<Rgb888>::new(embedded_graphics::geometry::Size::new(
-        common.width(),
-        common.height(),
-    ));
-    let started = std::time::Instant::now();
-    let mut system = tinyfractal::ParametricLSystem::<'_, { scene::DEPTH }, { scene::STACK }>::new(
-        grammar, order,
-    )
-    .with_depth_cue(arguments.depth_cue);
-    if let Some(projection) = arguments.projection {
-        system = system.with_projection(projection);
-    }
-    if let Some(shape) = &arguments.environment {
-        system = system.with_environment(shape);
-    }
-    let palette: &[Rgb888] = if system.projection().is_some() && arguments.depth_cue {
-        &palette::DEPTH_GREENS
-    } else {
-        &palette::VGA
+    let look = scene::GeneralLook {
+        projection: arguments.projection,
+        depth_cue: arguments.depth_cue,
+        environment: arguments.environment.as_ref(),
     };
-    let drawing = system
-        .fit(
-            scene::fitted_area(common.width(), common.height(), arguments.view).map_err(failed)?,
-            palette,
-        )
-        .map_err(failed)?;
-    let fit = started.elapsed();
-    let stats = drawing
-        .try_draw(&mut display)
-        .map_err(|error| match error {
-            tinyfractal::DrawError::Fractal(error) => failed(error),
-            tinyfractal::DrawError::Target(never) => match never {},
-        })?;
-    let elapsed = started.elapsed();
+    let rendered = scene::render_general(
+        grammar,
+        order,
+        (common.width(), common.height()),
+        arguments.view,
+        &look,
+    )
+    .map_err(failed)?;
     let stats_line = format!(
         "segments={} fit_ms={:.3} draw_ms={:.3} elapsed_ms={:.3}",
-        stats.segments,
-        fit.as_secs_f64() * 1e3,
-        (elapsed - fit).as_secs_f64() * 1e3,
-        elapsed.as_secs_f64() * 1e3
+        rendered.stats.segments,
+        rendered.fit.as_secs_f64() * 1e3,
+        rendered.draw.as_secs_f64() * 1e3,
+        rendered.elapsed.as_secs_f64() * 1e3
     );
+    let system = scene::general_system(grammar, order, &look);
+    let display = rendered.display;
     deliver(
         common,
         &name.to_lowercase(),

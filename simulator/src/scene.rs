@@ -86,6 +86,66 @@ pub fn render_oriented(
     render_window(grammar, order, width, height, orientation, None)
 }
 
+/// How a system of the general engine is drawn: its 3D view, depth cue, environment.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct GeneralLook<'e> {
+    pub projection: Option<tinyfractal::Projection>,
+    pub depth_cue: bool,
+    pub environment: Option<&'e crate::environment::Shape>,
+}
+
+/// The system of the general engine (parametric, contextual, 3D, open) `look` describes.
+pub fn general_system<'g>(
+    grammar: &'g ParametricGrammar,
+    order: u32,
+    look: &GeneralLook<'g>,
+) -> tinyfractal::ParametricLSystem<'g, DEPTH, STACK> {
+    let mut system =
+        tinyfractal::ParametricLSystem::new(grammar, order).with_depth_cue(look.depth_cue);
+    if let Some(projection) = look.projection {
+        system = system.with_projection(projection);
+    }
+    if let Some(shape) = look.environment {
+        system = system.with_environment(shape);
+    }
+    system
+}
+
+/// Fits and draws a system of the general engine into a `width`×`height` picture (with
+/// a `view`, that window of it: the whole is fitted to the enlarged area and clipped).
+pub fn render_general(
+    grammar: &ParametricGrammar,
+    order: u32,
+    (width, height): (u32, u32),
+    view: Option<View>,
+    look: &GeneralLook<'_>,
+) -> Result<Rendered, Error> {
+    let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(width, height));
+    let started = Instant::now();
+    let system = general_system(grammar, order, look);
+    let palette: &[Rgb888] = if system.projection().is_some() && look.depth_cue {
+        &crate::palette::DEPTH_GREENS
+    } else {
+        &VGA
+    };
+    let drawing = system.fit(fitted_area(width, height, view)?, palette)?;
+    let fit = started.elapsed();
+    let stats = drawing
+        .try_draw(&mut display)
+        .map_err(|error| match error {
+            tinyfractal::DrawError::Fractal(error) => error,
+            tinyfractal::DrawError::Target(never) => match never {},
+        })?;
+    let elapsed = started.elapsed();
+    Ok(Rendered {
+        display,
+        stats,
+        fit,
+        draw: elapsed - fit,
+        elapsed,
+    })
+}
+
 fn render_window(
     grammar: &Grammar<'_>,
     order: u32,

@@ -314,6 +314,47 @@ pub const GALLERY: [Entry; 12] = [
     escape("deep-zoom", None, SPIRAL, "0.000000001", 4000, GALLERY_SIZE, "fire"),
 ];
 
+/// The systems of ABOP's `data/abop.lsys`, drawn by the general engine.
+pub const ABOP_LSYS: &str = include_str!("../../../data/abop.lsys");
+
+/// A system of the general engine (parameters, contexts, 3D) at an order: a host scene,
+/// its grammar and walk needing tens of KiB.
+#[derive(Debug, Clone, Copy)]
+pub struct GeneralEntry {
+    /// The name (file names).
+    pub name: &'static str,
+    /// The `.lsys` text.
+    pub source: &'static str,
+    /// The system in it.
+    pub system: &'static str,
+    /// Order.
+    pub order: u32,
+    /// Size in pixels.
+    pub size: Size,
+}
+
+const fn general(name: &'static str, system: &'static str, order: u32) -> GeneralEntry {
+    GeneralEntry {
+        name,
+        source: ABOP_LSYS,
+        system,
+        order,
+        size: GALLERY_SIZE,
+    }
+}
+
+/// The gallery's systems of the general engine: ABOP's context-sensitive, 3D and
+/// parametric plants, and the lecture's.
+#[rustfmt::skip]
+pub const GENERAL_GALLERY: [GeneralEntry; 6] = [
+    general("hogeweg-plant", "Fig1.31b", 30),
+    general("hilbert-3d", "Hilbert3D", 3),
+    general("bush-3d", "Fig1.25", 7),
+    general("monopodial-tree", "MonopodialTree", 10),
+    general("sympodial-tree", "SympodialTree", 10),
+    general("lecture-plant", "LectureParametric", 7),
+];
+
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]

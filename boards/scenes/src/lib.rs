@@ -14,8 +14,8 @@ pub mod measure;
 mod wait;
 
 pub use catalogue::{
-    Entry, Scene, System, BUSH, DRAGON, FERN, GALLERY, GOSPER, HILBERT, KOCH_SNOWFLAKE, PLANT,
-    SCENES, SIERPINSKI_ARROWHEAD, STOCHASTIC_PLANT,
+    Entry, GeneralEntry, Scene, System, ABOP_LSYS, BUSH, DRAGON, FERN, GALLERY, GENERAL_GALLERY,
+    GOSPER, HILBERT, KOCH_SNOWFLAKE, PLANT, SCENES, SIERPINSKI_ARROWHEAD, STOCHASTIC_PLANT,
 };
 pub use look::{Look, Work, COLOUR, GREY};
 pub use wait::wait_for_press_or;
