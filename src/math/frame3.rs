@@ -54,7 +54,12 @@ fn renormalised(v: Unit) -> Unit {
     v.map(|x| clamp(shift_round(i128::from(x) * i128::from(factor), 31) as i64))
 }
 
-/// `v` scaled to unit length (a square root: for `$`, whose vector may be short).
+/// Vectors shorter than this (2⁻²⁰, in Q30) have no direction worth the name: rounding
+/// alone makes them.
+const SHORTEST: i128 = 1 << 10;
+
+/// `v` scaled to unit length (a square root: for `$`, whose vector may be short); `None`
+/// if it is shorter than [`SHORTEST`].
 fn normalised(v: Unit) -> Option<Unit> {
     let squared = u128::try_from(
         v.iter()
@@ -62,7 +67,9 @@ fn normalised(v: Unit) -> Option<Unit> {
             .sum::<i128>(),
     )
     .ok()?;
-    let length = i128::try_from(squared.isqrt()).ok().filter(|&l| l > 0)?;
+    let length = i128::try_from(squared.isqrt())
+        .ok()
+        .filter(|&l| l >= SHORTEST)?;
     Some(v.map(|x| clamp((i128::from(x) << 30).checked_div(length).unwrap_or(0) as i64)))
 }
 
@@ -135,7 +142,8 @@ impl Frame3 {
     }
 
     /// `$`: rolls about the heading until left is horizontal (square to the vertical +y),
-    /// as ABOP defines it; a heading straight up or down leaves the frame as it is.
+    /// as ABOP defines it; a heading within 2⁻²⁰ of straight up or down leaves the frame as
+    /// it is (left has no horizontal direction to take).
     pub(crate) fn roll_to_horizontal(&mut self) {
         let vertical = [0, ONE_Q30, 0];
         if let Some(left) = normalised(cross(vertical, self.heading)) {
