@@ -154,6 +154,36 @@ fn bench(c: &mut Criterion) {
         },
     );
     group.finish();
+    general(c);
+}
+
+/// The general engine: ABOP's monopodial tree (figure 2.6, parametric, 3D) at its order,
+/// 1,023 segments, walked, and fitted and drawn into 320×240.
+fn general(c: &mut Criterion) {
+    const TREE_SEGMENTS: u64 = 1023;
+    let file = tinyfractal::LsysFile::new(include_str!("../data/abop.lsys"));
+    let grammar = file.entry("MonopodialTree").unwrap().parametric().unwrap();
+    let mut group = c.benchmark_group("monopodial-tree-order-10");
+    group.throughput(Throughput::Elements(TREE_SEGMENTS));
+    group.bench_function("segments (walk + 3D turtle)", |b| {
+        b.iter(|| {
+            let walk: tinyfractal::Segments3 =
+                tinyfractal::Segments3::new(black_box(&grammar), 10).unwrap();
+            assert_eq!(walk.count() as u64, TREE_SEGMENTS);
+        })
+    });
+    let mut framebuffer = Framebuffer::filled(Size::new(320, 240), Rgb565::BLACK);
+    group.bench_function("fit + draw 320x240", |b| {
+        b.iter(|| {
+            let system: tinyfractal::ParametricLSystem =
+                tinyfractal::ParametricLSystem::new(black_box(&grammar), 10);
+            let drawing = system
+                .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
+                .unwrap();
+            drawing.draw(&mut framebuffer).unwrap()
+        })
+    });
+    group.finish();
 }
 
 fn size_box(size: Size) -> embedded_graphics::primitives::Rectangle {

@@ -19,6 +19,11 @@ fn main() {
     fs::write(out.join("memory.x"), memory).expect("OUT_DIR is writable");
     println!("cargo:rerun-if-changed={}", root_memory.display());
     println!("cargo:rerun-if-changed=build.rs");
+    // The general engine's scenes need more RAM than the micro:bit has.
+    println!("cargo::rustc-check-cfg=cfg(measure_general)");
+    if !target.starts_with("thumbv6m") {
+        println!("cargo:rustc-cfg=measure_general");
+    }
     // Search paths for this package's binaries only: `rustc-link-search` would reach every
     // crate that depends on this one, and two `memory.x` files would compete.
     if env::var("CARGO_CFG_TARGET_OS").as_deref() == Ok("none") {

@@ -32,8 +32,8 @@ pub enum WalkError {
     },
     /// Branches nest deeper than a context-sensitive walk can keep left contexts for.
     ContextsTooDeep {
-        /// The capacity ([`MAX_CONTEXT_SLOTS`](crate::MAX_CONTEXT_SLOTS)): one slot per
-        /// level below each open branch.
+        /// The walk's `SLOTS` ([`MAX_CONTEXT_SLOTS`](crate::MAX_CONTEXT_SLOTS) unless
+        /// set): one slot per level below each open branch.
         capacity: usize,
     },
     /// Turtle coordinates or the step left the fixed-point range.
@@ -85,7 +85,8 @@ impl fmt::Display for WalkError {
             Self::ContextsTooDeep { capacity } => write!(
                 f,
                 "branches nest too deep to keep the left contexts of a context-sensitive system \
-                 ({capacity} slots, one per level below each open branch): lower the order"
+                 ({capacity} slots, one per level below each open branch): lower the order or raise \
+                 the walk's SLOTS"
             ),
             Self::Overflow => write!(
                 f,

@@ -316,8 +316,16 @@ impl<'a> LsysEntry<'a> {
     /// `A(x,y) : condition --> successor` (ABOP 1.10). Context and probabilities are
     /// [`ReadError::Unsupported`] here.
     pub fn parametric(&self) -> Result<ParametricGrammar, Error> {
-        let mut constants: heapless::Vec<(&'a str, Real), MAX_CONSTANTS> = heapless::Vec::new();
         let mut grammar = ParametricGrammar::new();
+        self.parametric_into(&mut grammar)?;
+        Ok(grammar)
+    }
+
+    /// [`parametric`](Self::parametric) into `grammar` (emptied first), in place: a grammar
+    /// is 12 KiB, and each move of one is a copy on an MCU's stack.
+    pub fn parametric_into(&self, grammar: &mut ParametricGrammar) -> Result<(), Error> {
+        grammar.clear();
+        let mut constants: heapless::Vec<(&'a str, Real), MAX_CONSTANTS> = heapless::Vec::new();
         let mut axiom = None;
         for (line, text) in self.lines() {
             let place = |part: &str| Place {
@@ -404,8 +412,7 @@ impl<'a> LsysEntry<'a> {
         }
         sums.check()?;
         grammar.check_arities()?;
-        grammar.check_open()?;
-        Ok(grammar)
+        grammar.check_open()
     }
 }
 

@@ -10,14 +10,14 @@
 
 use super::real::Real;
 use super::trig::{BinaryAngle, ONE_Q30};
-use super::wide::shift_round;
 
 /// A vector with Q30 components (2³⁰ = 1.0).
 pub(crate) type Unit = [i32; 3];
 
-/// The product of two Q30 values, in Q30, rounded.
+/// The product of two Q30 values, in Q30, rounded half up: 64-bit arithmetic (the product
+/// of two values below 2³¹ fits), not a 128-bit library call on Cortex-M.
 fn mul(a: i32, b: i32) -> i64 {
-    shift_round(i128::from(a) * i128::from(b), 30) as i64
+    (i64::from(a) * i64::from(b) + (1 << 29)) >> 30
 }
 
 /// `a·cos + b·sin` for Q30 vectors and a Q30 cosine and sine.
@@ -50,27 +50,24 @@ fn cross(a: Unit, b: Unit) -> Unit {
 /// `v` rescaled towards unit length by one Newton step: exact enough for a vector already
 /// within 2⁻²⁰ of it, as every rotated one is.
 fn renormalised(v: Unit) -> Unit {
+    // |x| <= 2^31 and factor < 2^32: the product fits in 64 bits.
     let factor = 3 * i64::from(ONE_Q30) - dot(v, v);
-    v.map(|x| clamp(shift_round(i128::from(x) * i128::from(factor), 31) as i64))
+    v.map(|x| clamp((i64::from(x) * factor + (1 << 30)) >> 31))
 }
 
 /// Vectors shorter than this (2⁻²⁰, in Q30) have no direction worth the name: rounding
 /// alone makes them.
-const SHORTEST: i128 = 1 << 10;
+const SHORTEST: i64 = 1 << 10;
 
 /// `v` scaled to unit length (a square root: for `$`, whose vector may be short); `None`
 /// if it is shorter than [`SHORTEST`].
 fn normalised(v: Unit) -> Option<Unit> {
-    let squared = u128::try_from(
-        v.iter()
-            .map(|&x| i128::from(x) * i128::from(x))
-            .sum::<i128>(),
-    )
-    .ok()?;
-    let length = i128::try_from(squared.isqrt())
+    // Three squares of values below 2^31: below 2^63.
+    let squared: u64 = v.iter().map(|&x| u64::from(x.unsigned_abs()).pow(2)).sum();
+    let length = i64::try_from(squared.isqrt())
         .ok()
         .filter(|&l| l >= SHORTEST)?;
-    Some(v.map(|x| clamp((i128::from(x) << 30).checked_div(length).unwrap_or(0) as i64)))
+    Some(v.map(|x| clamp((i64::from(x) << 30) / length)))
 }
 
 /// Which axis a rotation turns about.

@@ -158,6 +158,27 @@ mod firmware {
                 Optional(fixed_cost)
             );
         }
+        // The general engine's scenes, where the RAM holds them (not the micro:bit's).
+        #[cfg(measure_general)]
+        for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
+            let bottom = paint_stack();
+            let mut target = Checksum::new();
+            let mut work = Work::Segments(0);
+            let instructions = clock.measure(|| {
+                work = entry.draw(&mut target, &GREY).unwrap_or(Work::Segments(0));
+            });
+            let stack = stack_used(bottom);
+            let (Work::Segments(work) | Work::Iterations(work)) = work;
+            hprintln!(
+                "measure scene={} instructions={} work={} checksum={} pixels={} stack={} baseline_f32=null baseline_fixed20=null",
+                entry.name,
+                instructions,
+                work,
+                target.value,
+                target.pixels,
+                stack
+            );
+        }
         hprintln!("measure done");
         debug::exit(debug::EXIT_SUCCESS);
         loop {

@@ -355,6 +355,17 @@ pub const GENERAL_GALLERY: [GeneralEntry; 6] = [
     general("lecture-plant", "LectureParametric", 7),
 ];
 
+/// The general engine's scenes measured on Cortex-M3 and M4 (not M0: the micro:bit's
+/// 16 KiB cannot hold the engine's grammar and walk): ABOP's monopodial tree (figure 2.6,
+/// a parametric 3D system) at its order on the OLED.
+pub const GENERAL_SCENES: [GeneralEntry; 1] = [GeneralEntry {
+    name: "monopodial-tree",
+    source: ABOP_LSYS,
+    system: "MonopodialTree",
+    order: 10,
+    size: OLED,
+}];
+
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]

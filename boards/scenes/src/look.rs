@@ -5,9 +5,12 @@ use embedded_graphics::{
     prelude::*,
 };
 use tinyfractal::FitError;
-use tinyfractal::{DrawError, Error, EscapeTime, Gradient, LSystem};
+use tinyfractal::{
+    DrawError, Error, EscapeTime, Gradient, LSystem, LsysFile, ParametricGrammar,
+    ParametricLSystem, DEFAULT_DEPTH, DEFAULT_STACK,
+};
 
-use crate::catalogue::{escape_view, Scene};
+use crate::catalogue::{escape_view, GeneralEntry, Scene};
 
 /// The colours a display draws the scenes in.
 #[derive(Debug, Clone, Copy)]
@@ -102,5 +105,33 @@ impl Scene {
                 Ok(Work::Iterations(stats.iterations))
             }
         }
+    }
+}
+
+impl GeneralEntry {
+    /// Draws the system over the whole of `target`, cleared to `look.background` first,
+    /// in `look.ink`. Its grammar (12 KiB) and a walk (about 8 KiB, with no room for
+    /// contexts: the scenes have none) are on the stack while it draws: a scene for cores
+    /// with the RAM for them.
+    #[inline(never)]
+    pub fn draw<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+    ) -> Result<Work, DrawError<D::Error>>
+    where
+        D: DrawTarget,
+    {
+        target.clear(look.background).map_err(DrawError::Target)?;
+        let mut grammar = ParametricGrammar::new();
+        LsysFile::new(self.source)
+            .entry(self.system)?
+            .parametric_into(&mut grammar)?;
+        let ink = [look.ink];
+        let drawing =
+            ParametricLSystem::<'_, DEFAULT_DEPTH, DEFAULT_STACK, 0>::new(&grammar, self.order)
+                .fit(target.bounding_box(), &ink)?;
+        let stats = drawing.try_draw(target)?;
+        Ok(Work::Segments(stats.segments))
     }
 }

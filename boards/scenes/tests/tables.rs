@@ -175,6 +175,44 @@ fn lsystem_table(results: &Value) -> String {
     table
 }
 
+/// The general engine: ABOP's monopodial tree (figure 2.6) at order 10, on the host
+/// (benches) and on Cortex-M3 and M4 (the measuring firmware, 128×64).
+fn general_table(records: &[Value], results: &Value) -> String {
+    const SEGMENTS: u64 = 1023;
+    let mut table =
+        String::from("| where | what | time or instructions | per segment |\n|---|---|---|---|\n");
+    let times = &results["times_ns"];
+    for (key, what) in [
+        (
+            "segments (walk + 3D turtle)",
+            "walk + 3D turtle (`Segments3`)",
+        ),
+        ("fit + draw 320x240", "fit + draw into 320×240"),
+    ] {
+        let ns = number(times, &format!("monopodial-tree-order-10 / {key}")).unwrap_or(0);
+        table.push_str(&format!(
+            "| host | {what} | {} | {:.0} k segments per second |
+",
+            milliseconds(ns),
+            SEGMENTS as f64 / (ns.max(1) as f64 / 1e9) / 1e3
+        ));
+    }
+    for record in records
+        .iter()
+        .filter(|r| text(r, "scene") == "monopodial-tree")
+    {
+        let instructions = number(record, "instructions").unwrap_or(0);
+        let work = number(record, "work").unwrap_or(1).max(1);
+        table.push_str(&format!(
+            "| {} | read the text, fit and draw into 128×64 | {} instructions | {} instructions |\n",
+            text(record, "core"),
+            thousands(instructions),
+            thousands((instructions as f64 / work as f64).round() as u64),
+        ));
+    }
+    table
+}
+
 /// The escape-time benches: two views at 320×240, max-iter 256.
 fn escape_table(results: &Value) -> String {
     let mut table = String::from(
@@ -248,6 +286,7 @@ fn performance_tables_are_generated_from_the_measurements() {
         ("summary", summary_table(records)),
         ("lsystem-bench", lsystem_table(&results)),
         ("escape-bench", escape_table(&results)),
+        ("general-bench", general_table(records, &results)),
     ];
     let bless = std::env::var_os("TINYFRACTAL_BLESS").is_some();
     let mut stale = Vec::new();

@@ -26,8 +26,10 @@ use heapless::Vec;
 use super::{path_of, Expansion, Frame, Neighbour, ParametricGrammar, Work};
 use crate::error::{Error, WalkError};
 
-/// Most left contexts saved at once: one per level below each open branch, over all the
-/// branches open at a place of the walk (ABOP figure 1.31 (b) at order 30 needs 144).
+/// Left contexts a walk saves at once by default (its `SLOTS`): one per level below each
+/// open branch, over all the branches open at a place of the walk (ABOP figure 1.31 (b)
+/// at order 30 needs 144). 48 bytes each; a walk of a system without contexts needs none
+/// (`SLOTS = 0` saves 12 KiB on an MCU).
 pub const MAX_CONTEXT_SLOTS: usize = 256;
 
 /// How many expansions computed while reading ahead a walk remembers per level.
@@ -65,13 +67,13 @@ impl<const DEPTH: usize> Levels<DEPTH> {
 
 /// The walk's left contexts saved at each open branch, restored at its end.
 #[derive(Debug, Clone)]
-pub(crate) struct Branches {
-    saved: Vec<Option<Neighbour>, MAX_CONTEXT_SLOTS>,
+pub(crate) struct Branches<const SLOTS: usize> {
+    saved: Vec<Option<Neighbour>, SLOTS>,
     /// The level of each open branch.
-    levels: Vec<u8, MAX_CONTEXT_SLOTS>,
+    levels: Vec<u8, SLOTS>,
 }
 
-impl Branches {
+impl<const SLOTS: usize> Branches<SLOTS> {
     pub(crate) const fn new() -> Self {
         Self {
             saved: Vec::new(),
@@ -86,11 +88,9 @@ impl Branches {
         level: usize,
         order: usize,
     ) -> Result<(), Error> {
-        let full = Error::Walk(WalkError::ContextsTooDeep {
-            capacity: MAX_CONTEXT_SLOTS,
-        });
+        let full = Error::Walk(WalkError::ContextsTooDeep { capacity: SLOTS });
         let lasts = levels.lasts.get(level..order).unwrap_or_default();
-        if self.saved.len() + lasts.len() > MAX_CONTEXT_SLOTS {
+        if self.saved.len() + lasts.len() > SLOTS {
             return Err(full);
         }
         for &last in lasts {

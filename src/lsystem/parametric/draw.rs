@@ -6,6 +6,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
+use super::context::MAX_CONTEXT_SLOTS;
 use super::environment::{Environment, Held};
 use super::space::{Segments3, SpaceFit};
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
@@ -15,7 +16,7 @@ use crate::lsystem::drawing::{
     colors, draw_segment, fitted_start, measure, only_target_errors, pixel_box, Bounds,
 };
 use crate::lsystem::turtle::{next_segment, Segment, Start, Turtle, WalkStats, DEFAULT_STACK};
-use crate::lsystem::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
+use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 use crate::render::fit::{Orientation, DEFAULT_MARGIN};
@@ -120,14 +121,17 @@ pub struct ParametricSegments<
     'g,
     const DEPTH: usize = DEFAULT_DEPTH,
     const STACK: usize = DEFAULT_STACK,
+    const SLOTS: usize = MAX_CONTEXT_SLOTS,
 > {
-    walker: ParametricWalker<'g, DEPTH>,
+    walker: ParametricWalker<'g, DEPTH, SLOTS>,
     turtle: Turtle<'g, STACK>,
     segments: u64,
     failed: bool,
 }
 
-impl<'g, const DEPTH: usize, const STACK: usize> ParametricSegments<'g, DEPTH, STACK> {
+impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
+    ParametricSegments<'g, DEPTH, STACK, SLOTS>
+{
     /// The segments of `grammar` at `order` from `start`.
     pub fn new(grammar: &'g ParametricGrammar, order: u32, start: Start) -> Result<Self, Error> {
         Ok(Self {
@@ -149,7 +153,9 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricSegments<'g, DEPTH, S
     }
 }
 
-impl<const DEPTH: usize, const STACK: usize> Iterator for ParametricSegments<'_, DEPTH, STACK> {
+impl<const DEPTH: usize, const STACK: usize, const SLOTS: usize> Iterator
+    for ParametricSegments<'_, DEPTH, STACK, SLOTS>
+{
     type Item = Result<Segment, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
@@ -170,6 +176,7 @@ pub struct ParametricLSystem<
     'g,
     const DEPTH: usize = DEFAULT_DEPTH,
     const STACK: usize = DEFAULT_STACK,
+    const SLOTS: usize = MAX_CONTEXT_SLOTS,
 > {
     grammar: &'g ParametricGrammar,
     order: u32,
@@ -181,7 +188,9 @@ pub struct ParametricLSystem<
     environment: Option<Held<'g>>,
 }
 
-impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, STACK> {
+impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
+    ParametricLSystem<'g, DEPTH, STACK, SLOTS>
+{
     /// `grammar` derived `order` times, heading up (ABOP's plants grow up).
     pub const fn new(grammar: &'g ParametricGrammar, order: u32) -> Self {
         Self {
@@ -231,11 +240,39 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
     }
 
     /// The 3D segments, in turtle units.
-    pub fn segments_3d(&self) -> Result<Segments3<'g, DEPTH, STACK>, Error> {
-        let segments = Segments3::new(self.grammar, self.order)?.with_budget(self.budget);
-        Ok(match self.environment {
-            Some(Held(environment)) => segments.with_environment(environment),
-            None => segments,
+    pub fn segments_3d(&self) -> Result<Segments3<'g, DEPTH, STACK, SLOTS>, Error> {
+        check_order(self.order, DEPTH)?;
+        Ok(self.walk_3d())
+    }
+
+    /// The 3D walk, built in one piece (an order too high is its first item).
+    #[inline(always)]
+    fn walk_3d(&self) -> Segments3<'g, DEPTH, STACK, SLOTS> {
+        Segments3::starting(self.grammar, self.order, self.budget, self.environment)
+    }
+
+    /// [`fit`](Self::fit) in 3D, out of line: its walks do not share a frame with the
+    /// 2D fit's.
+    #[inline(never)]
+    fn fit_3d<P>(
+        &self,
+        projection: Projection,
+        area: &Rectangle,
+        palette: P,
+    ) -> Result<ParametricDrawing<'g, P, DEPTH, STACK, SLOTS>, Error> {
+        let space = SpaceFit::new(
+            || self.walk_3d(),
+            projection,
+            self.depth_cue,
+            area,
+            DEFAULT_MARGIN,
+        )?;
+        Ok(ParametricDrawing {
+            system: *self,
+            start: Start::default(),
+            palette,
+            bounding_box: space.bounding_box,
+            space: Some(space),
         })
     }
 
@@ -253,7 +290,7 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
         self
     }
 
-    fn segments(&self, start: Start) -> Result<ParametricSegments<'g, DEPTH, STACK>, Error> {
+    fn segments(&self, start: Start) -> Result<ParametricSegments<'g, DEPTH, STACK, SLOTS>, Error> {
         Ok(ParametricSegments::new(self.grammar, self.order, start)?.budget(self.budget))
     }
 
@@ -263,27 +300,25 @@ impl<'g, const DEPTH: usize, const STACK: usize> ParametricLSystem<'g, DEPTH, ST
         &self,
         area: Rectangle,
         palette: &'p [C],
-    ) -> Result<ParametricDrawing<'g, Colors<'p, C>, DEPTH, STACK>, Error> {
+    ) -> Result<ParametricDrawing<'g, Colors<'p, C>, DEPTH, STACK, SLOTS>, Error> {
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let palette = colors(palette)?;
-        if let Some(projection) = self.projection() {
-            let space = SpaceFit::new(
-                || self.segments_3d(),
-                projection,
-                self.depth_cue,
-                &area,
-                DEFAULT_MARGIN,
-            )?;
-            return Ok(ParametricDrawing {
-                system: *self,
-                start: Start::default(),
-                palette,
-                bounding_box: space.bounding_box,
-                space: Some(space),
-            });
+        match self.projection() {
+            Some(projection) => self.fit_3d(projection, &area, palette),
+            None => self.fit_2d(&area, palette),
         }
+    }
+
+    /// [`fit`](Self::fit) in 2D, out of line (its walks off the 3D path's stack).
+    #[inline(never)]
+    fn fit_2d<P>(
+        &self,
+        area: &Rectangle,
+        palette: P,
+    ) -> Result<ParametricDrawing<'g, P, DEPTH, STACK, SLOTS>, Error> {
+        let area = *area;
         let bounds = measure(self.segments(Start::default())?)?;
         let start = fitted_start(bounds, Real::ONE, self.orientation, &area, DEFAULT_MARGIN)?;
         let pixels: Option<Bounds> = measure(self.segments(start)?)?;
@@ -304,28 +339,35 @@ pub struct ParametricDrawing<
     P,
     const DEPTH: usize = DEFAULT_DEPTH,
     const STACK: usize = DEFAULT_STACK,
+    const SLOTS: usize = MAX_CONTEXT_SLOTS,
 > {
-    system: ParametricLSystem<'g, DEPTH, STACK>,
+    system: ParametricLSystem<'g, DEPTH, STACK, SLOTS>,
     start: Start,
     palette: P,
     bounding_box: Rectangle,
     space: Option<SpaceFit>,
 }
 
-impl<P: Palette, const DEPTH: usize, const STACK: usize> ParametricDrawing<'_, P, DEPTH, STACK> {
+impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
+    ParametricDrawing<'_, P, DEPTH, STACK, SLOTS>
+{
     /// Draws, reporting the engine's errors too.
     pub fn try_draw<D>(&self, target: &mut D) -> Result<WalkStats, DrawError<D::Error>>
     where
         D: DrawTarget<Color = P::Color>,
     {
-        if let Some(space) = self.space {
-            let mut segments = self.system.segments_3d()?;
-            space.draw(target, segments.by_ref(), &self.palette)?;
-            return Ok(WalkStats {
-                segments: segments.segments(),
-                ..WalkStats::default()
-            });
+        match self.space {
+            Some(space) => self.draw_3d(&space, target),
+            None => self.draw_2d(target),
         }
+    }
+
+    /// The 2D draw, out of line (its walk off the 3D path's stack).
+    #[inline(never)]
+    fn draw_2d<D>(&self, target: &mut D) -> Result<WalkStats, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
         let clip = target.bounding_box();
         let mut segments = self.system.segments(self.start)?;
         let mut last_end = None;
@@ -350,8 +392,26 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> ParametricDrawing<'_, P
     }
 }
 
-impl<P: Palette, const DEPTH: usize, const STACK: usize> Drawable
-    for ParametricDrawing<'_, P, DEPTH, STACK>
+impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
+    ParametricDrawing<'_, P, DEPTH, STACK, SLOTS>
+{
+    /// The 3D draw, out of line: its walk does not share a frame with the 2D draw's.
+    #[inline(never)]
+    fn draw_3d<D>(&self, space: &SpaceFit, target: &mut D) -> Result<WalkStats, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let mut segments = self.system.walk_3d();
+        space.draw(target, segments.by_ref(), &self.palette)?;
+        Ok(WalkStats {
+            segments: segments.segments(),
+            ..WalkStats::default()
+        })
+    }
+}
+
+impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize> Drawable
+    for ParametricDrawing<'_, P, DEPTH, STACK, SLOTS>
 {
     type Color = P::Color;
     type Output = WalkStats;
@@ -364,8 +424,8 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> Drawable
     }
 }
 
-impl<P, const DEPTH: usize, const STACK: usize> Dimensions
-    for ParametricDrawing<'_, P, DEPTH, STACK>
+impl<P, const DEPTH: usize, const STACK: usize, const SLOTS: usize> Dimensions
+    for ParametricDrawing<'_, P, DEPTH, STACK, SLOTS>
 {
     fn bounding_box(&self) -> Rectangle {
         self.bounding_box

@@ -42,7 +42,7 @@ use core::fmt;
 
 use heapless::Vec;
 
-use self::context::{expand_in_context, Branches, Expansions, Levels};
+use self::context::{expand_in_context, Branches, Expansions, Levels, MAX_CONTEXT_SLOTS};
 use self::expr::{compile, evaluate, Code, EvalError, Instr, Names, Query, SyntaxError, MAX_CODE};
 use super::alphabet::SymbolSet;
 use super::walker::{check_order, child_key, kept, mix, order_too_high, pick};
@@ -230,6 +230,21 @@ impl ParametricGrammar {
             seed: 0,
             three_d: false,
         }
+    }
+
+    /// Empties it, in place.
+    pub(crate) fn clear(&mut self) {
+        self.angle = Angle::Divisions(4);
+        self.headings = Headings::quarter_turns();
+        self.code.clear();
+        self.arguments.clear();
+        self.modules.clear();
+        self.productions.clear();
+        self.axiom = (0, 0);
+        self.ignore = SymbolSet::default();
+        self.contextual = SymbolSet::default();
+        self.seed = 0;
+        self.three_d = false;
     }
 
     /// Seeds the choices among stochastic productions (see
@@ -911,43 +926,61 @@ impl ParametricGrammar {
 /// sees, and finds right contexts by reading ahead from its frames (the README's `.lsys`
 /// section says how, and what it costs).
 #[derive(Debug, Clone)]
-pub struct ParametricWalker<'g, const DEPTH: usize = { super::walker::DEFAULT_DEPTH }> {
+pub struct ParametricWalker<
+    'g,
+    const DEPTH: usize = { super::walker::DEFAULT_DEPTH },
+    const SLOTS: usize = MAX_CONTEXT_SLOTS,
+> {
     grammar: &'g ParametricGrammar,
     order: u32,
     frames: Vec<Frame, DEPTH>,
+    /// An error to hand out first (an order beyond `DEPTH`).
+    pending: Option<Error>,
     work: Work,
     levels: Levels<DEPTH>,
-    branches: Branches,
+    branches: Branches<SLOTS>,
     expansions: Expansions<DEPTH>,
 }
 
-impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
+impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLOTS> {
     /// A walk of `grammar` at `order`; fails if the order needs more than `DEPTH` levels.
     pub fn new(grammar: &'g ParametricGrammar, order: u32) -> Result<Self, Error> {
         check_order(order, DEPTH)?;
+        Ok(Self::starting(
+            grammar,
+            order,
+            super::walker::DEFAULT_BUDGET,
+        ))
+    }
+
+    /// A walk of `grammar` at `order` capped at `budget` modules, built in one piece (a
+    /// walk is kilobytes: every `Result` or builder step around it is a copy on an MCU's
+    /// stack). An order beyond `DEPTH` is its first item, an error.
+    #[inline(always)]
+    pub(crate) fn starting(grammar: &'g ParametricGrammar, order: u32, budget: u64) -> Self {
         let mut frames = Vec::new();
-        let (position, end) = grammar.axiom;
-        frames
-            .push(Frame {
+        let pending = check_order(order, DEPTH).err();
+        if pending.is_none() {
+            let (position, end) = grammar.axiom;
+            // Cannot fail: DEPTH > order >= 0.
+            let _ = frames.push(Frame {
                 position,
                 end,
                 key: kept(mix(grammar.seed)),
                 path: 0,
                 bound: Values::default(),
-            })
-            .map_err(|_| order_too_high(order, DEPTH))?;
-        Ok(Self {
+            });
+        }
+        Self {
             grammar,
             order,
             frames,
-            work: Work {
-                read: 0,
-                budget: super::walker::DEFAULT_BUDGET,
-            },
+            pending,
+            work: Work { read: 0, budget },
             levels: Levels::new(),
             branches: Branches::new(),
             expansions: Expansions::new(),
-        })
+        }
     }
 
     /// Stops the walk with [`WalkError::BudgetExhausted`] after `symbols` modules are read
@@ -982,6 +1015,9 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
     /// The next module; `query` answers `env(k)` (the environment, about the turtle where
     /// the walk is).
     pub(crate) fn next_queried(&mut self, query: Query) -> Option<Result<DerivedModule, Error>> {
+        if let Some(error) = self.pending.take() {
+            return Some(Err(error));
+        }
         match self.step(query) {
             Ok(module) => module.map(Ok),
             Err(error) => {
@@ -1074,7 +1110,7 @@ impl<'g, const DEPTH: usize> ParametricWalker<'g, DEPTH> {
     }
 }
 
-impl<const DEPTH: usize> Iterator for ParametricWalker<'_, DEPTH> {
+impl<const DEPTH: usize, const SLOTS: usize> Iterator for ParametricWalker<'_, DEPTH, SLOTS> {
     type Item = Result<DerivedModule, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {

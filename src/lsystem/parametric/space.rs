@@ -18,12 +18,13 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use heapless::Vec;
 
+use super::context::MAX_CONTEXT_SLOTS;
 use super::draw::{turtle_action, Action};
 use super::environment::{Environment, Held, TurtleState};
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, WalkError};
 use crate::lsystem::turtle::{next_segment, DEFAULT_STACK};
-use crate::lsystem::walker::DEFAULT_DEPTH;
+use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::math::frame3::{Axis, Frame3};
 use crate::math::trig::BinaryAngle;
 use crate::math::{Angle, Real};
@@ -163,24 +164,43 @@ impl<const STACK: usize> Turtle3<STACK> {
 
 /// The segments a 3D system draws at an order, in turtle units, computed on the fly.
 #[derive(Debug, Clone)]
-pub struct Segments3<'g, const DEPTH: usize = DEFAULT_DEPTH, const STACK: usize = DEFAULT_STACK> {
-    walker: ParametricWalker<'g, DEPTH>,
+pub struct Segments3<
+    'g,
+    const DEPTH: usize = DEFAULT_DEPTH,
+    const STACK: usize = DEFAULT_STACK,
+    const SLOTS: usize = MAX_CONTEXT_SLOTS,
+> {
+    walker: ParametricWalker<'g, DEPTH, SLOTS>,
     turtle: Turtle3<STACK>,
     environment: Option<Held<'g>>,
     segments: u64,
     failed: bool,
 }
 
-impl<'g, const DEPTH: usize, const STACK: usize> Segments3<'g, DEPTH, STACK> {
+impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
+    Segments3<'g, DEPTH, STACK, SLOTS>
+{
     /// The segments of `grammar` at `order`, from the origin, one unit a step.
     pub fn new(grammar: &'g ParametricGrammar, order: u32) -> Result<Self, Error> {
-        Ok(Self {
-            walker: ParametricWalker::new(grammar, order)?,
+        check_order(order, DEPTH)?;
+        Ok(Self::starting(grammar, order, DEFAULT_BUDGET, None))
+    }
+
+    /// Built in one piece, as [`ParametricWalker::starting`] is.
+    #[inline(always)]
+    pub(crate) fn starting(
+        grammar: &'g ParametricGrammar,
+        order: u32,
+        budget: u64,
+        environment: Option<Held<'g>>,
+    ) -> Self {
+        Self {
+            walker: ParametricWalker::starting(grammar, order, budget),
             turtle: Turtle3::new(binary_angle(grammar.angle())),
-            environment: None,
+            environment,
             segments: 0,
             failed: false,
-        })
+        }
     }
 
     /// Caps the walk at `symbols` modules.
@@ -203,7 +223,9 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments3<'g, DEPTH, STACK> {
     }
 }
 
-impl<const DEPTH: usize, const STACK: usize> Iterator for Segments3<'_, DEPTH, STACK> {
+impl<const DEPTH: usize, const STACK: usize, const SLOTS: usize> Iterator
+    for Segments3<'_, DEPTH, STACK, SLOTS>
+{
     type Item = Result<Segment3, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {
@@ -250,7 +272,7 @@ struct Extent {
 
 /// The projected extent of `segments`, or `None` for a picture of nothing.
 fn extent(
-    segments: impl Iterator<Item = Result<Segment3, Error>>,
+    segments: &mut impl Iterator<Item = Result<Segment3, Error>>,
     projection: Projection,
     eye: Option<Eye>,
 ) -> Result<Option<Extent>, Error> {
@@ -274,6 +296,19 @@ fn extent(
     Ok(extent)
 }
 
+/// The projected extent of a fresh walk, out of line: one walk on the stack at a time.
+#[inline(never)]
+fn measured<I>(
+    segments: &impl Fn() -> I,
+    projection: Projection,
+    eye: Option<Eye>,
+) -> Result<Option<Extent>, Error>
+where
+    I: Iterator<Item = Result<Segment3, Error>>,
+{
+    extent(&mut segments(), projection, eye)
+}
+
 fn middle(a: Real, b: Real) -> Real {
     Real::from_bits(a.to_bits() / 2 + b.to_bits() / 2)
 }
@@ -282,7 +317,7 @@ impl SpaceFit {
     /// Fits the picture `segments()` draws into `area` less `margin`: one walk to measure
     /// (two for a perspective, whose eye is placed from the first).
     pub(crate) fn new<I>(
-        segments: impl Fn() -> Result<I, Error>,
+        segments: impl Fn() -> I,
         projection: Projection,
         depth_cue: bool,
         area: &Rectangle,
@@ -291,7 +326,9 @@ impl SpaceFit {
     where
         I: Iterator<Item = Result<Segment3, Error>>,
     {
-        let mut seen = extent(segments()?, projection, None)?;
+        // Each walk read through `&mut` (out of line, one at a time): a walk is a large
+        // value, and moving it into a call would copy it (more stack on an MCU).
+        let mut seen = measured(&segments, projection, None)?;
         let mut eye = None;
         if let (Projection::Perspective { distance }, Some(e)) = (projection, seen) {
             // Half the box's three extents together bound its radius from above.
@@ -313,7 +350,7 @@ impl SpaceFit {
                     .checked_mul(distance)
                     .ok_or(Error::Walk(WalkError::Overflow))?,
             });
-            seen = extent(segments()?, projection, eye)?;
+            seen = measured(&segments, projection, eye)?;
         }
         let zero = Seen {
             x: Real::ZERO,
