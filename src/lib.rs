@@ -106,6 +106,7 @@ struct ReadmeDoctests;
 
 mod error;
 mod escape;
+mod ifs;
 mod lsystem;
 mod math;
 mod render;
@@ -117,6 +118,12 @@ pub use error::{
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
 pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
+pub use ifs::chaos::{ChaosGame, IfsDrawing, IfsPicture, IfsPoint, SKIPPED};
+pub use ifs::file::{IfsEntry, IfsFile};
+pub use ifs::gingerbread::{
+    Cycle, Gingerbread, GingerbreadDrawing, MapPoint, Points as GingerbreadPoints,
+};
+pub use ifs::maps::{AffineMap, Ifs, MAX_MAPS};
 pub use lsystem::alphabet::Dialect;
 pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
 pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
@@ -125,7 +132,7 @@ pub use lsystem::lsys::{LsysEntries, LsysEntry, LsysFile};
 pub use lsystem::parametric::context::MAX_CONTEXT_SLOTS;
 pub use lsystem::parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
 pub use lsystem::parametric::environment::{Environment, TurtleState};
-pub use lsystem::parametric::space::{Segment3, Segments3, DEPTH_LEVELS};
+pub use lsystem::parametric::space::{Segment3, Segments3};
 pub use lsystem::parametric::{
     DerivedModule, ParametricGrammar, ParametricWalker, Values, MAX_ARGUMENTS, MAX_CONSTANTS,
     MAX_MODULES, MAX_PARAMS, MAX_PRODUCTIONS,
@@ -133,8 +140,10 @@ pub use lsystem::parametric::{
 pub use lsystem::table::{cells_needed, Cell, MAX_BODY_NESTING};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 pub use lsystem::walker::{DerivedSymbol, Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
+pub use math::random::Generator;
 pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
 pub use render::fit::{Orientation, DEFAULT_MARGIN};
 pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use render::projection::Projection;
 pub use render::sink::{DwellBuffer, DwellSink};
+pub use render::space::DEPTH_LEVELS;

@@ -143,6 +143,20 @@ pub enum ReadError {
         /// Where the production is.
         at: Location,
     },
+    /// A line of an `.ifs` entry has the wrong number of numbers.
+    WrongColumnCount {
+        /// 7 for a 2D entry, 13 for a 3D one.
+        expected: usize,
+        /// The numbers on the line.
+        found: usize,
+        /// Where the line's first number is.
+        at: Location,
+    },
+    /// An `.ifs` entry has no maps.
+    NoMaps {
+        /// Where the entry is.
+        at: Location,
+    },
     /// A module has a number of parameters no production for its symbol takes.
     WrongArity {
         /// The module's symbol.
@@ -376,6 +390,16 @@ impl fmt::Display for ReadError {
                 f,
                 "the predecessor at {at} is not one symbol: write `X --> ...`"
             ),
+            Self::WrongColumnCount {
+                expected,
+                found,
+                at,
+            } => write!(
+                f,
+                "the map at {at} has {found} numbers; a map has {expected} (`a b c d e f p` in \
+                 2D; the matrix, the translation and p in 3D)"
+            ),
+            Self::NoMaps { at } => write!(f, "the entry at {at} has no maps"),
             Self::WrongArity {
                 symbol,
                 found,

@@ -7,3 +7,4 @@ pub(crate) mod palette;
 pub(crate) mod projection;
 pub(crate) mod raster;
 pub(crate) mod sink;
+pub(crate) mod space;

@@ -8,7 +8,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::context::MAX_CONTEXT_SLOTS;
 use super::environment::{Environment, Held};
-use super::space::{Segments3, SpaceFit};
+use super::space::{draw_segments, Segments3};
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, FitError};
 use crate::lsystem::alphabet::{Command, Dialect};
@@ -22,6 +22,7 @@ use crate::math::Real;
 use crate::render::fit::{Orientation, DEFAULT_MARGIN};
 use crate::render::palette::{Colors, Palette};
 use crate::render::projection::Projection;
+use crate::render::space::SpaceFit;
 #[cfg(doc)]
 use crate::DEPTH_LEVELS;
 
@@ -261,7 +262,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         palette: P,
     ) -> Result<ParametricDrawing<'g, P, DEPTH, STACK, SLOTS>, Error> {
         let space = SpaceFit::new(
-            || self.walk_3d(),
+            || self.walk_3d().map(|s| s.map(|s| [s.start, s.end])),
             projection,
             self.depth_cue,
             area,
@@ -402,7 +403,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         D: DrawTarget<Color = P::Color>,
     {
         let mut segments = self.system.walk_3d();
-        space.draw(target, segments.by_ref(), &self.palette)?;
+        draw_segments(space, target, segments.by_ref(), &self.palette)?;
         Ok(WalkStats {
             segments: segments.segments(),
             ..WalkStats::default()

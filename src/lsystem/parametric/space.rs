@@ -15,7 +15,6 @@
 //! `F(l)`, `f(l)`, `[ ]`, `r`, `R` and the colour modules act as in 2D.
 
 use embedded_graphics::prelude::*;
-use embedded_graphics::primitives::Rectangle;
 use heapless::Vec;
 
 use super::context::MAX_CONTEXT_SLOTS;
@@ -28,10 +27,11 @@ use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::math::frame3::{Axis, Frame3};
 use crate::math::trig::BinaryAngle;
 use crate::math::{Angle, Real};
-use crate::render::fit::{fit, Orientation};
 use crate::render::palette::Palette;
-use crate::render::projection::{Eye, Projection, Seen};
 use crate::render::raster::draw_line;
+use crate::render::space::{middle, SpaceFit};
+#[cfg(doc)]
+use crate::DEPTH_LEVELS;
 
 /// One drawn line in space (x right, y up, z towards the viewer), in turtle units.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -246,197 +246,34 @@ impl<const DEPTH: usize, const STACK: usize, const SLOTS: usize> Iterator
     }
 }
 
-/// Depth-cue levels: the palette's first `DEPTH_LEVELS` colours, farthest first.
-pub const DEPTH_LEVELS: u16 = 16;
-
-/// How a 3D picture lands on the target: its projection, the perspective eye, pixels per
-/// picture unit and the screen position of the origin, and its depth range.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct SpaceFit {
-    projection: Projection,
-    eye: Option<Eye>,
-    scale: Real,
-    origin: (Real, Real),
-    depth: (Real, Real),
-    depth_cue: bool,
-    /// The pixel box of the drawn segments.
-    pub(crate) bounding_box: Rectangle,
-}
-
-/// The extent of a projected picture.
-#[derive(Debug, Clone, Copy)]
-struct Extent {
-    low: Seen,
-    high: Seen,
-}
-
-/// The projected extent of `segments`, or `None` for a picture of nothing.
-fn extent(
-    segments: &mut impl Iterator<Item = Result<Segment3, Error>>,
-    projection: Projection,
-    eye: Option<Eye>,
-) -> Result<Option<Extent>, Error> {
-    let mut extent: Option<Extent> = None;
+/// Draws `segments` fitted by `space`: each line in its colour index, or with depth cue
+/// in the palette's colour for its middle's depth ([`DEPTH_LEVELS`] levels, nearer later).
+pub(crate) fn draw_segments<D, P>(
+    space: &SpaceFit,
+    target: &mut D,
+    segments: impl Iterator<Item = Result<Segment3, Error>>,
+    palette: &P,
+) -> Result<(), DrawError<D::Error>>
+where
+    D: DrawTarget<Color = P::Color>,
+    P: Palette,
+{
+    let clip = target.bounding_box();
+    let mut last_end = None;
     for segment in segments {
         let segment = segment?;
-        for p in [segment.start, segment.end] {
-            let seen = projection.project(p, eye);
-            let e = extent.get_or_insert(Extent {
-                low: seen,
-                high: seen,
-            });
-            e.low.x = e.low.x.min(seen.x);
-            e.low.y = e.low.y.min(seen.y);
-            e.low.depth = e.low.depth.min(seen.depth);
-            e.high.x = e.high.x.max(seen.x);
-            e.high.y = e.high.y.max(seen.y);
-            e.high.depth = e.high.depth.max(seen.depth);
-        }
-    }
-    Ok(extent)
-}
-
-/// The projected extent of a fresh walk, out of line: one walk on the stack at a time.
-#[inline(never)]
-fn measured<I>(
-    segments: &impl Fn() -> I,
-    projection: Projection,
-    eye: Option<Eye>,
-) -> Result<Option<Extent>, Error>
-where
-    I: Iterator<Item = Result<Segment3, Error>>,
-{
-    extent(&mut segments(), projection, eye)
-}
-
-fn middle(a: Real, b: Real) -> Real {
-    Real::from_bits(a.to_bits() / 2 + b.to_bits() / 2)
-}
-
-impl SpaceFit {
-    /// Fits the picture `segments()` draws into `area` less `margin`: one walk to measure
-    /// (two for a perspective, whose eye is placed from the first).
-    pub(crate) fn new<I>(
-        segments: impl Fn() -> I,
-        projection: Projection,
-        depth_cue: bool,
-        area: &Rectangle,
-        margin: u32,
-    ) -> Result<Self, Error>
-    where
-        I: Iterator<Item = Result<Segment3, Error>>,
-    {
-        // Each walk read through `&mut` (out of line, one at a time): a walk is a large
-        // value, and moving it into a call would copy it (more stack on an MCU).
-        let mut seen = measured(&segments, projection, None)?;
-        let mut eye = None;
-        if let (Projection::Perspective { distance }, Some(e)) = (projection, seen) {
-            // Half the box's three extents together bound its radius from above.
-            let sum = e
-                .high
-                .x
-                .saturating_sub(e.low.x)
-                .saturating_add(e.high.y.saturating_sub(e.low.y))
-                .saturating_add(e.high.depth.saturating_sub(e.low.depth));
-            let radius = Real::from_bits(sum.to_bits() / 2).max(Real::ONE);
-            let distance = distance.max(Real::from_ratio(11, 10).unwrap_or(Real::ONE));
-            eye = Some(Eye {
-                middle: Seen {
-                    x: middle(e.low.x, e.high.x),
-                    y: middle(e.low.y, e.high.y),
-                    depth: middle(e.low.depth, e.high.depth),
-                },
-                distance: radius
-                    .checked_mul(distance)
-                    .ok_or(Error::Walk(WalkError::Overflow))?,
-            });
-            seen = measured(&segments, projection, eye)?;
-        }
-        let zero = Seen {
-            x: Real::ZERO,
-            y: Real::ZERO,
-            depth: Real::ZERO,
-        };
-        let e = seen.unwrap_or(Extent {
-            low: zero,
-            high: zero,
-        });
-        let fitted = fit(
-            (e.low.x, e.low.y),
-            (e.high.x, e.high.y),
-            Orientation::Right,
-            area,
-            margin,
-        )?;
-        let mut space = Self {
-            projection,
-            eye,
-            scale: fitted.scale,
-            origin: fitted.origin,
-            depth: (e.low.depth, e.high.depth),
-            depth_cue,
-            bounding_box: Rectangle::zero(),
-        };
-        let (a, b) = (space.pixel(e.low), space.pixel(e.high));
-        space.bounding_box = if seen.is_some() {
-            Rectangle::with_corners(a, b)
-        } else {
-            Rectangle::new(a, Size::zero())
-        };
-        Ok(space)
-    }
-
-    /// The pixel a seen point lands on.
-    fn pixel(&self, seen: Seen) -> Point {
-        let scaled = |v: Real| v.checked_mul(self.scale).unwrap_or(Real::ZERO);
-        Point::new(
-            self.origin.0.saturating_add(scaled(seen.x)).round_to_i32(),
-            self.origin.1.saturating_sub(scaled(seen.y)).round_to_i32(),
+        let ((from, near), (to, far)) = (space.place(segment.start), space.place(segment.end));
+        let (value, max) = space.color_value(middle(near, far), u16::from(segment.color));
+        draw_line(
+            target,
+            from,
+            to,
+            last_end == Some(from),
+            palette.color(value, max),
+            &clip,
         )
+        .map_err(DrawError::Target)?;
+        last_end = Some(to);
     }
-
-    /// The depth-cue level of a depth: 0 farthest to `DEPTH_LEVELS - 1` nearest.
-    fn level(&self, depth: Real) -> u16 {
-        let (low, high) = self.depth;
-        let span = high.to_bits().saturating_sub(low.to_bits());
-        if span <= 0 {
-            return DEPTH_LEVELS - 1;
-        }
-        let into = i128::from(depth.to_bits().saturating_sub(low.to_bits()));
-        let level = into * i128::from(DEPTH_LEVELS - 1) / i128::from(span);
-        u16::try_from(level.clamp(0, i128::from(DEPTH_LEVELS - 1))).unwrap_or(0)
-    }
-
-    /// Draws `segments`: each line in its colour index, or with depth cue in the
-    /// palette's colour for its middle's depth (`DEPTH_LEVELS` levels, nearer later).
-    pub(crate) fn draw<D, P>(
-        &self,
-        target: &mut D,
-        segments: impl Iterator<Item = Result<Segment3, Error>>,
-        palette: &P,
-    ) -> Result<(), DrawError<D::Error>>
-    where
-        D: DrawTarget<Color = P::Color>,
-        P: Palette,
-    {
-        let clip = target.bounding_box();
-        let mut last_end = None;
-        for segment in segments {
-            let segment = segment?;
-            let (a, b) = (
-                self.projection.project(segment.start, self.eye),
-                self.projection.project(segment.end, self.eye),
-            );
-            let color = if self.depth_cue {
-                palette.color(self.level(middle(a.depth, b.depth)), DEPTH_LEVELS - 1)
-            } else {
-                palette.color(u16::from(segment.color), u16::MAX)
-            };
-            let (from, to) = (self.pixel(a), self.pixel(b));
-            draw_line(target, from, to, last_end == Some(from), color, &clip)
-                .map_err(DrawError::Target)?;
-            last_end = Some(to);
-        }
-        Ok(())
-    }
+    Ok(())
 }

@@ -1,0 +1,226 @@
+//! The chaos game: from the origin, apply a map chosen at random by its probability, over
+//! and over; after the first [`SKIPPED`] points (still on their way to the attractor) every
+//! point is on it, within the fixed-point rounding. The same seed plots the same points on
+//! every target.
+//!
+//! The picture is fitted by playing the same game (same seed) once to measure the points'
+//! extent, then again to draw: every plotted point is inside the fitted box, exactly.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::maps::Ifs;
+use crate::error::{DrawError, Error, FitError, WalkError};
+use crate::math::random::Generator;
+use crate::math::Real;
+use crate::render::fit::DEFAULT_MARGIN;
+use crate::render::palette::{Colors, Palette};
+use crate::render::projection::Projection;
+use crate::render::space::SpaceFit;
+
+/// Points computed and not plotted at the start of a game.
+pub const SKIPPED: u32 = 100;
+
+/// A plotted point of a chaos game: where, and which map put it there.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IfsPoint {
+    /// The point (z is 0 for a 2D system).
+    pub position: [Real; 3],
+    /// The index of the map last applied.
+    pub map: usize,
+}
+
+/// The points of a chaos game; yields `Err` once (a point beyond the fixed-point range)
+/// and ends.
+#[derive(Debug, Clone)]
+pub struct ChaosGame<'i> {
+    ifs: &'i Ifs,
+    generator: Generator,
+    point: [Real; 3],
+    left: u64,
+    failed: bool,
+}
+
+impl<'i> ChaosGame<'i> {
+    /// `points` points of `ifs`'s attractor, seeded with `seed`.
+    pub fn new(ifs: &'i Ifs, seed: u64, points: u64) -> Self {
+        let mut game = Self {
+            ifs,
+            generator: Generator::new(seed),
+            point: [Real::ZERO; 3],
+            left: points,
+            failed: false,
+        };
+        for _ in 0..SKIPPED {
+            if game.advance().is_err() {
+                game.failed = true;
+                game.left = 0;
+            }
+        }
+        game
+    }
+
+    fn advance(&mut self) -> Result<IfsPoint, Error> {
+        let (map, affine) = self.ifs.choose(self.generator.next_u32());
+        self.point = affine
+            .apply(self.point)
+            .ok_or(Error::Walk(WalkError::Overflow))?;
+        Ok(IfsPoint {
+            position: self.point,
+            map,
+        })
+    }
+}
+
+impl Iterator for ChaosGame<'_> {
+    type Item = Result<IfsPoint, Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.failed && self.left == 0 {
+            self.failed = false;
+            return Some(Err(Error::Walk(WalkError::Overflow)));
+        }
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let point = self.advance();
+        if point.is_err() {
+            self.left = 0;
+        }
+        Some(point)
+    }
+}
+
+/// An IFS to draw: its maps, the seed, how many points, and how space is seen.
+#[derive(Debug, Clone, Copy)]
+pub struct IfsPicture<'i> {
+    ifs: &'i Ifs,
+    seed: u64,
+    points: u64,
+    projection: Option<Projection>,
+}
+
+impl<'i> IfsPicture<'i> {
+    /// `points` points of `ifs`, seed 0; a 2D system seen from the front, a 3D one
+    /// isometric.
+    pub const fn new(ifs: &'i Ifs, points: u64) -> Self {
+        Self {
+            ifs,
+            seed: 0,
+            points,
+            projection: None,
+        }
+    }
+
+    /// Another game: the same seed plots the same points on every target.
+    #[must_use]
+    pub const fn with_seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self
+    }
+
+    /// How space is seen.
+    #[must_use]
+    pub const fn with_projection(mut self, projection: Projection) -> Self {
+        self.projection = Some(projection);
+        self
+    }
+
+    /// The projection used.
+    pub fn projection(&self) -> Projection {
+        self.projection.unwrap_or(if self.ifs.is_3d() {
+            Projection::Isometric
+        } else {
+            Projection::Front
+        })
+    }
+
+    /// The points it plots.
+    pub fn game(&self) -> ChaosGame<'i> {
+        ChaosGame::new(self.ifs, self.seed, self.points)
+    }
+
+    /// Scales and centres the attractor into `area` (less a margin), each point coloured
+    /// by the map that put it there.
+    pub fn fit<'p, C: PixelColor>(
+        &self,
+        area: Rectangle,
+        palette: &'p [C],
+    ) -> Result<IfsDrawing<'i, Colors<'p, C>>, Error> {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        let palette = Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))?;
+        let space = SpaceFit::new(
+            || self.game().map(|point| point.map(|p| [p.position])),
+            self.projection(),
+            false,
+            &area,
+            DEFAULT_MARGIN,
+        )?;
+        Ok(IfsDrawing {
+            picture: *self,
+            space,
+            palette,
+        })
+    }
+}
+
+/// A fitted IFS: an embedded-graphics [`Drawable`].
+#[derive(Debug, Clone, Copy)]
+pub struct IfsDrawing<'i, P> {
+    picture: IfsPicture<'i>,
+    space: SpaceFit,
+    palette: P,
+}
+
+impl<P: Palette> IfsDrawing<'_, P> {
+    /// Plots the points (one pixel each: the points are scattered, so there are no runs),
+    /// reporting the game's errors too; returns how many were plotted.
+    pub fn try_draw<D>(&self, target: &mut D) -> Result<u64, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let clip = target.bounding_box();
+        let mut plotted = 0;
+        for point in self.picture.game() {
+            let point = point?;
+            let (pixel, depth) = self.space.place(point.position);
+            let index = u16::try_from(point.map).unwrap_or(u16::MAX);
+            let (value, max) = self.space.color_value(depth, index);
+            if clip.contains(pixel) {
+                target
+                    .fill_solid(
+                        &Rectangle::new(pixel, Size::new(1, 1)),
+                        self.palette.color(value, max),
+                    )
+                    .map_err(DrawError::Target)?;
+            }
+            plotted += 1;
+        }
+        Ok(plotted)
+    }
+}
+
+impl<P> Dimensions for IfsDrawing<'_, P> {
+    fn bounding_box(&self) -> Rectangle {
+        self.space.bounding_box
+    }
+}
+
+impl<P: Palette> Drawable for IfsDrawing<'_, P> {
+    type Color = P::Color;
+    type Output = u64;
+
+    fn draw<D>(&self, target: &mut D) -> Result<u64, D::Error>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        match self.try_draw(target) {
+            Ok(plotted) => Ok(plotted),
+            Err(DrawError::Target(error)) => Err(error),
+            Err(DrawError::Fractal(_)) => Ok(0),
+        }
+    }
+}

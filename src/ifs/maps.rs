@@ -1,0 +1,131 @@
+//! An IFS: affine maps in fixed point with their probabilities as integer weights.
+
+use heapless::Vec;
+
+use crate::error::{Error, Location, ReadError};
+use crate::math::Real;
+
+/// Most maps an IFS holds (Fractint's files use at most 5).
+pub const MAX_MAPS: usize = 32;
+
+/// One affine map of space: p' = matrix · p + translation (a 2D map has z rows of 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AffineMap {
+    /// Row by row.
+    pub matrix: [[Real; 3]; 3],
+    /// Added after the matrix.
+    pub translation: [Real; 3],
+}
+
+impl AffineMap {
+    /// Fractint's 2D map `a b c d e f`: x' = a·x + b·y + e, y' = c·x + d·y + f.
+    pub fn planar([a, b, c, d, e, f]: [Real; 6]) -> Self {
+        let zero = Real::ZERO;
+        Self {
+            matrix: [[a, b, zero], [c, d, zero], [zero, zero, zero]],
+            translation: [e, f, zero],
+        }
+    }
+
+    /// `p` mapped; `None` if it leaves the fixed-point range.
+    #[inline]
+    pub fn apply(&self, p: [Real; 3]) -> Option<[Real; 3]> {
+        let mut out = self.translation;
+        for (o, row) in out.iter_mut().zip(&self.matrix) {
+            for (&m, &v) in row.iter().zip(&p) {
+                *o = o.checked_add(m.checked_mul(v)?)?;
+            }
+        }
+        Some(out)
+    }
+}
+
+/// Maps with weights: each map's share of the 2³² random numbers, a multiply and a shift
+/// to choose (no floats, no division).
+#[derive(Debug, Clone, Default)]
+pub struct Ifs {
+    maps: Vec<(AffineMap, u32), MAX_MAPS>,
+    total: u64,
+    three_d: bool,
+}
+
+impl Ifs {
+    /// No maps yet.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Adds a map chosen with `probability` (weights need not sum to 1 here; the `.ifs`
+    /// reader checks that they do). `at` places errors.
+    pub(crate) fn add_at(
+        &mut self,
+        map: AffineMap,
+        probability: Real,
+        at: Location,
+    ) -> Result<(), Error> {
+        // Weights in units of 2^-24: a probability of 1 is 2^24.
+        let weight = u32::try_from(probability.to_bits() >> 8)
+            .ok()
+            .filter(|&w| w > 0)
+            .ok_or(Error::Read(ReadError::ProbabilityOutOfRange { at }))?;
+        self.maps
+            .push((map, weight))
+            .map_err(|_| Error::Read(ReadError::TooManyRules { max: MAX_MAPS, at }))?;
+        self.total += u64::from(weight);
+        self.three_d |= map.matrix[2] != [Real::ZERO; 3] || map.translation[2] != Real::ZERO;
+        Ok(())
+    }
+
+    /// Adds a map chosen with `probability`.
+    pub fn add(&mut self, map: AffineMap, probability: Real) -> Result<(), Error> {
+        self.add_at(map, probability, Location::column(1))
+    }
+
+    /// Marks the system as 3D (a `(3D)` entry), even if its maps keep z = 0.
+    pub(crate) fn set_3d(&mut self) {
+        self.three_d = true;
+    }
+
+    /// Whether it maps space rather than the plane.
+    pub fn is_3d(&self) -> bool {
+        self.three_d
+    }
+
+    /// The maps, in order.
+    pub fn maps(&self) -> impl Iterator<Item = &AffineMap> {
+        self.maps.iter().map(|(map, _)| map)
+    }
+
+    /// The number of maps.
+    pub fn len(&self) -> usize {
+        self.maps.len()
+    }
+
+    /// Whether it has no maps.
+    pub fn is_empty(&self) -> bool {
+        self.maps.is_empty()
+    }
+
+    /// The map a random number picks, and its index.
+    #[inline]
+    pub(crate) fn choose(&self, random: u32) -> (usize, &AffineMap) {
+        let mut pick = (u64::from(random) * self.total) >> 32;
+        for (index, (map, weight)) in self.maps.iter().enumerate() {
+            if pick < u64::from(*weight) {
+                return (index, map);
+            }
+            pick -= u64::from(*weight);
+        }
+        // Unreachable with maps (pick < total); an empty system stays at the origin.
+        (0, &IDENTITY)
+    }
+}
+
+const IDENTITY: AffineMap = AffineMap {
+    matrix: [
+        [Real::ONE, Real::ZERO, Real::ZERO],
+        [Real::ZERO, Real::ONE, Real::ZERO],
+        [Real::ZERO, Real::ZERO, Real::ONE],
+    ],
+    translation: [Real::ZERO; 3],
+};

@@ -1,0 +1,7 @@
+//! Iterated function systems by the chaos game (the Barnsley fern, Fractint's `.ifs`
+//! files), and the gingerbread man: reader → maps → chaos game → drawing.
+
+pub(crate) mod chaos;
+pub(crate) mod file;
+pub(crate) mod gingerbread;
+pub(crate) mod maps;

@@ -1,0 +1,188 @@
+//! Fitting a picture in space to a target: its points projected (front, isometric,
+//! perspective), their extent measured by a walk, scaled and centred like a 2D picture;
+//! with depth cue, the depth range for colours. The 3D turtle and the 3D IFS share it.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::fit::{fit, Orientation};
+use super::projection::{Eye, Projection, Seen};
+use crate::error::{Error, WalkError};
+use crate::math::Real;
+
+/// Depth-cue levels: the palette's first `DEPTH_LEVELS` colours, farthest first.
+pub const DEPTH_LEVELS: u16 = 16;
+
+/// How a 3D picture lands on the target: its projection, the perspective eye, pixels per
+/// picture unit and the screen position of the origin, and its depth range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct SpaceFit {
+    projection: Projection,
+    eye: Option<Eye>,
+    scale: Real,
+    origin: (Real, Real),
+    depth: (Real, Real),
+    depth_cue: bool,
+    /// The pixel box of the drawn points.
+    pub(crate) bounding_box: Rectangle,
+}
+
+/// The extent of a projected picture.
+#[derive(Debug, Clone, Copy)]
+struct Extent {
+    low: Seen,
+    high: Seen,
+}
+
+/// The projected extent of `points`, or `None` for a picture of nothing.
+fn extent<const N: usize>(
+    points: &mut impl Iterator<Item = Result<[[Real; 3]; N], Error>>,
+    projection: Projection,
+    eye: Option<Eye>,
+) -> Result<Option<Extent>, Error> {
+    let mut extent: Option<Extent> = None;
+    for group in points {
+        for p in group? {
+            let seen = projection.project(p, eye);
+            let e = extent.get_or_insert(Extent {
+                low: seen,
+                high: seen,
+            });
+            e.low.x = e.low.x.min(seen.x);
+            e.low.y = e.low.y.min(seen.y);
+            e.low.depth = e.low.depth.min(seen.depth);
+            e.high.x = e.high.x.max(seen.x);
+            e.high.y = e.high.y.max(seen.y);
+            e.high.depth = e.high.depth.max(seen.depth);
+        }
+    }
+    Ok(extent)
+}
+
+/// The projected extent of a fresh walk, out of line: one walk on the stack at a time.
+#[inline(never)]
+fn measured<I, const N: usize>(
+    points: &impl Fn() -> I,
+    projection: Projection,
+    eye: Option<Eye>,
+) -> Result<Option<Extent>, Error>
+where
+    I: Iterator<Item = Result<[[Real; 3]; N], Error>>,
+{
+    extent(&mut points(), projection, eye)
+}
+
+pub(crate) fn middle(a: Real, b: Real) -> Real {
+    Real::from_bits(a.to_bits() / 2 + b.to_bits() / 2)
+}
+
+impl SpaceFit {
+    /// Fits the picture whose points `points()` gives (in groups of `N`: a segment's two
+    /// ends, a point) into `area` less `margin`: one walk to measure (two for a
+    /// perspective, whose eye is placed from the first).
+    pub(crate) fn new<I, const N: usize>(
+        points: impl Fn() -> I,
+        projection: Projection,
+        depth_cue: bool,
+        area: &Rectangle,
+        margin: u32,
+    ) -> Result<Self, Error>
+    where
+        I: Iterator<Item = Result<[[Real; 3]; N], Error>>,
+    {
+        // Each walk read through `&mut` (out of line, one at a time): a walk is a large
+        // value, and moving it into a call would copy it (more stack on an MCU).
+        let mut seen = measured(&points, projection, None)?;
+        let mut eye = None;
+        if let (Projection::Perspective { distance }, Some(e)) = (projection, seen) {
+            // Half the box's three extents together bound its radius from above.
+            let sum = e
+                .high
+                .x
+                .saturating_sub(e.low.x)
+                .saturating_add(e.high.y.saturating_sub(e.low.y))
+                .saturating_add(e.high.depth.saturating_sub(e.low.depth));
+            let radius = Real::from_bits(sum.to_bits() / 2).max(Real::ONE);
+            let distance = distance.max(Real::from_ratio(11, 10).unwrap_or(Real::ONE));
+            eye = Some(Eye {
+                middle: Seen {
+                    x: middle(e.low.x, e.high.x),
+                    y: middle(e.low.y, e.high.y),
+                    depth: middle(e.low.depth, e.high.depth),
+                },
+                distance: radius
+                    .checked_mul(distance)
+                    .ok_or(Error::Walk(WalkError::Overflow))?,
+            });
+            seen = measured(&points, projection, eye)?;
+        }
+        let zero = Seen {
+            x: Real::ZERO,
+            y: Real::ZERO,
+            depth: Real::ZERO,
+        };
+        let e = seen.unwrap_or(Extent {
+            low: zero,
+            high: zero,
+        });
+        let fitted = fit(
+            (e.low.x, e.low.y),
+            (e.high.x, e.high.y),
+            Orientation::Right,
+            area,
+            margin,
+        )?;
+        let mut space = Self {
+            projection,
+            eye,
+            scale: fitted.scale,
+            origin: fitted.origin,
+            depth: (e.low.depth, e.high.depth),
+            depth_cue,
+            bounding_box: Rectangle::zero(),
+        };
+        let (a, b) = (space.pixel(e.low), space.pixel(e.high));
+        space.bounding_box = if seen.is_some() {
+            Rectangle::with_corners(a, b)
+        } else {
+            Rectangle::new(a, Size::zero())
+        };
+        Ok(space)
+    }
+
+    /// The pixel a seen point lands on.
+    pub(crate) fn pixel(&self, seen: Seen) -> Point {
+        let scaled = |v: Real| v.checked_mul(self.scale).unwrap_or(Real::ZERO);
+        Point::new(
+            self.origin.0.saturating_add(scaled(seen.x)).round_to_i32(),
+            self.origin.1.saturating_sub(scaled(seen.y)).round_to_i32(),
+        )
+    }
+
+    /// The depth-cue level of a depth: 0 farthest to `DEPTH_LEVELS - 1` nearest.
+    pub(crate) fn level(&self, depth: Real) -> u16 {
+        let (low, high) = self.depth;
+        let span = high.to_bits().saturating_sub(low.to_bits());
+        if span <= 0 {
+            return DEPTH_LEVELS - 1;
+        }
+        let into = i128::from(depth.to_bits().saturating_sub(low.to_bits()));
+        let level = into * i128::from(DEPTH_LEVELS - 1) / i128::from(span);
+        u16::try_from(level.clamp(0, i128::from(DEPTH_LEVELS - 1))).unwrap_or(0)
+    }
+    /// Where a point of space lands: its pixel and its projected depth.
+    pub(crate) fn place(&self, p: [Real; 3]) -> (Point, Real) {
+        let seen = self.projection.project(p, self.eye);
+        (self.pixel(seen), seen.depth)
+    }
+
+    /// The colour index of a point at `depth` (with depth cue, its level; else `index`)
+    /// and the palette's `max` for it.
+    pub(crate) fn color_value(&self, depth: Real, index: u16) -> (u16, u16) {
+        if self.depth_cue {
+            (self.level(depth), DEPTH_LEVELS - 1)
+        } else {
+            (index, u16::MAX)
+        }
+    }
+}
