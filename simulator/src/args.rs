@@ -15,6 +15,10 @@ pub enum Command {
     RenderLSystem(LSystemArgs),
     /// `render mandelbrot ...` and `render julia --c RE,IM ...`
     RenderEscape(EscapeArgs),
+    /// `render ifs ...`
+    RenderIfs(crate::ifs_scene::IfsOptions),
+    /// `render gingerbread ...`
+    RenderGingerbread(crate::ifs_scene::GingerbreadOptions),
     /// `derive ...`
     Derive(DeriveArgs),
     /// `list PATH.l`
@@ -171,6 +175,10 @@ enum Scene {
     Mandelbrot(EscapeOptions),
     /// A Julia set
     Julia(JuliaOptions),
+    /// An iterated function system by the chaos game (Fractint .ifs or inline maps)
+    Ifs(crate::ifs_scene::IfsOptions),
+    /// The gingerbread man map
+    Gingerbread(crate::ifs_scene::GingerbreadOptions),
 }
 
 #[derive(Debug, Args)]
@@ -200,7 +208,7 @@ struct LSystemOptions {
 }
 
 /// `front`, `iso` or `perspective`.
-fn parse_projection(text: &str) -> Result<tinyfractal::Projection, String> {
+pub fn parse_projection(text: &str) -> Result<tinyfractal::Projection, String> {
     match text {
         "front" => Ok(tinyfractal::Projection::Front),
         "iso" | "isometric" => Ok(tinyfractal::Projection::Isometric),
@@ -424,6 +432,8 @@ where
             Scene::Lsystem(options) => Command::RenderLSystem(lsystem(options)?),
             Scene::Mandelbrot(options) => Command::RenderEscape(escape(None, options)),
             Scene::Julia(options) => Command::RenderEscape(escape(Some(options.c), options.view)),
+            Scene::Ifs(options) => Command::RenderIfs(options),
+            Scene::Gingerbread(options) => Command::RenderGingerbread(options),
         },
     })
 }

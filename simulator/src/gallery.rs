@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use tinyfractal_scenes::{Scene, GALLERY, GENERAL_GALLERY};
+use tinyfractal_scenes::{Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY};
 
 fn row(scene: &str, detail: &str, work: &str, elapsed: std::time::Duration, file: &Path) {
     println!(
@@ -130,6 +130,20 @@ pub fn run(out: &Path) -> Result<(), String> {
                     rendered.elapsed,
                 ))
             });
+        report(entry.name, result, &path);
+    }
+    for entry in &IFS_GALLERY {
+        let path = out.join(format!("{}.png", entry.name));
+        let result =
+            crate::ifs_scene::render_entry(entry.source, entry.system, entry.points, entry.size)
+                .and_then(|(display, plotted, elapsed)| {
+                    save(&display, &path)?;
+                    Ok((
+                        "chaos game".to_string(),
+                        format!("{plotted} points"),
+                        elapsed,
+                    ))
+                });
         report(entry.name, result, &path);
     }
     if ok {

@@ -5,6 +5,7 @@ mod args;
 mod environment;
 mod escape_scene;
 mod gallery;
+mod ifs_scene;
 mod output;
 mod palette;
 mod scene;
@@ -45,6 +46,8 @@ fn main() -> ExitCode {
         Command::Gallery { out } => gallery::run(&out),
         Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
         Command::RenderEscape(escape) => render_escape(&escape),
+        Command::RenderIfs(options) => ifs_scene::render_ifs(&options),
+        Command::RenderGingerbread(options) => ifs_scene::render_gingerbread(&options),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

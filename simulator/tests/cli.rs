@@ -1270,3 +1270,109 @@ fn open_systems_grow_in_an_environment() {
         stderr(&bad)
     );
 }
+
+/// `render ifs`: a file's entry or inline maps; `--points` writes every plotted point
+/// (`x y`), all inside the attractor's box; malformed maps are errors with their place.
+#[test]
+fn ifs_renders_and_writes_points() {
+    let lecture = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../data/lecture.ifs")
+        .to_string_lossy()
+        .into_owned();
+    let dir = scratch("ifs");
+    let points = dir.join("fern.txt");
+    let out = dir.join("fern.png");
+    let rendered = run(&[
+        "render",
+        "ifs",
+        "--file",
+        &lecture,
+        "--name",
+        "FERN",
+        "--points-count",
+        "2000",
+        "--points",
+        points.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert_eq!(rendered.status.code(), Some(0), "{}", stderr(&rendered));
+    assert!(
+        stdout(&rendered).starts_with("points=2000 maps=4 "),
+        "{}",
+        stdout(&rendered)
+    );
+    let text = std::fs::read_to_string(&points).unwrap();
+    assert_eq!(text.lines().count(), 2000);
+    for line in text.lines() {
+        let v: Vec<f64> = line.split(' ').map(|n| n.parse().unwrap()).collect();
+        // The fern lies within x in [-2.2, 2.7], y in [0, 10].
+        assert!(
+            v.len() == 2 && (-2.2..2.7).contains(&v[0]) && (0.0..10.0).contains(&v[1]),
+            "{line}"
+        );
+    }
+    let inline = run(&[
+        "render",
+        "ifs",
+        "--map",
+        "0.5,0,0,0.5,0,0,0.5",
+        "--map",
+        "0.5,0,0,0.5,1,0,0.5",
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert_eq!(inline.status.code(), Some(0), "{}", stderr(&inline));
+    let bad = run(&[
+        "render",
+        "ifs",
+        "--map",
+        "0.5,0,0,0.5,0,0",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(stderr(&bad).contains("has 6 numbers"), "{}", stderr(&bad));
+    let sum = run(&[
+        "render",
+        "ifs",
+        "--map",
+        "0.5,0,0,0.5,0,0,0.4",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(stderr(&sum).contains("sum to 0.4,"), "{}", stderr(&sum));
+}
+
+/// `render gingerbread`: the lecture's orbit, its period in `--stats`, `--points` in map
+/// coordinates.
+#[test]
+fn gingerbread_renders_with_its_period() {
+    let dir = scratch("gingerbread");
+    let points = dir.join("points.txt");
+    let out = dir.join("g.png");
+    let rendered = run(&[
+        "render",
+        "gingerbread",
+        "--iterations",
+        "5",
+        "--points",
+        points.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert_eq!(rendered.status.code(), Some(0), "{}", stderr(&rendered));
+    assert!(
+        stdout(&rendered).starts_with("points=5 period=3810 tail=0 "),
+        "{}",
+        stdout(&rendered)
+    );
+    // (115,121) -> (280 - 121 + |115 - 120|, 115) = (164, 115) -> (280 - 115 + 44, 164) = (209, 164)
+    let text = std::fs::read_to_string(&points).unwrap();
+    assert!(text.starts_with("115 121\n164 115\n209 164\n"), "{text}");
+    let bad = run(&["render", "gingerbread", "--start", "1;2"]);
+    assert_eq!(bad.status.code(), Some(2));
+}

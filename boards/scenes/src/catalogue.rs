@@ -355,6 +355,42 @@ pub const GENERAL_GALLERY: [GeneralEntry; 6] = [
     general("lecture-plant", "LectureParametric", 7),
 ];
 
+/// The lecture's IFS, `data/lecture.ifs`.
+pub const LECTURE_IFS: &str = include_str!("../../../data/lecture.ifs");
+
+/// An IFS of a `.ifs` text drawn by the chaos game.
+#[derive(Debug, Clone, Copy)]
+pub struct IfsEntry {
+    /// The name (file names).
+    pub name: &'static str,
+    /// The `.ifs` text.
+    pub source: &'static str,
+    /// The entry in it.
+    pub system: &'static str,
+    /// Points plotted.
+    pub points: u64,
+    /// Size in pixels.
+    pub size: Size,
+}
+
+/// The gallery's IFS: the lecture's fern and the Sierpinski gasket.
+pub const IFS_GALLERY: [IfsEntry; 2] = [
+    IfsEntry {
+        name: "ifs-fern",
+        source: LECTURE_IFS,
+        system: "fern",
+        points: 100_000,
+        size: GALLERY_SIZE,
+    },
+    IfsEntry {
+        name: "ifs-gasket",
+        source: LECTURE_IFS,
+        system: "gasket",
+        points: 50_000,
+        size: GALLERY_SIZE,
+    },
+];
+
 /// The general engine's scenes measured on Cortex-M3 and M4 (not M0: the micro:bit's
 /// 16 KiB cannot hold the engine's grammar and walk): ABOP's monopodial tree (figure 2.6,
 /// a parametric 3D system) at its order on the OLED.

@@ -1,0 +1,229 @@
+//! `render ifs` (the chaos game, from Fractint's `.ifs` files or inline maps) and
+//! `render gingerbread` (the lecture's map).
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use clap::Args;
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+use embedded_graphics_simulator::SimulatorDisplay;
+use tinyfractal::{Gingerbread, IfsFile, IfsPicture};
+
+use crate::args::Common;
+
+/// Greens for the maps of an IFS, one a map (the fern's four).
+const GREENS: [Rgb888; 4] = [
+    Rgb888::new(0x6B, 0x8E, 0x23),
+    Rgb888::new(0x32, 0xCD, 0x32),
+    Rgb888::new(0x22, 0x8B, 0x22),
+    Rgb888::new(0x9A, 0xCD, 0x32),
+];
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct IfsOptions {
+    /// A Fractint .ifs file (with --name)
+    #[arg(
+        long,
+        value_name = "PATH.ifs",
+        requires = "name",
+        conflicts_with = "map"
+    )]
+    file: Option<PathBuf>,
+    /// The entry in the file (case-insensitive)
+    #[arg(long, value_name = "NAME", requires = "file")]
+    name: Option<String>,
+    /// An inline map a,b,c,d,e,f,p: x' = a·x + b·y + e, y' = c·x + d·y + f, chosen with
+    /// probability p (repeat for each map; the probabilities sum to 1)
+    #[arg(
+        long,
+        value_name = "A,B,C,D,E,F,P",
+        allow_hyphen_values = true,
+        required_unless_present = "file"
+    )]
+    map: Vec<String>,
+    /// Points plotted (after 100 skipped)
+    #[arg(long = "points-count", value_name = "N", default_value_t = 50_000)]
+    points_count: u64,
+    /// Write every plotted point, `x y` (`x y z` in 3D) a line, in IFS coordinates
+    #[arg(long, value_name = "TXT")]
+    points: Option<PathBuf>,
+    /// The chaos game's seed
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    seed: u64,
+    /// How a 3D IFS is seen (front, iso, perspective; 2D ones from the front)
+    #[arg(long, value_name = "VIEW", value_parser = crate::args::parse_projection)]
+    projection: Option<tinyfractal::Projection>,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct GingerbreadOptions {
+    /// M in q.x = M(1 + 2L) − p.y + |p.x − L·M|
+    #[arg(long, default_value_t = 40, allow_hyphen_values = true)]
+    m: i64,
+    /// L
+    #[arg(long, default_value_t = 3, allow_hyphen_values = true)]
+    l: i64,
+    /// The first point X,Y
+    #[arg(long, value_name = "X,Y", default_value = "115,121", value_parser = parse_point, allow_hyphen_values = true)]
+    start: (i64, i64),
+    /// Points plotted
+    #[arg(long, value_name = "N", default_value_t = 10_000)]
+    iterations: u64,
+    /// Write every point, `x y` a line, in map coordinates
+    #[arg(long, value_name = "TXT")]
+    points: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+fn parse_point(text: &str) -> Result<(i64, i64), String> {
+    let bad = || format!("`{text}` is not X,Y in whole numbers, e.g. 115,121");
+    let (x, y) = text.split_once(',').ok_or_else(bad)?;
+    Ok((
+        x.trim().parse().map_err(|_| bad())?,
+        y.trim().parse().map_err(|_| bad())?,
+    ))
+}
+
+fn display(common: &Common) -> SimulatorDisplay<Rgb888> {
+    SimulatorDisplay::new(Size::new(common.width(), common.height()))
+}
+
+fn area(common: &Common) -> Rectangle {
+    Rectangle::new(Point::zero(), Size::new(common.width(), common.height()))
+}
+
+/// `render ifs`.
+pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let (text, name) = match (&options.file, &options.name) {
+        (Some(path), Some(name)) => (crate::read_text(path)?, name.clone()),
+        _ => {
+            let rows: Vec<String> = options.map.iter().map(|m| m.replace(',', " ")).collect();
+            (
+                format!("inline {{\n{}\n}}\n", rows.join("\n")),
+                "inline".to_string(),
+            )
+        }
+    };
+    let failed = |e: tinyfractal::Error| format!("{name}: {e}");
+    let ifs = IfsFile::new(&text)
+        .entry(&name)
+        .and_then(|entry| entry.ifs())
+        .map_err(failed)?;
+    let mut picture = IfsPicture::new(&ifs, options.points_count).with_seed(options.seed);
+    if let Some(projection) = options.projection {
+        picture = picture.with_projection(projection);
+    }
+    let mut target = display(&options.common);
+    let started = Instant::now();
+    let drawing = picture
+        .fit(area(&options.common), &GREENS)
+        .map_err(failed)?;
+    let plotted = drawing.try_draw(&mut target).map_err(|error| match error {
+        tinyfractal::DrawError::Fractal(error) => failed(error),
+        tinyfractal::DrawError::Target(never) => match never {},
+    })?;
+    let stats = format!(
+        "points={plotted} maps={} elapsed_ms={:.3}",
+        ifs.len(),
+        started.elapsed().as_secs_f64() * 1e3
+    );
+    let three_d = ifs.is_3d();
+    crate::deliver(
+        &options.common,
+        &name.to_lowercase(),
+        &target,
+        |plan| {
+            if let Some(path) = &options.points {
+                plan.add("--points", path, move |w: &mut dyn Write| {
+                    for point in picture.game() {
+                        let [x, y, z] = point.map_err(std::io::Error::other)?.position;
+                        if three_d {
+                            writeln!(w, "{x} {y} {z}")?;
+                        } else {
+                            writeln!(w, "{x} {y}")?;
+                        }
+                    }
+                    Ok(())
+                });
+            }
+        },
+        &stats,
+    )
+}
+
+/// The gallery's IFS: `name` of `source`, `points` points, into `size`.
+pub fn render_entry(
+    source: &str,
+    name: &str,
+    points: u64,
+    size: Size,
+) -> Result<(SimulatorDisplay<Rgb888>, u64, std::time::Duration), String> {
+    let failed = |e: tinyfractal::Error| e.to_string();
+    let ifs = IfsFile::new(source)
+        .entry(name)
+        .and_then(|entry| entry.ifs())
+        .map_err(failed)?;
+    let mut target = SimulatorDisplay::new(size);
+    let started = Instant::now();
+    let drawing = IfsPicture::new(&ifs, points)
+        .fit(Rectangle::new(Point::zero(), size), &GREENS)
+        .map_err(failed)?;
+    let plotted = drawing.try_draw(&mut target).map_err(|error| match error {
+        tinyfractal::DrawError::Fractal(error) => failed(error),
+        tinyfractal::DrawError::Target(never) => match never {},
+    })?;
+    Ok((target, plotted, started.elapsed()))
+}
+
+/// `render gingerbread`.
+pub fn render_gingerbread(options: &GingerbreadOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let map = Gingerbread {
+        m: options.m,
+        l: options.l,
+        start: options.start,
+        iterations: options.iterations,
+    };
+    let failed = |e: tinyfractal::Error| format!("gingerbread: {e}");
+    let mut target = display(&options.common);
+    let started = Instant::now();
+    let drawing = map
+        .fit(area(&options.common), Rgb888::new(0xD2, 0x69, 0x1E))
+        .map_err(failed)?;
+    let plotted = drawing.try_draw(&mut target).map_err(|error| match error {
+        tinyfractal::DrawError::Fractal(error) => failed(error),
+        tinyfractal::DrawError::Target(never) => match never {},
+    })?;
+    let elapsed = started.elapsed();
+    // The cycle, searched over at most 2^24 steps (two points of memory).
+    let cycle = match map.cycle(1 << 24).map_err(failed)? {
+        Some(cycle) => format!("period={} tail={}", cycle.period, cycle.tail),
+        None => "period=none tail=none".to_string(),
+    };
+    let stats = format!(
+        "points={plotted} {cycle} elapsed_ms={:.3}",
+        elapsed.as_secs_f64() * 1e3
+    );
+    crate::deliver(
+        &options.common,
+        "gingerbread",
+        &target,
+        |plan| {
+            if let Some(path) = &options.points {
+                plan.add("--points", path, move |w: &mut dyn Write| {
+                    for point in map.points() {
+                        let (x, y) = point.map_err(std::io::Error::other)?;
+                        writeln!(w, "{x} {y}")?;
+                    }
+                    Ok(())
+                });
+            }
+        },
+        &stats,
+    )
+}
