@@ -79,6 +79,21 @@ pub fn run(out: &Path) -> Result<(), String> {
                         rendered.elapsed,
                     ))
                 }),
+            Scene::Ifs {
+                source,
+                system,
+                points,
+                ..
+            } => crate::ifs_scene::render_entry(source, system, points, size).and_then(
+                |(display, plotted, elapsed)| {
+                    save(&display, &path)?;
+                    Ok((
+                        "chaos game".to_string(),
+                        format!("{plotted} points"),
+                        elapsed,
+                    ))
+                },
+            ),
             Scene::Escape {
                 julia,
                 centre,

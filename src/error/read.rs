@@ -152,6 +152,13 @@ pub enum ReadError {
         /// Where the line's first number is.
         at: Location,
     },
+    /// An IFS has more maps than it can hold.
+    TooManyMaps {
+        /// The capacity ([`MAX_MAPS`](crate::MAX_MAPS)).
+        max: usize,
+        /// Where the map that did not fit is.
+        at: Location,
+    },
     /// An `.ifs` entry has no maps.
     NoMaps {
         /// Where the entry is.
@@ -399,6 +406,12 @@ impl fmt::Display for ReadError {
                 "the map at {at} has {found} numbers; a map has {expected} (`a b c d e f p` in \
                  2D; the matrix, the translation and p in 3D)"
             ),
+            Self::TooManyMaps { max, at } => {
+                write!(
+                    f,
+                    "the map at {at} is one too many: an IFS holds at most {max}"
+                )
+            }
             Self::NoMaps { at } => write!(f, "the entry at {at} has no maps"),
             Self::WrongArity {
                 symbol,

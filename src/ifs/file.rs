@@ -135,8 +135,16 @@ impl<'a> IfsEntry<'a> {
     /// Reads the maps: 7 numbers a line (13 in 3D), probabilities summing to 1 (within
     /// 0.005, as Fractint's thirds written `.333333` do).
     pub fn ifs(&self) -> Result<Ifs, Error> {
-        let expected = if self.three_d { 13 } else { 7 };
         let mut ifs = Ifs::new();
+        self.ifs_into(&mut ifs)?;
+        Ok(ifs)
+    }
+
+    /// [`ifs`](Self::ifs) into `ifs` (emptied first), in place: no copy of the maps on an
+    /// MCU's stack.
+    pub fn ifs_into(&self, ifs: &mut Ifs) -> Result<(), Error> {
+        let expected = if self.three_d { 13 } else { 7 };
+        ifs.clear();
         if self.three_d {
             ifs.set_3d();
         }
@@ -208,6 +216,6 @@ impl<'a> IfsEntry<'a> {
                 at: whole,
             }));
         }
-        Ok(ifs)
+        Ok(())
     }
 }

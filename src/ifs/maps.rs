@@ -5,7 +5,7 @@ use heapless::Vec;
 use crate::error::{Error, Location, ReadError};
 use crate::math::Real;
 
-/// Most maps an IFS holds (Fractint's files use at most 5).
+/// Most maps an IFS holds (Fractint's own `fractint.ifs` has an entry of 22).
 pub const MAX_MAPS: usize = 32;
 
 /// One affine map of space: p' = matrix · p + translation (a 2D map has z rows of 0).
@@ -55,6 +55,13 @@ impl Ifs {
         Self::default()
     }
 
+    /// Removes every map, in place.
+    pub(crate) fn clear(&mut self) {
+        self.maps.clear();
+        self.total = 0;
+        self.three_d = false;
+    }
+
     /// Adds a map chosen with `probability` (weights need not sum to 1 here; the `.ifs`
     /// reader checks that they do). `at` places errors.
     pub(crate) fn add_at(
@@ -70,7 +77,7 @@ impl Ifs {
             .ok_or(Error::Read(ReadError::ProbabilityOutOfRange { at }))?;
         self.maps
             .push((map, weight))
-            .map_err(|_| Error::Read(ReadError::TooManyRules { max: MAX_MAPS, at }))?;
+            .map_err(|_| Error::Read(ReadError::TooManyMaps { max: MAX_MAPS, at }))?;
         self.total += u64::from(weight);
         self.three_d |= map.matrix[2] != [Real::ZERO; 3] || map.translation[2] != Real::ZERO;
         Ok(())

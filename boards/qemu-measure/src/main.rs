@@ -135,7 +135,7 @@ mod firmware {
             });
             let stack = stack_used(bottom);
             let work = match work {
-                Work::Segments(n) | Work::Iterations(n) => n,
+                Work::Segments(n) | Work::Iterations(n) | Work::Points(n) => n,
             };
             let (mut f32_cost, mut fixed_cost) = (None, None);
             if let Some(view) = BaselineView::of(&entry.scene) {
@@ -168,7 +168,7 @@ mod firmware {
                 work = entry.draw(&mut target, &GREY).unwrap_or(Work::Segments(0));
             });
             let stack = stack_used(bottom);
-            let (Work::Segments(work) | Work::Iterations(work)) = work;
+            let (Work::Segments(work) | Work::Iterations(work) | Work::Points(work)) = work;
             hprintln!(
                 "measure scene={} instructions={} work={} checksum={} pixels={} stack={} baseline_f32=null baseline_fixed20=null",
                 entry.name,

@@ -110,6 +110,7 @@ fn main() -> ! {
             match result {
                 Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", name, n, ms),
                 Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
+                Ok(Work::Points(n)) => info!("{}: {} points in {} ms", name, n, ms),
                 Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
             }
             let shown = timer.get_counter();

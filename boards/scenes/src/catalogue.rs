@@ -54,6 +54,17 @@ pub enum Scene {
         /// Which way the first heading points.
         orientation: Orientation,
     },
+    /// An IFS of a `.ifs` text by the chaos game.
+    Ifs {
+        /// The `.ifs` text.
+        source: &'static str,
+        /// The entry in it.
+        system: &'static str,
+        /// Points plotted.
+        points: u64,
+        /// The game's seed.
+        seed: u64,
+    },
     /// A Mandelbrot (`julia: None`) or Julia view, as decimal text: the catalogue's
     /// entries are checked when compiled; in a scene built by hand, a number that does not
     /// parse counts as 0.
@@ -70,10 +81,11 @@ pub enum Scene {
 }
 
 impl Scene {
-    /// The family, as the CLI names it: `lsystem`, `mandelbrot` or `julia`.
+    /// The family, as the CLI names it: `lsystem`, `ifs`, `mandelbrot` or `julia`.
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
+            Self::Ifs { .. } => "ifs",
             Self::Escape { julia: None, .. } => "mandelbrot",
             Self::Escape { julia: Some(_), .. } => "julia",
         }
@@ -402,13 +414,29 @@ pub const GENERAL_SCENES: [GeneralEntry; 1] = [GeneralEntry {
     size: OLED,
 }];
 
+/// The lecture's IFS in the catalogue's notation.
+const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Ifs {
+            source: LECTURE_IFS,
+            system,
+            points,
+            seed: 1,
+        },
+        size,
+        palette: "vga",
+    }
+}
+
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]
-pub const SCENES: [Entry; 6] = [
+pub const SCENES: [Entry; 7] = [
     lsystem("plant", &FERN, 5, Orientation::Up, OLED),
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 4, Orientation::Right, OLED),
     lsystem("stochastic-plant", &STOCHASTIC_PLANT, 4, Orientation::Up, OLED),
+    ifs("ifs-fern", "fern", 20_000, OLED),
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.6", 100, OLED, "classic"),
     // Width 10^-7: needs the 60-bit tier with 128-bit products.

@@ -6,11 +6,11 @@ use embedded_graphics::{
 };
 use tinyfractal::FitError;
 use tinyfractal::{
-    DrawError, Error, EscapeTime, Gradient, LSystem, LsysFile, ParametricGrammar,
-    ParametricLSystem, DEFAULT_DEPTH, DEFAULT_STACK,
+    DrawError, Error, EscapeTime, Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile,
+    Orientation, ParametricGrammar, ParametricLSystem, DEFAULT_DEPTH, DEFAULT_STACK,
 };
 
-use crate::catalogue::{escape_view, GeneralEntry, Scene};
+use crate::catalogue::{escape_view, GeneralEntry, Scene, System};
 
 /// The colours a display draws the scenes in.
 #[derive(Debug, Clone, Copy)]
@@ -59,6 +59,8 @@ pub enum Work {
     Segments(u64),
     /// Iterations computed.
     Iterations(u64),
+    /// Points plotted (the chaos game).
+    Points(u64),
 }
 
 impl Scene {
@@ -81,31 +83,112 @@ impl Scene {
                 orientation,
             } => {
                 target.clear(look.background).map_err(DrawError::Target)?;
-                let grammar = system.grammar()?;
-                let ink = [look.ink];
-                let drawing = LSystem::new(&grammar, order)
-                    .with_orientation(orientation)
-                    .fit(target.bounding_box(), &ink)?;
-                let stats = drawing.draw(target).map_err(DrawError::Target)?;
-                Ok(Work::Segments(stats.segments))
+                draw_lsystem(target, look, system, order, orientation)
+            }
+            Scene::Ifs {
+                source,
+                system,
+                points,
+                seed,
+            } => {
+                target.clear(look.background).map_err(DrawError::Target)?;
+                draw_ifs(target, look, (source, system), points, seed)
             }
             Scene::Escape {
                 julia,
                 centre,
                 width,
                 max_iterations,
-            } => {
-                let size = target.bounding_box().size;
-                let view = escape_view(julia, centre, width, max_iterations, size)?;
-                let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
-                    .ok_or(Error::Fit(FitError::EmptyPalette))?;
-                let stats = EscapeTime::new(view, palette)
-                    .draw(target)
-                    .map_err(DrawError::Target)?;
-                Ok(Work::Iterations(stats.iterations))
-            }
+            } => draw_escape(target, look, julia, (centre, width), max_iterations),
         }
     }
+}
+
+/// An L-system in `look.ink`, out of line: each family's frame is on the stack only while
+/// it draws (one frame for all of them would hold the largest of each).
+#[inline(never)]
+fn draw_lsystem<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    system: &System,
+    order: u32,
+    orientation: Orientation,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+{
+    // Borrowed where it was built: moving a grammar out of its `Result` would copy it.
+    let built = system.grammar();
+    let grammar = match &built {
+        Ok(grammar) => grammar,
+        Err(error) => return Err(DrawError::Fractal(*error)),
+    };
+    draw_grammar(target, look, grammar, order, orientation)
+}
+
+/// Fits and draws a built grammar, out of line: its walks' frames are not on the stack
+/// while the grammar is being built.
+#[inline(never)]
+fn draw_grammar<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    grammar: &tinyfractal::Grammar<'_>,
+    order: u32,
+    orientation: Orientation,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+{
+    let ink = [look.ink];
+    let drawing = LSystem::new(grammar, order)
+        .with_orientation(orientation)
+        .fit(target.bounding_box(), &ink)?;
+    let stats = drawing.draw(target).map_err(DrawError::Target)?;
+    Ok(Work::Segments(stats.segments))
+}
+
+/// An escape-time view through the look's gradient, out of line.
+#[inline(never)]
+fn draw_escape<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    julia: Option<(&str, &str)>,
+    (centre, width): ((&str, &str), &str),
+    max_iterations: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let size = target.bounding_box().size;
+    let view = escape_view(julia, centre, width, max_iterations, size)?;
+    let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
+        .ok_or(Error::Fit(FitError::EmptyPalette))?;
+    let stats = EscapeTime::new(view, palette)
+        .draw(target)
+        .map_err(DrawError::Target)?;
+    Ok(Work::Iterations(stats.iterations))
+}
+
+/// An IFS in `look.ink`, out of line: its maps are on the stack only while it draws.
+#[inline(never)]
+fn draw_ifs<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    (source, system): (&str, &str),
+    points: u64,
+    seed: u64,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+{
+    let mut ifs = Ifs::new();
+    IfsFile::new(source).entry(system)?.ifs_into(&mut ifs)?;
+    let ink = [look.ink];
+    let drawing = IfsPicture::new(&ifs, points)
+        .with_seed(seed)
+        .fit(target.bounding_box(), &ink)?;
+    Ok(Work::Points(drawing.try_draw(target)?))
 }
 
 impl GeneralEntry {

@@ -170,7 +170,7 @@ fn every_core_draws_the_host_picture_and_fits() {
         .map(|entry| {
             let mut target = Checksum::new();
             let work = match entry.scene.draw(&mut target, &GREY).unwrap() {
-                Work::Segments(n) | Work::Iterations(n) => n,
+                Work::Segments(n) | Work::Iterations(n) | Work::Points(n) => n,
             };
             (target.value, target.pixels, work)
         })
@@ -184,10 +184,17 @@ fn every_core_draws_the_host_picture_and_fits() {
         };
         host.push((target.value, target.pixels, work));
     }
-    let names: Vec<(&str, bool)> = SCENES
+    let names: Vec<(&str, &str)> = SCENES
         .iter()
-        .map(|entry| (entry.name, matches!(entry.scene, Scene::LSystem { .. })))
-        .chain(GENERAL_SCENES.iter().map(|entry| (entry.name, true)))
+        .map(|entry| {
+            let unit = match entry.scene {
+                Scene::LSystem { .. } => "segment",
+                Scene::Ifs { .. } => "point",
+                Scene::Escape { .. } => "iteration",
+            };
+            (entry.name, unit)
+        })
+        .chain(GENERAL_SCENES.iter().map(|entry| (entry.name, "segment")))
         .collect();
 
     let mut json = String::from("[\n");
@@ -208,7 +215,7 @@ fn every_core_draws_the_host_picture_and_fits() {
             core.name
         );
         let mut deepest_stack = 0;
-        for (record, (&(name, lsystem), &(checksum, pixels, work))) in
+        for (record, (&(name, unit), &(checksum, pixels, work))) in
             records.iter().zip(names.iter().zip(&host))
         {
             assert_eq!(record["scene"], *name);
@@ -223,7 +230,6 @@ fn every_core_draws_the_host_picture_and_fits() {
             let instructions: u64 = record["instructions"].parse().unwrap();
             let stack: u64 = record["stack"].parse().unwrap();
             deepest_stack = deepest_stack.max(stack);
-            let unit = if lsystem { "segment" } else { "iteration" };
             let _ = writeln!(
                 json,
                 "  {{\"core\": \"{}\", \"scene\": \"{name}\", \"instructions\": {instructions}, \"baseline_f32\": {}, \"baseline_fixed20\": {}, \"text\": {text}, \"data\": {data}, \"bss\": {bss}, \"stack\": {stack}, \"work\": {work}, \"work_unit\": \"{unit}\"}},",

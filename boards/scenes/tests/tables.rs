@@ -213,6 +213,34 @@ fn general_table(records: &[Value], results: &Value) -> String {
     table
 }
 
+/// The chaos game: the lecture's fern on the host (100,000 points into 320×240) and on
+/// Cortex-M0/M3/M4 (the measuring firmware, 20,000 points into 128×64).
+fn ifs_table(records: &[Value], results: &Value) -> String {
+    const POINTS: u64 = 100_000;
+    let mut table =
+        String::from("| where | what | time or instructions | per point |\n|---|---|---|---|\n");
+    let times = &results["times_ns"];
+    for key in ["chaos game", "fit + draw 320x240"] {
+        let ns = number(times, &format!("ifs-fern-100k / {key}")).unwrap_or(0);
+        table.push_str(&format!(
+            "| host | {key} | {} | {:.0} M points per second |\n",
+            milliseconds(ns),
+            POINTS as f64 / (ns.max(1) as f64 / 1e9) / 1e6
+        ));
+    }
+    for record in records.iter().filter(|r| text(r, "scene") == "ifs-fern") {
+        let instructions = number(record, "instructions").unwrap_or(0);
+        let work = number(record, "work").unwrap_or(1).max(1);
+        table.push_str(&format!(
+            "| {} | read, fit (one game) and draw (another) | {} instructions | {} instructions |\n",
+            text(record, "core"),
+            thousands(instructions),
+            thousands((instructions as f64 / work as f64).round() as u64),
+        ));
+    }
+    table
+}
+
 /// The escape-time benches: two views at 320×240, max-iter 256.
 fn escape_table(results: &Value) -> String {
     let mut table = String::from(
@@ -287,6 +315,7 @@ fn performance_tables_are_generated_from_the_measurements() {
         ("lsystem-bench", lsystem_table(&results)),
         ("escape-bench", escape_table(&results)),
         ("general-bench", general_table(records, &results)),
+        ("ifs-bench", ifs_table(records, &results)),
     ];
     let bless = std::env::var_os("TINYFRACTAL_BLESS").is_some();
     let mut stale = Vec::new();
