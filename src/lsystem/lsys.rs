@@ -303,7 +303,11 @@ impl<'a> LsysEntry<'a> {
     /// only it interprets, the 3D turns `& ^ \\ / $`, the scale symbols `r R`, the colour
     /// modules `' ; ,` and the cut `%`.
     pub fn is_parametric(&self) -> bool {
-        let general = |string: &str| string.contains(GENERAL_MODULES) || string.contains("env(");
+        let general = |string: &str| {
+            string.contains(GENERAL_MODULES)
+                || string.contains("env(")
+                || string.contains(['D', 'T'])
+        };
         self.lines().any(|(_, text)| match key_value(text) {
             Some((key, value)) => key == "axiom" && (value.contains('(') || general(value)),
             None => text.split_once("-->").is_some_and(|(left, right)| {

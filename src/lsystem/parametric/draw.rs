@@ -235,7 +235,9 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         match self.projection {
             Some(projection) => Some(projection),
             None if self.grammar.is_3d() => Some(Projection::default()),
-            None if self.grammar.uses_environment() => Some(Projection::Front),
+            None if self.grammar.uses_environment() || self.grammar.is_matrix() => {
+                Some(Projection::Front)
+            }
             None => None,
         }
     }

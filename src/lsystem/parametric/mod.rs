@@ -36,6 +36,7 @@ pub(crate) mod context;
 pub(crate) mod draw;
 pub(crate) mod environment;
 pub(crate) mod expr;
+pub(crate) mod matrix;
 pub(crate) mod space;
 
 use core::fmt;
@@ -268,6 +269,21 @@ impl ParametricGrammar {
     /// Whether any module turns in space (`& ^ \\ / $`): the system is drawn in 3D.
     pub fn is_3d(&self) -> bool {
         self.three_d
+    }
+
+    /// Whether it is written in the lecture's matrix notation: a module `D`, `T`, `R(deg)`
+    /// or `S(s)` that no production rewrites (a symbol with productions is the system's
+    /// own, as `D` in the 3D Hilbert curve). Drawn by the matrix turtle.
+    pub fn is_matrix(&self) -> bool {
+        self.modules.iter().any(|module| {
+            let command = matches!(module.symbol, b'D' | b'T')
+                || (matches!(module.symbol, b'R' | b'S') && module.arguments > 0);
+            command
+                && !self
+                    .productions
+                    .iter()
+                    .any(|p| p.predecessor.symbol == module.symbol)
+        })
     }
 
     /// Whether any expression asks the environment (`env(k)`): an open system.

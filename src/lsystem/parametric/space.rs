@@ -20,6 +20,7 @@ use heapless::Vec;
 use super::context::MAX_CONTEXT_SLOTS;
 use super::draw::{turtle_action, Action};
 use super::environment::{Environment, Held, TurtleState};
+use super::matrix::MatrixTurtle;
 use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, WalkError};
 use crate::lsystem::turtle::{next_segment, DEFAULT_STACK};
@@ -162,6 +163,32 @@ impl<const STACK: usize> Turtle3<STACK> {
     }
 }
 
+/// The 3D turtle, or the matrix turtle for a system in the matrix notation.
+#[derive(Debug, Clone)]
+enum AnyTurtle<const STACK: usize> {
+    Space(Turtle3<STACK>),
+    Matrix(MatrixTurtle<STACK>),
+}
+
+impl<const STACK: usize> AnyTurtle<STACK> {
+    fn state(&self) -> TurtleState {
+        match self {
+            Self::Space(turtle) => turtle.state(),
+            Self::Matrix(turtle) => {
+                let (position, heading) = turtle.position_and_heading();
+                TurtleState { position, heading }
+            }
+        }
+    }
+
+    fn execute(&mut self, module: &DerivedModule) -> Result<Option<Segment3>, Error> {
+        match self {
+            Self::Space(turtle) => turtle.execute(module),
+            Self::Matrix(turtle) => turtle.execute(module),
+        }
+    }
+}
+
 /// The segments a 3D system draws at an order, in turtle units, computed on the fly.
 #[derive(Debug, Clone)]
 pub struct Segments3<
@@ -171,7 +198,7 @@ pub struct Segments3<
     const SLOTS: usize = MAX_CONTEXT_SLOTS,
 > {
     walker: ParametricWalker<'g, DEPTH, SLOTS>,
-    turtle: Turtle3<STACK>,
+    turtle: AnyTurtle<STACK>,
     environment: Option<Held<'g>>,
     segments: u64,
     failed: bool,
@@ -196,7 +223,11 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     ) -> Self {
         Self {
             walker: ParametricWalker::starting(grammar, order, budget),
-            turtle: Turtle3::new(binary_angle(grammar.angle())),
+            turtle: if grammar.is_matrix() {
+                AnyTurtle::Matrix(MatrixTurtle::new(binary_angle(grammar.angle())))
+            } else {
+                AnyTurtle::Space(Turtle3::new(binary_angle(grammar.angle())))
+            },
             environment,
             segments: 0,
             failed: false,
