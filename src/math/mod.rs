@@ -3,6 +3,7 @@
 //! sines, and turn angles with their direction tables. This is also where affine maps,
 //! the matrix stack and the seeded generator belong.
 
+pub(crate) mod affine;
 pub(crate) mod angle;
 pub(crate) mod coord;
 pub(crate) mod decimal;

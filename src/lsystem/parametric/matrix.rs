@@ -21,114 +21,40 @@ use super::draw::{turtle_action, Action};
 use super::space::Segment3;
 use super::DerivedModule;
 use crate::error::{Error, WalkError};
+use crate::math::affine::Affine2;
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
-
-/// C: x' = a·x + b·y + e, y' = c·x + d·y + f.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct Matrix {
-    a: Real,
-    b: Real,
-    c: Real,
-    d: Real,
-    e: Real,
-    f: Real,
-    color: u8,
-}
-
-fn overflow() -> Error {
-    Error::Walk(WalkError::Overflow)
-}
-
-fn mul_add(x: Real, y: Real, z: Real, w: Real) -> Result<Real, Error> {
-    x.checked_mul(y)
-        .and_then(|p| z.checked_mul(w).and_then(|q| p.checked_add(q)))
-        .ok_or_else(overflow)
-}
-
-impl Matrix {
-    const IDENTITY: Self = Self {
-        a: Real::ONE,
-        b: Real::ZERO,
-        c: Real::ZERO,
-        d: Real::ONE,
-        e: Real::ZERO,
-        f: Real::ZERO,
-        color: 0,
-    };
-
-    /// C·(x, y).
-    fn apply(&self, x: Real, y: Real) -> Result<[Real; 3], Error> {
-        Ok([
-            mul_add(self.a, x, self.b, y)?
-                .checked_add(self.e)
-                .ok_or_else(overflow)?,
-            mul_add(self.c, x, self.d, y)?
-                .checked_add(self.f)
-                .ok_or_else(overflow)?,
-            Real::ZERO,
-        ])
-    }
-
-    fn translate(&mut self, dx: Real, dy: Real) -> Result<(), Error> {
-        let [e, f, _] = self.apply(dx, dy)?;
-        (self.e, self.f) = (e, f);
-        Ok(())
-    }
-
-    fn rotate(&mut self, angle: BinaryAngle) -> Result<(), Error> {
-        let (cos, sin) = angle.cos_sin();
-        let (cos, sin) = (
-            Real::from_bits(i64::from(cos) << 2),
-            Real::from_bits(i64::from(sin) << 2),
-        );
-        let minus_sin = Real::ZERO.checked_sub(sin).ok_or_else(overflow)?;
-        let (a, b, c, d) = (self.a, self.b, self.c, self.d);
-        self.a = mul_add(a, cos, b, sin)?;
-        self.b = mul_add(a, minus_sin, b, cos)?;
-        self.c = mul_add(c, cos, d, sin)?;
-        self.d = mul_add(c, minus_sin, d, cos)?;
-        Ok(())
-    }
-
-    fn scale(&mut self, sx: Real, sy: Real) -> Result<(), Error> {
-        let times = |v: Real, s: Real| v.checked_mul(s).ok_or_else(overflow);
-        self.a = times(self.a, sx)?;
-        self.c = times(self.c, sx)?;
-        self.b = times(self.b, sy)?;
-        self.d = times(self.d, sy)?;
-        Ok(())
-    }
-}
 
 /// The matrix turtle: C and a stack of saved ones (`STACK` deep).
 #[derive(Debug, Clone)]
 pub(crate) struct MatrixTurtle<const STACK: usize> {
     turn: BinaryAngle,
-    matrix: Matrix,
-    stack: Vec<Matrix, STACK>,
+    matrix: Affine2,
+    color: u8,
+    stack: Vec<(Affine2, u8), STACK>,
 }
 
 impl<const STACK: usize> MatrixTurtle<STACK> {
     pub(crate) fn new(turn: BinaryAngle) -> Self {
         Self {
             turn,
-            matrix: Matrix::IDENTITY,
+            matrix: Affine2::IDENTITY,
+            color: 0,
             stack: Vec::new(),
         }
     }
 
     /// Where it is, and heads (C's x axis), for an environment.
     pub(crate) fn position_and_heading(&self) -> ([Real; 3], [Real; 3]) {
-        let m = &self.matrix;
-        ([m.e, m.f, Real::ZERO], [m.a, m.c, Real::ZERO])
+        let ((x, y), (hx, hy)) = (self.matrix.origin(), self.matrix.x_axis());
+        ([x, y, Real::ZERO], [hx, hy, Real::ZERO])
     }
 
     fn segment(&self, length: Real) -> Result<Segment3, Error> {
         Ok(Segment3 {
             start: self.matrix.apply(Real::ZERO, Real::ZERO)?,
             end: self.matrix.apply(length, Real::ZERO)?,
-            color: self.matrix.color,
+            color: self.color,
         })
     }
 
@@ -156,14 +82,14 @@ impl<const STACK: usize> MatrixTurtle<STACK> {
                     return Ok(segment);
                 }
                 Action::Scale(factor) => self.matrix.scale(factor, factor)?,
-                Action::Color(change) => self.matrix.color = change.apply(self.matrix.color),
+                Action::Color(change) => self.color = change.apply(self.color),
                 Action::Push => self
                     .stack
-                    .push(self.matrix)
+                    .push((self.matrix, self.color))
                     .map_err(|_| Error::Walk(WalkError::StackTooDeep { capacity: STACK }))?,
                 Action::Pop => {
-                    if let Some(matrix) = self.stack.pop() {
-                        self.matrix = matrix;
+                    if let Some((matrix, color)) = self.stack.pop() {
+                        (self.matrix, self.color) = (matrix, color);
                     }
                 }
                 Action::Nothing => {}
