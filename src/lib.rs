@@ -106,6 +106,7 @@ struct ReadmeDoctests;
 
 mod error;
 mod escape;
+mod figure;
 mod ifs;
 mod lsystem;
 mod math;
@@ -118,6 +119,10 @@ pub use error::{
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
 pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
+pub use figure::body::{walk as walk_pose, wave as wave_pose, Joint, BODY};
+pub use figure::{
+    Figure, FigureDrawing, FigureLine, Part, Pose, Shape, MAX_FIGURE_DEPTH, MAX_JOINTS,
+};
 pub use ifs::chaos::{ChaosGame, IfsDrawing, IfsPicture, IfsPoint, SKIPPED};
 pub use ifs::file::{IfsEntry, IfsFile};
 pub use ifs::gingerbread::{

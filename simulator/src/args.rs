@@ -19,6 +19,8 @@ pub enum Command {
     RenderIfs(crate::ifs_scene::IfsOptions),
     /// `render gingerbread ...`
     RenderGingerbread(crate::ifs_scene::GingerbreadOptions),
+    /// `render figure ...`
+    RenderFigure(crate::figure_scene::FigureOptions),
     /// `derive ...`
     Derive(DeriveArgs),
     /// `list PATH.l`
@@ -179,6 +181,8 @@ enum Scene {
     Ifs(crate::ifs_scene::IfsOptions),
     /// The gingerbread man map
     Gingerbread(crate::ifs_scene::GingerbreadOptions),
+    /// The lecture's articulated figure in a pose (or frames of its walk)
+    Figure(crate::figure_scene::FigureOptions),
 }
 
 #[derive(Debug, Args)]
@@ -434,6 +438,7 @@ where
             Scene::Julia(options) => Command::RenderEscape(escape(Some(options.c), options.view)),
             Scene::Ifs(options) => Command::RenderIfs(options),
             Scene::Gingerbread(options) => Command::RenderGingerbread(options),
+            Scene::Figure(options) => Command::RenderFigure(options),
         },
     })
 }

@@ -4,6 +4,7 @@
 mod args;
 mod environment;
 mod escape_scene;
+mod figure_scene;
 mod gallery;
 mod ifs_scene;
 mod output;
@@ -48,6 +49,7 @@ fn main() -> ExitCode {
         Command::RenderEscape(escape) => render_escape(&escape),
         Command::RenderIfs(options) => ifs_scene::render_ifs(&options),
         Command::RenderGingerbread(options) => ifs_scene::render_gingerbread(&options),
+        Command::RenderFigure(options) => figure_scene::render_figure(&options),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1376,3 +1376,50 @@ fn gingerbread_renders_with_its_period() {
     let bad = run(&["render", "gingerbread", "--start", "1;2"]);
     assert_eq!(bad.status.code(), Some(2));
 }
+
+/// `render figure`: a pose with `--segments` (world units, the part's name last), and
+/// `--frames` of the walk cycle.
+#[test]
+fn figure_renders_poses_and_frames() {
+    let dir = scratch("figure");
+    let segments = dir.join("lines.txt");
+    let out = dir.join("figure.png");
+    let rendered = run(&[
+        "render",
+        "figure",
+        "--pose",
+        "stand",
+        "--segments",
+        segments.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert_eq!(rendered.status.code(), Some(0), "{}", stderr(&rendered));
+    let text = std::fs::read_to_string(&segments).unwrap();
+    let thigh: Vec<f64> = text
+        .lines()
+        .find(|l| l.ends_with(" left thigh"))
+        .unwrap()
+        .split(' ')
+        .take(4)
+        .map(|n| n.parse().unwrap())
+        .collect();
+    // Standing, the thigh hangs straight down 1.8 units.
+    assert!(
+        (thigh[1] - thigh[3] - 1.8).abs() < 1e-6 && (thigh[0] - thigh[2]).abs() < 1e-6,
+        "{thigh:?}"
+    );
+    let frames = run(&[
+        "render",
+        "figure",
+        "--frames",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(frames.status.code(), Some(0), "{}", stderr(&frames));
+    for index in 0..3 {
+        assert!(dir.join(format!("figure-{index:03}.png")).exists());
+    }
+}

@@ -4,7 +4,7 @@
 //! (a stack of saved maps) restores one bitwise.
 
 use crate::error::{Error, WalkError};
-use crate::math::trig::BinaryAngle;
+use crate::math::trig::{sin_cos, BinaryAngle};
 use crate::math::Real;
 
 fn overflow() -> Error {
@@ -64,6 +64,11 @@ impl Affine2 {
     /// C · rotate(angle), counter-clockwise.
     pub(crate) fn rotate(&mut self, angle: BinaryAngle) -> Result<(), Error> {
         let (cos, sin) = angle.cos_sin();
+        self.rotate_by(cos, sin)
+    }
+
+    /// C · rotate, given the cosine and sine in Q30.
+    fn rotate_by(&mut self, cos: i32, sin: i32) -> Result<(), Error> {
         let (cos, sin) = (
             Real::from_bits(i64::from(cos) << 2),
             Real::from_bits(i64::from(sin) << 2),
@@ -87,9 +92,15 @@ impl Affine2 {
         Ok(())
     }
 
-    /// C · rotate(degrees).
+    /// C · rotate(degrees), with the sine and cosine computed to Q30's rounding (10⁻⁹, not
+    /// the interpolated table's 3·10⁻⁷): a hierarchy of joints keeps its limbs' lengths to
+    /// 10⁻⁸.
     pub fn rotate_degrees(&mut self, degrees: Real) -> Result<(), Error> {
-        self.rotate(BinaryAngle::from_degrees_bits(degrees.to_bits()))
+        // The angle as a fraction of a turn: degrees (Q32) over 360 · 2^32.
+        const TURN: i128 = 360 << 32;
+        let numerator = i128::from(degrees.to_bits()).rem_euclid(TURN);
+        let (cos, sin) = sin_cos(numerator as u64, TURN as u64);
+        self.rotate_by(cos, sin)
     }
 
     /// Where C puts the origin.

@@ -10,6 +10,17 @@ use super::projection::{Eye, Projection, Seen};
 use crate::error::{Error, WalkError};
 use crate::math::Real;
 
+/// One drawn line in space (x right, y up, z towards the viewer).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Segment3 {
+    /// Where the line starts.
+    pub start: [Real; 3],
+    /// Where it ends.
+    pub end: [Real; 3],
+    /// The colour index, 0 unless set.
+    pub color: u8,
+}
+
 /// Depth-cue levels: the palette's first `DEPTH_LEVELS` colours, farthest first.
 pub const DEPTH_LEVELS: u16 = 16;
 

@@ -63,17 +63,18 @@ impl<const STACK: usize> MatrixTurtle<STACK> {
         let values = module.values.as_slice();
         let first = values.first().copied();
         let second = values.get(1).copied();
-        let degrees = |d: Real| BinaryAngle::from_degrees_bits(d.to_bits());
         let negated = |a: BinaryAngle| BinaryAngle(a.0.wrapping_neg());
         match (module.symbol, first) {
             ('D', _) => return self.segment(Real::ONE).map(Some),
             ('T', _) => self
                 .matrix
                 .translate(first.unwrap_or(Real::ONE), second.unwrap_or(Real::ZERO))?,
-            ('R', Some(d)) => self.matrix.rotate(degrees(d))?,
+            ('R', Some(d)) => self.matrix.rotate_degrees(d)?,
             ('S', Some(s)) => self.matrix.scale(s, second.unwrap_or(s))?,
-            ('+', d) => self.matrix.rotate(d.map_or(self.turn, degrees))?,
-            ('-', d) => self.matrix.rotate(negated(d.map_or(self.turn, degrees)))?,
+            ('+', Some(d)) => self.matrix.rotate_degrees(d)?,
+            ('-', Some(d)) => self.matrix.rotate_degrees(Real::ZERO.saturating_sub(d))?,
+            ('+', None) => self.matrix.rotate(self.turn)?,
+            ('-', None) => self.matrix.rotate(negated(self.turn))?,
             ('|', _) => self.matrix.rotate(BinaryAngle(1 << 31))?,
             _ => match turtle_action(module) {
                 Action::Step { length, draw } => {

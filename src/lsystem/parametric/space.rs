@@ -34,16 +34,7 @@ use crate::render::space::{middle, SpaceFit};
 #[cfg(doc)]
 use crate::DEPTH_LEVELS;
 
-/// One drawn line in space (x right, y up, z towards the viewer), in turtle units.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Segment3 {
-    /// Where the line starts.
-    pub start: [Real; 3],
-    /// Where it ends.
-    pub end: [Real; 3],
-    /// The colour index (`'` `;` `,`), 0 unless set.
-    pub color: u8,
-}
+pub use crate::render::space::Segment3;
 
 /// Everything `[` saves.
 #[derive(Debug, Clone, Copy)]

@@ -1,0 +1,142 @@
+//! `render figure`: the lecture's articulated body in a pose, or frames of its walk cycle.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+use embedded_graphics_simulator::SimulatorDisplay;
+use tinyfractal::{Figure, Pose, Real, BODY};
+
+use crate::args::Common;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PoseName {
+    /// Standing
+    Stand,
+    /// The walk cycle (at --time)
+    Walk,
+    /// Waving the right arm (at --time)
+    Wave,
+}
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct FigureOptions {
+    /// The pose
+    #[arg(long, value_enum, default_value = "walk")]
+    pose: PoseName,
+    /// Where in the cycle, in cycles (0 to 1 is one stride or wave)
+    #[arg(
+        long,
+        value_name = "T",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    time: f64,
+    /// Write N frames of one cycle, NAME-000.png to NAME-(N-1).png, instead of one picture
+    #[arg(long, value_name = "N")]
+    frames: Option<u32>,
+    /// Write every drawn line, `x0 y0 x1 y1 part` a line, in world units
+    #[arg(long, value_name = "TXT")]
+    segments: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+fn pose(name: PoseName, time: f64) -> Result<Pose, String> {
+    let time = Real::from_f64(time).ok_or_else(|| format!("--time {time}: out of range"))?;
+    Ok(match name {
+        PoseName::Stand => Pose::default(),
+        PoseName::Walk => tinyfractal::walk_pose(time),
+        PoseName::Wave => tinyfractal::wave_pose(time),
+    })
+}
+
+/// Fits the figure in its pose to the target (each frame fitted on its own).
+fn render(figure: &Figure, common: &Common) -> Result<(SimulatorDisplay<Rgb888>, u64), String> {
+    let size = Size::new(common.width(), common.height());
+    let mut display = SimulatorDisplay::new(size);
+    let palette = [
+        Rgb888::new(0xE0, 0xE0, 0xE0),
+        Rgb888::new(0xF4, 0xA4, 0x60),
+        Rgb888::new(0xFF, 0xD7, 0x00),
+        Rgb888::new(0x46, 0x82, 0xB4),
+    ];
+    let failed = |e: tinyfractal::Error| format!("figure: {e}");
+    let drawing = figure
+        .fit(Rectangle::new(Point::zero(), size), &palette)
+        .map_err(failed)?;
+    let drawn = drawing
+        .try_draw(&mut display)
+        .map_err(|error| match error {
+            tinyfractal::DrawError::Fractal(error) => failed(error),
+            tinyfractal::DrawError::Target(never) => match never {},
+        })?;
+    Ok((display, drawn))
+}
+
+/// `render figure`.
+pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let started = std::time::Instant::now();
+    if let Some(frames) = options.frames {
+        if frames == 0 {
+            return Err("--frames 0: give at least one frame".into());
+        }
+        let out = options
+            .common
+            .out
+            .clone()
+            .unwrap_or_else(|| PathBuf::from("figure.png"));
+        let stem = out.with_extension("");
+        for index in 0..frames {
+            let figure = Figure::new(
+                &BODY,
+                pose(options.pose, f64::from(index) / f64::from(frames))?,
+            );
+            let (display, _) = render(&figure, &options.common)?;
+            let path = PathBuf::from(format!("{}-{index:03}.png", stem.display()));
+            crate::output::save_png(&display, "--frames", &path)?;
+        }
+        if options.common.stats {
+            println!(
+                "frames={frames} elapsed_ms={:.3}",
+                started.elapsed().as_secs_f64() * 1e3
+            );
+        }
+        return Ok(());
+    }
+    let figure = Figure::new(&BODY, pose(options.pose, options.time)?);
+    let (display, drawn) = render(&figure, &options.common)?;
+    let stats = format!(
+        "lines={drawn} elapsed_ms={:.3}",
+        started.elapsed().as_secs_f64() * 1e3
+    );
+    crate::deliver(
+        &options.common,
+        "figure",
+        &display,
+        |plan| {
+            if let Some(path) = &options.segments {
+                plan.add("--segments", path, move |w: &mut dyn Write| {
+                    let mut result = Ok(());
+                    figure
+                        .for_each_line(|line| {
+                            let s = line.segment;
+                            if result.is_ok() {
+                                result = writeln!(
+                                    w,
+                                    "{} {} {} {} {}",
+                                    s.start[0], s.start[1], s.end[0], s.end[1], line.part
+                                );
+                            }
+                            Ok(())
+                        })
+                        .map_err(std::io::Error::other)?;
+                    result
+                });
+            }
+        },
+        &stats,
+    )
+}
