@@ -15,6 +15,17 @@ pub use read::{ReadError, ReadWarning, Unsupported};
 pub use view::ViewError;
 pub use walk::{Arithmetic, WalkError};
 
+/// A draw's outcome as `Drawable::draw` reports it: the target's errors. The engine's
+/// cannot happen there (fitting the drawing ran the same computation without one); should
+/// one, nothing more is drawn and the default (empty) statistics are returned.
+pub(crate) fn only_target_errors<T: Default, E>(result: Result<T, DrawError<E>>) -> Result<T, E> {
+    match result {
+        Ok(value) => Ok(value),
+        Err(DrawError::Target(error)) => Err(error),
+        Err(DrawError::Fractal(_)) => Ok(T::default()),
+    }
+}
+
 /// Where in the source text a problem was found (1-based; `line` is 0 for text that did not
 /// come from a file, such as a rule passed on the command line).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]

@@ -13,7 +13,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use heapless::Vec;
 
-use crate::error::{DrawError, Error, FitError, WalkError};
+use crate::error::{only_target_errors, DrawError, Error, FitError, WalkError};
 use crate::math::affine::Affine2;
 use crate::math::Real;
 use crate::render::fit::DEFAULT_MARGIN;
@@ -292,10 +292,6 @@ impl<P: Palette> Drawable for FigureDrawing<P> {
     where
         D: DrawTarget<Color = P::Color>,
     {
-        match self.try_draw(target) {
-            Ok(drawn) => Ok(drawn),
-            Err(DrawError::Target(error)) => Err(error),
-            Err(DrawError::Fractal(_)) => Ok(0),
-        }
+        only_target_errors(self.try_draw(target))
     }
 }

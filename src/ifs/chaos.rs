@@ -10,7 +10,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
 use super::maps::Ifs;
-use crate::error::{DrawError, Error, FitError, WalkError};
+use crate::error::{only_target_errors, DrawError, Error, FitError, WalkError};
 use crate::math::random::Generator;
 use crate::math::Real;
 use crate::render::fit::DEFAULT_MARGIN;
@@ -217,10 +217,6 @@ impl<P: Palette> Drawable for IfsDrawing<'_, P> {
     where
         D: DrawTarget<Color = P::Color>,
     {
-        match self.try_draw(target) {
-            Ok(plotted) => Ok(plotted),
-            Err(DrawError::Target(error)) => Err(error),
-            Err(DrawError::Fractal(_)) => Ok(0),
-        }
+        only_target_errors(self.try_draw(target))
     }
 }

@@ -6,7 +6,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use crate::error::{DrawError, Error, FitError, WalkError};
+use crate::error::{only_target_errors, DrawError, Error, FitError, WalkError};
 
 /// A point of the map (integer coordinates of the lecture's 640×480 area).
 pub type MapPoint = (i64, i64);
@@ -231,10 +231,6 @@ impl<C: PixelColor> Drawable for GingerbreadDrawing<C> {
     where
         D: DrawTarget<Color = C>,
     {
-        match self.try_draw(target) {
-            Ok(plotted) => Ok(plotted),
-            Err(DrawError::Target(error)) => Err(error),
-            Err(DrawError::Fractal(_)) => Ok(0),
-        }
+        only_target_errors(self.try_draw(target))
     }
 }

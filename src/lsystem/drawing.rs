@@ -293,17 +293,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     }
 }
 
-/// A draw's outcome as `Drawable::draw` reports it: the target's errors. The engine's
-/// cannot happen there: constructing the drawing walked the same derivation without one.
-pub(crate) fn only_target_errors<E>(
-    result: Result<WalkStats, DrawError<E>>,
-) -> Result<WalkStats, E> {
-    match result {
-        Ok(stats) => Ok(stats),
-        Err(DrawError::Target(error)) => Err(error),
-        Err(DrawError::Fractal(_)) => Ok(WalkStats::default()),
-    }
-}
+pub(crate) use crate::error::only_target_errors;
 
 /// The pixel a point of a drawing pass (whose turtle works in pixels) lands on.
 pub(crate) fn pixel_of(orientation: Orientation, p: TurtlePoint) -> Point {
