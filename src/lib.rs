@@ -123,7 +123,9 @@ pub use figure::body::{walk as walk_pose, wave as wave_pose, Joint, BODY};
 pub use figure::{
     Figure, FigureDrawing, FigureLine, Part, Pose, Shape, MAX_FIGURE_DEPTH, MAX_JOINTS,
 };
-pub use ifs::chaos::{ChaosGame, IfsDrawing, IfsPicture, IfsPoint, SKIPPED};
+pub use ifs::chaos::{
+    ChaosGame, DensityDrawing, IfsDrawing, IfsPicture, IfsPoint, DENSITY_LEVELS, SKIPPED,
+};
 pub use ifs::file::{IfsEntry, IfsFile};
 pub use ifs::gingerbread::{
     Cycle, Gingerbread, GingerbreadDrawing, MapPoint, Points as GingerbreadPoints,

@@ -287,3 +287,44 @@ fn gingerbread_orbit_and_period() {
         p = other.step(p).unwrap();
     }
 }
+
+/// Colour by density: every pixel of the area written exactly once (a row at a time), the
+/// hit counts add up to the points played, and a short buffer is a typed error.
+#[test]
+fn density_colours_count_every_point() {
+    use embedded_graphics::mock_display::MockDisplay;
+    use embedded_graphics::pixelcolor::Gray8;
+    use tinyfractal::{FitError, Gradient, DENSITY_LEVELS};
+    let ifs = IfsFile::new(FERN).entry("fern").unwrap().ifs().unwrap();
+    let area = Rectangle::new(Point::zero(), Size::new(64, 64));
+    let palette = Gradient::<Gray8, 16>::new(
+        &[
+            embedded_graphics::pixelcolor::Rgb888::BLACK,
+            embedded_graphics::pixelcolor::Rgb888::WHITE,
+        ],
+        Gray8::BLACK,
+    )
+    .unwrap();
+    let mut counts = vec![0u16; 64 * 64];
+    let drawing = IfsPicture::new(&ifs, 30_000)
+        .fit_density(area, palette, &mut counts)
+        .unwrap();
+    let mut display: MockDisplay<Gray8> = MockDisplay::new();
+    assert_eq!(drawing.draw(&mut display).unwrap(), 30_000);
+    assert_eq!(display.affected_area(), area);
+    assert_eq!(counts.iter().map(|&c| u64::from(c)).sum::<u64>(), 30_000);
+    assert!(
+        counts.iter().any(|&c| c >= 1 << (DENSITY_LEVELS / 2)),
+        "dense pixels"
+    );
+    let mut short = vec![0u16; 100];
+    assert_eq!(
+        IfsPicture::new(&ifs, 10)
+            .fit_density(area, palette, &mut short)
+            .err(),
+        Some(Error::Fit(FitError::BufferTooSmall {
+            needed: 4096,
+            given: 100
+        }))
+    );
+}

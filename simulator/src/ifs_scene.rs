@@ -48,6 +48,9 @@ pub struct IfsOptions {
     /// Write every plotted point, `x y` (`x y z` in 3D) a line, in IFS coordinates
     #[arg(long, value_name = "TXT")]
     points: Option<PathBuf>,
+    /// Colour each pixel by how many points hit it (log scale), not by map
+    #[arg(long)]
+    density: bool,
     /// The chaos game's seed
     #[arg(long, value_name = "N", default_value_t = 0)]
     seed: u64,
@@ -120,10 +123,27 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
     }
     let mut target = display(&options.common);
     let started = Instant::now();
-    let drawing = picture
-        .fit(area(&options.common), &GREENS)
-        .map_err(failed)?;
-    let plotted = drawing.try_draw(&mut target).map_err(|error| match error {
+    let drawn = if options.density {
+        let keys = [
+            Rgb888::new(0x00, 0x10, 0x00),
+            Rgb888::new(0x20, 0xA0, 0x20),
+            Rgb888::new(0xF0, 0xFF, 0xC0),
+        ];
+        let palette = tinyfractal::Gradient::<Rgb888, 16>::new(&keys, Rgb888::BLACK)
+            .ok_or("the density palette is empty")?;
+        let pixels = options.common.width() as usize * options.common.height() as usize;
+        let mut counts = vec![0u16; pixels];
+        picture
+            .fit_density(area(&options.common), palette, &mut counts)
+            .map_err(failed)?
+            .try_draw(&mut target)
+    } else {
+        picture
+            .fit(area(&options.common), &GREENS)
+            .map_err(failed)?
+            .try_draw(&mut target)
+    };
+    let plotted = drawn.map_err(|error| match error {
         tinyfractal::DrawError::Fractal(error) => failed(error),
         tinyfractal::DrawError::Target(never) => match never {},
     })?;

@@ -1325,6 +1325,21 @@ fn ifs_renders_and_writes_points() {
         "--stats",
     ]);
     assert_eq!(inline.status.code(), Some(0), "{}", stderr(&inline));
+    let density = run(&[
+        "render",
+        "ifs",
+        "--file",
+        &lecture,
+        "--name",
+        "fern",
+        "--density",
+        "--size",
+        "64x48",
+        "--out",
+        out.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert_eq!(density.status.code(), Some(0), "{}", stderr(&density));
     let bad = run(&[
         "render",
         "ifs",

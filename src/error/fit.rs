@@ -20,6 +20,13 @@ pub enum FitError {
         /// The target's height in pixels.
         height: u32,
     },
+    /// A caller's buffer has fewer cells than the area it must cover.
+    BufferTooSmall {
+        /// Cells needed (the area's width × height).
+        needed: usize,
+        /// Cells given.
+        given: usize,
+    },
 }
 
 impl fmt::Display for FitError {
@@ -32,6 +39,10 @@ impl fmt::Display for FitError {
                 f,
                 "the target ({width}x{height} pixels) is too small for this picture: it needs \
                  at least 2 pixels along each axis the picture extends along"
+            ),
+            Self::BufferTooSmall { needed, given } => write!(
+                f,
+                "the buffer has {given} cells and the area {needed} pixels: give one a pixel"
             ),
         }
     }
