@@ -68,10 +68,8 @@ fn render(figure: &Figure, common: &Common) -> Result<(SimulatorDisplay<Rgb888>,
         .map_err(failed)?;
     let drawn = drawing
         .try_draw(&mut display)
-        .map_err(|error| match error {
-            tinyfractal::DrawError::Fractal(error) => failed(error),
-            tinyfractal::DrawError::Target(never) => match never {},
-        })?;
+        .map_err(crate::scene::engine_error)
+        .map_err(failed)?;
     Ok((display, drawn))
 }
 

@@ -143,10 +143,7 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
             .map_err(failed)?
             .try_draw(&mut target)
     };
-    let plotted = drawn.map_err(|error| match error {
-        tinyfractal::DrawError::Fractal(error) => failed(error),
-        tinyfractal::DrawError::Target(never) => match never {},
-    })?;
+    let plotted = drawn.map_err(crate::scene::engine_error).map_err(failed)?;
     let stats = format!(
         "points={plotted} maps={} elapsed_ms={:.3}",
         ifs.len(),
@@ -193,10 +190,10 @@ pub fn render_entry(
     let drawing = IfsPicture::new(&ifs, points)
         .fit(Rectangle::new(Point::zero(), size), &GREENS)
         .map_err(failed)?;
-    let plotted = drawing.try_draw(&mut target).map_err(|error| match error {
-        tinyfractal::DrawError::Fractal(error) => failed(error),
-        tinyfractal::DrawError::Target(never) => match never {},
-    })?;
+    let plotted = drawing
+        .try_draw(&mut target)
+        .map_err(crate::scene::engine_error)
+        .map_err(failed)?;
     Ok((target, plotted, started.elapsed()))
 }
 
@@ -215,10 +212,10 @@ pub fn render_gingerbread(options: &GingerbreadOptions) -> Result<(), String> {
     let drawing = map
         .fit(area(&options.common), Rgb888::new(0xD2, 0x69, 0x1E))
         .map_err(failed)?;
-    let plotted = drawing.try_draw(&mut target).map_err(|error| match error {
-        tinyfractal::DrawError::Fractal(error) => failed(error),
-        tinyfractal::DrawError::Target(never) => match never {},
-    })?;
+    let plotted = drawing
+        .try_draw(&mut target)
+        .map_err(crate::scene::engine_error)
+        .map_err(failed)?;
     let elapsed = started.elapsed();
     // The cycle, searched over at most 2^24 steps (two points of memory).
     let cycle = match map.cycle(1 << 24).map_err(failed)? {

@@ -86,6 +86,40 @@ pub fn render_oriented(
     render_window(grammar, order, width, height, orientation, None)
 }
 
+impl Rendered {
+    /// A picture drawn from `started`, fitted after `fit`.
+    fn timed(
+        display: SimulatorDisplay<Rgb888>,
+        stats: WalkStats,
+        started: Instant,
+        fit: Duration,
+    ) -> Self {
+        let elapsed = started.elapsed();
+        Self {
+            display,
+            stats,
+            fit,
+            draw: elapsed - fit,
+            elapsed,
+        }
+    }
+}
+
+/// The engine's error of a draw into the simulator's display (whose own cannot happen).
+pub fn engine_error(error: tinyfractal::DrawError<core::convert::Infallible>) -> Error {
+    match error {
+        tinyfractal::DrawError::Fractal(error) => error,
+        tinyfractal::DrawError::Target(never) => match never {},
+    }
+}
+
+/// A draw into the simulator's display, with the engine's errors.
+fn drawn<T>(
+    result: Result<T, tinyfractal::DrawError<core::convert::Infallible>>,
+) -> Result<T, Error> {
+    result.map_err(engine_error)
+}
+
 /// How a system of the general engine is drawn: its 3D view, depth cue, environment.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct GeneralLook<'e> {
@@ -130,20 +164,8 @@ pub fn render_general(
     };
     let drawing = system.fit(fitted_area(width, height, view)?, palette)?;
     let fit = started.elapsed();
-    let stats = drawing
-        .try_draw(&mut display)
-        .map_err(|error| match error {
-            tinyfractal::DrawError::Fractal(error) => error,
-            tinyfractal::DrawError::Target(never) => match never {},
-        })?;
-    let elapsed = started.elapsed();
-    Ok(Rendered {
-        display,
-        stats,
-        fit,
-        draw: elapsed - fit,
-        elapsed,
-    })
+    let stats = drawn(drawing.try_draw(&mut display))?;
+    Ok(Rendered::timed(display, stats, started, fit))
 }
 
 fn render_window(
@@ -164,20 +186,8 @@ fn render_window(
     let area = fitted_area(width, height, view)?;
     let drawing = system.fit_in(area, palette, &mut cells)?;
     let fit = started.elapsed();
-    let stats = drawing
-        .try_draw(&mut display)
-        .map_err(|error| match error {
-            tinyfractal::DrawError::Fractal(error) => error,
-            tinyfractal::DrawError::Target(never) => match never {},
-        })?;
-    let elapsed = started.elapsed();
-    Ok(Rendered {
-        display,
-        stats,
-        fit,
-        draw: elapsed - fit,
-        elapsed,
-    })
+    let stats = drawn(drawing.try_draw(&mut display))?;
+    Ok(Rendered::timed(display, stats, started, fit))
 }
 
 /// Every drawn segment, `x0 y0 x1 y1` per line, in turtle units (start at the origin,
