@@ -111,10 +111,11 @@ mod ifs;
 mod lsystem;
 mod math;
 mod render;
+mod subdivision;
 
 pub use error::{
-    Arithmetic, DrawError, Error, FitError, Location, ReadError, ReadWarning, Unsupported,
-    ViewError, WalkError,
+    Arithmetic, DrawError, Error, FitError, Location, ParameterError, ReadError, ReadWarning,
+    Unsupported, ViewError, WalkError,
 };
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
@@ -155,3 +156,7 @@ pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use render::projection::Projection;
 pub use render::sink::{DwellBuffer, DwellSink};
 pub use render::space::DEPTH_LEVELS;
+pub use subdivision::carpet::{Carpet, CarpetDrawing, CarpetStats};
+pub use subdivision::cube::{Camera, CubeDrawing, CubeStats, CubeVariant, SierpinskiCube};
+pub use subdivision::gasket::{Gasket, GasketDrawing, GasketStats};
+pub use subdivision::MAX_SUBDIVISION_ORDER;

@@ -6,11 +6,13 @@
 use core::fmt;
 
 mod fit;
+mod parameter;
 mod read;
 mod view;
 mod walk;
 
 pub use fit::FitError;
+pub use parameter::ParameterError;
 pub use read::{ReadError, ReadWarning, Unsupported};
 pub use view::ViewError;
 pub use walk::{Arithmetic, WalkError};
@@ -68,6 +70,8 @@ pub enum Error {
     Fit(FitError),
     /// An escape-time view cannot be computed.
     View(ViewError),
+    /// A generator's parameter (order, roughness, samples, box sizes) is out of range.
+    Parameter(ParameterError),
 }
 
 impl fmt::Display for Error {
@@ -77,6 +81,7 @@ impl fmt::Display for Error {
             Self::Walk(error) => error.fmt(f),
             Self::Fit(error) => error.fmt(f),
             Self::View(error) => error.fmt(f),
+            Self::Parameter(error) => error.fmt(f),
         }
     }
 }
@@ -105,7 +110,8 @@ group!(
     Read(ReadError),
     Walk(WalkError),
     Fit(FitError),
-    View(ViewError)
+    View(ViewError),
+    Parameter(ParameterError)
 );
 
 /// An error while drawing: either the engine's own [`Error`] or the display's.

@@ -4,6 +4,7 @@
 
 pub(crate) mod fit;
 pub(crate) mod palette;
+pub(crate) mod polygon;
 pub(crate) mod projection;
 pub(crate) mod raster;
 pub(crate) mod sink;

@@ -1,0 +1,113 @@
+//! Generators' parameters: subdivision orders, terrain roughness and sizes, box sizes.
+
+use core::fmt;
+
+use crate::math::Real;
+
+/// A generator was asked for something outside what it accepts. Each variant carries the
+/// value given and the bound it broke.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum ParameterError {
+    /// The order needs cells finer than a pixel of this target (or beyond the generator's
+    /// capacity): `max` is the highest order that shows every cell.
+    OrderTooHigh {
+        /// The order given.
+        order: u32,
+        /// The highest order this target (and capacity) allows.
+        max: u32,
+    },
+    /// The roughness is outside (0, 1].
+    RoughnessOutOfRange {
+        /// The value given.
+        roughness: Real,
+    },
+    /// The standard deviation is negative or above `max`.
+    SigmaOutOfRange {
+        /// The value given.
+        sigma: Real,
+        /// The largest accepted ([`MAX_SIGMA`](crate::MAX_SIGMA)).
+        max: Real,
+    },
+    /// A terrain's fixed end height is beyond ±`max`.
+    EndOutOfRange {
+        /// The value given.
+        end: Real,
+        /// The largest magnitude accepted ([`MAX_END`](crate::MAX_END)).
+        max: Real,
+    },
+    /// Midpoint displacement needs 2ᵏ + 1 samples.
+    SamplesNotPowerOfTwoPlusOne {
+        /// The count given.
+        samples: u32,
+    },
+    /// More samples than the generator's capacity.
+    TooManySamples {
+        /// The count given.
+        samples: u32,
+        /// The most accepted.
+        max: u32,
+    },
+    /// A box-counting range without two sizes, or sizes beyond the area.
+    BoxSizesOutOfRange {
+        /// log₂ of the smallest box side asked.
+        smallest: u32,
+        /// log₂ of the largest box side asked.
+        largest: u32,
+        /// log₂ of the largest side the area allows.
+        max: u32,
+    },
+    /// The camera's elevation is not strictly between −90° and 90°.
+    CameraOutOfRange {
+        /// The azimuth given, degrees.
+        azimuth: Real,
+        /// The elevation given, degrees.
+        elevation: Real,
+    },
+}
+
+impl fmt::Display for ParameterError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Self::OrderTooHigh { order, max } => write!(
+                f,
+                "order {order} is too high: on this target (and within the generator's \
+                 capacity) every cell is at least a pixel up to order {max}; lower the order \
+                 or draw larger"
+            ),
+            Self::RoughnessOutOfRange { roughness } => write!(
+                f,
+                "roughness {roughness} is outside (0, 1]: use e.g. 0.5 (smooth) to 0.9 (rough); \
+                 0.7071 is Brownian motion"
+            ),
+            Self::SigmaOutOfRange { sigma, max } => write!(
+                f,
+                "sigma {sigma} is out of range: use a standard deviation from 0 to {max}"
+            ),
+            Self::EndOutOfRange { end, max } => {
+                write!(f, "end height {end} is out of range: use -{max} to {max}")
+            }
+            Self::SamplesNotPowerOfTwoPlusOne { samples } => write!(
+                f,
+                "{samples} samples: midpoint displacement needs 2^k + 1 (3, 5, 9, 17, ..., 1025)"
+            ),
+            Self::TooManySamples { samples, max } => {
+                write!(f, "{samples} samples is more than the {max} supported")
+            }
+            Self::BoxSizesOutOfRange {
+                smallest,
+                largest,
+                max,
+            } => write!(
+                f,
+                "box sides 2^{smallest} to 2^{largest} do not fit: give at least two sizes \
+                 with the largest at most 2^{max} (the area's shorter side)"
+            ),
+            Self::CameraOutOfRange { azimuth, elevation } => write!(
+                f,
+                "camera azimuth {azimuth}, elevation {elevation}: use an elevation strictly \
+                 between -90 and 90 degrees"
+            ),
+        }
+    }
+}

@@ -1,0 +1,71 @@
+//! Subdivision fractals (the lecture's Sierpiński family): the carpet (a square split 3×3
+//! with its centre removed, recursively), the gasket (a triangle split in four with its
+//! middle removed) and the cube (27 subcubes with the centre, or the centre and the six
+//! face centres, removed), each drawn by index arithmetic or a bounded explicit stack,
+//! never a list of cells.
+//!
+//! Each drawing paints every pixel of its box once (the kept cells in the ink colour, the
+//! removed ones in the background colour), except the cube, which clears its box and then
+//! paints faces back to front.
+
+pub(crate) mod carpet;
+pub(crate) mod cube;
+pub(crate) mod gasket;
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use crate::error::{Error, FitError, ParameterError};
+
+/// Deepest subdivision order any of these generators accepts (the explicit stacks' size).
+/// A target limits it further: every cell must be at least a pixel.
+pub const MAX_SUBDIVISION_ORDER: u32 = 12;
+
+/// `base` to the power `order`, saturating.
+pub(crate) const fn power(base: u64, order: u32) -> u64 {
+    let mut value: u64 = 1;
+    let mut i = 0;
+    while i < order {
+        value = value.saturating_mul(base);
+        i += 1;
+    }
+    value
+}
+
+/// The highest order whose `base`ᵒʳᵈᵉʳ cells across fit in `pixels` (each at least a pixel),
+/// capped at [`MAX_SUBDIVISION_ORDER`].
+pub(crate) fn highest_order(base: u64, pixels: u64) -> u32 {
+    let mut order = 0;
+    while order < MAX_SUBDIVISION_ORDER && power(base, order + 1) <= pixels {
+        order += 1;
+    }
+    order
+}
+
+/// Checks `order` against what `pixels` across (and the capacity) allow.
+pub(crate) fn check_order(order: u32, base: u64, pixels: u64) -> Result<(), Error> {
+    let max = highest_order(base, pixels);
+    if order > max {
+        return Err(Error::Parameter(ParameterError::OrderTooHigh {
+            order,
+            max,
+        }));
+    }
+    Ok(())
+}
+
+/// The largest square centred in `area`.
+pub(crate) fn centred_square(area: Rectangle) -> Result<Rectangle, Error> {
+    let side = area.size.width.min(area.size.height);
+    if side == 0 {
+        return Err(Error::Fit(FitError::ZeroSizeTarget));
+    }
+    let offset = Point::new(
+        ((area.size.width - side) / 2) as i32,
+        ((area.size.height - side) / 2) as i32,
+    );
+    Ok(Rectangle::new(
+        area.top_left + offset,
+        Size::new(side, side),
+    ))
+}
