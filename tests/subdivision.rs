@@ -164,7 +164,11 @@ fn gasket_matches_an_f64_subdivision_pixel_for_pixel_away_from_edges() {
             differ * 1000 <= (w * h) as usize,
             "order {order}: {differ} edge pixels differ"
         );
-        // Area: half the box, times (3/4)^N.
+        // Area: half the box, times (3/4)^N, while the triangles are large against a
+        // pixel (beyond, sampling their edges dominates; the pixels are checked above).
+        if order > 4 {
+            continue;
+        }
         let theory = 0.5 * 0.75f64.powi(order as i32) * w * h;
         assert!(
             (ink as f64 - theory).abs() / theory < 0.03,
