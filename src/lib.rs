@@ -112,6 +112,7 @@ mod lsystem;
 mod math;
 mod render;
 mod subdivision;
+mod terrain;
 
 pub use error::{
     Arithmetic, DrawError, Error, FitError, Location, ParameterError, ReadError, ReadWarning,
@@ -160,3 +161,6 @@ pub use subdivision::carpet::{Carpet, CarpetDrawing, CarpetStats};
 pub use subdivision::cube::{Camera, CubeDrawing, CubeStats, CubeVariant, SierpinskiCube};
 pub use subdivision::gasket::{Gasket, GasketDrawing, GasketStats};
 pub use subdivision::MAX_SUBDIVISION_ORDER;
+pub use terrain::map::{MapDrawing, TerrainMap, MAX_MAP_LEVELS};
+pub use terrain::profile::{Heights, ProfileDrawing, Terrain};
+pub use terrain::{Displacement, MAX_END, MAX_SIGMA, MAX_TERRAIN_LEVELS};

@@ -114,13 +114,8 @@ mod tests {
             subpixel(4, 3),
             subpixel(1, 3),
         ];
-        fill_convex(
-            &mut display,
-            &square,
-            BinaryColor::On,
-            &display.bounding_box(),
-        )
-        .unwrap();
+        let clip = display.bounding_box();
+        fill_convex(&mut display, &square, BinaryColor::On, &clip).unwrap();
         display.assert_pattern(&[
             "     ", //
             " ### ", //

@@ -107,10 +107,7 @@ impl<C: PixelColor> Drawable for CarpetDrawing<C> {
         let mut next_child = [0u8; MAX_SUBDIVISION_ORDER as usize];
         let mut cell = [(0u64, 0u64); MAX_SUBDIVISION_ORDER as usize];
         let mut depth = 0usize;
-        loop {
-            let (Some(child), Some(&(x, y))) = (next_child.get_mut(depth), cell.get(depth)) else {
-                break;
-            };
+        while let (Some(child), Some(&(x, y))) = (next_child.get_mut(depth), cell.get(depth)) {
             if *child == 9 {
                 if depth == 0 {
                     break;

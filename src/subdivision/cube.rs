@@ -366,10 +366,7 @@ impl<C: PixelColor> Drawable for CubeDrawing<C> {
             stats.faces = self.paint_cell(target, [0, 0, 0], &clip)?;
             return Ok(stats);
         }
-        loop {
-            let (Some(child), Some(&parent)) = (next_child.get_mut(depth), cell.get(depth)) else {
-                break;
-            };
+        while let (Some(child), Some(&parent)) = (next_child.get_mut(depth), cell.get(depth)) {
             if *child == 27 {
                 if depth == 0 {
                     break;
