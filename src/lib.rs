@@ -104,6 +104,7 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
+mod dimension;
 mod error;
 mod escape;
 mod figure;
@@ -114,6 +115,7 @@ mod render;
 mod subdivision;
 mod terrain;
 
+pub use dimension::{BoxCounter, Dimension};
 pub use error::{
     Arithmetic, DrawError, Error, FitError, Location, ParameterError, ReadError, ReadWarning,
     Unsupported, ViewError, WalkError,
