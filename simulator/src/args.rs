@@ -21,6 +21,18 @@ pub enum Command {
     RenderGingerbread(crate::ifs_scene::GingerbreadOptions),
     /// `render figure ...`
     RenderFigure(crate::figure_scene::FigureOptions),
+    /// `render carpet --order N`
+    RenderCarpet(crate::shape_scene::OrderOptions),
+    /// `render gasket --order N`
+    RenderGasket(crate::shape_scene::OrderOptions),
+    /// `render cube --order N ...`
+    RenderCube(crate::shape_scene::CubeOptions),
+    /// `render terrain ...`
+    RenderTerrain(crate::shape_scene::TerrainOptions),
+    /// `render terrain2d ...`
+    RenderTerrain2d(crate::shape_scene::Terrain2dOptions),
+    /// `dimension FILE.png [--background RRGGBB]`
+    Dimension { file: PathBuf, background: u32 },
     /// `derive ...`
     Derive(DeriveArgs),
     /// `list PATH.l`
@@ -71,6 +83,9 @@ pub struct Common {
     /// Show the picture in a window (needs the `window` feature and SDL2)
     #[arg(long)]
     pub window: bool,
+    /// Print the picture's box-counting dimension (pixels not black), `dimension=D.DDD`
+    #[arg(long)]
+    pub dimension: bool,
 }
 
 impl Common {
@@ -150,6 +165,15 @@ enum Commands {
     },
     /// Print the string a system derives at an order, on one line
     Derive(DeriveOptions),
+    /// The box-counting dimension of a PNG's pixels that are not the background
+    Dimension {
+        /// The picture
+        #[arg(value_name = "FILE.png")]
+        file: PathBuf,
+        /// The background colour, RRGGBB in hex
+        #[arg(long, value_name = "RRGGBB", default_value = "000000", value_parser = parse_rgb)]
+        background: u32,
+    },
     /// The systems in a .l or .lsys file, one name a line
     List {
         /// The .l file
@@ -183,6 +207,17 @@ enum Scene {
     Gingerbread(crate::ifs_scene::GingerbreadOptions),
     /// The lecture's articulated figure in a pose (or frames of its walk)
     Figure(crate::figure_scene::FigureOptions),
+    /// The Sierpinski carpet
+    Carpet(crate::shape_scene::OrderOptions),
+    /// The Sierpinski gasket
+    Gasket(crate::shape_scene::OrderOptions),
+    /// The Sierpinski cube (or the Menger sponge), projected
+    Cube(crate::shape_scene::CubeOptions),
+    /// A mountain profile by 1D midpoint displacement
+    Terrain(crate::shape_scene::TerrainOptions),
+    /// A landscape by diamond-square (2D midpoint displacement)
+    #[command(name = "terrain2d")]
+    Terrain2d(crate::shape_scene::Terrain2dOptions),
 }
 
 #[derive(Debug, Args)]
@@ -439,7 +474,13 @@ where
             Scene::Ifs(options) => Command::RenderIfs(options),
             Scene::Gingerbread(options) => Command::RenderGingerbread(options),
             Scene::Figure(options) => Command::RenderFigure(options),
+            Scene::Carpet(options) => Command::RenderCarpet(options),
+            Scene::Gasket(options) => Command::RenderGasket(options),
+            Scene::Cube(options) => Command::RenderCube(options),
+            Scene::Terrain(options) => Command::RenderTerrain(options),
+            Scene::Terrain2d(options) => Command::RenderTerrain2d(options),
         },
+        Some(Commands::Dimension { file, background }) => Command::Dimension { file, background },
     })
 }
 
@@ -535,6 +576,16 @@ fn escape(julia: Option<(String, String)>, options: EscapeOptions) -> EscapeArgs
 pub const MAX_SIDE: u32 = 16_384;
 /// See [`MAX_SIDE`].
 pub const MAX_PIXELS: u64 = 1 << 26;
+
+fn parse_rgb(text: &str) -> Result<u32, String> {
+    let hex = text.trim().trim_start_matches('#');
+    match u32::from_str_radix(hex, 16) {
+        Ok(value) if hex.len() == 6 => Ok(value),
+        _ => Err(format!(
+            "`{text}` is not a colour RRGGBB in hex, e.g. 000000 or ffffff"
+        )),
+    }
+}
 
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let bad = || format!("`{text}` is not WxH, e.g. 320x240");

@@ -94,6 +94,14 @@ pub fn run(out: &Path) -> Result<(), String> {
                     ))
                 },
             ),
+            Scene::Subdivision { .. } | Scene::Terrain { .. } => {
+                crate::shape_scene::render_entry(&entry.scene, size).and_then(
+                    |(display, detail, work, elapsed)| {
+                        save(&display, &path)?;
+                        Ok((detail, work, elapsed))
+                    },
+                )
+            }
             Scene::Escape {
                 julia,
                 centre,

@@ -10,6 +10,7 @@ mod ifs_scene;
 mod output;
 mod palette;
 mod scene;
+mod shape_scene;
 
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
@@ -50,6 +51,12 @@ fn main() -> ExitCode {
         Command::RenderIfs(options) => ifs_scene::render_ifs(&options),
         Command::RenderGingerbread(options) => ifs_scene::render_gingerbread(&options),
         Command::RenderFigure(options) => figure_scene::render_figure(&options),
+        Command::RenderCarpet(options) => shape_scene::render_carpet(&options),
+        Command::RenderGasket(options) => shape_scene::render_gasket(&options),
+        Command::RenderCube(options) => shape_scene::render_cube(&options),
+        Command::RenderTerrain(options) => shape_scene::render_terrain(&options),
+        Command::RenderTerrain2d(options) => shape_scene::render_terrain2d(&options),
+        Command::Dimension { file, background } => dimension(&file, background),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -405,9 +412,55 @@ fn deliver<'a>(
     if common.stats {
         println!("{stats}");
     }
+    if common.dimension {
+        println!("{}", dimension_line(display, Rgb888::new(0, 0, 0))?);
+    }
     if common.window {
         show(display)?;
     }
+    Ok(())
+}
+
+/// The box-counting dimension of `display`'s pixels other than `background`, as
+/// `dimension=D.DDD residual=R.RRR boxes=S..L` (box sides in pixels).
+fn dimension_line(
+    display: &SimulatorDisplay<Rgb888>,
+    background: Rgb888,
+) -> Result<String, String> {
+    use embedded_graphics::prelude::*;
+    let size = display.size();
+    let mut bits = vec![0u32; tinyfractal::BoxCounter::<Rgb888>::words_needed(size, 0)];
+    let mut counter = tinyfractal::BoxCounter::new(size, 0, background, &mut bits)
+        .map_err(|e| format!("dimension: {e}"))?;
+    let pixels = display
+        .bounding_box()
+        .points()
+        .map(|p| display.get_pixel(p));
+    let Ok(()) = counter.fill_contiguous(&display.bounding_box(), pixels);
+    let estimate = counter.dimension().map_err(|e| format!("dimension: {e}"))?;
+    Ok(format!(
+        "dimension={:.3} residual={:.3} boxes={}..{}",
+        estimate.value.to_f64(),
+        estimate.residual.to_f64(),
+        1u32 << estimate.smallest,
+        1u32 << estimate.largest
+    ))
+}
+
+/// `tinyfractal dimension FILE.png`: the picture's box-counting dimension.
+fn dimension(path: &Path, background: u32) -> Result<(), String> {
+    use embedded_graphics::prelude::*;
+    let picture = image::open(path)
+        .map_err(|e| format!("dimension {}: {e}", path.display()))?
+        .to_rgb8();
+    let (width, height) = picture.dimensions();
+    let mut display = SimulatorDisplay::new(embedded_graphics::prelude::Size::new(width, height));
+    for (x, y, pixel) in picture.enumerate_pixels() {
+        let [r, g, b] = pixel.0;
+        let _ = Pixel(Point::new(x as i32, y as i32), Rgb888::new(r, g, b)).draw(&mut display);
+    }
+    let [_, r, g, b] = background.to_be_bytes();
+    println!("{}", dimension_line(&display, Rgb888::new(r, g, b))?);
     Ok(())
 }
 

@@ -134,9 +134,7 @@ mod firmware {
                     .unwrap_or(Work::Segments(0));
             });
             let stack = stack_used(bottom);
-            let work = match work {
-                Work::Segments(n) | Work::Iterations(n) | Work::Points(n) => n,
-            };
+            let work = work.count();
             let (mut f32_cost, mut fixed_cost) = (None, None);
             if let Some(view) = BaselineView::of(&entry.scene) {
                 f32_cost = Some(clock.measure(|| {
@@ -168,7 +166,7 @@ mod firmware {
                 work = entry.draw(&mut target, &GREY).unwrap_or(Work::Segments(0));
             });
             let stack = stack_used(bottom);
-            let (Work::Segments(work) | Work::Iterations(work) | Work::Points(work)) = work;
+            let work = work.count();
             hprintln!(
                 "measure scene={} instructions={} work={} checksum={} pixels={} stack={} baseline_f32=null baseline_fixed20=null",
                 entry.name,

@@ -111,6 +111,7 @@ fn main() -> ! {
                 Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", name, n, ms),
                 Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
                 Ok(Work::Points(n)) => info!("{}: {} points in {} ms", name, n, ms),
+                Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", name, n, ms),
                 Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
             }
             let shown = timer.get_counter();

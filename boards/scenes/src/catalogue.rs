@@ -3,7 +3,10 @@
 //! every firmware and the measuring firmware read.
 
 use embedded_graphics::geometry::Size;
-use tinyfractal::{Angle, Coord, Dialect, Error, Fractal, Grammar, Orientation, Real, View};
+use tinyfractal::{
+    Angle, Coord, CubeVariant, Dialect, Displacement, Error, Fractal, Grammar, Orientation, Real,
+    View,
+};
 
 /// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
 #[derive(Debug, Clone, Copy)]
@@ -42,6 +45,21 @@ impl System {
     }
 }
 
+/// A subdivision fractal of the Sierpiński family.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// The carpet.
+    Carpet,
+    /// The gasket.
+    Gasket,
+    /// The cube, seen isometrically.
+    Cube(CubeVariant),
+}
+
+/// The colour of the Sierpiński cube's faces, before shading.
+pub const CUBE_COLOUR: embedded_graphics::pixelcolor::Rgb888 =
+    embedded_graphics::pixelcolor::Rgb888::new(0xC8, 0xB4, 0x78);
+
 /// What to draw.
 #[derive(Debug, Clone, Copy)]
 pub enum Scene {
@@ -65,6 +83,23 @@ pub enum Scene {
         /// The game's seed.
         seed: u64,
     },
+    /// A subdivision fractal at an order.
+    Subdivision {
+        /// Which.
+        shape: Shape,
+        /// Order.
+        order: u32,
+    },
+    /// Midpoint-displacement terrain: a profile, or a landscape (`map`) of `samples`²
+    /// heights.
+    Terrain {
+        /// Roughness, σ and seed.
+        displacement: Displacement,
+        /// Heights (along a side, for a landscape): 2ᵏ + 1.
+        samples: u32,
+        /// A 2D landscape rather than a profile.
+        map: bool,
+    },
     /// A Mandelbrot (`julia: None`) or Julia view, as decimal text: the catalogue's
     /// entries are checked when compiled; in a scene built by hand, a number that does not
     /// parse counts as 0.
@@ -81,11 +116,19 @@ pub enum Scene {
 }
 
 impl Scene {
-    /// The family, as the CLI names it: `lsystem`, `ifs`, `mandelbrot` or `julia`.
+    /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
+    /// `terrain`, `terrain2d`, `mandelbrot` or `julia`.
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
             Self::Ifs { .. } => "ifs",
+            Self::Subdivision { shape, .. } => match shape {
+                Shape::Carpet => "carpet",
+                Shape::Gasket => "gasket",
+                Shape::Cube(_) => "cube",
+            },
+            Self::Terrain { map: false, .. } => "terrain",
+            Self::Terrain { map: true, .. } => "terrain2d",
             Self::Escape { julia: None, .. } => "mandelbrot",
             Self::Escape { julia: Some(_), .. } => "julia",
         }
@@ -308,9 +351,43 @@ const JULIA_K: Option<(&str, &str)> = Some(("-0.8", "0.156"));
 /// Seahorse valley's spiral, for the deep zooms.
 const SPIRAL: (&str, &str) = ("-0.743643887037151", "0.131825904205330");
 
-/// The gallery (`cargo run --release`): classic L-systems and escape-time views, 320×240.
+const fn subdivision(name: &'static str, shape: Shape, order: u32, size: Size) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Subdivision { shape, order },
+        size,
+        palette: "vga",
+    }
+}
+
+/// Midpoint displacement with roughness `percent`/100, σ and seed.
+const fn terrain(
+    name: &'static str,
+    (percent, sigma, seed): (i64, i32, u64),
+    samples: u32,
+    map: bool,
+    size: Size,
+) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Terrain {
+            displacement: Displacement {
+                roughness: ratio(percent, 100),
+                sigma: Real::from_int(sigma),
+                seed,
+            },
+            samples,
+            map,
+        },
+        size,
+        palette: "vga",
+    }
+}
+
+/// The gallery (`cargo run --release`): classic L-systems, escape-time views, the
+/// Sierpiński family and midpoint-displacement terrain, 320×240.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 12] = [
+pub const GALLERY: [Entry; 18] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -324,6 +401,12 @@ pub const GALLERY: [Entry; 12] = [
     escape("julia", JULIA_K, ("0", "0"), "3.2", 300, GALLERY_SIZE, "classic"),
     // Width 10^-9: beyond the 32-bit tiers, computed in Q60 with 128-bit products.
     escape("deep-zoom", None, SPIRAL, "0.000000001", 4000, GALLERY_SIZE, "fire"),
+    subdivision("sierpinski-carpet", Shape::Carpet, 4, GALLERY_SIZE),
+    subdivision("sierpinski-gasket", Shape::Gasket, 7, GALLERY_SIZE),
+    subdivision("sierpinski-cube", Shape::Cube(CubeVariant::Centre), 3, GALLERY_SIZE),
+    subdivision("menger-sponge", Shape::Cube(CubeVariant::Axes), 3, GALLERY_SIZE),
+    terrain("terrain", (70, 40, 7), 1025, false, GALLERY_SIZE),
+    terrain("terrain2d", (60, 40, 3), 257, true, GALLERY_SIZE),
 ];
 
 /// The systems of ABOP's `data/abop.lsys`, drawn by the general engine.

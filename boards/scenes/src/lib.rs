@@ -14,9 +14,9 @@ pub mod measure;
 mod wait;
 
 pub use catalogue::{
-    Entry, GeneralEntry, IfsEntry, Scene, System, ABOP_LSYS, BUSH, DRAGON, FERN, GALLERY,
-    GENERAL_GALLERY, GENERAL_SCENES, GOSPER, HILBERT, IFS_GALLERY, KOCH_SNOWFLAKE, LECTURE_IFS,
-    PLANT, SCENES, SIERPINSKI_ARROWHEAD, STOCHASTIC_PLANT,
+    Entry, GeneralEntry, IfsEntry, Scene, Shape, System, ABOP_LSYS, BUSH, CUBE_COLOUR, DRAGON,
+    FERN, GALLERY, GENERAL_GALLERY, GENERAL_SCENES, GOSPER, HILBERT, IFS_GALLERY, KOCH_SNOWFLAKE,
+    LECTURE_IFS, PLANT, SCENES, SIERPINSKI_ARROWHEAD, STOCHASTIC_PLANT,
 };
-pub use look::{Look, Work, COLOUR, GREY};
+pub use look::{Look, Work, COLOUR, GREY, MAX_BOARD_MAP_CELLS};
 pub use wait::wait_for_press_or;

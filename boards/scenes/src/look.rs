@@ -1,16 +1,21 @@
 //! Drawing a scene on a display: one [`Look`] per display says which colours to use.
 
+use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::{
     pixelcolor::{Gray4, GrayColor, Rgb565, Rgb888},
     prelude::*,
 };
 use tinyfractal::FitError;
 use tinyfractal::{
-    DrawError, Error, EscapeTime, Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile,
-    Orientation, ParametricGrammar, ParametricLSystem, DEFAULT_DEPTH, DEFAULT_STACK,
+    Carpet, Displacement, DrawError, Error, EscapeTime, Gasket, Gradient, Ifs, IfsFile, IfsPicture,
+    LSystem, LsysFile, Orientation, ParametricGrammar, ParametricLSystem, SierpinskiCube, Terrain,
+    TerrainMap, DEFAULT_DEPTH, DEFAULT_STACK,
 };
 
-use crate::catalogue::{escape_view, GeneralEntry, Scene, System};
+use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
+
+/// Most heights of a landscape drawn on a board (33², 4.3 KiB on the stack while it draws).
+pub const MAX_BOARD_MAP_CELLS: usize = 33 * 33;
 
 /// The colours a display draws the scenes in.
 #[derive(Debug, Clone, Copy)]
@@ -61,6 +66,17 @@ pub enum Work {
     Iterations(u64),
     /// Points plotted (the chaos game).
     Points(u64),
+    /// Cells drawn: squares (carpet), triangles (gasket), cubes, or terrain heights.
+    Cells(u64),
+}
+
+impl Work {
+    /// The count, whatever it counts.
+    pub const fn count(self) -> u64 {
+        match self {
+            Self::Segments(n) | Self::Iterations(n) | Self::Points(n) | Self::Cells(n) => n,
+        }
+    }
 }
 
 impl Scene {
@@ -94,6 +110,12 @@ impl Scene {
                 target.clear(look.background).map_err(DrawError::Target)?;
                 draw_ifs(target, look, (source, system), points, seed)
             }
+            Scene::Subdivision { shape, order } => draw_subdivision(target, look, shape, order),
+            Scene::Terrain {
+                displacement,
+                samples,
+                map,
+            } => draw_terrain(target, look, displacement, samples, map),
             Scene::Escape {
                 julia,
                 centre,
@@ -102,6 +124,107 @@ impl Scene {
             } => draw_escape(target, look, julia, (centre, width), max_iterations),
         }
     }
+}
+
+/// A Sierpiński carpet, gasket or cube over the whole target, out of line. The carpet and
+/// gasket paint their box (ink and background) and the cube its target; what is left of
+/// the target around the carpet's square or the gasket's box is cleared first.
+#[inline(never)]
+fn draw_subdivision<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    shape: Shape,
+    order: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let area = target.bounding_box();
+    let cells = match shape {
+        Shape::Carpet => {
+            let drawing = Carpet::new(order).fit(area, look.ink, look.background)?;
+            clear_around(target, area, drawing.bounding_box(), look.background)?;
+            drawing.draw(target).map_err(DrawError::Target)?.squares
+        }
+        Shape::Gasket => {
+            let drawing = Gasket::new(order).fit(area, look.ink, look.background)?;
+            clear_around(target, area, drawing.bounding_box(), look.background)?;
+            drawing.draw(target).map_err(DrawError::Target)?.triangles
+        }
+        Shape::Cube(variant) => {
+            SierpinskiCube::new(order, variant)
+                .fit(area, CUBE_COLOUR, look.background)?
+                .draw(target)
+                .map_err(DrawError::Target)?
+                .cubes
+        }
+    };
+    Ok(Work::Cells(cells))
+}
+
+/// Clears the parts of `area` outside `inner` (the bands beside or above and below it).
+fn clear_around<D: DrawTarget>(
+    target: &mut D,
+    area: Rectangle,
+    inner: Rectangle,
+    background: D::Color,
+) -> Result<(), DrawError<D::Error>> {
+    let (Some(outer_end), Some(inner_end)) = (area.bottom_right(), inner.bottom_right()) else {
+        return Ok(());
+    };
+    let bands = [
+        Rectangle::with_corners(area.top_left, Point::new(outer_end.x, inner.top_left.y - 1)),
+        Rectangle::with_corners(Point::new(area.top_left.x, inner_end.y + 1), outer_end),
+        Rectangle::with_corners(
+            Point::new(area.top_left.x, inner.top_left.y),
+            Point::new(inner.top_left.x - 1, inner_end.y),
+        ),
+        Rectangle::with_corners(
+            Point::new(inner_end.x + 1, inner.top_left.y),
+            Point::new(outer_end.x, inner_end.y),
+        ),
+    ];
+    for band in bands {
+        // `with_corners` swaps corners given in the wrong order: an empty band comes out
+        // reversed, so keep only bands really outside `inner`.
+        if band.size.width > 0 && band.size.height > 0 && band.intersection(&inner).is_zero_sized()
+        {
+            target
+                .fill_solid(&band, background)
+                .map_err(DrawError::Target)?;
+        }
+    }
+    Ok(())
+}
+
+/// Midpoint-displacement terrain over the whole target, out of line: a profile in
+/// `look.ink` under a `look.background` sky, or a landscape (at most
+/// [`MAX_BOARD_MAP_CELLS`] heights, on the stack while it draws) in its height bands.
+#[inline(never)]
+fn draw_terrain<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    displacement: Displacement,
+    samples: u32,
+    map: bool,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let area = target.bounding_box();
+    let heights = if map {
+        let mut heights = [0i32; MAX_BOARD_MAP_CELLS];
+        let drawing = TerrainMap::new(samples, displacement).fit(area, &mut heights)?;
+        drawing.draw(target).map_err(DrawError::Target)?
+    } else {
+        Terrain::new(samples, displacement)
+            .fit(area, look.ink, look.background)?
+            .draw(target)
+            .map_err(DrawError::Target)?
+    };
+    Ok(Work::Cells(heights))
 }
 
 /// An L-system in `look.ink`, out of line: each family's frame is on the stack only while

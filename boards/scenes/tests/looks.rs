@@ -21,7 +21,7 @@ fn marks<C: PixelColor + From<Rgb888>>(
     let work = scene.draw(&mut frame, look).unwrap();
     assert_eq!(frame.outside, 0, "{name} drew outside {size}");
     let marked = match work {
-        Work::Segments(_) | Work::Points(_) => {
+        Work::Segments(_) | Work::Points(_) | Work::Cells(_) => {
             frame.pixels.iter().map(|&p| p != look.background).collect()
         }
         Work::Iterations(_) => frame.pixels.iter().map(|&p| p == look.inside).collect(),

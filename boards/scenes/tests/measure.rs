@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use tinyfractal_scenes::measure::Checksum;
-use tinyfractal_scenes::{Scene, Work, GENERAL_SCENES, GREY, SCENES};
+use tinyfractal_scenes::{Scene, Shape, Work, GENERAL_SCENES, GREY, SCENES};
 
 struct Core {
     name: &'static str,
@@ -169,9 +169,7 @@ fn every_core_draws_the_host_picture_and_fits() {
         .iter()
         .map(|entry| {
             let mut target = Checksum::new();
-            let work = match entry.scene.draw(&mut target, &GREY).unwrap() {
-                Work::Segments(n) | Work::Iterations(n) | Work::Points(n) => n,
-            };
+            let work = entry.scene.draw(&mut target, &GREY).unwrap().count();
             (target.value, target.pixels, work)
         })
         .collect();
@@ -191,6 +189,12 @@ fn every_core_draws_the_host_picture_and_fits() {
                 Scene::LSystem { .. } => "segment",
                 Scene::Ifs { .. } => "point",
                 Scene::Escape { .. } => "iteration",
+                Scene::Subdivision { shape, .. } => match shape {
+                    Shape::Carpet => "square",
+                    Shape::Gasket => "triangle",
+                    Shape::Cube(_) => "cube",
+                },
+                Scene::Terrain { .. } => "height",
             };
             (entry.name, unit)
         })

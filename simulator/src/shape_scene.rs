@@ -1,0 +1,342 @@
+//! `render carpet`, `render gasket`, `render cube` (the Sierpiński family), `render
+//! terrain` and `render terrain2d` (midpoint displacement), and the gallery's entries of
+//! them: drawn on black, the carpet and gasket in the palette's first colour (white).
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use clap::{Args, ValueEnum};
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
+use embedded_graphics_simulator::SimulatorDisplay;
+use tinyfractal::{
+    Camera, Carpet, CubeVariant, Displacement, Gasket, Real, SierpinskiCube, Terrain, TerrainMap,
+};
+use tinyfractal_scenes::{Look, Scene, Work, CUBE_COLOUR};
+
+use crate::args::Common;
+
+/// Ink for the carpet, the gasket and the terrain's profile: the palette's first colour.
+const INK: Rgb888 = crate::palette::VGA[0];
+/// The ground under a terrain profile.
+const GROUND: Rgb888 = Rgb888::new(0x55, 0x6B, 0x2F);
+
+/// The host's look for the catalogue's scenes of these families.
+const HOST: Look<'static, Rgb888> = Look {
+    background: Rgb888::BLACK,
+    ink: INK,
+    keys: &[Rgb888::BLACK, Rgb888::WHITE],
+    inside: Rgb888::BLACK,
+};
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct OrderOptions {
+    /// Levels of subdivision
+    #[arg(long, value_name = "N")]
+    order: u32,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Variant {
+    /// Remove the central subcube (26 kept)
+    Centre,
+    /// Remove the centre and the six face centres (20 kept: the Menger sponge)
+    Axes,
+}
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct CubeOptions {
+    /// Levels of subdivision
+    #[arg(long, value_name = "N")]
+    order: u32,
+    /// Which subcubes a step removes
+    #[arg(long, value_enum, default_value = "axes")]
+    variant: Variant,
+    /// The camera's azimuth and elevation in degrees (orthographic; isometric by default)
+    #[arg(long, value_name = "AZ,EL", default_value = "45,35.264", allow_hyphen_values = true, value_parser = parse_camera)]
+    camera: Camera,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct DisplacementOptions {
+    /// σ is multiplied by this at each level, in (0, 1]: 0.7071 is Brownian motion
+    #[arg(long, value_name = "R", default_value = "0.7", value_parser = parse_real)]
+    roughness: Real,
+    /// The first level's standard deviation
+    #[arg(long, value_name = "S", default_value = "20", value_parser = parse_real)]
+    sigma: Real,
+    /// The seed of the normal variates
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    seed: u64,
+}
+
+impl DisplacementOptions {
+    fn displacement(&self) -> Displacement {
+        Displacement {
+            roughness: self.roughness,
+            sigma: self.sigma,
+            seed: self.seed,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct TerrainOptions {
+    #[command(flatten)]
+    displacement: DisplacementOptions,
+    /// Heights: 2^k + 1
+    #[arg(long, value_name = "N", default_value_t = 1025)]
+    samples: u32,
+    /// The first and last heights, fixed
+    #[arg(long, value_name = "A,B", default_value = "0,0", allow_hyphen_values = true, value_parser = parse_ends)]
+    ends: (Real, Real),
+    /// Write the heights, one a line
+    #[arg(long, value_name = "TXT")]
+    heights: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct Terrain2dOptions {
+    #[command(flatten)]
+    displacement: DisplacementOptions,
+    /// Heights along a side: 2^k + 1
+    #[arg(long, value_name = "N", default_value_t = 257)]
+    samples: u32,
+    /// Tile: opposite edges equal, the square step wrapping around
+    #[arg(long)]
+    wrap: bool,
+    /// Write the heights, one row a line
+    #[arg(long, value_name = "TXT")]
+    heights: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+fn parse_real(text: &str) -> Result<Real, String> {
+    Real::parse_signed(text.trim())
+        .ok_or_else(|| format!("`{text}` is not a number: write e.g. 0.7, 20 or 2.5e-1"))
+}
+
+fn parse_ends(text: &str) -> Result<(Real, Real), String> {
+    let (a, b) = text
+        .split_once(',')
+        .ok_or_else(|| format!("`{text}` is not A,B: write e.g. 0,10"))?;
+    Ok((parse_real(a)?, parse_real(b)?))
+}
+
+fn parse_camera(text: &str) -> Result<Camera, String> {
+    let (azimuth, elevation) = text
+        .split_once(',')
+        .ok_or_else(|| format!("`{text}` is not AZ,EL in degrees: write e.g. 45,35.264"))?;
+    Ok(Camera {
+        azimuth: parse_real(azimuth)?,
+        elevation: parse_real(elevation)?,
+    })
+}
+
+fn display(common: &Common) -> SimulatorDisplay<Rgb888> {
+    SimulatorDisplay::new(Size::new(common.width(), common.height()))
+}
+
+fn area(common: &Common) -> Rectangle {
+    Rectangle::new(Point::zero(), Size::new(common.width(), common.height()))
+}
+
+fn milliseconds(elapsed: Duration) -> String {
+    format!("elapsed_ms={:.3}", elapsed.as_secs_f64() * 1e3)
+}
+
+/// `render carpet`.
+pub fn render_carpet(options: &OrderOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let failed = |e: tinyfractal::Error| format!("carpet: {e}");
+    let mut target = display(&options.common);
+    let started = Instant::now();
+    let stats = Carpet::new(options.order)
+        .fit(area(&options.common), INK, Rgb888::BLACK)
+        .map_err(failed)?
+        .draw(&mut target)
+        .map_err(|e| -> String { match e {} })?;
+    let line = format!(
+        "squares={} holes={} {}",
+        stats.squares,
+        stats.holes,
+        milliseconds(started.elapsed())
+    );
+    crate::deliver(&options.common, "carpet", &target, |_| {}, &line)
+}
+
+/// `render gasket`.
+pub fn render_gasket(options: &OrderOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let failed = |e: tinyfractal::Error| format!("gasket: {e}");
+    let mut target = display(&options.common);
+    let started = Instant::now();
+    let stats = Gasket::new(options.order)
+        .fit(area(&options.common), INK, Rgb888::BLACK)
+        .map_err(failed)?
+        .draw(&mut target)
+        .map_err(|e| -> String { match e {} })?;
+    let line = format!(
+        "triangles={} runs={} {}",
+        stats.triangles,
+        stats.runs,
+        milliseconds(started.elapsed())
+    );
+    crate::deliver(&options.common, "gasket", &target, |_| {}, &line)
+}
+
+/// `render cube`.
+pub fn render_cube(options: &CubeOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let failed = |e: tinyfractal::Error| format!("cube: {e}");
+    let variant = match options.variant {
+        Variant::Centre => CubeVariant::Centre,
+        Variant::Axes => CubeVariant::Axes,
+    };
+    let mut target = display(&options.common);
+    let started = Instant::now();
+    let stats = SierpinskiCube::new(options.order, variant)
+        .with_camera(options.camera)
+        .fit(area(&options.common), CUBE_COLOUR, Rgb888::BLACK)
+        .map_err(failed)?
+        .draw(&mut target)
+        .map_err(|e| -> String { match e {} })?;
+    let line = format!(
+        "cubes={} faces={} {}",
+        stats.cubes,
+        stats.faces,
+        milliseconds(started.elapsed())
+    );
+    crate::deliver(&options.common, "cube", &target, |_| {}, &line)
+}
+
+/// `render terrain`.
+pub fn render_terrain(options: &TerrainOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let failed = |e: tinyfractal::Error| format!("terrain: {e}");
+    let terrain = Terrain::new(options.samples, options.displacement.displacement())
+        .with_ends(options.ends.0, options.ends.1);
+    let mut target = display(&options.common);
+    let started = Instant::now();
+    let drawing = terrain
+        .fit(area(&options.common), GROUND, Rgb888::BLACK)
+        .map_err(failed)?;
+    let samples = drawing
+        .draw(&mut target)
+        .map_err(|e| -> String { match e {} })?;
+    let (low, high) = drawing.range();
+    let line = format!(
+        "samples={samples} min={low} max={high} {}",
+        milliseconds(started.elapsed())
+    );
+    crate::deliver(
+        &options.common,
+        "terrain",
+        &target,
+        |plan| {
+            if let Some(path) = &options.heights {
+                plan.add("--heights", path, move |w: &mut dyn Write| {
+                    for height in terrain.heights().map_err(std::io::Error::other)? {
+                        writeln!(w, "{height}")?;
+                    }
+                    Ok(())
+                });
+            }
+        },
+        &line,
+    )
+}
+
+/// `render terrain2d`.
+pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
+    crate::window_available(options.common.window)?;
+    let failed = |e: tinyfractal::Error| format!("terrain2d: {e}");
+    let map =
+        TerrainMap::new(options.samples, options.displacement.displacement()).wrapped(options.wrap);
+    // The buffer is the only limit: refuse sizes beyond the CLI's 2^12 + 1 before
+    // allocating, through the core's own check.
+    let mut heights = vec![0i32; map.cells().min(((1 << 12) + 1) * ((1 << 12) + 1))];
+    let mut target = display(&options.common);
+    let started = Instant::now();
+    let drawing = map
+        .fit::<Rgb888>(area(&options.common), &mut heights)
+        .map_err(failed)?;
+    let samples = drawing
+        .draw(&mut target)
+        .map_err(|e| -> String { match e {} })?;
+    let elapsed = started.elapsed();
+    drop(drawing);
+    let (low, high) = heights
+        .iter()
+        .fold((i32::MAX, i32::MIN), |(l, h), &v| (l.min(v), h.max(v)));
+    let as_real = |v: i32| Real::from_bits(i64::from(v) << 16);
+    let line = format!(
+        "samples={samples} min={} max={} {}",
+        as_real(low),
+        as_real(high),
+        milliseconds(elapsed)
+    );
+    let side = options.samples as usize;
+    let heights = &heights;
+    crate::deliver(
+        &options.common,
+        "terrain2d",
+        &target,
+        |plan| {
+            if let Some(path) = &options.heights {
+                plan.add("--heights", path, move |w: &mut dyn Write| {
+                    for row in heights.chunks(side) {
+                        let row: Vec<String> =
+                            row.iter().map(|&v| as_real(v).to_string()).collect();
+                        writeln!(w, "{}", row.join(" "))?;
+                    }
+                    Ok(())
+                });
+            }
+        },
+        &line,
+    )
+}
+
+/// A catalogue scene of these families at `size`, for the gallery: the picture, its
+/// detail and work columns, and the time it took.
+pub fn render_entry(
+    scene: &Scene,
+    size: Size,
+) -> Result<(SimulatorDisplay<Rgb888>, String, String, Duration), String> {
+    let mut target = SimulatorDisplay::new(size);
+    let started = Instant::now();
+    let work = scene
+        .draw(&mut target, &HOST)
+        .map_err(crate::scene::engine_error)
+        .map_err(|e| e.to_string())?;
+    let elapsed = started.elapsed();
+    let detail = match *scene {
+        Scene::Subdivision { order, .. } => format!("order {order}"),
+        Scene::Terrain { samples, .. } => format!("{samples} samples"),
+        _ => String::new(),
+    };
+    let unit = match *scene {
+        Scene::Subdivision {
+            shape: tinyfractal_scenes::Shape::Carpet,
+            ..
+        } => "squares",
+        Scene::Subdivision {
+            shape: tinyfractal_scenes::Shape::Gasket,
+            ..
+        } => "triangles",
+        Scene::Subdivision { .. } => "cubes",
+        _ => "heights",
+    };
+    let Work::Cells(count) = work else {
+        return Err("not a subdivision or terrain scene".to_string());
+    };
+    Ok((target, detail, format!("{count} {unit}"), elapsed))
+}
