@@ -64,10 +64,10 @@ pub struct CubeOptions {
 #[derive(Debug, Clone, PartialEq, Args)]
 pub struct DisplacementOptions {
     /// σ is multiplied by this at each level, in (0, 1]: 0.7071 is Brownian motion
-    #[arg(long, value_name = "R", default_value = "0.7", value_parser = parse_real)]
+    #[arg(long, value_name = "R", default_value = "0.7", allow_hyphen_values = true, value_parser = parse_real)]
     roughness: Real,
     /// The first level's standard deviation
-    #[arg(long, value_name = "S", default_value = "20", value_parser = parse_real)]
+    #[arg(long, value_name = "S", default_value = "20", allow_hyphen_values = true, value_parser = parse_real)]
     sigma: Real,
     /// The seed of the normal variates
     #[arg(long, value_name = "N", default_value_t = 1)]
@@ -313,10 +313,29 @@ pub fn render_entry(
 ) -> Result<(SimulatorDisplay<Rgb888>, String, String, Duration), String> {
     let mut target = SimulatorDisplay::new(size);
     let started = Instant::now();
-    let work = scene
-        .draw(&mut target, &HOST)
-        .map_err(crate::scene::engine_error)
-        .map_err(|e| e.to_string())?;
+    let work = match *scene {
+        // A landscape larger than a board's: its buffer on the heap.
+        Scene::Terrain {
+            displacement,
+            samples,
+            map: true,
+        } => {
+            let map = TerrainMap::new(samples, displacement);
+            let mut heights = vec![0i32; map.cells()];
+            let drawing = map
+                .fit::<Rgb888>(Rectangle::new(Point::zero(), size), &mut heights)
+                .map_err(|e| e.to_string())?;
+            Work::Cells(
+                drawing
+                    .draw(&mut target)
+                    .map_err(|e| -> String { match e {} })?,
+            )
+        }
+        _ => scene
+            .draw(&mut target, &HOST)
+            .map_err(crate::scene::engine_error)
+            .map_err(|e| e.to_string())?,
+    };
     let elapsed = started.elapsed();
     let detail = match *scene {
         Scene::Subdivision { order, .. } => format!("order {order}"),

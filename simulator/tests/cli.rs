@@ -245,6 +245,11 @@ fn gallery_renders_every_scene() {
         "hilbert",
         "sierpinski-arrowhead",
         "plant",
+        "sierpinski-carpet",
+        "sierpinski-gasket",
+        "menger-sponge",
+        "terrain",
+        "terrain2d",
     ] {
         assert!(table.contains(scene), "{table}");
         assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");

@@ -20,9 +20,9 @@ pub enum FitError {
         /// The target's height in pixels.
         height: u32,
     },
-    /// A caller's buffer has fewer cells than the area it must cover.
+    /// A caller's buffer has fewer cells than the area (or the landscape) it must cover.
     BufferTooSmall {
-        /// Cells needed (the area's width × height).
+        /// Cells needed (the area's width × height, or the landscape's heights).
         needed: usize,
         /// Cells given.
         given: usize,
@@ -42,7 +42,8 @@ impl fmt::Display for FitError {
             ),
             Self::BufferTooSmall { needed, given } => write!(
                 f,
-                "the buffer has {given} cells and the area {needed} pixels: give one a pixel"
+                "the buffer has {given} cells and {needed} are needed (one a pixel of the area, \
+                 or one a height of a landscape): give a larger buffer"
             ),
         }
     }

@@ -1,0 +1,264 @@
+//! The command line of the Sierpiński family, the terrain and the dimension: the `--stats`
+//! keys, `--heights`, `dimension=`, and bad input (exit codes, messages, no file left).
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_tinyfractal"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("shapes-{name}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// The value of `key=` in a stats line.
+fn value(line: &str, key: &str) -> String {
+    line.split_whitespace()
+        .find_map(|pair| pair.strip_prefix(&format!("{key}=")))
+        .unwrap_or_else(|| panic!("no {key}= in {line}"))
+        .to_string()
+}
+
+#[test]
+fn carpet_png_is_exact_and_stats_count_squares() {
+    let dir = scratch("carpet");
+    let png = dir.join("c.png");
+    let output = run(&[
+        "render",
+        "carpet",
+        "--order",
+        "3",
+        "--size",
+        "27x27",
+        "--stats",
+        "--out",
+        png.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let line = stdout(&output);
+    assert_eq!(value(&line, "squares"), "512");
+    assert_eq!(value(&line, "holes"), "73");
+    let picture = image::open(&png).unwrap().to_rgb8();
+    for (x, y, pixel) in picture.enumerate_pixels() {
+        let removed = (0..3).any(|d| (x / 3u32.pow(d)) % 3 == 1 && (y / 3u32.pow(d)) % 3 == 1);
+        assert_eq!(pixel.0 == [0, 0, 0], removed, "({x}, {y})");
+    }
+}
+
+#[test]
+fn gasket_and_cube_stats() {
+    let dir = scratch("cube");
+    let out = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let gasket = run(&[
+        "render",
+        "gasket",
+        "--order",
+        "5",
+        "--stats",
+        "--out",
+        &out("g.png"),
+    ]);
+    assert!(gasket.status.success(), "{}", stderr(&gasket));
+    assert_eq!(value(&stdout(&gasket), "triangles"), "243");
+    let centre = run(&[
+        "render",
+        "cube",
+        "--order",
+        "2",
+        "--variant",
+        "centre",
+        "--stats",
+        "--out",
+        &out("c.png"),
+    ]);
+    assert!(centre.status.success(), "{}", stderr(&centre));
+    // 26^2 cubes; only the outer surface shows: 3 · 9^2 faces.
+    assert_eq!(value(&stdout(&centre), "cubes"), "676");
+    assert_eq!(value(&stdout(&centre), "faces"), "243");
+    let sponge = run(&[
+        "render",
+        "cube",
+        "--order",
+        "2",
+        "--camera",
+        "30,20",
+        "--stats",
+        "--out",
+        &out("s.png"),
+    ]);
+    assert!(sponge.status.success(), "{}", stderr(&sponge));
+    assert_eq!(value(&stdout(&sponge), "cubes"), "400");
+}
+
+#[test]
+fn terrain_heights_are_written_and_reproducible() {
+    let dir = scratch("terrain");
+    let heights = |seed: &str, name: &str| {
+        let (png, txt) = (
+            dir.join(format!("{name}.png")),
+            dir.join(format!("{name}.txt")),
+        );
+        let output = run(&[
+            "render",
+            "terrain",
+            "--samples",
+            "33",
+            "--roughness",
+            "0.6",
+            "--sigma",
+            "5",
+            "--seed",
+            seed,
+            "--ends",
+            "-2,3",
+            "--heights",
+            txt.to_str().unwrap(),
+            "--out",
+            png.to_str().unwrap(),
+            "--stats",
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        assert_eq!(value(&stdout(&output), "samples"), "33");
+        std::fs::read_to_string(txt).unwrap()
+    };
+    let (a, b, c) = (heights("4", "a"), heights("4", "b"), heights("5", "c"));
+    assert_eq!(a, b);
+    assert_ne!(a, c);
+    let values: Vec<f64> = a.lines().map(|l| l.parse().unwrap()).collect();
+    assert_eq!(values.len(), 33);
+    assert_eq!((values[0], values[32]), (-2.0, 3.0));
+
+    let grid = dir.join("grid.txt");
+    let output = run(&[
+        "render",
+        "terrain2d",
+        "--samples",
+        "17",
+        "--wrap",
+        "--heights",
+        grid.to_str().unwrap(),
+        "--out",
+        dir.join("grid.png").to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let rows: Vec<Vec<f64>> = std::fs::read_to_string(grid)
+        .unwrap()
+        .lines()
+        .map(|l| l.split(' ').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 17);
+    assert!(rows.iter().all(|r| r.len() == 17));
+    assert_eq!(rows[0], rows[16]);
+}
+
+#[test]
+fn dimension_of_a_rendered_carpet() {
+    let dir = scratch("dimension");
+    let png = dir.join("carpet.png");
+    let output = run(&[
+        "render",
+        "carpet",
+        "--order",
+        "5",
+        "--size",
+        "243x243",
+        "--dimension",
+        "--out",
+        png.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let from_render: f64 = value(&stdout(&output), "dimension").parse().unwrap();
+    let output = run(&["dimension", png.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let line = stdout(&output);
+    let from_file: f64 = value(&line, "dimension").parse().unwrap();
+    assert_eq!(value(&line, "dimension").len(), 5, "three decimals: {line}");
+    assert_eq!(from_render, from_file);
+    let theory = 8f64.ln() / 3f64.ln();
+    assert!((from_file - theory).abs() < 0.1, "{line}");
+    // Against a white background the holes are what counts: at these box sizes they are
+    // everywhere, so the estimate is near 2.
+    let inverted = run(&["dimension", png.to_str().unwrap(), "--background", "ffffff"]);
+    let holes: f64 = value(&stdout(&inverted), "dimension").parse().unwrap();
+    assert!(holes > from_file + 0.03, "{}", stdout(&inverted));
+}
+
+#[test]
+fn bad_input_is_refused_with_what_to_do_and_no_file() {
+    let dir = scratch("bad");
+    let png = dir.join("x.png");
+    let out = png.to_str().unwrap();
+    for (args, says) in [
+        (
+            vec!["render", "carpet", "--order", "9", "--out", out],
+            "order 9 is too high",
+        ),
+        (
+            vec!["render", "terrain", "--roughness", "1.5", "--out", out],
+            "(0, 1]",
+        ),
+        (
+            vec!["render", "terrain", "--roughness", "0", "--out", out],
+            "(0, 1]",
+        ),
+        (
+            vec!["render", "terrain", "--samples", "1000", "--out", out],
+            "2^k + 1",
+        ),
+        (
+            vec!["render", "terrain", "--sigma", "-1", "--out", out],
+            "sigma",
+        ),
+        (
+            vec!["render", "terrain2d", "--samples", "0", "--out", out],
+            "2^k + 1",
+        ),
+        (
+            vec![
+                "render", "cube", "--order", "1", "--camera", "0,90", "--out", out,
+            ],
+            "elevation",
+        ),
+        (
+            vec![
+                "render", "gasket", "--order", "2", "--size", "0x10", "--out", out,
+            ],
+            "",
+        ),
+    ] {
+        let output = run(&args);
+        assert!(!output.status.success(), "{args:?} succeeded");
+        assert!(
+            stderr(&output).contains(says),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+        assert!(!png.exists(), "{args:?} left a file");
+    }
+    for args in [
+        vec!["render", "carpet"],
+        vec!["render", "terrain", "--roughness", "rough"],
+        vec!["render", "cube", "--order", "1", "--variant", "corners"],
+        vec!["dimension", out, "--background", "white"],
+    ] {
+        assert_eq!(run(&args).status.code(), Some(2), "{args:?}");
+    }
+    let missing = run(&["dimension", dir.join("none.png").to_str().unwrap()]);
+    assert_eq!(missing.status.code(), Some(1));
+    assert!(stderr(&missing).contains("none.png"));
+}
