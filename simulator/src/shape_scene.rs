@@ -272,7 +272,6 @@ pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
         .draw(&mut target)
         .map_err(|e| -> String { match e {} })?;
     let elapsed = started.elapsed();
-    drop(drawing);
     let (low, high) = heights
         .iter()
         .fold((i32::MAX, i32::MIN), |(l, h), &v| (l.min(v), h.max(v)));
