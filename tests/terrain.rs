@@ -366,3 +366,18 @@ fn bad_parameters_are_typed_errors() {
         .fit(zero, Rgb888::GREEN, Rgb888::BLUE)
         .is_err());
 }
+
+#[test]
+fn memory_is_as_the_readme_states() {
+    use embedded_graphics::pixelcolor::Rgb565;
+    use std::mem::size_of;
+    use tinyfractal::{CarpetDrawing, CubeDrawing, GasketDrawing, Heights};
+    assert!(size_of::<Heights>() < 400, "{}", size_of::<Heights>());
+    assert!(size_of::<CarpetDrawing<Rgb565>>() < 200);
+    assert!(size_of::<GasketDrawing<Rgb565>>() < 200);
+    assert!(
+        size_of::<CubeDrawing<Rgb565>>() < 200,
+        "{}",
+        size_of::<CubeDrawing<Rgb565>>()
+    );
+}
