@@ -9,7 +9,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{centred_square, check_order, power, MAX_SUBDIVISION_ORDER};
+use super::{centred_square, check_order, depth_first, power};
 use crate::error::Error;
 
 /// The Sierpiński carpet at an order.
@@ -91,9 +91,8 @@ impl<C: PixelColor> Drawable for CarpetDrawing<C> {
     type Color = C;
     type Output = CarpetStats;
 
-    /// Depth first with an explicit stack of child indices (one per level): the 9 children
-    /// of a kept cell in row order, the centre painted as a hole, the others split again
-    /// or, at the last level, painted in ink.
+    /// Depth first (`depth_first`): the 9 children of a kept cell in row order, the centre
+    /// painted as a hole, the others split again or, at the last level, painted in ink.
     fn draw<D>(&self, target: &mut D) -> Result<CarpetStats, D::Error>
     where
         D: DrawTarget<Color = C>,
@@ -104,20 +103,8 @@ impl<C: PixelColor> Drawable for CarpetDrawing<C> {
             stats.squares = 1;
             return Ok(stats);
         }
-        let mut next_child = [0u8; MAX_SUBDIVISION_ORDER as usize];
-        let mut cell = [(0u64, 0u64); MAX_SUBDIVISION_ORDER as usize];
-        let mut depth = 0usize;
-        while let (Some(child), Some(&(x, y))) = (next_child.get_mut(depth), cell.get(depth)) {
-            if *child == 9 {
-                if depth == 0 {
-                    break;
-                }
-                depth -= 1;
-                continue;
-            }
-            let c = u64::from(*child);
-            *child += 1;
-            let level = depth as u32 + 1;
+        depth_first(self.order, 9, |level, (x, y): (u64, u64), child| {
+            let c = u64::from(child);
             let at = (3 * x + c % 3, 3 * y + c / 3);
             let cells = power(3, level);
             if c == 4 {
@@ -126,14 +113,11 @@ impl<C: PixelColor> Drawable for CarpetDrawing<C> {
             } else if level == self.order {
                 target.fill_solid(&self.cell(at, cells), self.ink)?;
                 stats.squares += 1;
-            } else if let (Some(slot), Some(index)) =
-                (cell.get_mut(depth + 1), next_child.get_mut(depth + 1))
-            {
-                *slot = at;
-                *index = 0;
-                depth += 1;
+            } else {
+                return Ok(Some(at));
             }
-        }
+            Ok(None)
+        })?;
         Ok(stats)
     }
 }

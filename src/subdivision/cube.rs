@@ -17,7 +17,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{check_order, power, MAX_SUBDIVISION_ORDER};
+use super::{check_order, depth_first, power};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::trig::{BinaryAngle, ONE_Q30};
 use crate::math::Real;
@@ -214,6 +214,7 @@ impl SierpinskiCube {
         }
         Ok(CubeDrawing {
             order: self.order,
+            side,
             variant: self.variant,
             area,
             origin,
@@ -235,6 +236,8 @@ struct Face<C> {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct CubeDrawing<C> {
     order: u32,
+    /// Cells along an edge: 3ᴺ.
+    side: i64,
     variant: CubeVariant,
     area: Rectangle,
     /// Where the cube's corner (0, 0, 0) projects, Q16 pixels.
@@ -250,8 +253,7 @@ impl<C: PixelColor> CubeDrawing<C> {
     /// Whether the cell at `cell` (coordinates of the last level) is kept, and `None` for
     /// a cell outside the cube.
     fn kept(&self, cell: [i64; 3]) -> Option<bool> {
-        let side = power(3, self.order) as i64;
-        if cell.iter().any(|&c| c < 0 || c >= side) {
+        if cell.iter().any(|&c| c < 0 || c >= self.side) {
             return None;
         }
         let [mut x, mut y, mut z] = cell.map(|c| c as u64);
@@ -357,42 +359,25 @@ impl<C: PixelColor> Drawable for CubeDrawing<C> {
                 2 - d
             }
         };
-        const LEVELS: usize = MAX_SUBDIVISION_ORDER as usize + 1;
-        let mut next_child = [0u8; LEVELS];
-        let mut cell = [[0i64; 3]; LEVELS];
-        let mut depth = 0usize;
         if self.order == 0 {
             stats.cubes = 1;
             stats.faces = self.paint_cell(target, [0, 0, 0], &clip)?;
             return Ok(stats);
         }
-        while let (Some(child), Some(&parent)) = (next_child.get_mut(depth), cell.get(depth)) {
-            if *child == 27 {
-                if depth == 0 {
-                    break;
-                }
-                depth -= 1;
-                continue;
-            }
-            let c = u64::from(*child);
-            *child += 1;
+        depth_first(self.order, 27, |level, [px, py, pz]: [i64; 3], child| {
+            let c = u64::from(child);
             let (dx, dy, dz) = (digit(c / 9, 0), digit(c / 3 % 3, 1), digit(c % 3, 2));
             if !self.variant.keeps(dx, dy, dz) {
-                continue;
+                return Ok(None);
             }
-            let [px, py, pz] = parent;
             let at = [3 * px + dx as i64, 3 * py + dy as i64, 3 * pz + dz as i64];
-            if depth as u32 + 1 == self.order {
-                stats.cubes += 1;
-                stats.faces += self.paint_cell(target, at, &clip)?;
-            } else if let (Some(slot), Some(index)) =
-                (cell.get_mut(depth + 1), next_child.get_mut(depth + 1))
-            {
-                *slot = at;
-                *index = 0;
-                depth += 1;
+            if level < self.order {
+                return Ok(Some(at));
             }
-        }
+            stats.cubes += 1;
+            stats.faces += self.paint_cell(target, at, &clip)?;
+            Ok(None)
+        })?;
         Ok(stats)
     }
 }

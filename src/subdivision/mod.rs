@@ -54,6 +54,46 @@ pub(crate) fn check_order(order: u32, base: u64, pixels: u64) -> Result<(), Erro
     Ok(())
 }
 
+/// Depth first over a subdivision `order` (≥ 1) levels deep, with an explicit stack of
+/// child indices, one per level: `visit(level, parent, child)` is called for each child
+/// `0..children` of each cell descended into, in order, and returns the child's cell to
+/// descend into (taken only above the last level) or `None`. The root is
+/// `T::default()`. Shared by the carpet (9 children) and the cube (27).
+pub(crate) fn depth_first<T: Copy + Default, E>(
+    order: u32,
+    children: u8,
+    mut visit: impl FnMut(u32, T, u8) -> Result<Option<T>, E>,
+) -> Result<(), E> {
+    let mut next_child = [0u8; MAX_SUBDIVISION_ORDER as usize];
+    let mut cell = [T::default(); MAX_SUBDIVISION_ORDER as usize];
+    let mut depth = 0usize;
+    while let (Some(child), Some(&parent)) = (next_child.get_mut(depth), cell.get(depth)) {
+        if *child == children {
+            if depth == 0 {
+                break;
+            }
+            depth -= 1;
+            continue;
+        }
+        let index = *child;
+        *child += 1;
+        let level = depth as u32 + 1;
+        let Some(at) = visit(level, parent, index)? else {
+            continue;
+        };
+        if level < order {
+            if let (Some(slot), Some(first)) =
+                (cell.get_mut(depth + 1), next_child.get_mut(depth + 1))
+            {
+                *slot = at;
+                *first = 0;
+                depth += 1;
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The largest square centred in `area`.
 pub(crate) fn centred_square(area: Rectangle) -> Result<Rectangle, Error> {
     let side = area.size.width.min(area.size.height);
