@@ -48,11 +48,18 @@ pub struct BoxCounter<'a, C> {
 }
 
 impl<'a, C: PixelColor> BoxCounter<'a, C> {
+    /// Finest boxes across and down an area of `size`, of side 2^`finest`.
+    const fn grid(size: Size, finest: u32) -> (usize, usize) {
+        let side = 1u32 << finest;
+        (
+            size.width.div_ceil(side) as usize,
+            size.height.div_ceil(side) as usize,
+        )
+    }
+
     /// Words of buffer for an area of `size` with finest boxes of side 2^`finest`.
     pub const fn words_needed(size: Size, finest: u32) -> usize {
-        let side = 1u32 << finest;
-        let columns = size.width.div_ceil(side) as usize;
-        let rows = size.height.div_ceil(side) as usize;
+        let (columns, rows) = Self::grid(size, finest);
         columns.div_ceil(32) * rows
     }
 
@@ -69,15 +76,14 @@ impl<'a, C: PixelColor> BoxCounter<'a, C> {
             .get_mut(..needed)
             .ok_or(Error::Fit(FitError::BufferTooSmall { needed, given }))?;
         bits.fill(0);
-        let side = 1u32 << finest;
-        let columns = size.width.div_ceil(side) as usize;
+        let (columns, rows) = Self::grid(size, finest);
         Ok(Self {
             size,
             finest,
             background,
             bits,
             columns,
-            rows: size.height.div_ceil(side) as usize,
+            rows,
             row_words: columns.div_ceil(32),
         })
     }

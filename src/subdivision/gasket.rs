@@ -87,8 +87,13 @@ pub struct GasketDrawing<C> {
 
 impl<C: PixelColor> GasketDrawing<C> {
     /// The ink intervals of pixel row `y` (0 at the apex), as pixel columns from the box's
-    /// left, in increasing order, merged where they touch; `emit` gets each.
-    fn row_runs(&self, y: u64, mut emit: impl FnMut(u64, u64)) {
+    /// left, in increasing order, merged where they touch; `emit` gets each, and its first
+    /// error ends the row.
+    fn row_runs<E>(
+        &self,
+        y: u64,
+        mut emit: impl FnMut(u64, u64) -> Result<(), E>,
+    ) -> Result<(), E> {
         let (base, height) = (
             u64::from(self.frame.size.width),
             u64::from(self.frame.size.height),
@@ -121,7 +126,7 @@ impl<C: PixelColor> GasketDrawing<C> {
                 run = match run {
                     Some((s, e)) if start <= e => Some((s, e.max(end))),
                     Some(done) => {
-                        emit(done.0, done.1);
+                        emit(done.0, done.1)?;
                         Some((start, end))
                     }
                     None => Some((start, end)),
@@ -133,8 +138,9 @@ impl<C: PixelColor> GasketDrawing<C> {
             // The next c with c & !r == 0, in increasing order.
             c = ((c | !r).wrapping_add(1)) & r;
         }
-        if let Some(done) = run {
-            emit(done.0, done.1);
+        match run {
+            Some(done) => emit(done.0, done.1),
+            None => Ok(()),
         }
     }
 }
@@ -159,28 +165,28 @@ impl<C: PixelColor> Drawable for GasketDrawing<C> {
         };
         let width = u64::from(self.frame.size.width);
         let origin = self.frame.top_left;
+        let paint = |target: &mut D, row: i32, from: u64, to: u64, color: C| {
+            if to <= from {
+                return Ok(());
+            }
+            let run = Rectangle::new(
+                Point::new(origin.x + from as i32, row),
+                Size::new((to - from) as u32, 1),
+            );
+            target.fill_solid(&run, color)
+        };
         for y in 0..u64::from(self.frame.size.height) {
-            let mut result = Ok(());
-            let row_y = origin.y + y as i32;
+            let row = origin.y + y as i32;
             let mut painted = 0u64;
-            let mut paint = |from: u64, to: u64, color: C| {
-                if to > from && result.is_ok() {
-                    let run = Rectangle::new(
-                        Point::new(origin.x + from as i32, row_y),
-                        Size::new((to - from) as u32, 1),
-                    );
-                    result = target.fill_solid(&run, color);
-                }
-            };
             self.row_runs(y, |start, end| {
                 let end = end.min(width);
-                paint(painted, start, self.background);
-                paint(start, end, self.ink);
+                paint(target, row, painted, start, self.background)?;
+                paint(target, row, start, end, self.ink)?;
                 stats.runs += 1;
                 painted = end;
-            });
-            paint(painted, width, self.background);
-            result?;
+                Ok(())
+            })?;
+            paint(target, row, painted, width, self.background)?;
         }
         Ok(stats)
     }
