@@ -96,6 +96,21 @@ impl Common {
     pub fn height(&self) -> u32 {
         self.size.1
     }
+
+    /// A display of `--size`.
+    pub fn display(
+        &self,
+    ) -> embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888> {
+        embedded_graphics_simulator::SimulatorDisplay::new(self.area().size)
+    }
+
+    /// The whole picture, `--size` at the origin.
+    pub fn area(&self) -> embedded_graphics::primitives::Rectangle {
+        embedded_graphics::primitives::Rectangle::new(
+            embedded_graphics::prelude::Point::zero(),
+            embedded_graphics::prelude::Size::new(self.width(), self.height()),
+        )
+    }
 }
 
 /// `render lsystem`'s arguments.

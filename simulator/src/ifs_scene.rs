@@ -91,14 +91,6 @@ fn parse_point(text: &str) -> Result<(i64, i64), String> {
     ))
 }
 
-fn display(common: &Common) -> SimulatorDisplay<Rgb888> {
-    SimulatorDisplay::new(Size::new(common.width(), common.height()))
-}
-
-fn area(common: &Common) -> Rectangle {
-    Rectangle::new(Point::zero(), Size::new(common.width(), common.height()))
-}
-
 /// `render ifs`.
 pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
     crate::window_available(options.common.window)?;
@@ -121,7 +113,7 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
     if let Some(projection) = options.projection {
         picture = picture.with_projection(projection);
     }
-    let mut target = display(&options.common);
+    let mut target = options.common.display();
     let started = Instant::now();
     let drawn = if options.density {
         let keys = [
@@ -134,12 +126,12 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
         let pixels = options.common.width() as usize * options.common.height() as usize;
         let mut counts = vec![0u16; pixels];
         picture
-            .fit_density(area(&options.common), palette, &mut counts)
+            .fit_density(options.common.area(), palette, &mut counts)
             .map_err(failed)?
             .try_draw(&mut target)
     } else {
         picture
-            .fit(area(&options.common), &GREENS)
+            .fit(options.common.area(), &GREENS)
             .map_err(failed)?
             .try_draw(&mut target)
     };
@@ -207,10 +199,10 @@ pub fn render_gingerbread(options: &GingerbreadOptions) -> Result<(), String> {
         iterations: options.iterations,
     };
     let failed = |e: tinyfractal::Error| format!("gingerbread: {e}");
-    let mut target = display(&options.common);
+    let mut target = options.common.display();
     let started = Instant::now();
     let drawing = map
-        .fit(area(&options.common), Rgb888::new(0xD2, 0x69, 0x1E))
+        .fit(options.common.area(), Rgb888::new(0xD2, 0x69, 0x1E))
         .map_err(failed)?;
     let plotted = drawing
         .try_draw(&mut target)

@@ -140,81 +140,67 @@ fn parse_camera(text: &str) -> Result<Camera, String> {
     })
 }
 
-fn display(common: &Common) -> SimulatorDisplay<Rgb888> {
-    SimulatorDisplay::new(Size::new(common.width(), common.height()))
-}
-
-fn area(common: &Common) -> Rectangle {
-    Rectangle::new(Point::zero(), Size::new(common.width(), common.height()))
-}
-
 fn milliseconds(elapsed: Duration) -> String {
     format!("elapsed_ms={:.3}", elapsed.as_secs_f64() * 1e3)
 }
 
+/// Fits (with the error prefixed by `name`), draws and times one picture into a display
+/// of `--size`, then delivers it with its stats line: `counts` of what the draw returned,
+/// then `elapsed_ms=`.
+fn render_picture<T>(
+    common: &Common,
+    name: &str,
+    fit: impl FnOnce(Rectangle) -> Result<T, tinyfractal::Error>,
+    counts: impl FnOnce(T::Output) -> String,
+) -> Result<(), String>
+where
+    T: Drawable<Color = Rgb888>,
+{
+    crate::window_available(common.window)?;
+    let mut target = common.display();
+    let started = Instant::now();
+    let drawing = fit(common.area()).map_err(|e| format!("{name}: {e}"))?;
+    let Ok(output) = drawing.draw(&mut target);
+    let line = format!("{} {}", counts(output), milliseconds(started.elapsed()));
+    crate::deliver(common, name, &target, |_| {}, &line)
+}
+
 /// `render carpet`.
 pub fn render_carpet(options: &OrderOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
-    let failed = |e: tinyfractal::Error| format!("carpet: {e}");
-    let mut target = display(&options.common);
-    let started = Instant::now();
-    let stats = Carpet::new(options.order)
-        .fit(area(&options.common), INK, Rgb888::BLACK)
-        .map_err(failed)?
-        .draw(&mut target)
-        .map_err(|e| -> String { match e {} })?;
-    let line = format!(
-        "squares={} holes={} {}",
-        stats.squares,
-        stats.holes,
-        milliseconds(started.elapsed())
-    );
-    crate::deliver(&options.common, "carpet", &target, |_| {}, &line)
+    render_picture(
+        &options.common,
+        "carpet",
+        |area| Carpet::new(options.order).fit(area, INK, Rgb888::BLACK),
+        |stats| format!("squares={} holes={}", stats.squares, stats.holes),
+    )
 }
 
 /// `render gasket`.
 pub fn render_gasket(options: &OrderOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
-    let failed = |e: tinyfractal::Error| format!("gasket: {e}");
-    let mut target = display(&options.common);
-    let started = Instant::now();
-    let stats = Gasket::new(options.order)
-        .fit(area(&options.common), INK, Rgb888::BLACK)
-        .map_err(failed)?
-        .draw(&mut target)
-        .map_err(|e| -> String { match e {} })?;
-    let line = format!(
-        "triangles={} runs={} {}",
-        stats.triangles,
-        stats.runs,
-        milliseconds(started.elapsed())
-    );
-    crate::deliver(&options.common, "gasket", &target, |_| {}, &line)
+    render_picture(
+        &options.common,
+        "gasket",
+        |area| Gasket::new(options.order).fit(area, INK, Rgb888::BLACK),
+        |stats| format!("triangles={} runs={}", stats.triangles, stats.runs),
+    )
 }
 
 /// `render cube`.
 pub fn render_cube(options: &CubeOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
-    let failed = |e: tinyfractal::Error| format!("cube: {e}");
     let variant = match options.variant {
         Variant::Centre => CubeVariant::Centre,
         Variant::Axes => CubeVariant::Axes,
     };
-    let mut target = display(&options.common);
-    let started = Instant::now();
-    let stats = SierpinskiCube::new(options.order, variant)
-        .with_camera(options.camera)
-        .fit(area(&options.common), CUBE_COLOUR, Rgb888::BLACK)
-        .map_err(failed)?
-        .draw(&mut target)
-        .map_err(|e| -> String { match e {} })?;
-    let line = format!(
-        "cubes={} faces={} {}",
-        stats.cubes,
-        stats.faces,
-        milliseconds(started.elapsed())
-    );
-    crate::deliver(&options.common, "cube", &target, |_| {}, &line)
+    render_picture(
+        &options.common,
+        "cube",
+        |area| {
+            SierpinskiCube::new(options.order, variant)
+                .with_camera(options.camera)
+                .fit(area, CUBE_COLOUR, Rgb888::BLACK)
+        },
+        |stats| format!("cubes={} faces={}", stats.cubes, stats.faces),
+    )
 }
 
 /// `render terrain`.
@@ -223,14 +209,12 @@ pub fn render_terrain(options: &TerrainOptions) -> Result<(), String> {
     let failed = |e: tinyfractal::Error| format!("terrain: {e}");
     let terrain = Terrain::new(options.samples, options.displacement.displacement())
         .with_ends(options.ends.0, options.ends.1);
-    let mut target = display(&options.common);
+    let mut target = options.common.display();
     let started = Instant::now();
     let drawing = terrain
-        .fit(area(&options.common), GROUND, Rgb888::BLACK)
+        .fit(options.common.area(), GROUND, Rgb888::BLACK)
         .map_err(failed)?;
-    let samples = drawing
-        .draw(&mut target)
-        .map_err(|e| -> String { match e {} })?;
+    let Ok(samples) = drawing.draw(&mut target);
     let (low, high) = drawing.range();
     let line = format!(
         "samples={samples} min={low} max={high} {}",
@@ -260,28 +244,22 @@ pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
     let failed = |e: tinyfractal::Error| format!("terrain2d: {e}");
     let map =
         TerrainMap::new(options.samples, options.displacement.displacement()).wrapped(options.wrap);
-    // The buffer is the only limit: refuse sizes beyond the CLI's 2^12 + 1 before
-    // allocating, through the core's own check.
-    let mut heights = vec![0i32; map.cells().min(((1 << 12) + 1) * ((1 << 12) + 1))];
-    let mut target = display(&options.common);
+    // The buffer is the only limit: never more than the core's largest landscape, so a
+    // size beyond it is refused by the core's own check, not by a failed allocation.
+    let largest = (1usize << tinyfractal::MAX_MAP_LEVELS) + 1;
+    let mut heights = vec![0i32; map.cells().min(largest * largest)];
+    let mut target = options.common.display();
     let started = Instant::now();
     let drawing = map
-        .fit::<Rgb888>(area(&options.common), &mut heights)
+        .fit::<Rgb888>(options.common.area(), &mut heights)
         .map_err(failed)?;
-    let samples = drawing
-        .draw(&mut target)
-        .map_err(|e| -> String { match e {} })?;
-    let elapsed = started.elapsed();
-    let (low, high) = heights
-        .iter()
-        .fold((i32::MAX, i32::MIN), |(l, h), &v| (l.min(v), h.max(v)));
-    let as_real = |v: i32| Real::from_bits(i64::from(v) << 16);
+    let Ok(samples) = drawing.draw(&mut target);
+    let (low, high) = drawing.range();
     let line = format!(
-        "samples={samples} min={} max={} {}",
-        as_real(low),
-        as_real(high),
-        milliseconds(elapsed)
+        "samples={samples} min={low} max={high} {}",
+        milliseconds(started.elapsed())
     );
+    let as_real = |v: i32| Real::from_bits(i64::from(v) << 16);
     let side = options.samples as usize;
     let heights = &heights;
     crate::deliver(
@@ -324,11 +302,8 @@ pub fn render_entry(
             let drawing = map
                 .fit::<Rgb888>(Rectangle::new(Point::zero(), size), &mut heights)
                 .map_err(|e| e.to_string())?;
-            Work::Cells(
-                drawing
-                    .draw(&mut target)
-                    .map_err(|e| -> String { match e {} })?,
-            )
+            let Ok(heights) = drawing.draw(&mut target);
+            Work::Cells(heights)
         }
         _ => scene
             .draw(&mut target, &HOST)

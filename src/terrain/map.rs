@@ -15,9 +15,10 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{displaced, levels_of, Displacement};
+use super::{displaced, levels_of, real_of, Displacement};
 use crate::error::{Error, FitError};
 use crate::math::random::normal_q16;
+use crate::math::Real;
 
 /// Most levels of a landscape: (2¹² + 1)² heights (64 MiB of buffer; the buffer limits
 /// it first).
@@ -227,6 +228,11 @@ impl<C> MapDrawing<'_, C>
 where
     C: PixelColor + From<Rgb888>,
 {
+    /// The lowest and highest heights.
+    pub fn range(&self) -> (Real, Real) {
+        (real_of(self.range.0), real_of(self.range.1))
+    }
+
     fn height(&self, x: usize, y: usize) -> i64 {
         let (x, y) = (x.min(self.n - 1), y.min(self.n - 1));
         i64::from(self.heights.get(y * self.n + x).copied().unwrap_or(0))
