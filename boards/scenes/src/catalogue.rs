@@ -515,11 +515,18 @@ const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) 
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]
-pub const SCENES: [Entry; 7] = [
+pub const SCENES: [Entry; 12] = [
     lsystem("plant", &FERN, 5, Orientation::Up, OLED),
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 4, Orientation::Right, OLED),
     lsystem("stochastic-plant", &STOCHASTIC_PLANT, 4, Orientation::Up, OLED),
     ifs("ifs-fern", "fern", 20_000, OLED),
+    subdivision("sierpinski-carpet", Shape::Carpet, 3, OLED),
+    subdivision("sierpinski-gasket", Shape::Gasket, 6, OLED),
+    subdivision("menger-sponge", Shape::Cube(CubeVariant::Axes), 2, OLED),
+    // One sample a column of the OLED.
+    terrain("terrain", (70, 40, 7), 129, false, OLED),
+    // The largest landscape a board holds (MAX_BOARD_MAP_CELLS).
+    terrain("terrain2d", (60, 40, 3), 33, true, OLED),
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.6", 100, OLED, "classic"),
     // Width 10^-7: needs the 60-bit tier with 128-bit products.

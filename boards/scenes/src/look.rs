@@ -198,10 +198,8 @@ fn clear_around<D: DrawTarget>(
     Ok(())
 }
 
-/// Midpoint-displacement terrain over the whole target, out of line: a profile in
-/// `look.ink` under a `look.background` sky, or a landscape (at most
-/// [`MAX_BOARD_MAP_CELLS`] heights, on the stack while it draws) in its height bands.
-#[inline(never)]
+/// Midpoint-displacement terrain over the whole target: a profile in `look.ink` under a
+/// `look.background` sky, or a landscape in its height bands.
 fn draw_terrain<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
@@ -215,9 +213,7 @@ where
 {
     let area = target.bounding_box();
     let heights = if map {
-        let mut heights = [0i32; MAX_BOARD_MAP_CELLS];
-        let drawing = TerrainMap::new(samples, displacement).fit(area, &mut heights)?;
-        drawing.draw(target).map_err(DrawError::Target)?
+        draw_landscape(target, displacement, samples)?
     } else {
         Terrain::new(samples, displacement)
             .fit(area, look.ink, look.background)?
@@ -225,6 +221,24 @@ where
             .map_err(DrawError::Target)?
     };
     Ok(Work::Cells(heights))
+}
+
+/// A landscape, out of line: its heights (at most [`MAX_BOARD_MAP_CELLS`], 4.3 KiB) are on
+/// the stack only while it draws, not while a profile does.
+#[inline(never)]
+fn draw_landscape<D>(
+    target: &mut D,
+    displacement: Displacement,
+    samples: u32,
+) -> Result<u64, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let mut heights = [0i32; MAX_BOARD_MAP_CELLS];
+    let drawing =
+        TerrainMap::new(samples, displacement).fit(target.bounding_box(), &mut heights)?;
+    drawing.draw(target).map_err(DrawError::Target)
 }
 
 /// An L-system in `look.ink`, out of line: each family's frame is on the stack only while

@@ -32,7 +32,7 @@ fn marks<C: PixelColor + From<Rgb888>>(
 #[test]
 fn every_scene_marks_the_same_pixels_in_colour_and_in_grey() {
     // The deep zoom (1000 iterations at 60 bits) is left to the QEMU test at 128×64.
-    for scene @ Entry { name, .. } in &SCENES[..SCENES.len() - 1] {
+    for scene @ Entry { name, .. } in SCENES.iter().filter(|entry| entry.name != "deep-zoom") {
         for size in [Size::new(320, 240), Size::new(240, 320)] {
             let (work_colour, colour) = marks(scene, size, &COLOUR);
             let (work_grey, grey) = marks(scene, size, &GREY);

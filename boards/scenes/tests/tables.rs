@@ -241,6 +241,58 @@ fn ifs_table(records: &[Value], results: &Value) -> String {
     table
 }
 
+/// The Sierpiński family and terrain: the host benches at 320×240 and the boards' scenes
+/// on Cortex-M0/M3/M4 (128×64), per square, triangle, cube or height.
+fn shapes_table(records: &[Value], results: &Value) -> String {
+    let mut table =
+        String::from("| where | what | time or instructions | per unit |\n|---|---|---|---|\n");
+    let times = &results["times_ns"];
+    #[rustfmt::skip]
+    let benches = [
+        ("carpet-order-4", "fit + draw 320x240 (squares)", "carpet, order 4, fit + draw 320×240", 8u64.pow(4), "squares"),
+        ("gasket-order-7", "fit + draw 320x240 (triangles)", "gasket, order 7, fit + draw 320×240", 3u64.pow(7), "triangles"),
+        ("menger-order-3", "fit + draw 320x240 (cubes)", "Menger sponge, order 3, fit + draw 320×240", 20u64.pow(3), "cubes"),
+        ("terrain-65537", "heights (points)", "profile, 65,537 heights", (1 << 16) + 1, "heights"),
+        ("terrain-65537", "fit + draw 320x240 (points)", "profile, 65,537 heights, fit + draw 320×240", (1 << 16) + 1, "heights"),
+        ("terrain2d-257", "diamond-square (points)", "landscape, 257², diamond-square", 257 * 257, "heights"),
+    ];
+    for (group, function, what, count, unit) in benches {
+        let Some(ns) = number(times, &format!("{group} / {function}")) else {
+            continue;
+        };
+        table.push_str(&format!(
+            "| host | {what} | {} | {:.1} M {unit} per second |\n",
+            milliseconds(ns),
+            count as f64 / (ns.max(1) as f64 / 1e9) / 1e6
+        ));
+    }
+    let scenes = [
+        ("sierpinski-carpet", "carpet, order 3"),
+        ("sierpinski-gasket", "gasket, order 6"),
+        ("menger-sponge", "Menger sponge, order 2"),
+        ("terrain", "profile, 129 heights"),
+        ("terrain2d", "landscape, 33², shaded"),
+    ];
+    for record in records {
+        let Some((_, what)) = scenes
+            .iter()
+            .find(|(name, _)| *name == text(record, "scene"))
+        else {
+            continue;
+        };
+        let instructions = number(record, "instructions").unwrap_or(0);
+        let work = number(record, "work").unwrap_or(1).max(1);
+        table.push_str(&format!(
+            "| {} | {what}, fit + draw 128×64 | {} instructions | {} per {} |\n",
+            text(record, "core"),
+            thousands(instructions),
+            thousands((instructions as f64 / work as f64).round() as u64),
+            text(record, "work_unit"),
+        ));
+    }
+    table
+}
+
 /// The escape-time benches: two views at 320×240, max-iter 256.
 fn escape_table(results: &Value) -> String {
     let mut table = String::from(
@@ -316,6 +368,7 @@ fn performance_tables_are_generated_from_the_measurements() {
         ("escape-bench", escape_table(&results)),
         ("general-bench", general_table(records, &results)),
         ("ifs-bench", ifs_table(records, &results)),
+        ("shapes-bench", shapes_table(records, &results)),
     ];
     let bless = std::env::var_os("TINYFRACTAL_BLESS").is_some();
     let mut stale = Vec::new();
