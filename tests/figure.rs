@@ -101,3 +101,50 @@ fn poses_and_drawing() {
     assert!(drawn > 30, "{drawn} lines");
     assert_eq!(display.affected_area(), drawing.bounding_box());
 }
+
+/// An animation fitted over its frames: every frame of the walk cycle draws inside the
+/// shared box, and together they fill it (the fit is tight over the cycle, not over one
+/// frame, whose own fit would push other frames' feet outside).
+#[test]
+fn frames_of_a_cycle_share_one_fit() {
+    let frames: Vec<Pose> = (0..16)
+        .map(|k| walk_pose(Real::from_ratio(k, 16).unwrap()))
+        .collect();
+    let drawing = Figure::new(&BODY, frames[0])
+        .fit_poses(
+            Rectangle::new(Point::zero(), Size::new(48, 64)),
+            &[BinaryColor::On],
+            frames.iter().copied(),
+        )
+        .unwrap();
+    let fitted = drawing.bounding_box();
+    let mut union: Option<Rectangle> = None;
+    for &pose in &frames {
+        let mut display = MockDisplay::new();
+        display.set_allow_overdraw(true);
+        drawing.with_pose(pose).draw(&mut display).unwrap();
+        let area = display.affected_area();
+        assert_eq!(
+            area.intersection(&fitted),
+            area,
+            "{pose:?} leaves {fitted:?}"
+        );
+        union = Some(union.map_or(area, |u| {
+            Rectangle::with_corners(
+                u.top_left.component_min(area.top_left),
+                u.bottom_right()
+                    .unwrap()
+                    .component_max(area.bottom_right().unwrap()),
+            )
+        }));
+    }
+    assert_eq!(union, Some(fitted));
+    // One frame's own fit is another fit: the cycle's box is wider than a frame's.
+    let alone = Figure::new(&BODY, frames[0])
+        .fit(
+            Rectangle::new(Point::zero(), Size::new(48, 64)),
+            &[BinaryColor::On],
+        )
+        .unwrap();
+    assert_ne!(alone.bounding_box(), fitted);
+}

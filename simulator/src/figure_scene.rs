@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
-use tinyfractal::{Figure, Pose, Real, BODY};
+use tinyfractal::{Colors, Figure, FigureDrawing, Pose, Real, BODY};
 
 use crate::args::Common;
 
@@ -52,25 +52,38 @@ fn pose(name: PoseName, time: f64) -> Result<Pose, String> {
     })
 }
 
-/// Fits the figure in its pose to the target (each frame fitted on its own).
-fn render(figure: &Figure, common: &Common) -> Result<(SimulatorDisplay<Rgb888>, u64), String> {
-    let size = Size::new(common.width(), common.height());
+/// The figure's colours: body, skin, hair, clothes.
+const PALETTE: [Rgb888; 4] = [
+    Rgb888::new(0xE0, 0xE0, 0xE0),
+    Rgb888::new(0xF4, 0xA4, 0x60),
+    Rgb888::new(0xFF, 0xD7, 0x00),
+    Rgb888::new(0x46, 0x82, 0xB4),
+];
+
+/// Draws a fitted figure into a fresh target of the requested size.
+fn render(
+    drawing: &FigureDrawing<Colors<'_, Rgb888>>,
+    size: Size,
+) -> Result<(SimulatorDisplay<Rgb888>, u64), String> {
     let mut display = SimulatorDisplay::new(size);
-    let palette = [
-        Rgb888::new(0xE0, 0xE0, 0xE0),
-        Rgb888::new(0xF4, 0xA4, 0x60),
-        Rgb888::new(0xFF, 0xD7, 0x00),
-        Rgb888::new(0x46, 0x82, 0xB4),
-    ];
-    let failed = |e: tinyfractal::Error| format!("figure: {e}");
-    let drawing = figure
-        .fit(Rectangle::new(Point::zero(), size), &palette)
-        .map_err(failed)?;
     let drawn = drawing
         .try_draw(&mut display)
         .map_err(crate::scene::engine_error)
-        .map_err(failed)?;
+        .map_err(|e| format!("figure: {e}"))?;
     Ok((display, drawn))
+}
+
+/// Fits `figure` to a target of the requested size so that it also fits in `poses`.
+fn fit(
+    figure: &Figure,
+    common: &Common,
+    poses: impl IntoIterator<Item = Pose>,
+) -> Result<(FigureDrawing<Colors<'static, Rgb888>>, Size), String> {
+    let size = Size::new(common.width(), common.height());
+    let drawing = figure
+        .fit_poses(Rectangle::new(Point::zero(), size), &PALETTE, poses)
+        .map_err(|e| format!("figure: {e}"))?;
+    Ok((drawing, size))
 }
 
 /// `render figure`.
@@ -87,12 +100,14 @@ pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
             .clone()
             .unwrap_or_else(|| PathBuf::from("figure.png"));
         let stem = out.with_extension("");
-        for index in 0..frames {
-            let figure = Figure::new(
-                &BODY,
-                pose(options.pose, f64::from(index) / f64::from(frames))?,
-            );
-            let (display, _) = render(&figure, &options.common)?;
+        let poses = (0..frames)
+            .map(|index| pose(options.pose, f64::from(index) / f64::from(frames)))
+            .collect::<Result<Vec<_>, _>>()?;
+        // One fit for every frame, so the figure walks in place instead of jumping.
+        let first = Figure::new(&BODY, poses[0]);
+        let (drawing, size) = fit(&first, &options.common, poses.iter().copied())?;
+        for (index, &pose) in poses.iter().enumerate() {
+            let (display, _) = render(&drawing.with_pose(pose), size)?;
             let path = PathBuf::from(format!("{}-{index:03}.png", stem.display()));
             crate::output::save_png(&display, "--frames", &path)?;
         }
@@ -105,7 +120,8 @@ pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
         return Ok(());
     }
     let figure = Figure::new(&BODY, pose(options.pose, options.time)?);
-    let (display, drawn) = render(&figure, &options.common)?;
+    let (drawing, size) = fit(&figure, &options.common, [])?;
+    let (display, drawn) = render(&drawing, size)?;
     let stats = format!(
         "lines={drawn} elapsed_ms={:.3}",
         started.elapsed().as_secs_f64() * 1e3

@@ -94,7 +94,7 @@ pub fn run(out: &Path) -> Result<(), String> {
                     ))
                 },
             ),
-            Scene::Subdivision { .. } | Scene::Terrain { .. } => {
+            Scene::Subdivision { .. } | Scene::Terrain { .. } | Scene::Walk { .. } => {
                 crate::shape_scene::render_entry(&entry.scene, size).and_then(
                     |(display, detail, work, elapsed)| {
                         save(&display, &path)?;

@@ -314,6 +314,7 @@ pub fn render_entry(
     let detail = match *scene {
         Scene::Subdivision { order, .. } => format!("order {order}"),
         Scene::Terrain { samples, .. } => format!("{samples} samples"),
+        Scene::Walk { frames } => format!("{frames} frames"),
         _ => String::new(),
     };
     let unit = match *scene {
@@ -326,6 +327,7 @@ pub fn render_entry(
             ..
         } => "triangles",
         Scene::Subdivision { .. } => "cubes",
+        Scene::Walk { .. } => "lines",
         _ => "heights",
     };
     let Work::Cells(count) = work else {

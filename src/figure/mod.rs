@@ -18,7 +18,6 @@ use crate::math::affine::Affine2;
 use crate::math::Real;
 use crate::render::fit::DEFAULT_MARGIN;
 use crate::render::palette::{Colors, Palette};
-use crate::render::projection::Projection;
 use crate::render::raster::draw_line;
 use crate::render::space::{Segment3, SpaceFit};
 
@@ -193,17 +192,39 @@ impl Figure {
         area: Rectangle,
         palette: &'p [C],
     ) -> Result<FigureDrawing<Colors<'p, C>>, Error> {
+        self.fit_poses(area, palette, core::iter::empty())
+    }
+
+    /// Like [`Figure::fit`], but so that the figure fits in each of `poses` too: the frames
+    /// of an animation share one scale and origin (swap poses with
+    /// [`FigureDrawing::with_pose`]), so the figure does not jump between frames.
+    pub fn fit_poses<'p, C: PixelColor>(
+        &self,
+        area: Rectangle,
+        palette: &'p [C],
+        poses: impl IntoIterator<Item = Pose>,
+    ) -> Result<FigureDrawing<Colors<'p, C>>, Error> {
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let palette = Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))?;
-        let space = SpaceFit::new(
-            || self.lines_array(),
-            Projection::Front,
-            false,
-            &area,
-            DEFAULT_MARGIN,
-        )?;
+        let mut corners = self.corners()?;
+        for pose in poses {
+            let [low, high] = Self::new(self.root, pose).corners()?;
+            corners = [
+                [
+                    low[0].min(corners[0][0]),
+                    low[1].min(corners[0][1]),
+                    Real::ZERO,
+                ],
+                [
+                    high[0].max(corners[1][0]),
+                    high[1].max(corners[1][1]),
+                    Real::ZERO,
+                ],
+            ];
+        }
+        let space = SpaceFit::front_box(corners[0], corners[1], &area, DEFAULT_MARGIN)?;
         Ok(FigureDrawing {
             figure: *self,
             space,
@@ -211,15 +232,21 @@ impl Figure {
         })
     }
 
-    /// The lines' ends, for fitting (a figure has at most a few hundred lines).
-    fn lines_array(&self) -> impl Iterator<Item = Result<[[Real; 3]; 2], Error>> {
-        let mut ends: Vec<[[Real; 3]; 2], 512> = Vec::new();
-        let result = self.for_each_line(|line| {
-            ends.push([line.segment.start, line.segment.end])
-                .map_err(|_| Error::Walk(WalkError::BudgetExhausted { budget: 512 }))
-        });
-        let error = result.err();
-        ends.into_iter().map(Ok).chain(error.map(Err))
+    /// The lowest and highest x and y of the lines' ends (z = 0): one walk, no list of
+    /// lines.
+    fn corners(&self) -> Result<[[Real; 3]; 2], Error> {
+        let mut corners: Option<[[Real; 3]; 2]> = None;
+        self.for_each_line(|line| {
+            for p in [line.segment.start, line.segment.end] {
+                let [low, high] = corners.get_or_insert([p, p]);
+                low[0] = low[0].min(p[0]);
+                low[1] = low[1].min(p[1]);
+                high[0] = high[0].max(p[0]);
+                high[1] = high[1].max(p[1]);
+            }
+            Ok(())
+        })?;
+        Ok(corners.unwrap_or([[Real::ZERO; 3]; 2]))
     }
 }
 
@@ -248,6 +275,27 @@ pub struct FigureDrawing<P> {
     figure: Figure,
     space: SpaceFit,
     palette: P,
+}
+
+impl<P> FigureDrawing<P> {
+    /// The same fit (scale and origin) with the figure in `pose`: a frame of an animation
+    /// fitted by [`Figure::fit_poses`].
+    #[must_use]
+    pub fn with_pose(mut self, pose: Pose) -> Self {
+        self.figure.pose = pose;
+        self
+    }
+
+    /// The same fit drawn through `palette`: with a palette of the background colour, the
+    /// eraser of a frame (an animation redraws the last frame's lines in the background
+    /// instead of clearing the display).
+    pub fn with_palette<Q>(self, palette: Q) -> FigureDrawing<Q> {
+        FigureDrawing {
+            figure: self.figure,
+            space: self.space,
+            palette,
+        }
+    }
 }
 
 impl<P: Palette> FigureDrawing<P> {

@@ -4,7 +4,7 @@
 //! (a stack of saved maps) restores one bitwise.
 
 use crate::error::{Error, WalkError};
-use crate::math::trig::{sin_cos, BinaryAngle};
+use crate::math::trig::{sin_cos_near, BinaryAngle};
 use crate::math::Real;
 
 fn overflow() -> Error {
@@ -92,14 +92,14 @@ impl Affine2 {
         Ok(())
     }
 
-    /// C · rotate(degrees), with the sine and cosine computed to Q30's rounding (10⁻⁹, not
-    /// the interpolated table's 3·10⁻⁷): a hierarchy of joints keeps its limbs' lengths to
-    /// 10⁻⁸.
+    /// C · rotate(degrees), with the sine and cosine within 2·10⁻⁹ (the table turned by the
+    /// angle-sum formulas, not the interpolated table's 3·10⁻⁷): a hierarchy of joints
+    /// keeps its limbs' lengths to 10⁻⁸.
     pub fn rotate_degrees(&mut self, degrees: Real) -> Result<(), Error> {
         // The angle as a fraction of a turn: degrees (Q32) over 360 · 2^32.
         const TURN: i128 = 360 << 32;
         let numerator = i128::from(degrees.to_bits()).rem_euclid(TURN);
-        let (cos, sin) = sin_cos(numerator as u64, TURN as u64);
+        let (cos, sin) = sin_cos_near(numerator as u64, TURN as u64);
         self.rotate_by(cos, sin)
     }
 

@@ -127,6 +127,35 @@ impl SpaceFit {
             });
             seen = measured(&points, projection, eye)?;
         }
+        Self::from_extent(seen, projection, eye, depth_cue, area, margin)
+    }
+
+    /// Fits a picture seen from the front whose lines lie in the box from `low` to `high`
+    /// (x, y; z is its depth range): no walk.
+    pub(crate) fn front_box(
+        low: [Real; 3],
+        high: [Real; 3],
+        area: &Rectangle,
+        margin: u32,
+    ) -> Result<Self, Error> {
+        let seen = |[x, y, depth]: [Real; 3]| Seen { x, y, depth };
+        let extent = Extent {
+            low: seen(low),
+            high: seen(high),
+        };
+        Self::from_extent(Some(extent), Projection::Front, None, false, area, margin)
+    }
+
+    /// The fit of a measured extent (`None`: a picture of nothing). Not generic: one copy
+    /// whatever the walks that measured it.
+    fn from_extent(
+        seen: Option<Extent>,
+        projection: Projection,
+        eye: Option<Eye>,
+        depth_cue: bool,
+        area: &Rectangle,
+        margin: u32,
+    ) -> Result<Self, Error> {
         let zero = Seen {
             x: Real::ZERO,
             y: Real::ZERO,
