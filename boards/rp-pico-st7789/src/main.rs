@@ -41,6 +41,8 @@ const XTAL_HZ: u32 = 12_000_000;
 const SPI_HZ: u32 = 62_500_000;
 /// How long a scene stays up without a button press.
 const SHOW_FOR_MS: u64 = 10_000;
+/// Between the frames of an animated scene.
+const FRAME_MS: u64 = 60;
 /// Most IPS ST7789 panels (the Pico-LCD-2's among them) show inverted colours without this.
 const INVERSION: ColorInversion = ColorInversion::Inverted;
 
@@ -105,7 +107,15 @@ fn main() -> ! {
         for entry in SCENES.iter() {
             let (name, scene) = (entry.name, entry.scene);
             let start = timer.get_counter();
-            let result = scene.draw(&mut display, &COLOUR);
+            // An animated scene (the walking figure) waits FRAME_MS between frames.
+            let result = scene.draw_frames(&mut display, &COLOUR, || {
+                let since = timer.get_counter();
+                wait_for_press_or(
+                    FRAME_MS,
+                    || (timer.get_counter() - since).to_millis(),
+                    || false,
+                );
+            });
             let ms = (timer.get_counter() - start).to_millis();
             match result {
                 Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", name, n, ms),

@@ -100,6 +100,12 @@ pub enum Scene {
         /// A 2D landscape rather than a profile.
         map: bool,
     },
+    /// The lecture's articulated figure walking: `frames` frames of one stride, fitted
+    /// once, each erasing the last.
+    Walk {
+        /// Frames in the cycle.
+        frames: u32,
+    },
     /// A Mandelbrot (`julia: None`) or Julia view, as decimal text: the catalogue's
     /// entries are checked when compiled; in a scene built by hand, a number that does not
     /// parse counts as 0.
@@ -117,7 +123,7 @@ pub enum Scene {
 
 impl Scene {
     /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
-    /// `terrain`, `terrain2d`, `mandelbrot` or `julia`.
+    /// `terrain`, `terrain2d`, `figure`, `mandelbrot` or `julia`.
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
@@ -129,6 +135,7 @@ impl Scene {
             },
             Self::Terrain { map: false, .. } => "terrain",
             Self::Terrain { map: true, .. } => "terrain2d",
+            Self::Walk { .. } => "figure",
             Self::Escape { julia: None, .. } => "mandelbrot",
             Self::Escape { julia: Some(_), .. } => "julia",
         }
@@ -515,7 +522,7 @@ const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) 
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]
-pub const SCENES: [Entry; 12] = [
+pub const SCENES: [Entry; 13] = [
     lsystem("plant", &FERN, 5, Orientation::Up, OLED),
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 4, Orientation::Right, OLED),
     lsystem("stochastic-plant", &STOCHASTIC_PLANT, 4, Orientation::Up, OLED),
@@ -527,6 +534,7 @@ pub const SCENES: [Entry; 12] = [
     terrain("terrain", (70, 40, 7), 129, false, OLED),
     // The largest landscape a board holds (MAX_BOARD_MAP_CELLS).
     terrain("terrain2d", (60, 40, 3), 33, true, OLED),
+    Entry { name: "walking-figure", scene: Scene::Walk { frames: 16 }, size: OLED, palette: "vga" },
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.6", 100, OLED, "classic"),
     // Width 10^-7: needs the 60-bit tier with 128-bit products.

@@ -7,9 +7,10 @@ use embedded_graphics::{
 };
 use tinyfractal::FitError;
 use tinyfractal::{
-    Carpet, Displacement, DrawError, Error, EscapeTime, Gasket, Gradient, Ifs, IfsFile, IfsPicture,
-    LSystem, LsysFile, Orientation, ParametricGrammar, ParametricLSystem, SierpinskiCube, Terrain,
-    TerrainMap, DEFAULT_DEPTH, DEFAULT_STACK,
+    walk_pose, Carpet, Colors, Displacement, DrawError, Error, EscapeTime, Figure, Gasket,
+    Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile, Orientation, ParametricGrammar,
+    ParametricLSystem, Real, SierpinskiCube, Terrain, TerrainMap, BODY, DEFAULT_DEPTH,
+    DEFAULT_STACK,
 };
 
 use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
@@ -80,6 +81,25 @@ impl Work {
 }
 
 impl Scene {
+    /// Draws the scene as [`Scene::draw`] does, calling `between_frames` after each frame
+    /// of an animated scene (the walking figure): a board waits there, so the animation
+    /// runs at its pace rather than the display's.
+    pub fn draw_frames<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+        between_frames: impl FnMut(),
+    ) -> Result<Work, DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
+        match *self {
+            Scene::Walk { frames } => draw_walk(target, look, frames, between_frames),
+            _ => self.draw(target, look),
+        }
+    }
+
     /// Draws the scene over the whole of `target`: an L-system clears it to
     /// `look.background` first; an escape-time view paints every pixel anyway, so clearing
     /// would only double the traffic to the display.
@@ -116,6 +136,7 @@ impl Scene {
                 samples,
                 map,
             } => draw_terrain(target, look, displacement, samples, map),
+            Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
             Scene::Escape {
                 julia,
                 centre,
@@ -239,6 +260,47 @@ where
     let drawing =
         TerrainMap::new(samples, displacement).fit(target.bounding_box(), &mut heights)?;
     drawing.draw(target).map_err(DrawError::Target)
+}
+
+/// The walk cycle in `look.ink`, out of line: `frames` frames fitted once over all of
+/// them, each frame erasing the last one's lines (drawn again in the background) before
+/// drawing its own, so the display is cleared once, not every frame. What stays on the
+/// target is the last frame alone.
+#[inline(never)]
+fn draw_walk<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    frames: u32,
+    mut between_frames: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+{
+    target.clear(look.background).map_err(DrawError::Target)?;
+    // Frame k of n at k/n of a stride (none for n = 0).
+    let pose = |frame: u32| Real::from_ratio(i64::from(frame), i64::from(frames)).map(walk_pose);
+    let Some(first) = pose(0) else {
+        return Ok(Work::Segments(0));
+    };
+    let (ink, paper) = ([look.ink], [look.background]);
+    let drawing = Figure::new(&BODY, first).fit_poses(
+        target.bounding_box(),
+        &ink,
+        (1..frames).filter_map(pose),
+    )?;
+    let eraser =
+        drawing.with_palette(Colors::new(&paper).ok_or(Error::Fit(FitError::EmptyPalette))?);
+    let mut lines = 0;
+    let mut last = None;
+    for frame in (0..frames).filter_map(pose) {
+        if let Some(last) = last {
+            eraser.with_pose(last).try_draw(target)?;
+        }
+        lines += drawing.with_pose(frame).try_draw(target)?;
+        last = Some(frame);
+        between_frames();
+    }
+    Ok(Work::Segments(lines))
 }
 
 /// An L-system in `look.ink`, out of line: each family's frame is on the stack only while

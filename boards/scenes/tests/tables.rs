@@ -175,6 +175,23 @@ fn lsystem_table(results: &Value) -> String {
     table
 }
 
+/// Each core's record of `scene`: the core, its instructions and instructions per unit of
+/// work (with thousands separators).
+fn cortex_m_rows<'a>(
+    records: &'a [Value],
+    scene: &'a str,
+) -> impl Iterator<Item = (&'a str, u64, String)> + 'a {
+    records
+        .iter()
+        .filter(move |r| text(r, "scene") == scene)
+        .map(|record| {
+            let instructions = number(record, "instructions").unwrap_or(0);
+            let work = number(record, "work").unwrap_or(1).max(1);
+            let per_unit = thousands((instructions as f64 / work as f64).round() as u64);
+            (text(record, "core"), instructions, per_unit)
+        })
+}
+
 /// The general engine: ABOP's monopodial tree (figure 2.6) at order 10, on the host
 /// (benches) and on Cortex-M3 and M4 (the measuring firmware, 128×64).
 fn general_table(records: &[Value], results: &Value) -> String {
@@ -197,17 +214,10 @@ fn general_table(records: &[Value], results: &Value) -> String {
             SEGMENTS as f64 / (ns.max(1) as f64 / 1e9) / 1e3
         ));
     }
-    for record in records
-        .iter()
-        .filter(|r| text(r, "scene") == "monopodial-tree")
-    {
-        let instructions = number(record, "instructions").unwrap_or(0);
-        let work = number(record, "work").unwrap_or(1).max(1);
+    for (core, instructions, per_unit) in cortex_m_rows(records, "monopodial-tree") {
         table.push_str(&format!(
-            "| {} | read the text, fit and draw into 128×64 | {} instructions | {} instructions |\n",
-            text(record, "core"),
+            "| {core} | read the text, fit and draw into 128×64 | {} instructions | {per_unit} instructions |\n",
             thousands(instructions),
-            thousands((instructions as f64 / work as f64).round() as u64),
         ));
     }
     table
@@ -228,14 +238,10 @@ fn ifs_table(records: &[Value], results: &Value) -> String {
             POINTS as f64 / (ns.max(1) as f64 / 1e9) / 1e6
         ));
     }
-    for record in records.iter().filter(|r| text(r, "scene") == "ifs-fern") {
-        let instructions = number(record, "instructions").unwrap_or(0);
-        let work = number(record, "work").unwrap_or(1).max(1);
+    for (core, instructions, per_unit) in cortex_m_rows(records, "ifs-fern") {
         table.push_str(&format!(
-            "| {} | read, fit (one game) and draw (another) | {} instructions | {} instructions |\n",
-            text(record, "core"),
+            "| {core} | read, fit (one game) and draw (another) | {} instructions | {per_unit} instructions |\n",
             thousands(instructions),
-            thousands((instructions as f64 / work as f64).round() as u64),
         ));
     }
     table
@@ -267,27 +273,42 @@ fn shapes_table(records: &[Value], results: &Value) -> String {
         ));
     }
     let scenes = [
-        ("sierpinski-carpet", "carpet, order 3"),
-        ("sierpinski-gasket", "gasket, order 6"),
-        ("menger-sponge", "Menger sponge, order 2"),
-        ("terrain", "profile, 129 heights"),
-        ("terrain2d", "landscape, 33², shaded"),
+        ("sierpinski-carpet", "carpet, order 3", "square"),
+        ("sierpinski-gasket", "gasket, order 6", "triangle"),
+        ("menger-sponge", "Menger sponge, order 2", "cube"),
+        ("terrain", "profile, 129 heights", "height"),
+        ("terrain2d", "landscape, 33², shaded", "height"),
     ];
-    for record in records {
-        let Some((_, what)) = scenes
-            .iter()
-            .find(|(name, _)| *name == text(record, "scene"))
-        else {
-            continue;
-        };
-        let instructions = number(record, "instructions").unwrap_or(0);
-        let work = number(record, "work").unwrap_or(1).max(1);
+    for (scene, what, unit) in scenes {
+        for (core, instructions, per_unit) in cortex_m_rows(records, scene) {
+            table.push_str(&format!(
+                "| {core} | {what}, fit + draw 128×64 | {} instructions | {per_unit} per {unit} |\n",
+                thousands(instructions),
+            ));
+        }
+    }
+    table
+}
+
+/// The boards' walking figure on Cortex-M0/M3/M4: its frames into 128×64, each erasing the
+/// last.
+fn figure_table(records: &[Value]) -> String {
+    let frames = tinyfractal_scenes::SCENES
+        .iter()
+        .find_map(|entry| match entry.scene {
+            tinyfractal_scenes::Scene::Walk { frames } => Some(u64::from(frames)),
+            _ => None,
+        })
+        .unwrap_or(1)
+        .max(1);
+    let mut table = format!(
+        "| core | {frames} frames (fit once, erase and draw each) | per frame | per line drawn |\n|---|---|---|---|\n",
+    );
+    for (core, instructions, per_line) in cortex_m_rows(records, "walking-figure") {
         table.push_str(&format!(
-            "| {} | {what}, fit + draw 128×64 | {} instructions | {} per {} |\n",
-            text(record, "core"),
+            "| {core} | {} instructions | {} | {per_line} |\n",
             thousands(instructions),
-            thousands((instructions as f64 / work as f64).round() as u64),
-            text(record, "work_unit"),
+            thousands(instructions / frames),
         ));
     }
     table
@@ -369,6 +390,7 @@ fn performance_tables_are_generated_from_the_measurements() {
         ("general-bench", general_table(records, &results)),
         ("ifs-bench", ifs_table(records, &results)),
         ("shapes-bench", shapes_table(records, &results)),
+        ("figure-bench", figure_table(records)),
     ];
     let bless = std::env::var_os("TINYFRACTAL_BLESS").is_some();
     let mut stale = Vec::new();

@@ -33,6 +33,8 @@ const HSE_MHZ: u32 = 8;
 const SPI_MHZ: u32 = 22;
 /// How long a scene stays up without a button press.
 const SHOW_FOR_MS: u64 = 10_000;
+/// Between the frames of an animated scene.
+const FRAME_MS: u64 = 60;
 /// The timer that measures scenes and timeouts counts at 10 kHz (a 16-bit prescaler cannot
 /// reach 1 kHz from 90 MHz); TIM2 is 32 bits, so it wraps after five days.
 const TICK_HZ: u32 = 10_000;
@@ -116,7 +118,15 @@ fn main() -> ! {
         for entry in SCENES.iter() {
             let (name, scene) = (entry.name, entry.scene);
             let start = clock.now();
-            let result = scene.draw(&mut display, &COLOUR);
+            // An animated scene (the walking figure) waits FRAME_MS between frames.
+            let result = scene.draw_frames(&mut display, &COLOUR, || {
+                let since = clock.now();
+                wait_for_press_or(
+                    FRAME_MS,
+                    || u64::from((clock.now() - since).to_millis()),
+                    || false,
+                );
+            });
             let ms = (clock.now() - start).to_millis();
             match result {
                 Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", name, n, ms),

@@ -1,0 +1,58 @@
+//! The walking figure, a board's animation: each frame erases the last one's lines instead
+//! of clearing the display, so what stays on the target must be the last frame alone, in
+//! the fit shared by every frame; and a board gets a call between frames to pace it.
+
+use embedded_graphics::{prelude::*, primitives::Rectangle};
+use tinyfractal::{walk_pose, Figure, Real, BODY};
+use tinyfractal_scenes::{Scene, Work, GREY};
+
+#[path = "../../../tests/support/frame.rs"]
+mod frame;
+
+use frame::Frame;
+
+#[test]
+fn the_last_frame_alone_stays_on_the_display() {
+    const FRAMES: u32 = 16;
+    let size = Size::new(128, 64);
+    let mut animated = Frame::filled(size, GREY.ink);
+    let mut calls = 0;
+    let work = Scene::Walk { frames: FRAMES }
+        .draw_frames(&mut animated, &GREY, || calls += 1)
+        .unwrap();
+    assert_eq!(calls, FRAMES);
+    assert_eq!(animated.outside, 0);
+
+    let pose = |k: u32| walk_pose(Real::from_ratio(i64::from(k), i64::from(FRAMES)).unwrap());
+    let drawing = Figure::new(&BODY, pose(0))
+        .fit_poses(
+            Rectangle::new(Point::zero(), size),
+            &[GREY.ink],
+            (0..FRAMES).map(pose),
+        )
+        .unwrap();
+    let mut last = Frame::filled(size, GREY.background);
+    drawing.with_pose(pose(FRAMES - 1)).draw(&mut last).unwrap();
+    assert!(
+        animated.pixels == last.pixels,
+        "the erased frames left pixels behind"
+    );
+    let drawn = animated.pixels.iter().filter(|&&p| p == GREY.ink).count();
+    assert!(drawn > 100, "{drawn} pixels of the last frame");
+
+    // Every frame draws the same number of lines.
+    let Work::Segments(lines) = work else {
+        panic!("{work:?}")
+    };
+    let mut one = Frame::filled(size, GREY.background);
+    let per_frame = drawing.draw(&mut one).unwrap();
+    assert_eq!(lines, per_frame * u64::from(FRAMES));
+}
+
+#[test]
+fn no_frames_draw_nothing() {
+    let mut target = Frame::filled(Size::new(32, 32), GREY.ink);
+    let work = Scene::Walk { frames: 0 }.draw(&mut target, &GREY).unwrap();
+    assert_eq!(work, Work::Segments(0));
+    assert!(target.pixels.iter().all(|&p| p == GREY.background));
+}
