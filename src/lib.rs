@@ -151,7 +151,7 @@ pub use lsystem::parametric::{
 pub use lsystem::table::{cells_needed, Cell, MAX_BODY_NESTING};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 pub use lsystem::walker::{DerivedSymbol, Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
-pub use math::affine::Affine2;
+pub use math::affine::{Affine2, Affine3};
 pub use math::random::Generator;
 pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
 pub use render::fit::{Orientation, DEFAULT_MARGIN};

@@ -3,42 +3,14 @@
 use heapless::Vec;
 
 use crate::error::{Error, Location, ReadError};
+use crate::math::affine::Affine3;
 use crate::math::Real;
 
 /// Most maps an IFS holds (Fractint's own `fractint.ifs` has an entry of 22).
 pub const MAX_MAPS: usize = 32;
 
-/// One affine map of space: p' = matrix · p + translation (a 2D map has z rows of 0).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct AffineMap {
-    /// Row by row.
-    pub matrix: [[Real; 3]; 3],
-    /// Added after the matrix.
-    pub translation: [Real; 3],
-}
-
-impl AffineMap {
-    /// Fractint's 2D map `a b c d e f`: x' = a·x + b·y + e, y' = c·x + d·y + f.
-    pub fn planar([a, b, c, d, e, f]: [Real; 6]) -> Self {
-        let zero = Real::ZERO;
-        Self {
-            matrix: [[a, b, zero], [c, d, zero], [zero, zero, zero]],
-            translation: [e, f, zero],
-        }
-    }
-
-    /// `p` mapped; `None` if it leaves the fixed-point range.
-    #[inline]
-    pub fn apply(&self, p: [Real; 3]) -> Option<[Real; 3]> {
-        let mut out = self.translation;
-        for (o, row) in out.iter_mut().zip(&self.matrix) {
-            for (&m, &v) in row.iter().zip(&p) {
-                *o = o.checked_add(m.checked_mul(v)?)?;
-            }
-        }
-        Some(out)
-    }
-}
+/// One map of an IFS: an [`Affine3`] (a 2D map has z rows of 0).
+pub type AffineMap = Affine3;
 
 /// Maps with weights: each map's share of the 2³² random numbers, a multiply and a shift
 /// to choose (no floats, no division).

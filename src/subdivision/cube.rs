@@ -19,7 +19,8 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::{check_order, depth_first, power};
 use crate::error::{Error, FitError, ParameterError};
-use crate::math::trig::{BinaryAngle, ONE_Q30};
+use crate::math::affine::Affine3;
+use crate::math::trig::ONE_Q30;
 use crate::math::Real;
 use crate::render::polygon::{fill_convex, SubPixel, SUBPIXEL_BITS};
 
@@ -146,15 +147,11 @@ impl SierpinskiCube {
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
-        let (cos_a, sin_a) =
-            BinaryAngle::from_degrees_bits(self.camera.azimuth.to_bits()).cos_sin();
-        let (cos_e, sin_e) =
-            BinaryAngle::from_degrees_bits(self.camera.elevation.to_bits()).cos_sin();
-        let q30 = |a: i32, b: i32| ((i64::from(a) * i64::from(b)) >> 30) as i32;
         // Screen right, screen up and towards the viewer, per world axis (Q30).
-        let right = [-sin_a, cos_a, 0];
-        let up = [-q30(sin_e, cos_a), -q30(sin_e, sin_a), cos_e];
-        let toward = [q30(cos_e, cos_a), q30(cos_e, sin_a), sin_e];
+        let view = Affine3::camera(self.camera.azimuth, self.camera.elevation);
+        let [right, up, toward] = view
+            .matrix
+            .map(|row| row.map(|v| (v.to_bits() >> 2) as i32));
         let spread = |v: &[i32; 3]| v.iter().map(|c| i64::from(c.unsigned_abs())).sum::<i64>();
         let (w, h) = (i64::from(area.size.width), i64::from(area.size.height));
         // Pixels per unit of the whole cube's side, the tighter of width and height, Q16.
