@@ -244,46 +244,33 @@ fn dwells_agree_with_the_f64_model() {
     }
 }
 
-/// Double-double numbers (about 106 bits) from f64 pairs: the reference where f64 itself
-/// runs out of bits (at the deep zoom a pixel is 2^-41.5, and f64 keeps 2^-53).
-#[derive(Clone, Copy)]
-struct Dd(f64, f64);
+#[path = "support/dd.rs"]
+mod dd;
 
-impl Dd {
-    fn from_q60(bits: i64) -> Self {
-        let scale = (1u64 << 60) as f64;
-        let hi = bits as f64 / scale;
-        let rest = bits - (hi * scale) as i64;
-        Dd(hi, rest as f64 / scale)
-    }
-    fn quick(a: f64, b: f64) -> Self {
-        let s = a + b;
-        Dd(s, b - (s - a))
-    }
-    fn add(self, o: Dd) -> Dd {
-        let s = self.0 + o.0;
-        let v = s - self.0;
-        let e = (self.0 - (s - v)) + (o.0 - v) + self.1 + o.1;
-        Dd::quick(s, e)
-    }
-    fn neg(self) -> Dd {
-        Dd(-self.0, -self.1)
-    }
-    fn mul(self, o: Dd) -> Dd {
-        let p = self.0 * o.0;
-        let e = self.0.mul_add(o.0, -p) + self.0 * o.1 + self.1 * o.0;
-        Dd::quick(p, e)
-    }
-    fn scale(self, k: f64) -> Dd {
-        self.mul(Dd(k, 0.0))
-    }
-}
+use dd::Dd;
 
 fn model_dd(centre: (Coord, Coord), spacing: Coord, size: Size, max: u32) -> Vec<u16> {
+    model_dd_of(None, centre, spacing, size, max)
+}
+
+/// The double-double model of a Mandelbrot (`julia: None`) or Julia view.
+fn model_dd_of(
+    julia: Option<(Coord, Coord)>,
+    centre: (Coord, Coord),
+    spacing: Coord,
+    size: Size,
+    max: u32,
+) -> Vec<u16> {
+    let k = julia.map(|(re, im)| {
+        (
+            Dd::from_q60(re.to_bits().into()),
+            Dd::from_q60(im.to_bits().into()),
+        )
+    });
     let (re0, im0, d) = (
-        Dd::from_q60(centre.0.to_bits()),
-        Dd::from_q60(centre.1.to_bits()),
-        Dd::from_q60(spacing.to_bits()),
+        Dd::from_q60(centre.0.to_bits().into()),
+        Dd::from_q60(centre.1.to_bits().into()),
+        Dd::from_q60(spacing.to_bits().into()),
     );
     let mut out = Vec::new();
     for j in 0..size.height as i64 {
@@ -292,7 +279,10 @@ fn model_dd(centre: (Coord, Coord), spacing: Coord, size: Size, max: u32) -> Vec
                 re0.add(d.scale((2 * i + 1 - size.width as i64) as f64 / 2.0)),
                 im0.add(d.scale((2 * j + 1 - size.height as i64) as f64 / 2.0).neg()),
             );
-            let mut z = (Dd(0.0, 0.0), Dd(0.0, 0.0));
+            let (c, mut z) = match k {
+                None => (c, (Dd(0.0, 0.0), Dd(0.0, 0.0))),
+                Some(k) => (k, c),
+            };
             let mut dwell = max;
             for n in 1..=max {
                 let (x2, y2) = (z.0.mul(z.0), z.1.mul(z.1));
@@ -773,4 +763,116 @@ fn a_render_fits_in_a_few_kilobytes() {
     // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view, the kernel constants and
     // the counters.
     assert!(bytes <= 2750, "Render is {bytes} bytes");
+}
+
+/// A naive `f32` loop, as a user writes it on an FPU (separate multiply and add), at the
+/// same sample points.
+fn naive_f32(julia: Option<(f64, f64)>, view: &View) -> Vec<u16> {
+    let size = view.size();
+    let d = view.spacing().to_f64();
+    let (cx, cy) = (view.centre().0.to_f64(), view.centre().1.to_f64());
+    let mut out = Vec::new();
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let p = (
+                (cx + (f64::from(i) + 0.5 - f64::from(size.width) / 2.0) * d) as f32,
+                (cy - (f64::from(j) + 0.5 - f64::from(size.height) / 2.0) * d) as f32,
+            );
+            let (c, mut z) = match julia {
+                None => (p, (0.0f32, 0.0f32)),
+                Some((re, im)) => ((re as f32, im as f32), p),
+            };
+            let mut dwell = view.max_iterations();
+            for n in 1..=view.max_iterations() {
+                let (x2, y2) = (z.0 * z.0, z.1 * z.1);
+                z = (x2 - y2 + c.0, 2.0 * z.0 * z.1 + c.1);
+                if z.0 * z.0 + z.1 * z.1 > 4.0 {
+                    dwell = n;
+                    break;
+                }
+            }
+            out.push(dwell as u16);
+        }
+    }
+    out
+}
+
+/// The calibrated tier rule on the views people draw (the gallery's and the boards'):
+/// the chosen tier keeps 99.9 % of dwells identical to a double-double reference and no
+/// fewer than a naive `f32` loop, printed side by side (`docs/tiers.md` has 192 views).
+#[test]
+fn the_chosen_tier_beats_f32_on_display_views() {
+    let cases = [
+        (
+            "full view",
+            None,
+            ("-0.75", "0"),
+            "3.5",
+            (320, 240),
+            256,
+            Tier::Standard,
+        ),
+        (
+            "julia",
+            Some((-0.8, 0.156)),
+            ("0", "0"),
+            "3.2",
+            (320, 240),
+            100,
+            Tier::Standard,
+        ),
+        (
+            "board julia",
+            Some((-0.8, 0.156)),
+            ("0", "0"),
+            "3.6",
+            (128, 64),
+            100,
+            Tier::Standard,
+        ),
+        (
+            "board full view",
+            None,
+            ("-0.75", "0"),
+            "3.5",
+            (128, 64),
+            64,
+            Tier::Medium,
+        ),
+        (
+            "julia, long orbits",
+            Some((-0.8, 0.156)),
+            ("0", "0"),
+            "3.2",
+            (320, 240),
+            300,
+            Tier::Deep,
+        ),
+    ];
+    for (name, julia, centre, width, (w, h), max, tier) in cases {
+        let case = Case {
+            name,
+            julia,
+            centre,
+            width,
+            size: Size::new(w, h),
+            max,
+            tier,
+        };
+        let view = view_of(&case);
+        assert_eq!(view.tier(), tier, "{name}");
+        let k = julia.map(|(re, im)| (Coord::from_f64(re).unwrap(), Coord::from_f64(im).unwrap()));
+        let reference = model_dd_of(k, view.centre(), view.spacing(), view.size(), max);
+        let ours = agreement(view, Algorithm::Exact, &reference);
+        let fast = agreement(view, Algorithm::Fast, &reference);
+        let f32_share = same(&naive_f32(julia, &view), &reference);
+        println!(
+            "{name:<20} {tier:?}: ours {:.3} % (fast {:.3} %), f32 {:.3} %",
+            100.0 * ours,
+            100.0 * fast,
+            100.0 * f32_share
+        );
+        assert!(ours >= 0.999, "{name}: {ours}");
+        assert!(ours >= f32_share, "{name}: ours {ours} < f32 {f32_share}");
+    }
 }

@@ -41,12 +41,13 @@ pub enum Tier {
     /// Q28 in `i32` whose products keep their high 32 bits (Q24): one `smull` and no shifts
     /// per product on cores with a long multiply, so about half the instructions of
     /// `Standard` per step, with 24 bits of precision. Chosen for the Mandelbrot set while
-    /// log₂(1/d) + log₂(max-iter) ≤ 12: the full view at 128×64 and 64 iterations.
+    /// log₂(1/d) + log₂(max-iter) ≤ 12: the full view at 128×64 and 64 iterations (the
+    /// calibrated rule: [`View::new`]).
     Medium,
     /// Q28 in `i32` with 64-bit products (Fractint used Q29; Q28 leaves room for |c| ≤ 3.5).
-    /// Chosen for the Mandelbrot set while log₂(1/d) + log₂(max-iter) ≤ 16: the full view
-    /// at 320×240 and 256 iterations, or views 8× deeper at 64 iterations; for Julia sets
-    /// while log₂(1/d) + 2·log₂(max-iter) ≤ 20: 128×64 at 100 iterations.
+    /// Chosen for the Mandelbrot set while log₂(1/d) + log₂(max-iter) ≤ 15: the full view
+    /// at 320×240 and 256 iterations, or views 4× deeper at 64 iterations; for Julia sets
+    /// while log₂(1/d) + 7·log₂(max-iter) ≤ 56: 320×240 at 100 iterations.
     Standard,
     /// Q60 in `i64` with 128-bit products, for zooms and long-running Julia sets.
     /// Deepest zoom: pixel spacing ≥ 2⁻⁵⁴ (a width of 1.8·10⁻¹⁴ on 320 pixels); with 12
@@ -74,11 +75,6 @@ impl Tier {
             Self::Medium => 24,
             _ => self.frac_bits(),
         }
-    }
-
-    /// Whether the tier keeps at least `bits` fractional bits.
-    const fn has(self, bits: u32) -> bool {
-        self.precision_bits() >= bits
     }
 
     /// The tier's name, as the CLI spells it.
@@ -109,7 +105,18 @@ pub struct View {
 }
 
 impl View {
-    /// Checks a view and picks the narrowest tier with enough bits for its pixel spacing.
+    /// Checks a view and picks its tier.
+    ///
+    /// The tier is the cheapest that keeps at least 99.9 % of dwells identical to a
+    /// double-double reference, and no fewer than a naive `f32` loop, over the calibration
+    /// views with the same z and i below (162 views, pooled by pixels; `cargo bench --bench
+    /// tiers` re-derives the rule and writes the evidence to `docs/tiers.md`). Rounding near the
+    /// boundary is magnified the longer an orbit runs, so the rule is in the pixel spacing
+    /// d and the cap: with z = ⌈log₂(1/d)⌉ and i = ⌈log₂(max-iter)⌉, the Mandelbrot set
+    /// takes `Medium` while z + i ≤ 12, `Standard` while z + i ≤ 15; a Julia set (all
+    /// boundary) takes `Standard` while z + 7·i ≤ 56 (up to 64 iterations at z ≤ 14, 128 at
+    /// z ≤ 7: a 320×240 view at 100 iterations); the rest `Deep`, while the spacing itself is
+    /// resolvable (≥ 2⁻⁵⁴).
     pub fn new(
         fractal: Fractal,
         centre: (Coord, Coord),
@@ -169,14 +176,7 @@ impl View {
         Ok(view)
     }
 
-    /// The narrowest tier with enough bits: near the boundary a pixel's orbit magnifies
-    /// rounding more the longer it runs, so the bits needed grow with the zoom *and* the
-    /// iteration cap: log₂(1/d) + log₂(max-iter) + 12 for the Mandelbrot set. A Julia set is
-    /// all boundary and its long orbits lose bits faster with the cap: log₂(1/d) +
-    /// 2·log₂(max-iter) + 8 (a 64×48 view at 256 iterations needs more than Q28, a 128×64
-    /// view at 100 does not). Measured against an f64 model in tests/escape.rs: this keeps
-    /// ≥ 99.5 % of dwells identical. Views needing more than 60 bits use the deep tier while
-    /// the spacing itself is resolvable (≥ 2⁻⁵⁴).
+    /// The calibrated rule of [`View::new`].
     fn tier_for(fractal: Fractal, spacing: i64, max_iterations: u32) -> Result<Tier, Error> {
         if spacing < FINEST_SPACING {
             return Err(Error::View(ViewError::ZoomTooDeep {
@@ -188,14 +188,12 @@ impl View {
         // ceil(log2(max)).
         let zoom_bits = 60u32.saturating_sub(63 - spacing.leading_zeros());
         let iteration_bits = 32 - max_iterations.saturating_sub(1).leading_zeros();
-        let needed = match fractal {
-            Fractal::Mandelbrot => zoom_bits + iteration_bits + 12,
-            Fractal::Julia { .. } => zoom_bits + 2 * iteration_bits + 8,
-        };
-        Ok(Tier::ALL
-            .into_iter()
-            .find(|tier| tier.has(needed))
-            .unwrap_or(Tier::Deep))
+        Ok(match fractal {
+            Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
+            Fractal::Mandelbrot if zoom_bits + iteration_bits <= 15 => Tier::Standard,
+            Fractal::Julia { .. } if zoom_bits + 7 * iteration_bits <= 56 => Tier::Standard,
+            _ => Tier::Deep,
+        })
     }
 
     /// Computes in `tier` instead of the automatic choice (coarser tiers are faster and less
@@ -238,6 +236,11 @@ impl View {
     /// The fractal.
     pub const fn fractal(&self) -> Fractal {
         self.fractal
+    }
+
+    /// The centre (real, imaginary).
+    pub const fn centre(&self) -> (Coord, Coord) {
+        self.centre
     }
 
     /// Pixel spacing in Q60 bits.

@@ -1,0 +1,40 @@
+//! Double-double numbers (about 106 bits) from f64 pairs, for the escape-time tests and
+//! the tier calibration (`#[path]`-included): the reference where f64 runs out of bits (at
+//! the deep zoom a pixel is 2^-41.5, and f64 keeps 2^-53).
+
+#![allow(dead_code)]
+
+/// A value as the sum of two f64s, the second below half an ulp of the first.
+#[derive(Clone, Copy)]
+pub struct Dd(pub f64, pub f64);
+
+impl Dd {
+    /// From Q60 bits.
+    pub fn from_q60(bits: i128) -> Self {
+        let scale = (1u64 << 60) as f64;
+        let hi = bits as f64 / scale;
+        let rest = bits - (hi * scale) as i128;
+        Dd(hi, rest as f64 / scale)
+    }
+    fn quick(a: f64, b: f64) -> Self {
+        let s = a + b;
+        Dd(s, b - (s - a))
+    }
+    pub fn add(self, o: Dd) -> Dd {
+        let s = self.0 + o.0;
+        let v = s - self.0;
+        let e = (self.0 - (s - v)) + (o.0 - v) + self.1 + o.1;
+        Dd::quick(s, e)
+    }
+    pub fn neg(self) -> Dd {
+        Dd(-self.0, -self.1)
+    }
+    pub fn mul(self, o: Dd) -> Dd {
+        let p = self.0 * o.0;
+        let e = self.0.mul_add(o.0, -p) + self.0 * o.1 + self.1 * o.0;
+        Dd::quick(p, e)
+    }
+    pub fn scale(self, k: f64) -> Dd {
+        self.mul(Dd(k, 0.0))
+    }
+}
