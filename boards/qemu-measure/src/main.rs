@@ -18,7 +18,7 @@ mod firmware {
     use cortex_m_semihosting::{debug, hprintln};
     use panic_semihosting as _;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
-    use tinyfractal_scenes::{Work, GREY, SCENES};
+    use tinyfractal_scenes::{Entry, Work, DISPLAY_SCENES, GREY, SCENES};
 
     const RELOAD: u32 = 0x00FF_FFFF;
     static WRAPS: AtomicU32 = AtomicU32::new(0);
@@ -123,44 +123,14 @@ mod firmware {
         while SYST::get_current() == 0 {}
         let clock = Clock::calibrate();
         hprintln!("measure calibration scale={}", clock.scale);
-        for entry in SCENES.iter() {
-            let bottom = paint_stack();
-            let mut target = Checksum::new();
-            let mut work = Work::Segments(0);
-            let instructions = clock.measure(|| {
-                work = entry
-                    .scene
-                    .draw(&mut target, &GREY)
-                    .unwrap_or(Work::Segments(0));
-            });
-            let stack = stack_used(bottom);
-            let work = work.count();
-            let (mut f32_cost, mut fixed_cost) = (None, None);
-            if let Some(view) = BaselineView::of(&entry.scene) {
-                f32_cost = Some(clock.measure(|| {
-                    baseline_f32(view, &mut Checksum::new());
-                }));
-                fixed_cost = Some(clock.measure(|| {
-                    baseline_fixed20(view, &mut Checksum::new());
-                }));
-            }
-            hprintln!(
-                "measure scene={} instructions={} work={} checksum={} pixels={} stack={} baseline_f32={} baseline_fixed20={}",
-                entry.name,
-                instructions,
-                work,
-                target.value,
-                target.pixels,
-                stack,
-                Optional(f32_cost),
-                Optional(fixed_cost)
-            );
+        for entry in SCENES.iter().chain(DISPLAY_SCENES.iter()) {
+            measure_entry(&clock, entry);
         }
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
         #[cfg(measure_general)]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
             let bottom = paint_stack();
-            let mut target = Checksum::new();
+            let mut target = Checksum::of_size(entry.size);
             let mut work = Work::Segments(0);
             let instructions = clock.measure(|| {
                 work = entry.draw(&mut target, &GREY).unwrap_or(Work::Segments(0));
@@ -168,8 +138,10 @@ mod firmware {
             let stack = stack_used(bottom);
             let work = work.count();
             hprintln!(
-                "measure scene={} instructions={} work={} checksum={} pixels={} stack={} baseline_f32=null baseline_fixed20=null",
+                "measure scene={} size={}x{} instructions={} work={} checksum={} pixels={} stack={} baseline_f32=null baseline_fixed20=null",
                 entry.name,
+                entry.size.width,
+                entry.size.height,
                 instructions,
                 work,
                 target.value,
@@ -182,6 +154,44 @@ mod firmware {
         loop {
             cortex_m::asm::wfi();
         }
+    }
+
+    /// Draws a catalogue entry into a checksum of its size, and its baselines where they
+    /// apply; prints its record.
+    fn measure_entry(clock: &Clock, entry: &Entry) {
+        let bottom = paint_stack();
+        let mut target = Checksum::of_size(entry.size);
+        let mut work = Work::Segments(0);
+        let instructions = clock.measure(|| {
+            work = entry
+                .scene
+                .draw(&mut target, &GREY)
+                .unwrap_or(Work::Segments(0));
+        });
+        let stack = stack_used(bottom);
+        let work = work.count();
+        let (mut f32_cost, mut fixed_cost) = (None, None);
+        if let Some(view) = BaselineView::of(&entry.scene) {
+            f32_cost = Some(clock.measure(|| {
+                baseline_f32(view, &mut Checksum::of_size(entry.size));
+            }));
+            fixed_cost = Some(clock.measure(|| {
+                baseline_fixed20(view, &mut Checksum::of_size(entry.size));
+            }));
+        }
+        hprintln!(
+            "measure scene={} size={}x{} instructions={} work={} checksum={} pixels={} stack={} baseline_f32={} baseline_fixed20={}",
+            entry.name,
+            entry.size.width,
+            entry.size.height,
+            instructions,
+            work,
+            target.value,
+            target.pixels,
+            stack,
+            Optional(f32_cost),
+            Optional(fixed_cost)
+        );
     }
 
     struct Optional(Option<u64>);

@@ -540,3 +540,12 @@ pub const SCENES: [Entry; 13] = [
     // Width 10^-7: needs the 60-bit tier with 128-bit products.
     escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire"),
 ];
+
+/// The escape-time views at a real board's display size (320×240), measured on
+/// Cortex-M0/M3/M4 beside the OLED's frames: the full Mandelbrot view at 256 iterations
+/// and the Julia set k = −0.8 + 0.156i at 100.
+#[rustfmt::skip]
+pub const DISPLAY_SCENES: [Entry; 2] = [
+    escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"),
+    escape("julia", JULIA_K, ("0", "0"), "3.2", 100, GALLERY_SIZE, "classic"),
+];

@@ -10,16 +10,18 @@ use tinyfractal::Coord;
 
 use crate::catalogue::Scene;
 
-/// A 128×64 target with no memory: every pixel written (position and grey, in order) is
-/// folded into an FNV-1a checksum, so the host can check the MCU drew the same thing. Like a
-/// display driver it takes runs (`fill_contiguous`, `fill_solid`) without a `Pixel` and a
-/// bounds check each; the baselines draw through `draw_iter`, pixel by pixel.
+/// A target with no memory (128×64 unless made larger): every pixel written (position and
+/// grey, in order) is folded into an FNV-1a checksum, so the host can check the MCU drew
+/// the same thing. Like a display driver it takes runs (`fill_contiguous`, `fill_solid`)
+/// without a `Pixel` and a bounds check each; the baselines draw through `draw_iter`,
+/// pixel by pixel.
 #[derive(Debug, Clone, Copy)]
 pub struct Checksum {
     /// The checksum so far.
     pub value: u32,
     /// Pixels written.
     pub pixels: u32,
+    size: Size,
 }
 
 impl Default for Checksum {
@@ -29,11 +31,18 @@ impl Default for Checksum {
 }
 
 impl Checksum {
-    /// The empty checksum.
+    /// The empty checksum of a 128×64 target (the OLED's).
     pub const fn new() -> Self {
+        Self::of_size(Size::new(128, 64))
+    }
+
+    /// The empty checksum of a target of `size` (at most 512×256: positions are folded
+    /// in as 9 and 8 bits).
+    pub const fn of_size(size: Size) -> Self {
         Self {
             value: 0x811C_9DC5,
             pixels: 0,
+            size,
         }
     }
 
@@ -44,17 +53,17 @@ impl Checksum {
     }
 }
 
-/// `value` with a pixel's position and grey folded in as one 24-bit word (FNV-1a's step on
+/// `value` with a pixel's position and grey folded in as one 21-bit word (FNV-1a's step on
 /// words, not bytes): one multiply a pixel, about what a framebuffer write costs.
 #[inline(always)]
 fn folded(value: u32, x: i32, y: i32, color: Gray4) -> u32 {
-    let word = u32::from(x as u8) | u32::from(y as u8) << 8 | u32::from(color.into_storage()) << 16;
+    let word = (x as u32 & 0x1FF) | (y as u32 & 0xFF) << 9 | u32::from(color.into_storage()) << 17;
     (value ^ word).wrapping_mul(0x0100_0193)
 }
 
 impl OriginDimensions for Checksum {
     fn size(&self) -> Size {
-        Size::new(128, 64)
+        self.size
     }
 }
 
@@ -66,8 +75,9 @@ impl DrawTarget for Checksum {
         &mut self,
         pixels: I,
     ) -> Result<(), Infallible> {
+        let (width, height) = (self.size.width as i32, self.size.height as i32);
         for Pixel(p, color) in pixels {
-            if (0..128).contains(&p.x) && (0..64).contains(&p.y) {
+            if (0..width).contains(&p.x) && (0..height).contains(&p.y) {
                 self.record(p.x, p.y, color);
             }
         }

@@ -18,8 +18,9 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use embedded_graphics::prelude::Size;
 use tinyfractal_scenes::measure::Checksum;
-use tinyfractal_scenes::{Scene, Shape, Work, GENERAL_SCENES, GREY, SCENES};
+use tinyfractal_scenes::{Scene, Shape, Work, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES};
 
 struct Core {
     name: &'static str,
@@ -154,6 +155,52 @@ fn run(core: &Core, elf: &Path) -> Vec<BTreeMap<String, String>> {
         .collect()
 }
 
+/// What the host drew for a scene, which every core must draw too.
+struct Expected {
+    name: &'static str,
+    unit: &'static str,
+    /// `WxH`, as the firmware prints it.
+    size: String,
+    checksum: u32,
+    pixels: u32,
+    work: u64,
+}
+
+impl Expected {
+    fn new(
+        name: &'static str,
+        unit: &'static str,
+        size: Size,
+        target: Checksum,
+        work: u64,
+    ) -> Self {
+        Self {
+            name,
+            unit,
+            size: format!("{}x{}", size.width, size.height),
+            checksum: target.value,
+            pixels: target.pixels,
+            work,
+        }
+    }
+}
+
+/// What a scene's work counts.
+fn unit(scene: &Scene) -> &'static str {
+    match scene {
+        Scene::LSystem { .. } => "segment",
+        Scene::Ifs { .. } => "point",
+        Scene::Escape { .. } => "iteration",
+        Scene::Subdivision { shape, .. } => match shape {
+            Shape::Carpet => "square",
+            Shape::Gasket => "triangle",
+            Shape::Cube(_) => "cube",
+        },
+        Scene::Terrain { .. } => "height",
+        Scene::Walk { .. } => "line",
+    }
+}
+
 #[test]
 #[cfg_attr(
     tinyfractal_no_qemu,
@@ -164,43 +211,28 @@ fn run(core: &Core, elf: &Path) -> Vec<BTreeMap<String, String>> {
     ignore = "needs the Cortex-M targets: rustup target add thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf"
 )]
 fn every_core_draws_the_host_picture_and_fits() {
-    // The host's checksums: the same scene code into the same checksum target.
-    let mut host: Vec<(u32, u32, u64)> = SCENES
+    // The host's checksums: the same scene code into the same checksum target, for every
+    // core's scenes (the OLED's and the display-size views), then the general engine's,
+    // measured where the RAM holds them (not on the M0).
+    let mut host: Vec<Expected> = SCENES
         .iter()
+        .chain(&DISPLAY_SCENES)
         .map(|entry| {
-            let mut target = Checksum::new();
+            let mut target = Checksum::of_size(entry.size);
             let work = entry.scene.draw(&mut target, &GREY).unwrap().count();
-            (target.value, target.pixels, work)
+            Expected::new(entry.name, unit(&entry.scene), entry.size, target, work)
         })
         .collect();
-
-    // The general engine's scenes, measured where the RAM holds them (not on the M0).
+    let every_core = host.len();
     for entry in &GENERAL_SCENES {
-        let mut target = Checksum::new();
+        let mut target = Checksum::of_size(entry.size);
         let Work::Segments(work) = entry.draw(&mut target, &GREY).unwrap() else {
             unreachable!("an L-system counts segments")
         };
-        host.push((target.value, target.pixels, work));
+        host.push(Expected::new(
+            entry.name, "segment", entry.size, target, work,
+        ));
     }
-    let names: Vec<(&str, &str)> = SCENES
-        .iter()
-        .map(|entry| {
-            let unit = match entry.scene {
-                Scene::LSystem { .. } => "segment",
-                Scene::Ifs { .. } => "point",
-                Scene::Escape { .. } => "iteration",
-                Scene::Subdivision { shape, .. } => match shape {
-                    Shape::Carpet => "square",
-                    Shape::Gasket => "triangle",
-                    Shape::Cube(_) => "cube",
-                },
-                Scene::Terrain { .. } => "height",
-                Scene::Walk { .. } => "line",
-            };
-            (entry.name, unit)
-        })
-        .chain(GENERAL_SCENES.iter().map(|entry| (entry.name, "segment")))
-        .collect();
 
     let mut json = String::from("[\n");
     let mut table = String::new();
@@ -209,9 +241,9 @@ fn every_core_draws_the_host_picture_and_fits() {
         let (text, data, bss) = sizes(&elf);
         let records = run(core, &elf);
         let expected = if core.target.starts_with("thumbv6m") {
-            SCENES.len()
+            every_core
         } else {
-            names.len()
+            host.len()
         };
         assert_eq!(
             records.len(),
@@ -220,14 +252,21 @@ fn every_core_draws_the_host_picture_and_fits() {
             core.name
         );
         let mut deepest_stack = 0;
-        for (record, (&(name, unit), &(checksum, pixels, work))) in
-            records.iter().zip(names.iter().zip(&host))
-        {
-            assert_eq!(record["scene"], *name);
+        for (record, expected) in records.iter().zip(&host) {
+            let Expected {
+                name,
+                unit,
+                ref size,
+                checksum,
+                pixels,
+                work,
+            } = *expected;
+            assert_eq!(record["scene"], name);
+            assert_eq!(record["size"], *size, "{} {name}", core.name);
             assert_eq!(
                 record["checksum"],
                 checksum.to_string(),
-                "{} {name}: picture differs from the host",
+                "{} {name} at {size}: picture differs from the host",
                 core.name
             );
             assert_eq!(record["pixels"], pixels.to_string(), "{} {name}", core.name);
@@ -237,7 +276,7 @@ fn every_core_draws_the_host_picture_and_fits() {
             deepest_stack = deepest_stack.max(stack);
             let _ = writeln!(
                 json,
-                "  {{\"core\": \"{}\", \"scene\": \"{name}\", \"instructions\": {instructions}, \"baseline_f32\": {}, \"baseline_fixed20\": {}, \"text\": {text}, \"data\": {data}, \"bss\": {bss}, \"stack\": {stack}, \"work\": {work}, \"work_unit\": \"{unit}\"}},",
+                "  {{\"core\": \"{}\", \"scene\": \"{name}\", \"size\": \"{size}\", \"instructions\": {instructions}, \"baseline_f32\": {}, \"baseline_fixed20\": {}, \"text\": {text}, \"data\": {data}, \"bss\": {bss}, \"stack\": {stack}, \"work\": {work}, \"work_unit\": \"{unit}\"}},",
                 core.name, record["baseline_f32"], record["baseline_fixed20"]
             );
             let ratio = |baseline: &str| {
@@ -247,7 +286,7 @@ fn every_core_draws_the_host_picture_and_fits() {
             };
             let _ = writeln!(
                 table,
-                "| {} | {name} | {instructions} | {:.0} per {unit} | {} | {} | {stack} |",
+                "| {} | {name} | {size} | {instructions} | {:.0} per {unit} | {} | {} | {stack} |",
                 core.name,
                 instructions as f64 / work.max(1) as f64,
                 ratio(&record["baseline_f32"]),
@@ -274,7 +313,7 @@ fn every_core_draws_the_host_picture_and_fits() {
     }
     json.truncate(json.trim_end_matches(",\n").len());
     json.push_str("\n]\n");
-    println!("| core | scene | instructions | per unit | f32 baseline ÷ ours | fixed20 baseline ÷ ours | stack |\n|---|---|---|---|---|---|---|\n{table}");
+    println!("| core | scene | size | instructions | per unit | f32 baseline ÷ ours | fixed20 baseline ÷ ours | stack |\n|---|---|---|---|---|---|---|---|\n{table}");
     if let Some(path) = std::env::var_os("TINYFRACTAL_MEASUREMENTS") {
         std::fs::write(&path, json).unwrap();
         println!("wrote {}", PathBuf::from(path).display());

@@ -44,8 +44,8 @@ fn text<'a>(record: &'a Value, key: &str) -> &'a str {
 /// Every Cortex-M record: instructions per frame and per unit of work, against the baselines.
 fn cortex_m_table(records: &[Value]) -> String {
     let mut table = String::from(
-        "| core | scene | instructions per frame | per unit | f32 baseline | fixed20 baseline | stack (bytes) |\n\
-         |---|---|---|---|---|---|---|\n",
+        "| core | scene | frame | instructions per frame | per unit | f32 baseline | fixed20 baseline | stack (bytes) |\n\
+         |---|---|---|---|---|---|---|---|\n",
     );
     for record in records {
         let instructions = number(record, "instructions").unwrap_or(0);
@@ -56,9 +56,10 @@ fn cortex_m_table(records: &[Value]) -> String {
             })
         };
         table.push_str(&format!(
-            "| {} | {} | {} | {} per {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} per {} | {} | {} | {} |\n",
             text(record, "core"),
             text(record, "scene"),
+            text(record, "size"),
             thousands(instructions),
             thousands((instructions as f64 / work as f64).round() as u64),
             text(record, "work_unit"),
@@ -96,27 +97,49 @@ fn footprint_table(records: &[Value]) -> String {
     table
 }
 
-/// The README's short table: the full Mandelbrot view on each core against the better of
-/// the two naive loops.
+/// The README's short table: the full Mandelbrot view and the Julia set on each core, at
+/// the OLED's frame and a real display's, against the better of the two naive loops.
 fn summary_table(records: &[Value]) -> String {
     let mut table = String::from(
-        "| core | Mandelbrot full view, 128×64 | naive f32 loop | naive fixed-point loop | fewer instructions than the better one |\n|---|---|---|---|---|\n",
+        "| core | view | frame | ours | naive f32 loop | naive fixed-point loop | fewer instructions than the better one |\n|---|---|---|---|---|---|---|\n",
     );
-    for record in records.iter().filter(|r| text(r, "scene") == "mandelbrot") {
-        let ours = number(record, "instructions").unwrap_or(1).max(1);
-        let f32_loop = number(record, "baseline_f32").unwrap_or(0);
-        let fixed = number(record, "baseline_fixed20").unwrap_or(0);
-        let better = f32_loop.min(fixed);
-        table.push_str(&format!(
-            "| {} | {} | {} | {} | {:.1}× |\n",
-            text(record, "core"),
-            thousands(ours),
-            thousands(f32_loop),
-            thousands(fixed),
-            better as f64 / ours as f64,
-        ));
+    let views = [
+        ("mandelbrot", "Mandelbrot full view"),
+        ("julia", "Julia k = −0.8 + 0.156i"),
+    ];
+    for (scene, what) in views {
+        for record in records.iter().filter(|r| text(r, "scene") == scene) {
+            let ours = number(record, "instructions").unwrap_or(1).max(1);
+            let f32_loop = number(record, "baseline_f32").unwrap_or(0);
+            let fixed = number(record, "baseline_fixed20").unwrap_or(0);
+            let better = f32_loop.min(fixed);
+            table.push_str(&format!(
+                "| {} | {what}, max-iter {} | {} | {} | {} | {} | {:.1}× |\n",
+                text(record, "core"),
+                max_iterations(scene, text(record, "size")),
+                text(record, "size").replace('x', "×"),
+                thousands(ours),
+                thousands(f32_loop),
+                thousands(fixed),
+                better as f64 / ours as f64,
+            ));
+        }
     }
     table
+}
+
+/// The iteration cap of the catalogue's escape-time entry `scene` at `size` (`WxH`).
+fn max_iterations(scene: &str, size: &str) -> u32 {
+    tinyfractal_scenes::SCENES
+        .iter()
+        .chain(&tinyfractal_scenes::DISPLAY_SCENES)
+        .filter(|entry| entry.name == scene)
+        .filter(|entry| format!("{}x{}", entry.size.width, entry.size.height) == size)
+        .find_map(|entry| match entry.scene {
+            tinyfractal_scenes::Scene::Escape { max_iterations, .. } => Some(max_iterations),
+            _ => None,
+        })
+        .unwrap_or(0)
 }
 
 fn milliseconds(ns: u64) -> String {
