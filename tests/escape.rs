@@ -876,3 +876,81 @@ fn the_chosen_tier_beats_f32_on_display_views() {
         assert!(ours >= f32_share, "{name}: ours {ours} < f32 {f32_share}");
     }
 }
+
+/// The coarse-to-fine preview: after its block rows every pixel holds its block's middle
+/// dwell (one write each, one `uniform` a block); the finished picture is the direct
+/// render's, pixel for pixel; and it costs at most 10 % more iterations.
+#[test]
+fn a_preview_shows_everything_at_once_and_ends_in_the_same_picture() {
+    let cases = [
+        (None, ("-0.75", "0"), "3.5", Size::new(320, 240), 256),
+        (
+            Some((-0.8, 0.156)),
+            ("0", "0"),
+            "3.2",
+            Size::new(320, 240),
+            100,
+        ),
+        (
+            None,
+            ("-0.7435", "0.1314"),
+            "0.02",
+            Size::new(203, 151),
+            512,
+        ),
+    ];
+    for (julia, centre, width, size, max) in cases {
+        let case = Case {
+            name: "preview",
+            julia,
+            centre,
+            width,
+            size,
+            max,
+            tier: Tier::Standard,
+        };
+        let view = view_of(&case);
+        for algorithm in [Algorithm::Exact, Algorithm::Fast] {
+            let (direct, direct_stats) = render(view, algorithm);
+            let block = 8;
+            let mut sink = Dwells::new(size);
+            let mut preview = Render::new(view, algorithm).with_preview(block);
+            // The preview's block rows alone: a step of one iteration does one unit.
+            let rows = size.height.div_ceil(block);
+            for _ in 0..rows {
+                preview.step(&mut sink, 1).unwrap();
+            }
+            assert!(
+                sink.writes.iter().all(|&w| w == 1),
+                "{width}: preview covers"
+            );
+            for (index, &dwell) in sink.values.iter().enumerate() {
+                let (x, y) = (index as u32 % size.width, index as u32 / size.width);
+                let (bx, by) = (x / block * block, y / block * block);
+                let (mx, my) = (
+                    bx + block.min(size.width - bx) / 2,
+                    by + block.min(size.height - by) / 2,
+                );
+                let middle = direct.values[(my * size.width + mx) as usize];
+                if algorithm == Algorithm::Exact {
+                    assert_eq!(dwell, middle, "({x}, {y}) shows its block's middle");
+                }
+            }
+            let stats = preview.run(&mut sink).unwrap();
+            assert!(
+                sink.writes.iter().all(|&w| w == 2),
+                "then every pixel once more"
+            );
+            assert_eq!(
+                sink.values, direct.values,
+                "{width} {algorithm:?}: same picture"
+            );
+            let extra = stats.iterations as f64 / direct_stats.iterations as f64 - 1.0;
+            println!(
+                "{width} {algorithm:?}: preview costs {:.1} % more iterations",
+                100.0 * extra
+            );
+            assert!(extra <= 0.10, "{width} {algorithm:?}: {extra}");
+        }
+    }
+}
