@@ -16,9 +16,10 @@ mod firmware {
     use cortex_m::peripheral::{syst::SystClkSource, SYST};
     use cortex_m_rt::{entry, exception};
     use cortex_m_semihosting::{debug, hprintln};
+    use embedded_graphics::prelude::Size;
     use panic_semihosting as _;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
-    use tinyfractal_scenes::{Entry, Work, DISPLAY_SCENES, GREY, SCENES};
+    use tinyfractal_scenes::{Work, DISPLAY_SCENES, GREY, SCENES};
 
     const RELOAD: u32 = 0x00FF_FFFF;
     static WRAPS: AtomicU32 = AtomicU32::new(0);
@@ -123,31 +124,19 @@ mod firmware {
         while SYST::get_current() == 0 {}
         let clock = Clock::calibrate();
         hprintln!("measure calibration scale={}", clock.scale);
+        // Every core's scenes, with the baselines where they apply.
         for entry in SCENES.iter().chain(DISPLAY_SCENES.iter()) {
-            measure_entry(&clock, entry);
+            let view = BaselineView::of(&entry.scene);
+            measure(&clock, (entry.name, entry.size), view, |target| {
+                entry.scene.draw(target, &GREY)
+            });
         }
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
         #[cfg(measure_general)]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
-            let bottom = paint_stack();
-            let mut target = Checksum::of_size(entry.size);
-            let mut work = Work::Segments(0);
-            let instructions = clock.measure(|| {
-                work = entry.draw(&mut target, &GREY).unwrap_or(Work::Segments(0));
+            measure(&clock, (entry.name, entry.size), None, |target| {
+                entry.draw(target, &GREY)
             });
-            let stack = stack_used(bottom);
-            let work = work.count();
-            hprintln!(
-                "measure scene={} size={}x{} instructions={} work={} checksum={} pixels={} stack={} baseline_f32=null baseline_fixed20=null",
-                entry.name,
-                entry.size.width,
-                entry.size.height,
-                instructions,
-                work,
-                target.value,
-                target.pixels,
-                stack
-            );
         }
         hprintln!("measure done");
         debug::exit(debug::EXIT_SUCCESS);
@@ -156,34 +145,36 @@ mod firmware {
         }
     }
 
-    /// Draws a catalogue entry into a checksum of its size, and its baselines where they
-    /// apply; prints its record.
-    fn measure_entry(clock: &Clock, entry: &Entry) {
+    /// Runs `draw` into a checksum of `size` (and the baselines of `view`, if any) and
+    /// prints the record of scene `name`.
+    fn measure<E>(
+        clock: &Clock,
+        (name, size): (&str, Size),
+        view: Option<BaselineView>,
+        draw: impl FnOnce(&mut Checksum) -> Result<Work, E>,
+    ) {
         let bottom = paint_stack();
-        let mut target = Checksum::of_size(entry.size);
+        let mut target = Checksum::of_size(size);
         let mut work = Work::Segments(0);
         let instructions = clock.measure(|| {
-            work = entry
-                .scene
-                .draw(&mut target, &GREY)
-                .unwrap_or(Work::Segments(0));
+            work = draw(&mut target).unwrap_or(Work::Segments(0));
         });
         let stack = stack_used(bottom);
         let work = work.count();
         let (mut f32_cost, mut fixed_cost) = (None, None);
-        if let Some(view) = BaselineView::of(&entry.scene) {
+        if let Some(view) = view {
             f32_cost = Some(clock.measure(|| {
-                baseline_f32(view, &mut Checksum::of_size(entry.size));
+                baseline_f32(view, &mut Checksum::of_size(size));
             }));
             fixed_cost = Some(clock.measure(|| {
-                baseline_fixed20(view, &mut Checksum::of_size(entry.size));
+                baseline_fixed20(view, &mut Checksum::of_size(size));
             }));
         }
         hprintln!(
             "measure scene={} size={}x{} instructions={} work={} checksum={} pixels={} stack={} baseline_f32={} baseline_fixed20={}",
-            entry.name,
-            entry.size.width,
-            entry.size.height,
+            name,
+            size.width,
+            size.height,
             instructions,
             work,
             target.value,
