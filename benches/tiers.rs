@@ -12,6 +12,8 @@ use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Render, Tier, View};
 
 #[path = "../tests/support/dd.rs"]
 mod dd;
+#[path = "../tests/support/naive.rs"]
+mod naive;
 
 use dd::Dd;
 
@@ -85,56 +87,24 @@ fn points(view: &View) -> Vec<(i128, i128)> {
 }
 
 fn reference(case: &Case, points: &[(i128, i128)]) -> Vec<u32> {
+    // The Julia parameter as the library holds it (Q60).
+    let q60 = |v: f64| Dd::from_q60(i128::from(Coord::from_f64(v).unwrap().to_bits()));
+    let julia = case.julia.map(|(re, im)| (q60(re), q60(im)));
     points
         .iter()
-        .map(|&(re, im)| {
-            let p = (Dd::from_q60(re), Dd::from_q60(im));
-            let (c, mut z) = match case.julia {
-                None => (p, (Dd(0.0, 0.0), Dd(0.0, 0.0))),
-                Some((kr, ki)) => {
-                    let k = case_k(kr, ki);
-                    (k, p)
-                }
-            };
-            for n in 1..=case.max {
-                let (x2, y2) = (z.0.mul(z.0), z.1.mul(z.1));
-                let xy = z.0.mul(z.1);
-                z = (x2.add(y2.neg()).add(c.0), xy.add(xy).add(c.1));
-                let m = z.0.mul(z.0).add(z.1.mul(z.1));
-                if m.0 + m.1 > 4.0 {
-                    return n;
-                }
-            }
-            case.max
-        })
+        .map(|&(re, im)| dd::dwell(julia, (Dd::from_q60(re), Dd::from_q60(im)), case.max))
         .collect()
 }
 
-/// The Julia parameter as the library holds it (Q60), in double-double.
-fn case_k(re: f64, im: f64) -> (Dd, Dd) {
-    let q60 = |v: f64| Dd::from_q60(i128::from(Coord::from_f64(v).unwrap().to_bits()));
-    (q60(re), q60(im))
-}
-
-/// The naive loop a user writes on an FPU: `f32`, separate multiply and add.
+/// The naive loop a user writes on an FPU, at the same points rounded to `f32`.
 fn naive_f32(case: &Case, points: &[(i128, i128)]) -> Vec<u32> {
     let scale = (1u64 << 60) as f64;
+    let julia = case.julia.map(|(re, im)| (re as f32, im as f32));
     points
         .iter()
         .map(|&(re, im)| {
             let p = ((re as f64 / scale) as f32, (im as f64 / scale) as f32);
-            let (c, mut z) = match case.julia {
-                None => (p, (0.0f32, 0.0f32)),
-                Some((kr, ki)) => ((kr as f32, ki as f32), p),
-            };
-            for n in 1..=case.max {
-                let (x2, y2) = (z.0 * z.0, z.1 * z.1);
-                z = (x2 - y2 + c.0, 2.0 * z.0 * z.1 + c.1);
-                if z.0 * z.0 + z.1 * z.1 > 4.0 {
-                    return n;
-                }
-            }
-            case.max
+            naive::f32_dwell(julia, p, case.max)
         })
         .collect()
 }

@@ -246,6 +246,8 @@ fn dwells_agree_with_the_f64_model() {
 
 #[path = "support/dd.rs"]
 mod dd;
+#[path = "support/naive.rs"]
+mod naive;
 
 use dd::Dd;
 
@@ -279,20 +281,7 @@ fn model_dd_of(
                 re0.add(d.scale((2 * i + 1 - size.width as i64) as f64 / 2.0)),
                 im0.add(d.scale((2 * j + 1 - size.height as i64) as f64 / 2.0).neg()),
             );
-            let (c, mut z) = match k {
-                None => (c, (Dd(0.0, 0.0), Dd(0.0, 0.0))),
-                Some(k) => (k, c),
-            };
-            let mut dwell = max;
-            for n in 1..=max {
-                let (x2, y2) = (z.0.mul(z.0), z.1.mul(z.1));
-                z = (x2.add(y2.neg()).add(c.0), z.0.mul(z.1).scale(2.0).add(c.1));
-                let m = z.0.mul(z.0).add(z.1.mul(z.1));
-                if m.0 + m.1 > 4.0 {
-                    dwell = n;
-                    break;
-                }
-            }
+            let dwell = dd::dwell(k, c, max);
             out.push(dwell as u16);
         }
     }
@@ -768,6 +757,7 @@ fn a_render_fits_in_a_few_kilobytes() {
 /// A naive `f32` loop, as a user writes it on an FPU (separate multiply and add), at the
 /// same sample points.
 fn naive_f32(julia: Option<(f64, f64)>, view: &View) -> Vec<u16> {
+    let julia = julia.map(|(re, im)| (re as f32, im as f32));
     let size = view.size();
     let d = view.spacing().to_f64();
     let (cx, cy) = (view.centre().0.to_f64(), view.centre().1.to_f64());
@@ -778,19 +768,7 @@ fn naive_f32(julia: Option<(f64, f64)>, view: &View) -> Vec<u16> {
                 (cx + (f64::from(i) + 0.5 - f64::from(size.width) / 2.0) * d) as f32,
                 (cy - (f64::from(j) + 0.5 - f64::from(size.height) / 2.0) * d) as f32,
             );
-            let (c, mut z) = match julia {
-                None => (p, (0.0f32, 0.0f32)),
-                Some((re, im)) => ((re as f32, im as f32), p),
-            };
-            let mut dwell = view.max_iterations();
-            for n in 1..=view.max_iterations() {
-                let (x2, y2) = (z.0 * z.0, z.1 * z.1);
-                z = (x2 - y2 + c.0, 2.0 * z.0 * z.1 + c.1);
-                if z.0 * z.0 + z.1 * z.1 > 4.0 {
-                    dwell = n;
-                    break;
-                }
-            }
+            let dwell = naive::f32_dwell(julia, p, view.max_iterations());
             out.push(dwell as u16);
         }
     }

@@ -1,6 +1,6 @@
-//! Double-double numbers (about 106 bits) from f64 pairs, for the escape-time tests and
-//! the tier calibration (`#[path]`-included): the reference where f64 runs out of bits (at
-//! the deep zoom a pixel is 2^-41.5, and f64 keeps 2^-53).
+//! Double-double numbers (about 106 bits) from f64 pairs and the escape-time dwell in them,
+//! for the escape-time tests and the tier calibration (`#[path]`-included): the reference
+//! where f64 runs out of bits (at the deep zoom a pixel is 2^-41.5, and f64 keeps 2^-53).
 
 #![allow(dead_code)]
 
@@ -37,4 +37,24 @@ impl Dd {
     pub fn scale(self, k: f64) -> Dd {
         self.mul(Dd(k, 0.0))
     }
+}
+
+/// The dwell of the point `p` in double-double: the smallest n ≥ 1 with |zₙ|² > 4, capped at
+/// `max`. For a Julia set (`julia: Some(k)`) z₀ = p and c = k; for the Mandelbrot set
+/// z₀ = 0 and c = p.
+pub fn dwell(julia: Option<(Dd, Dd)>, p: (Dd, Dd), max: u32) -> u32 {
+    let zero = Dd(0.0, 0.0);
+    let (c, mut z) = match julia {
+        None => (p, (zero, zero)),
+        Some(k) => (k, p),
+    };
+    for n in 1..=max {
+        let (x2, y2) = (z.0.mul(z.0), z.1.mul(z.1));
+        z = (x2.add(y2.neg()).add(c.0), z.0.mul(z.1).scale(2.0).add(c.1));
+        let m = z.0.mul(z.0).add(z.1.mul(z.1));
+        if m.0 + m.1 > 4.0 {
+            return n;
+        }
+    }
+    max
 }
