@@ -317,21 +317,6 @@ pub fn render_entry(
         Scene::Walk { frames } => format!("{frames} frames"),
         _ => String::new(),
     };
-    let unit = match *scene {
-        Scene::Subdivision {
-            shape: tinyfractal_scenes::Shape::Carpet,
-            ..
-        } => "squares",
-        Scene::Subdivision {
-            shape: tinyfractal_scenes::Shape::Gasket,
-            ..
-        } => "triangles",
-        Scene::Subdivision { .. } => "cubes",
-        Scene::Walk { .. } => "lines",
-        _ => "heights",
-    };
-    let Work::Cells(count) = work else {
-        return Err("not a subdivision or terrain scene".to_string());
-    };
-    Ok((target, detail, format!("{count} {unit}"), elapsed))
+    let work = format!("{} {}s", work.count(), scene.work_unit());
+    Ok((target, detail, work, elapsed))
 }

@@ -122,6 +122,23 @@ pub enum Scene {
 }
 
 impl Scene {
+    /// What the scene's [`Work`](crate::Work) counts, singular: `segment`, `point`,
+    /// `iteration`, `square`, `triangle`, `cube`, `height` or `line`.
+    pub const fn work_unit(&self) -> &'static str {
+        match self {
+            Self::LSystem { .. } => "segment",
+            Self::Ifs { .. } => "point",
+            Self::Escape { .. } => "iteration",
+            Self::Subdivision { shape, .. } => match shape {
+                Shape::Carpet => "square",
+                Shape::Gasket => "triangle",
+                Shape::Cube(_) => "cube",
+            },
+            Self::Terrain { .. } => "height",
+            Self::Walk { .. } => "line",
+        }
+    }
+
     /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
     /// `terrain`, `terrain2d`, `figure`, `mandelbrot` or `julia`.
     pub const fn family(&self) -> &'static str {

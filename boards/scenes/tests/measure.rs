@@ -20,7 +20,7 @@ use std::process::Command;
 
 use embedded_graphics::prelude::Size;
 use tinyfractal_scenes::measure::Checksum;
-use tinyfractal_scenes::{Scene, Shape, Work, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES};
+use tinyfractal_scenes::{Work, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES};
 
 struct Core {
     name: &'static str,
@@ -185,22 +185,6 @@ impl Expected {
     }
 }
 
-/// What a scene's work counts.
-fn unit(scene: &Scene) -> &'static str {
-    match scene {
-        Scene::LSystem { .. } => "segment",
-        Scene::Ifs { .. } => "point",
-        Scene::Escape { .. } => "iteration",
-        Scene::Subdivision { shape, .. } => match shape {
-            Shape::Carpet => "square",
-            Shape::Gasket => "triangle",
-            Shape::Cube(_) => "cube",
-        },
-        Scene::Terrain { .. } => "height",
-        Scene::Walk { .. } => "line",
-    }
-}
-
 #[test]
 #[cfg_attr(
     tinyfractal_no_qemu,
@@ -220,7 +204,13 @@ fn every_core_draws_the_host_picture_and_fits() {
         .map(|entry| {
             let mut target = Checksum::of_size(entry.size);
             let work = entry.scene.draw(&mut target, &GREY).unwrap().count();
-            Expected::new(entry.name, unit(&entry.scene), entry.size, target, work)
+            Expected::new(
+                entry.name,
+                entry.scene.work_unit(),
+                entry.size,
+                target,
+                work,
+            )
         })
         .collect();
     let every_core = host.len();
