@@ -208,23 +208,13 @@ impl Figure {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let palette = Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))?;
-        let mut corners = self.corners()?;
+        let mut corners = None;
+        self.widen(&mut corners)?;
         for pose in poses {
-            let [low, high] = Self::new(self.root, pose).corners()?;
-            corners = [
-                [
-                    low[0].min(corners[0][0]),
-                    low[1].min(corners[0][1]),
-                    Real::ZERO,
-                ],
-                [
-                    high[0].max(corners[1][0]),
-                    high[1].max(corners[1][1]),
-                    Real::ZERO,
-                ],
-            ];
+            Self::new(self.root, pose).widen(&mut corners)?;
         }
-        let space = SpaceFit::front_box(corners[0], corners[1], &area, DEFAULT_MARGIN)?;
+        let [low, high] = corners.unwrap_or([[Real::ZERO; 3]; 2]);
+        let space = SpaceFit::front_box(low, high, &area, DEFAULT_MARGIN)?;
         Ok(FigureDrawing {
             figure: *self,
             space,
@@ -232,10 +222,9 @@ impl Figure {
         })
     }
 
-    /// The lowest and highest x and y of the lines' ends (z = 0): one walk, no list of
-    /// lines.
-    fn corners(&self) -> Result<[[Real; 3]; 2], Error> {
-        let mut corners: Option<[[Real; 3]; 2]> = None;
+    /// Widens `corners` (the lowest and highest x and y, z = 0) to the ends of every line:
+    /// one walk, no list of lines.
+    fn widen(&self, corners: &mut Option<[[Real; 3]; 2]>) -> Result<(), Error> {
         self.for_each_line(|line| {
             for p in [line.segment.start, line.segment.end] {
                 let [low, high] = corners.get_or_insert([p, p]);
@@ -245,8 +234,7 @@ impl Figure {
                 high[1] = high[1].max(p[1]);
             }
             Ok(())
-        })?;
-        Ok(corners.unwrap_or([[Real::ZERO; 3]; 2]))
+        })
     }
 }
 
@@ -289,6 +277,7 @@ impl<P> FigureDrawing<P> {
     /// The same fit drawn through `palette`: with a palette of the background colour, the
     /// eraser of a frame (an animation redraws the last frame's lines in the background
     /// instead of clearing the display).
+    #[must_use]
     pub fn with_palette<Q>(self, palette: Q) -> FigureDrawing<Q> {
         FigureDrawing {
             figure: self.figure,
