@@ -219,6 +219,11 @@ fn measure(case: Case) -> Row {
     }
 }
 
+/// The rule's bar: at least 99.9 % identical to the reference and no less than `f32`.
+fn acceptable(share: f64, f32_share: f64) -> bool {
+    share >= 0.999 && share >= f32_share - 1e-12
+}
+
 /// A cell's pool: pixels, pixel-weighted tier and `f32` shares, views, the chosen tier.
 type Pool = (f64, [f64; 4], f64, usize, Tier);
 
@@ -256,7 +261,7 @@ fn cells(rows: &[(usize, Row)]) -> String {
         let needs = Tier::ALL
             .into_iter()
             .zip(shares)
-            .find(|&(_, share)| share >= 0.999 && share >= f32_share - 1e-12)
+            .find(|&(_, share)| acceptable(share, f32_share))
             .map_or(Tier::Deep, |(tier, _)| tier);
         if needs != chosen {
             differ += 1;
@@ -316,7 +321,7 @@ fn main() {
     let mut failures = 0;
     for (_, row) in &rows {
         let index = Tier::ALL.iter().position(|&t| t == row.chosen).unwrap_or(3);
-        let meets = row.tiers[index] >= 0.999 && row.tiers[index] >= row.f32 - 1e-12;
+        let meets = acceptable(row.tiers[index], row.f32);
         if !meets {
             failures += 1;
         }
