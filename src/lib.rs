@@ -122,7 +122,9 @@ pub use error::{
 };
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
-pub use escape::view::{Fractal, Tier, View, MAX_ITERATIONS};
+pub use escape::view::{
+    Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
+};
 pub use figure::body::{walk as walk_pose, wave as wave_pose, Joint, BODY};
 pub use figure::{
     Figure, FigureDrawing, FigureLine, Part, Pose, Shape, MAX_FIGURE_DEPTH, MAX_JOINTS,

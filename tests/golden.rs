@@ -9,7 +9,10 @@ use std::path::PathBuf;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
-use tinyfractal::{Angle, Dialect, Grammar, LFile, LSystem, Orientation, Real};
+use tinyfractal::{
+    Angle, Coord, Dialect, EscapeTime, Fractal, Gradient, Grammar, LFile, LSystem, Orientation,
+    Real, Shading, View,
+};
 
 const PALETTE: [Rgb888; 4] = [Rgb888::WHITE, Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE];
 
@@ -27,6 +30,11 @@ fn check(name: &str, grammar: &Grammar<'_>, order: u32, orientation: Orientation
         .unwrap()
         .draw(&mut display)
         .unwrap();
+    check_picture(name, &display);
+}
+
+/// Compares `display` with the golden picture `name` (or writes it when blessing).
+fn check_picture(name: &str, display: &SimulatorDisplay<Rgb888>) {
     let path = golden_path(name);
     let settings = OutputSettingsBuilder::new().build();
     if std::env::var_os("TINYFRACTAL_BLESS").is_some() {
@@ -99,4 +107,26 @@ fn colours_and_degree_turns() {
     .with_rule('d', "D@.5[\\45D]@I.5D")
     .unwrap();
     check("colour-square-3", &grammar, 3, Orientation::Right);
+}
+
+#[test]
+fn smooth_mandelbrot() {
+    // The whole set in a gradient of 256 entries over 16 iterations: dwells would show
+    // bands 16 entries apart; smooth values fill them in.
+    let c = |v: f64| Coord::from_f64(v).unwrap();
+    let size = Size::new(160, 120);
+    let view = View::new(Fractal::Mandelbrot, (c(-0.6), c(0.0)), c(3.2), size, 100)
+        .unwrap()
+        .with_shading(Shading::Smooth)
+        .unwrap();
+    let keys = [
+        Rgb888::new(0x00, 0x07, 0x64),
+        Rgb888::new(0x20, 0x6B, 0xCB),
+        Rgb888::new(0xED, 0xFF, 0xFF),
+        Rgb888::new(0xFF, 0xAA, 0x00),
+    ];
+    let palette = Gradient::<Rgb888, 256>::new(&keys, Rgb888::BLACK).unwrap();
+    let mut display = SimulatorDisplay::<Rgb888>::new(size);
+    EscapeTime::new(view, &palette).draw(&mut display).unwrap();
+    check_picture("smooth-mandelbrot", &display);
 }

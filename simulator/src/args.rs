@@ -418,6 +418,9 @@ enum PaletteName {
     Gray,
     Bands,
     TwoColor,
+    SmoothClassic,
+    SmoothFire,
+    SmoothGray,
 }
 
 impl PaletteName {
@@ -428,6 +431,9 @@ impl PaletteName {
             Self::Gray => "gray",
             Self::Bands => "bands",
             Self::TwoColor => "two-color",
+            Self::SmoothClassic => "smooth-classic",
+            Self::SmoothFire => "smooth-fire",
+            Self::SmoothGray => "smooth-gray",
         }
     }
 }

@@ -8,14 +8,15 @@ use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
     Algorithm, Bands, Coord, DwellBuffer, Error, Fractal, Gradient, Palette, Render, RenderStats,
-    Tier, TwoColor, View,
+    Shading, Tier, TwoColor, View,
 };
 
 /// A rendered view.
 pub struct Rendered {
     pub view: View,
-    /// Dwells, row by row.
-    pub dwells: Vec<u16>,
+    /// The pixels' values (dwells, or smooth values as the view's shading says), row by row.
+    pub values: Vec<u16>,
+    pub algorithm: Algorithm,
     pub display: SimulatorDisplay<Rgb888>,
     pub stats: RenderStats,
     pub elapsed: Duration,
@@ -55,36 +56,65 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
         coordinate("--center", request.centre.1)?,
     );
     let width = coordinate("--width", request.width)?;
-    let palette = palette(request.palette)?;
+    let (palette, shading) = palette(request.palette)?;
     let failed = |e: Error| e.to_string();
-    let mut view =
-        View::new(fractal, centre, width, request.size, request.max_iterations).map_err(failed)?;
+    let mut view = View::new(fractal, centre, width, request.size, request.max_iterations)
+        .and_then(|view| view.with_shading(shading))
+        .map_err(failed)?;
     if let Some(tier) = request.tier {
         view = view.with_tier(tier);
     }
-    let cells = usize::try_from(u64::from(request.size.width) * u64::from(request.size.height))
-        .map_err(|_| "the picture is too large for this machine".to_string())?;
-    let mut dwells = vec![0; cells];
+    // Checked here, so that the size is known to fit before anything is computed.
+    pixel_count(request.size)?;
     let started = Instant::now();
-    let Ok(stats) = Render::new(view, request.algorithm)
-        .run(&mut DwellBuffer::new(&mut dwells, request.size.width));
+    let (values, stats) = compute(view, request.algorithm)?;
     let elapsed = started.elapsed();
     let mut display = SimulatorDisplay::new(request.size);
-    let max = u16::try_from(request.max_iterations).unwrap_or(u16::MAX);
-    let colours = dwells.iter().map(|&d| palette.color(d, max));
+    let inside = view.inside_value();
+    let colours = values.iter().map(|&value| palette.color(value, inside));
     let Ok(()) = display.fill_contiguous(&display.bounding_box(), colours);
     Ok(Rendered {
         view,
-        dwells,
+        values,
+        algorithm: request.algorithm,
         display,
         stats,
         elapsed,
     })
 }
 
-/// The `--dwell` text, streamed: `W H MAXITER`, then H lines of W dwells.
+fn pixel_count(size: Size) -> Result<usize, String> {
+    usize::try_from(u64::from(size.width) * u64::from(size.height))
+        .map_err(|_| "the picture is too large for this machine".to_string())
+}
+
+/// Every pixel's value, row by row.
+fn compute(view: View, algorithm: Algorithm) -> Result<(Vec<u16>, RenderStats), String> {
+    let size = view.size();
+    let mut values = vec![0; pixel_count(size)?];
+    let Ok(stats) =
+        Render::new(view, algorithm).run(&mut DwellBuffer::new(&mut values, size.width));
+    Ok((values, stats))
+}
+
+/// The `--dwell` text, streamed: `W H MAXITER`, then H lines of W dwells. Dwells, whatever
+/// the palette: a smooth picture's dwells are computed here.
 pub fn write_dwells(rendered: &Rendered, out: &mut dyn Write) -> io::Result<()> {
     let size = rendered.view.size();
+    let recomputed;
+    let dwells = match rendered.view.shading() {
+        Shading::Dwell => &rendered.values,
+        Shading::Smooth => {
+            let dwells = rendered
+                .view
+                .with_shading(Shading::Dwell)
+                .map_err(io::Error::other);
+            recomputed = compute(dwells?, rendered.algorithm)
+                .map_err(io::Error::other)?
+                .0;
+            &recomputed
+        }
+    };
     writeln!(
         out,
         "{} {} {}",
@@ -92,7 +122,7 @@ pub fn write_dwells(rendered: &Rendered, out: &mut dyn Write) -> io::Result<()> 
         size.height,
         rendered.view.max_iterations()
     )?;
-    for row in rendered.dwells.chunks(size.width as usize) {
+    for row in dwells.chunks(size.width as usize) {
         let mut values = row.iter();
         if let Some(first) = values.next() {
             write!(out, "{first}")?;
@@ -149,6 +179,9 @@ pub fn tier_warning(view: &View) -> Option<String> {
 /// The palettes by name.
 pub enum HostPalette {
     Gradient(Box<Gradient<Rgb888, 256>>),
+    /// A gradient over smooth values: 16 entries (sixteenths) for each of the dwell
+    /// gradient's, so the same colours at whole dwells, and every shade between.
+    Smooth(Box<Gradient<Rgb888, 4096>>),
     Bands(Bands<'static, Rgb888>),
     TwoColor(TwoColor<Rgb888>),
 }
@@ -159,6 +192,7 @@ impl Palette for HostPalette {
     fn color(&self, dwell: u16, max: u16) -> Rgb888 {
         match self {
             Self::Gradient(p) => p.color(dwell, max),
+            Self::Smooth(p) => p.color(dwell, max),
             Self::Bands(p) => p.color(dwell, max),
             Self::TwoColor(p) => p.color(dwell, max),
         }
@@ -173,36 +207,57 @@ const BANDS: [(u16, Rgb888); 5] = [
     (64, Rgb888::new(0xF0, 0x80, 0x20)),
 ];
 
-pub fn palette(name: &str) -> Result<HostPalette, String> {
-    let gradient = |keys: &[Rgb888]| {
-        Gradient::new(keys, Rgb888::BLACK)
-            .map(|g| HostPalette::Gradient(Box::new(g)))
-            .ok_or_else(|| "empty gradient".to_string())
+/// The palette called `name`, and the shading it reads: `smooth-NAME` is gradient NAME
+/// over smooth values.
+pub fn palette(name: &str) -> Result<(HostPalette, Shading), String> {
+    let unknown = || {
+        format!(
+            "--palette: `{name}` is not classic, fire, gray, bands, two-color, smooth-classic, \
+             smooth-fire or smooth-gray"
+        )
     };
-    match name {
-        "classic" => gradient(&[
-            Rgb888::new(0x00, 0x07, 0x64),
-            Rgb888::new(0x20, 0x6B, 0xCB),
-            Rgb888::new(0xED, 0xFF, 0xFF),
-            Rgb888::new(0xFF, 0xAA, 0x00),
-            Rgb888::new(0x00, 0x02, 0x00),
-        ]),
-        "fire" => gradient(&[
-            Rgb888::new(0x20, 0x00, 0x00),
-            Rgb888::new(0xC0, 0x20, 0x00),
-            Rgb888::new(0xFF, 0xC0, 0x00),
-            Rgb888::new(0xFF, 0xFF, 0xC0),
-        ]),
-        "gray" => gradient(&[Rgb888::new(0x20, 0x20, 0x20), Rgb888::WHITE]),
+    if let Some(gradient) = name.strip_prefix("smooth-") {
+        let keys = gradient_keys(gradient).ok_or_else(unknown)?;
+        let palette = Gradient::new(keys, Rgb888::BLACK).ok_or("empty gradient")?;
+        return Ok((HostPalette::Smooth(Box::new(palette)), Shading::Smooth));
+    }
+    let palette = match name {
         "bands" => Bands::new(&BANDS, Rgb888::BLACK)
             .map(HostPalette::Bands)
-            .ok_or_else(|| "empty bands".to_string()),
-        "two-color" => Ok(HostPalette::TwoColor(TwoColor {
+            .ok_or("empty bands")?,
+        "two-color" => HostPalette::TwoColor(TwoColor {
             inside: Rgb888::BLACK,
             outside: Rgb888::WHITE,
-        })),
-        other => Err(format!(
-            "--palette: `{other}` is not classic, fire, gray, bands or two-color"
-        )),
+        }),
+        gradient => {
+            let keys = gradient_keys(gradient).ok_or_else(unknown)?;
+            let palette = Gradient::new(keys, Rgb888::BLACK).ok_or("empty gradient")?;
+            HostPalette::Gradient(Box::new(palette))
+        }
+    };
+    Ok((palette, Shading::Dwell))
+}
+
+/// The key colours of the gradient palettes.
+fn gradient_keys(name: &str) -> Option<&'static [Rgb888]> {
+    const CLASSIC: [Rgb888; 5] = [
+        Rgb888::new(0x00, 0x07, 0x64),
+        Rgb888::new(0x20, 0x6B, 0xCB),
+        Rgb888::new(0xED, 0xFF, 0xFF),
+        Rgb888::new(0xFF, 0xAA, 0x00),
+        Rgb888::new(0x00, 0x02, 0x00),
+    ];
+    const FIRE: [Rgb888; 4] = [
+        Rgb888::new(0x20, 0x00, 0x00),
+        Rgb888::new(0xC0, 0x20, 0x00),
+        Rgb888::new(0xFF, 0xC0, 0x00),
+        Rgb888::new(0xFF, 0xFF, 0xC0),
+    ];
+    const GRAY: [Rgb888; 2] = [Rgb888::new(0x20, 0x20, 0x20), Rgb888::WHITE];
+    match name {
+        "classic" => Some(&CLASSIC),
+        "fire" => Some(&FIRE),
+        "gray" => Some(&GRAY),
+        _ => None,
     }
 }

@@ -107,6 +107,7 @@ pub fn run(out: &Path) -> Result<(), String> {
                 centre,
                 width,
                 max_iterations,
+                shading,
             } => {
                 let request = crate::escape_scene::Request {
                     julia,
@@ -119,6 +120,12 @@ pub fn run(out: &Path) -> Result<(), String> {
                     palette: entry.palette,
                 };
                 crate::escape_scene::render(&request).and_then(|rendered| {
+                    if rendered.view.shading() != shading {
+                        return Err(format!(
+                            "the catalogue paints a {shading:?} view with `{}`",
+                            entry.palette
+                        ));
+                    }
                     save(&rendered.display, &path)?;
                     Ok((
                         format!("{} tier", rendered.stats.tier.name()),

@@ -1424,3 +1424,62 @@ fn figure_renders_poses_and_frames() {
         assert!(dir.join(format!("figure-{index:03}.png")).exists());
     }
 }
+
+/// The distinct colours of a PNG.
+fn colours(path: &Path) -> usize {
+    let image = image::open(path).unwrap().into_rgb8();
+    let mut seen: Vec<[u8; 3]> = image.pixels().map(|p| p.0).collect();
+    seen.sort_unstable();
+    seen.dedup();
+    seen.len()
+}
+
+#[test]
+fn smooth_palettes_shade_between_the_bands() {
+    let dir = scratch("smooth");
+    let render = |palette: &str, max: &str| {
+        let (png, txt) = (
+            dir.join(format!("{palette}.png")),
+            dir.join(format!("{palette}.txt")),
+        );
+        let output = run(&[
+            "render",
+            "mandelbrot",
+            "--size",
+            "160x120",
+            "--max-iter",
+            max,
+            "--palette",
+            palette,
+            "--out",
+            png.to_str().unwrap(),
+            "--dwell",
+            txt.to_str().unwrap(),
+        ]);
+        (output, png, txt)
+    };
+    let (plain, plain_png, plain_txt) = render("classic", "100");
+    assert!(plain.status.success(), "{}", stderr(&plain));
+    for palette in ["smooth-gray", "smooth-classic", "smooth-fire"] {
+        let (smooth, png, txt) = render(palette, "100");
+        assert!(smooth.status.success(), "{}", stderr(&smooth));
+        // --dwell writes dwells whatever the palette.
+        assert_eq!(
+            std::fs::read(&txt).unwrap(),
+            std::fs::read(&plain_txt).unwrap()
+        );
+        if palette == "smooth-classic" {
+            let (banded, shaded) = (colours(&plain_png), colours(&png));
+            assert!(shaded > 2 * banded, "{shaded} colours against {banded}");
+        }
+    }
+    std::fs::remove_file(dir.join("smooth-fire.png")).unwrap();
+    let (refused, png, _) = render("smooth-fire", "5000");
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(
+        stderr(&refused).contains("max-iter 5000 is too high for smooth colouring"),
+        "{}",
+        stderr(&refused)
+    );
+    assert!(!png.exists());
+}

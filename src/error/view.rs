@@ -16,6 +16,14 @@ pub enum ViewError {
         /// The highest cap ([`MAX_ITERATIONS`](crate::MAX_ITERATIONS)).
         max: u32,
     },
+    /// Smooth shading asked of a view whose cap is above `max`.
+    SmoothIterationsOutOfRange {
+        /// The view's cap.
+        value: u32,
+        /// The highest cap for smooth shading
+        /// ([`MAX_SMOOTH_ITERATIONS`](crate::MAX_SMOOTH_ITERATIONS)).
+        max: u32,
+    },
     /// The width is zero or negative.
     WidthNotPositive {
         /// The width given.
@@ -52,6 +60,11 @@ impl fmt::Display for ViewError {
             Self::IterationsOutOfRange { value, max } => {
                 write!(f, "max-iter {value} is out of range: use 1 to {max}")
             }
+            Self::SmoothIterationsOutOfRange { value, max } => write!(
+                f,
+                "max-iter {value} is too high for smooth colouring (sixteenths of an iteration \
+                 in 16 bits): use 1 to {max}, or a palette that is not smooth"
+            ),
             Self::WidthNotPositive { width } => {
                 write!(f, "the width {width} is not positive: give a width above 0")
             }

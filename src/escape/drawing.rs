@@ -21,12 +21,13 @@ where
     D: DrawTarget,
     P: Palette<Color = D::Color>,
 {
-    /// Paints `view`'s dwells into `target` with `palette`.
+    /// Paints `view`'s values into `target` with `palette` (dwells, or smooth values, as
+    /// the view's [`Shading`](crate::Shading) says).
     pub fn new(target: &'t mut D, palette: P, view: &View) -> Self {
         Self {
             target,
             palette,
-            max: u16::try_from(view.max_iterations()).unwrap_or(u16::MAX),
+            max: view.inside_value(),
         }
     }
 }

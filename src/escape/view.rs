@@ -10,6 +10,13 @@ use crate::math::Coord;
 /// Most iterations a view may ask for (dwells are kept in 16 bits).
 pub const MAX_ITERATIONS: u32 = u16::MAX as u32;
 
+/// Most iterations a smooth view may ask for: its values are sixteenths of an iteration in
+/// 16 bits.
+pub const MAX_SMOOTH_ITERATIONS: u32 = (u16::MAX as u32) >> SMOOTH_FRACTION_BITS;
+
+/// Fractional bits of a smooth value: sixteenths of an iteration.
+pub const SMOOTH_FRACTION_BITS: u32 = 4;
+
 /// Largest |re| or |im| of any pixel of a view. Keeping points within 3.5 bounds every
 /// orbit value below 8 before it escapes, so no tier can overflow.
 const COORDINATE_LIMIT: i64 = 7 << 59; // 3.5 in Q60
@@ -88,6 +95,21 @@ impl Tier {
     }
 }
 
+/// What a pixel's value is: the palette's input.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Shading {
+    /// The dwell: the step at which the orbit left radius 2 (whole numbers, so a gradient
+    /// shows bands).
+    #[default]
+    Dwell,
+    /// The normalised iteration count ν = n + 2 − log₂(log₂|zₙ|²), taken two steps past
+    /// the escape so it is continuous across the bands, in sixteenths of an iteration
+    /// ([`SMOOTH_FRACTION_BITS`]): a gradient of 16× the entries shows no bands. Computed
+    /// in fixed point with a logarithm table (`log₂`, 64 entries), only for escaping
+    /// pixels, once each: no floats, the same bits on every core.
+    Smooth,
+}
+
 /// A view: a fractal, a centre, a width along the real axis, and a size in pixels.
 ///
 /// Pixels are square: spacing d = width / W, and pixel (i, j), row 0 at the top, samples
@@ -102,6 +124,7 @@ pub struct View {
     pub(crate) tier: Tier,
     /// The tier the automatic rule chose.
     automatic: Tier,
+    pub(crate) shading: Shading,
 }
 
 impl View {
@@ -158,6 +181,7 @@ impl View {
             max_iterations,
             tier,
             automatic: tier,
+            shading: Shading::Dwell,
         };
         // Every pixel within ±3.5: the corners are the extremes.
         let (w, h) = (i64::from(size.width), i64::from(size.height));
@@ -202,6 +226,39 @@ impl View {
     pub const fn with_tier(mut self, tier: Tier) -> Self {
         self.tier = tier;
         self
+    }
+
+    /// Gives each pixel the value `shading` says (dwells by default). Smooth values are
+    /// sixteenths of an iteration in 16 bits, so a smooth view's cap is at most
+    /// [`MAX_SMOOTH_ITERATIONS`].
+    pub fn with_shading(mut self, shading: Shading) -> Result<Self, Error> {
+        if shading == Shading::Smooth && self.max_iterations > MAX_SMOOTH_ITERATIONS {
+            return Err(Error::View(ViewError::SmoothIterationsOutOfRange {
+                value: self.max_iterations,
+                max: MAX_SMOOTH_ITERATIONS,
+            }));
+        }
+        self.shading = shading;
+        Ok(self)
+    }
+
+    /// What a pixel's value is.
+    pub const fn shading(&self) -> Shading {
+        self.shading
+    }
+
+    /// The value of a pixel that did not escape: the cap, or the cap in sixteenths when
+    /// smooth. Every escaping pixel's value is below it and above 0.
+    pub const fn inside_value(&self) -> u16 {
+        let value = match self.shading {
+            Shading::Dwell => self.max_iterations,
+            Shading::Smooth => self.max_iterations << SMOOTH_FRACTION_BITS,
+        };
+        if value > u16::MAX as u32 {
+            u16::MAX
+        } else {
+            value as u16
+        }
     }
 
     /// The tier this view computes in.

@@ -8,6 +8,7 @@ pub(crate) mod angle;
 pub(crate) mod coord;
 pub(crate) mod decimal;
 pub(crate) mod frame3;
+pub(crate) mod log;
 pub(crate) mod random;
 pub(crate) mod real;
 pub(crate) mod trig;

@@ -5,7 +5,7 @@
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
     Angle, Coord, CubeVariant, Dialect, Displacement, Error, Fractal, Grammar, Orientation, Real,
-    View,
+    Shading, View,
 };
 
 /// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
@@ -118,6 +118,8 @@ pub enum Scene {
         width: &'static str,
         /// Iteration cap.
         max_iterations: u32,
+        /// Dwells or smooth values (a `smooth-*` palette on the host).
+        shading: Shading,
     },
 }
 
@@ -165,11 +167,19 @@ impl Scene {
             centre,
             width,
             max_iterations,
+            shading,
         } = *self
         else {
             return None;
         };
-        Some(escape_view(julia, centre, width, max_iterations, size))
+        Some(escape_view(
+            julia,
+            centre,
+            width,
+            max_iterations,
+            shading,
+            size,
+        ))
     }
 }
 
@@ -179,6 +189,7 @@ pub(crate) fn escape_view(
     centre: (&str, &str),
     width: &str,
     max_iterations: u32,
+    shading: Shading,
     size: Size,
 ) -> Result<View, Error> {
     // Every catalogue number parses: `escape()` asserts it when the tables compile.
@@ -197,6 +208,7 @@ pub(crate) fn escape_view(
         size,
         max_iterations,
     )
+    .and_then(|view| view.with_shading(shading))
 }
 
 /// A scene as a front end shows it: its name, its default size in pixels, and the host
@@ -362,9 +374,37 @@ const fn escape(
             centre,
             width,
             max_iterations,
+            shading: Shading::Dwell,
         },
         size,
         palette,
+    }
+}
+
+/// `entry`, an escape-time view, in smooth colour: painted with `palette` (a `smooth-*`
+/// name) on the host, with 16× the gradient's entries on a board.
+const fn smooth(entry: Entry, palette: &'static str) -> Entry {
+    let Scene::Escape {
+        julia,
+        centre,
+        width,
+        max_iterations,
+        ..
+    } = entry.scene
+    else {
+        panic!("only an escape-time view can be smooth");
+    };
+    assert!(max_iterations <= tinyfractal::MAX_SMOOTH_ITERATIONS);
+    Entry {
+        scene: Scene::Escape {
+            julia,
+            centre,
+            width,
+            max_iterations,
+            shading: Shading::Smooth,
+        },
+        palette,
+        ..entry
     }
 }
 
@@ -411,7 +451,7 @@ const fn terrain(
 /// The gallery (`cargo run --release`): classic L-systems, escape-time views, the
 /// Sierpiński family and midpoint-displacement terrain, 320×240.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 18] = [
+pub const GALLERY: [Entry; 19] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -423,6 +463,7 @@ pub const GALLERY: [Entry; 18] = [
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"),
     escape("seahorse-valley", None, ("-0.7435", "0.1314"), "0.02", 512, GALLERY_SIZE, "fire"),
     escape("julia", JULIA_K, ("0", "0"), "3.2", 300, GALLERY_SIZE, "classic"),
+    smooth(escape("mandelbrot-smooth", None, ("-0.6", "0"), "3.2", 256, GALLERY_SIZE, ""), "smooth-classic"),
     // Width 10^-9: beyond the 32-bit tiers, computed in Q60 with 128-bit products.
     escape("deep-zoom", None, SPIRAL, "0.000000001", 4000, GALLERY_SIZE, "fire"),
     subdivision("sierpinski-carpet", Shape::Carpet, 4, GALLERY_SIZE),
@@ -539,7 +580,7 @@ const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) 
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]
-pub const SCENES: [Entry; 13] = [
+pub const SCENES: [Entry; 14] = [
     lsystem("plant", &FERN, 5, Orientation::Up, OLED),
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 4, Orientation::Right, OLED),
     lsystem("stochastic-plant", &STOCHASTIC_PLANT, 4, Orientation::Up, OLED),
@@ -554,6 +595,7 @@ pub const SCENES: [Entry; 13] = [
     Entry { name: "walking-figure", scene: Scene::Walk { frames: 16 }, size: OLED, palette: "vga" },
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.6", 100, OLED, "classic"),
+    smooth(escape("mandelbrot-smooth", None, ("-0.6", "0"), "3.2", 64, OLED, ""), "smooth-classic"),
     // Width 10^-7: needs the 60-bit tier with 128-bit products.
     escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire"),
 ];

@@ -9,8 +9,8 @@ use tinyfractal::FitError;
 use tinyfractal::{
     walk_pose, Carpet, Colors, Displacement, DrawError, Error, EscapeTime, Figure, Gasket,
     Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile, Orientation, ParametricGrammar,
-    ParametricLSystem, Real, SierpinskiCube, Terrain, TerrainMap, BODY, DEFAULT_DEPTH,
-    DEFAULT_STACK,
+    ParametricLSystem, Real, Shading, SierpinskiCube, Terrain, TerrainMap, View, BODY,
+    DEFAULT_DEPTH, DEFAULT_STACK,
 };
 
 use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
@@ -142,7 +142,16 @@ impl Scene {
                 centre,
                 width,
                 max_iterations,
-            } => draw_escape(target, look, julia, (centre, width), max_iterations),
+                shading,
+            } => {
+                let size = target.bounding_box().size;
+                let view = escape_view(julia, centre, width, max_iterations, shading, size)?;
+                match shading {
+                    Shading::Dwell => draw_escape::<D, 16>(target, look, view),
+                    // 16 entries a dwell: the same colours at whole dwells.
+                    Shading::Smooth => draw_escape::<D, 256>(target, look, view),
+                }
+            }
         }
     }
 }
@@ -346,22 +355,18 @@ where
     Ok(Work::Segments(stats.segments))
 }
 
-/// An escape-time view through the look's gradient, out of line.
+/// An escape-time view through the look's gradient of `N` entries, out of line.
 #[inline(never)]
-fn draw_escape<D>(
+fn draw_escape<D, const N: usize>(
     target: &mut D,
     look: &Look<'_, D::Color>,
-    julia: Option<(&str, &str)>,
-    (centre, width): ((&str, &str), &str),
-    max_iterations: u32,
+    view: View,
 ) -> Result<Work, DrawError<D::Error>>
 where
     D: DrawTarget,
     D::Color: From<Rgb888>,
 {
-    let size = target.bounding_box().size;
-    let view = escape_view(julia, centre, width, max_iterations, size)?;
-    let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
+    let palette = Gradient::<D::Color, N>::new(look.keys, look.inside)
         .ok_or(Error::Fit(FitError::EmptyPalette))?;
     let stats = EscapeTime::new(view, palette)
         .draw(target)

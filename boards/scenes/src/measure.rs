@@ -6,7 +6,7 @@ use core::convert::Infallible;
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*, primitives::Rectangle};
 
-use tinyfractal::Coord;
+use tinyfractal::{Coord, Shading};
 
 use crate::catalogue::Scene;
 
@@ -230,11 +230,13 @@ impl BaselineView {
     /// `str::parse`, which would cost the firmware 20 KB of flash and a larger stack).
     #[inline(never)]
     pub fn of(scene: &Scene) -> Option<Self> {
+        // A naive loop computes dwells: it is no baseline for smooth values.
         let Scene::Escape {
             julia,
             centre,
             width,
             max_iterations,
+            shading: Shading::Dwell,
         } = *scene
         else {
             return None;
