@@ -1,0 +1,491 @@
+//! The host front end, as a library so that the `tinyfractal` binary, the tests and the
+//! fuzz targets share it: the argument parser, each family's host renderer, the gallery and
+//! the all-or-nothing output plan. `src/main.rs` only calls [`run`].
+
+pub mod args;
+pub mod environment;
+pub mod escape_scene;
+pub mod figure_scene;
+pub mod gallery;
+pub mod ifs_scene;
+pub mod output;
+pub mod palette;
+pub mod scene;
+pub mod shape_scene;
+
+use std::io::{self, Write};
+use std::path::{Path, PathBuf};
+
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics_simulator::SimulatorDisplay;
+use std::process::ExitCode;
+
+use args::{Command, DeriveArgs, EscapeArgs, LSystemArgs, Source};
+use tinyfractal::{
+    Grammar, LFile, LsysFile, ParametricGrammar, ParametricWalker, Walker, DEFAULT_BUDGET,
+};
+
+/// The `tinyfractal` command: parses the process's arguments and runs them.
+pub fn run() -> ExitCode {
+    let command = match args::parse(std::env::args_os().skip(1)) {
+        Ok(command) => command,
+        Err(error) if !error.use_stderr() => {
+            // --help and --version.
+            let _ = error.print();
+            return ExitCode::SUCCESS;
+        }
+        Err(error) => {
+            eprint!("tinyfractal: {}", error.render());
+            eprintln!("(see `tinyfractal help`, or `tinyfractal help COMMAND`)");
+            return ExitCode::from(2);
+        }
+    };
+    let result = match command {
+        Command::Completions(shell) => {
+            args::completions(shell);
+            Ok(())
+        }
+        Command::List(path) => list(&path),
+        Command::Derive(arguments) => derive(&arguments),
+        Command::Gallery { out } => gallery::run(&out),
+        Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
+        Command::RenderEscape(escape) => render_escape(&escape),
+        Command::RenderIfs(options) => ifs_scene::render_ifs(&options),
+        Command::RenderGingerbread(options) => ifs_scene::render_gingerbread(&options),
+        Command::RenderFigure(options) => figure_scene::render_figure(&options),
+        Command::RenderCarpet(options) => shape_scene::render_carpet(&options),
+        Command::RenderGasket(options) => shape_scene::render_gasket(&options),
+        Command::RenderCube(options) => shape_scene::render_cube(&options),
+        Command::RenderTerrain(options) => shape_scene::render_terrain(&options),
+        Command::RenderTerrain2d(options) => shape_scene::render_terrain2d(&options),
+        Command::Dimension { file, background } => dimension(&file, background),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("tinyfractal: error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// The largest input file read: Fractint's own files are a few KiB, the largest public
+/// collections a few hundred.
+const MAX_INPUT_BYTES: u64 = 16 << 20;
+
+fn read_text(path: &Path) -> Result<String, String> {
+    use std::io::Read;
+    let cannot = |e: std::io::Error| format!("cannot read {}: {e}", path.display());
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err(format!("cannot read {}: it is a folder", path.display()));
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(cannot)?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!(
+            "{} is larger than {} MiB, the largest input read: is it a .l file?",
+            path.display(),
+            MAX_INPUT_BYTES >> 20
+        ));
+    }
+    // Fractint files are 8-bit text: read every byte as its Latin-1 character.
+    Ok(match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(error) => error.into_bytes().iter().map(|&b| char::from(b)).collect(),
+    })
+}
+
+/// Whether a file is in the `.lsys` notation (by its extension); `.l` otherwise.
+fn is_lsys(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|extension| extension == "lsys")
+}
+
+fn list(path: &Path) -> Result<(), String> {
+    let text = read_text(path)?;
+    let failed = |e: tinyfractal::Error| format!("{}: {e}", path.display());
+    let names: Vec<&str> = if is_lsys(path) {
+        LsysFile::new(&text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect::<Result<_, _>>()
+    } else {
+        LFile::new(&text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect::<Result<_, _>>()
+    }
+    .map_err(failed)?;
+    for name in names {
+        println!("{name}");
+    }
+    Ok(())
+}
+
+/// A system as a source names it: plain (Fractint, ABOP, stochastic) or parametric.
+enum Loaded<'a> {
+    Plain(Box<Grammar<'a>>),
+    Parametric(Box<ParametricGrammar>),
+}
+
+/// The system a source names, and the name to report it by; warnings go to stderr. The
+/// file is read once, here.
+fn load<'a>(source: &'a Source, file_text: &'a mut String) -> Result<(Loaded<'a>, String), String> {
+    Ok(match source {
+        Source::File { path, name } => {
+            *file_text = read_text(path)?;
+            let file_text: &'a String = file_text;
+            let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
+            if is_lsys(path) {
+                let entry = LsysFile::new(file_text).entry(name).map_err(failed)?;
+                let loaded = if entry.is_parametric() {
+                    Loaded::Parametric(Box::new(entry.parametric().map_err(failed)?))
+                } else {
+                    Loaded::Plain(Box::new(entry.grammar().map_err(failed)?))
+                };
+                return Ok((loaded, name.clone()));
+            }
+            let entry = LFile::new(file_text).entry(name).map_err(failed)?;
+            let grammar = entry.grammar().map_err(failed)?;
+            for warning in entry.warnings() {
+                warn(&format!("{name} in {}: {warning}", path.display()));
+            }
+            (Loaded::Plain(Box::new(grammar)), name.clone())
+        }
+        Source::Inline {
+            axiom,
+            rules,
+            angle,
+            draw_symbols,
+            dialect,
+        } => {
+            let label = "inline system";
+            let with = |e: tinyfractal::Error| format!("{label}: {e}");
+            let mut grammar = Grammar::new(*dialect, axiom, *angle)
+                .map_err(with)?
+                .with_draw_symbols(draw_symbols)
+                .map_err(with)?;
+            for (symbol, body) in rules {
+                grammar = grammar
+                    .with_rule(*symbol, body)
+                    .map_err(|e| format!("{label}: rule {symbol}={body}: {e}"))?;
+            }
+            (Loaded::Plain(Box::new(grammar)), "lsystem".to_string())
+        }
+    })
+}
+
+/// `derive`: the string at the order, on one line, if it is at most `--max-length` symbols
+/// (measured first, so nothing is printed past the limit).
+fn derive(arguments: &DeriveArgs) -> Result<(), String> {
+    let mut file_text = String::new();
+    let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    let budget = derive_budget(arguments);
+    let mut grammar = match loaded {
+        Loaded::Plain(grammar) => *grammar,
+        Loaded::Parametric(mut grammar) => {
+            if let Some(seed) = arguments.seed {
+                grammar.set_seed(seed);
+            }
+            let walk = || {
+                ParametricWalker::<'_, { scene::DEPTH }>::new(&grammar, arguments.order)
+                    .map(|walker| walker.with_budget(budget))
+            };
+            return print_derivation(walk, arguments, &name);
+        }
+    };
+    if let Some(seed) = arguments.seed {
+        grammar.set_seed(seed);
+    }
+    let walk = || {
+        Walker::<'_, '_, { scene::DEPTH }>::with_capacity(&grammar, arguments.order).map(|walker| {
+            let mut walker = walker.with_budget(budget);
+            core::iter::from_fn(move || walker.next_symbol())
+        })
+    };
+    print_derivation(walk, arguments, &name)
+}
+
+/// Reads a walk may take: expansions that print nothing still take reads, so they are
+/// bounded too.
+fn derive_budget(arguments: &DeriveArgs) -> u64 {
+    arguments.max_length.saturating_mul(64).max(DEFAULT_BUDGET)
+}
+
+/// Prints a derivation on one line if it has at most `--max-length` symbols: `walk` is
+/// walked once to count them, then again to print, so nothing is printed past the limit
+/// and nothing is kept in memory.
+fn print_derivation<W, I, T>(walk: W, arguments: &DeriveArgs, name: &str) -> Result<(), String>
+where
+    W: Fn() -> Result<I, tinyfractal::Error>,
+    I: Iterator<Item = Result<T, tinyfractal::Error>>,
+    T: std::fmt::Display,
+{
+    let order = arguments.order;
+    let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
+    let mut length = 0u64;
+    for symbol in walk().map_err(failed)? {
+        symbol.map_err(failed)?;
+        length += 1;
+        if length > arguments.max_length {
+            return Err(format!(
+                "{name} at order {order}: the derived string is longer than {} symbols: \
+                 lower the order or raise --max-length",
+                arguments.max_length
+            ));
+        }
+    }
+    let mut out = io::BufWriter::new(io::stdout().lock());
+    let written = (|| -> io::Result<()> {
+        for symbol in walk().map_err(io::Error::other)? {
+            write!(out, "{}", symbol.map_err(io::Error::other)?)?;
+        }
+        writeln!(out)?;
+        out.flush()
+    })();
+    written.map_err(|e| format!("cannot write the derivation: {e}"))
+}
+
+/// `render lsystem` of a parametric `.lsys` system. `--view` fits the whole picture to the
+/// enlarged area and lets the target clip the rest (no expansion table here).
+fn render_parametric(
+    arguments: &LSystemArgs,
+    grammar: &ParametricGrammar,
+    name: &str,
+) -> Result<(), String> {
+    let common = &arguments.common;
+    window_available(common.window)?;
+    let order = arguments.order;
+    let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
+    let look = scene::GeneralLook {
+        projection: arguments.projection,
+        depth_cue: arguments.depth_cue,
+        environment: arguments.environment.as_ref(),
+    };
+    let rendered = scene::render_general(
+        grammar,
+        order,
+        (common.width(), common.height()),
+        arguments.view,
+        &look,
+    )
+    .map_err(failed)?;
+    let stats_line = format!(
+        "segments={} fit_ms={:.3} draw_ms={:.3} elapsed_ms={:.3}",
+        rendered.stats.segments,
+        rendered.fit.as_secs_f64() * 1e3,
+        rendered.draw.as_secs_f64() * 1e3,
+        rendered.elapsed.as_secs_f64() * 1e3
+    );
+    let system = scene::general_system(grammar, order, &look);
+    let display = rendered.display;
+    deliver(
+        common,
+        &name.to_lowercase(),
+        &display,
+        |plan| {
+            if let Some(path) = &arguments.segments {
+                plan.add("--segments", path, move |w| match system.projection() {
+                    Some(_) => scene::write_segments_3d(&system, w),
+                    None => scene::write_parametric_segments(grammar, order, w),
+                });
+            }
+        },
+        &stats_line,
+    )
+}
+
+fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
+    let mut file_text = String::new();
+    let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    let mut grammar = match loaded {
+        Loaded::Plain(grammar) => *grammar,
+        Loaded::Parametric(mut grammar) => {
+            if let Some(seed) = arguments.seed {
+                grammar.set_seed(seed);
+            }
+            return render_parametric(arguments, &grammar, &name);
+        }
+    };
+    if let Some(seed) = arguments.seed {
+        grammar.set_seed(seed);
+    }
+    let common = &arguments.common;
+    window_available(common.window)?;
+    let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);
+    // Everything is computed and every output checked before anything is written.
+    let rendered = scene::render(
+        &grammar,
+        arguments.order,
+        common.width(),
+        common.height(),
+        arguments.view,
+    )
+    .map_err(failed)?;
+    if rendered.stats.segments == 0 {
+        eprintln!(
+            "tinyfractal: note: {name} draws nothing at order {}: the picture is empty",
+            arguments.order
+        );
+    }
+    let (grammar, order) = (&grammar, arguments.order);
+    deliver(
+        common,
+        &name.to_lowercase(),
+        &rendered.display,
+        |plan| {
+            if let Some(path) = &arguments.segments {
+                // The same walk as the fit's sizing pass, which succeeded: it cannot fail.
+                plan.add("--segments", path, move |w| {
+                    scene::write_segments(grammar, order, w)
+                });
+            }
+        },
+        &scene::stats_line(&rendered),
+    )
+}
+
+fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
+    let common = &arguments.common;
+    let name = if arguments.julia.is_some() {
+        "julia"
+    } else {
+        "mandelbrot"
+    };
+    let request = escape_scene::Request {
+        julia: arguments
+            .julia
+            .as_ref()
+            .map(|(re, im)| (re.as_str(), im.as_str())),
+        centre: (&arguments.centre.0, &arguments.centre.1),
+        width: &arguments.width,
+        size: embedded_graphics::geometry::Size::new(common.width(), common.height()),
+        max_iterations: arguments.max_iterations,
+        algorithm: arguments.algorithm,
+        tier: arguments.tier,
+        palette: &arguments.palette,
+    };
+    window_available(common.window)?;
+    // Everything is computed and every output checked before anything is written.
+    let rendered = escape_scene::render(&request).map_err(|e| format!("{name}: {e}"))?;
+    if let Some(message) = escape_scene::tier_warning(&rendered.view) {
+        warn(&message);
+    }
+    deliver(
+        common,
+        name,
+        &rendered.display,
+        |plan| {
+            if let Some(path) = &arguments.dwell {
+                plan.add("--dwell", path, |w| {
+                    escape_scene::write_dwells(&rendered, w)
+                });
+            }
+        },
+        &escape_scene::stats_line(&rendered),
+    )
+}
+
+/// Says something the user should know on stderr; the run goes on.
+fn warn(message: &str) {
+    eprintln!("tinyfractal: warning: {message}");
+}
+
+/// The end of every render: the picture to `--out` (default `NAME.png`) and the outputs
+/// `more` adds, all or none; then the `--stats` line and the window.
+fn deliver<'a>(
+    common: &args::Common,
+    name: &str,
+    display: &'a SimulatorDisplay<Rgb888>,
+    more: impl FnOnce(&mut output::Plan<'a>),
+    stats: &str,
+) -> Result<(), String> {
+    let out = common
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("{name}.png")));
+    let mut plan = output::Plan::new();
+    plan.add("--out", &out, |w| output::png(display, w));
+    more(&mut plan);
+    plan.write()?;
+    if common.stats {
+        println!("{stats}");
+    }
+    if common.dimension {
+        println!("{}", dimension_line(display, Rgb888::new(0, 0, 0))?);
+    }
+    if common.window {
+        show(display)?;
+    }
+    Ok(())
+}
+
+/// The box-counting dimension of `display`'s pixels other than `background`, as
+/// `dimension=D.DDD residual=R.RRR boxes=S..L` (box sides in pixels).
+fn dimension_line(
+    display: &SimulatorDisplay<Rgb888>,
+    background: Rgb888,
+) -> Result<String, String> {
+    use embedded_graphics::prelude::*;
+    let size = display.size();
+    let mut bits = vec![0u32; tinyfractal::BoxCounter::<Rgb888>::words_needed(size, 0)];
+    let mut counter = tinyfractal::BoxCounter::new(size, 0, background, &mut bits)
+        .map_err(|e| format!("dimension: {e}"))?;
+    let pixels = display
+        .bounding_box()
+        .points()
+        .map(|p| display.get_pixel(p));
+    let Ok(()) = counter.fill_contiguous(&display.bounding_box(), pixels);
+    let estimate = counter.dimension().map_err(|e| format!("dimension: {e}"))?;
+    Ok(format!(
+        "dimension={:.3} residual={:.3} boxes={}..{}",
+        estimate.value.to_f64(),
+        estimate.residual.to_f64(),
+        1u32 << estimate.smallest,
+        1u32 << estimate.largest
+    ))
+}
+
+/// `tinyfractal dimension FILE.png`: the picture's box-counting dimension.
+fn dimension(path: &Path, background: u32) -> Result<(), String> {
+    use embedded_graphics::prelude::*;
+    let picture = image::open(path)
+        .map_err(|e| format!("dimension {}: {e}", path.display()))?
+        .to_rgb8();
+    let (width, height) = picture.dimensions();
+    let mut display = SimulatorDisplay::new(embedded_graphics::prelude::Size::new(width, height));
+    for (x, y, pixel) in picture.enumerate_pixels() {
+        let [r, g, b] = pixel.0;
+        let _ = Pixel(Point::new(x as i32, y as i32), Rgb888::new(r, g, b)).draw(&mut display);
+    }
+    let [_, r, g, b] = background.to_be_bytes();
+    println!("{}", dimension_line(&display, Rgb888::new(r, g, b))?);
+    Ok(())
+}
+
+/// `--window` in a build without the window: refused before anything is computed.
+fn window_available(asked: bool) -> Result<(), String> {
+    if asked && cfg!(not(feature = "window")) {
+        return Err("--window: built without a window: run with `cargo run --release --features window -- ...` (needs SDL2)".into());
+    }
+    Ok(())
+}
+
+#[cfg(feature = "window")]
+fn show(display: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
+    use embedded_graphics_simulator::{OutputSettingsBuilder, Window};
+    Window::new(
+        "tinyfractal",
+        &OutputSettingsBuilder::new().scale(2).build(),
+    )
+    .show_static(display);
+    Ok(())
+}
+
+#[cfg(not(feature = "window"))]
+fn show(_: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
+    Err("built without a window: run with `cargo run --release --features window -- ...` (needs SDL2)".into())
+}
