@@ -5,3 +5,4 @@ pub(crate) mod drawing;
 pub(crate) mod kernel;
 pub(crate) mod schedule;
 pub(crate) mod view;
+pub(crate) mod zoom;

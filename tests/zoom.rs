@@ -1,0 +1,144 @@
+//! The zoom that reuses its frames: how much it computes, how close its frames stay to
+//! fully computed ones, and that a frame with no tolerance is exact.
+
+use embedded_graphics::geometry::Size;
+use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Render, ReuseStats, View, ZoomFrame};
+
+const CENTRE: (f64, f64) = (-0.743_5, 0.131_4);
+
+fn view(width: f64, size: Size) -> View {
+    let c = |v: f64| Coord::from_f64(v).unwrap();
+    View::new(
+        Fractal::Mandelbrot,
+        (c(CENTRE.0), c(CENTRE.1)),
+        c(width),
+        size,
+        256,
+    )
+    .unwrap()
+}
+
+fn computed(view: View) -> Vec<u16> {
+    let size = view.size();
+    let mut values = vec![0; (size.width * size.height) as usize];
+    let Ok(_) =
+        Render::new(view, Algorithm::Exact).run(&mut DwellBuffer::new(&mut values, size.width));
+    values
+}
+
+/// Storage for one frame of `size`.
+struct Storage {
+    values: Vec<u16>,
+    columns: Vec<i64>,
+    rows: Vec<i64>,
+}
+
+impl Storage {
+    fn new(size: Size) -> Self {
+        Self {
+            values: vec![0; (size.width * size.height) as usize],
+            columns: vec![0; size.width as usize],
+            rows: vec![0; size.height as usize],
+        }
+    }
+
+    fn frame(&mut self, view: View) -> ZoomFrame<'_> {
+        ZoomFrame::new(view, &mut self.values, &mut self.columns, &mut self.rows).unwrap()
+    }
+}
+
+/// Computes `next` from `previous` (a frame of `previous_view`) in the two storages.
+fn step(
+    previous: &mut Storage,
+    previous_view: View,
+    next: &mut Storage,
+    view: View,
+    tolerance: u32,
+) -> ReuseStats {
+    let old = previous.frame(previous_view);
+    let mut new = next.frame(view);
+    new.compute(Some(&old), tolerance)
+}
+
+#[test]
+fn a_zoom_by_1_05_computes_an_eighth_of_each_frame() {
+    let size = Size::new(320, 240);
+    let (mut previous, mut next) = (Storage::new(size), Storage::new(size));
+    let mut previous_view = view(3.0, size);
+    let first = previous.frame(previous_view).compute(None, 100);
+    assert_eq!(first.computed, 320 * 240);
+    let (mut shares, mut agreement) = (Vec::new(), Vec::new());
+    for frame in 1..=100 {
+        let next_view = view(3.0 / 1.05f64.powi(frame), size);
+        let stats = step(&mut previous, previous_view, &mut next, next_view, 100);
+        assert_eq!(stats.computed + stats.reused, 320 * 240);
+        shares.push(f64::from(stats.computed) / f64::from(320 * 240));
+        if frame % 25 == 0 {
+            let exact = computed(next_view);
+            let same = exact
+                .iter()
+                .zip(&next.values)
+                .filter(|(a, b)| a == b)
+                .count();
+            agreement.push(same as f64 / exact.len() as f64);
+        }
+        std::mem::swap(&mut previous, &mut next);
+        previous_view = next_view;
+    }
+    let mean = shares.iter().sum::<f64>() / shares.len() as f64;
+    let worst = shares.iter().copied().fold(0.0, f64::max);
+    eprintln!("computed per frame: mean {mean:.4}, worst {worst:.4}; agreement {agreement:?}");
+    // Measured: 11.6 % on average, 16.7 % at worst (the goal is 10 %; at half a
+    // pixel's tolerance it is 30.6 %).
+    assert!(mean <= 0.12, "mean share computed {mean}");
+    assert!(worst <= 0.18, "worst share computed {worst}");
+    // Reused pixels show a grid point up to a pixel from the nominal one, and the grid
+    // does not drift: most pixels keep the nominal point's dwell (the share falls as the
+    // zoom reaches finer detail: 92 % at frame 25, 77 % at frame 100).
+    assert!(agreement.iter().all(|&a| a >= 0.75), "{agreement:?}");
+}
+
+#[test]
+fn no_tolerance_gives_the_exact_frame() {
+    let size = Size::new(96, 72);
+    let first = view(0.5, size);
+    let mut previous = Storage::new(size);
+    previous.frame(first).compute(None, 0);
+    assert_eq!(previous.values, computed(first));
+    for width in [0.5, 0.5 / 1.05, 0.25, 0.49] {
+        let next_view = view(width, size);
+        let mut next = Storage::new(size);
+        let stats = step(&mut previous, first, &mut next, next_view, 0);
+        assert_eq!(next.values, computed(next_view), "width {width}");
+        if width == 0.5 {
+            assert_eq!(stats.computed, 0, "the same view is taken whole");
+        }
+    }
+}
+
+#[test]
+fn nothing_is_taken_from_a_different_fractal_or_cap() {
+    let size = Size::new(40, 30);
+    let first = view(1.0, size);
+    let mut previous = Storage::new(size);
+    previous.frame(first).compute(None, 50);
+    let c = |v: f64| Coord::from_f64(v).unwrap();
+    let other_cap = View::new(Fractal::Mandelbrot, first.centre(), c(1.0), size, 100).unwrap();
+    let mut next = Storage::new(size);
+    let stats = step(&mut previous, first, &mut next, other_cap, 50);
+    assert_eq!((stats.reused, &next.values), (0, &computed(other_cap)));
+}
+
+#[test]
+fn short_storage_is_a_typed_error() {
+    let size = Size::new(40, 30);
+    let (mut values, mut columns, mut rows) = (vec![0; 1199], vec![0; 40], vec![0; 30]);
+    let error = ZoomFrame::new(view(1.0, size), &mut values, &mut columns, &mut rows).unwrap_err();
+    assert_eq!(
+        error,
+        tinyfractal::Error::Fit(tinyfractal::FitError::BufferTooSmall {
+            needed: 1200,
+            given: 1199
+        })
+    );
+}
