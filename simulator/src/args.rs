@@ -41,6 +41,42 @@ pub enum Command {
     Gallery { out: PathBuf },
     /// `completions SHELL`
     Completions(clap_complete::Shell),
+    /// `animate zoom|palette|growth|figure ...`
+    Animate(AnimateArgs),
+}
+
+/// `animate`'s arguments.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AnimateArgs {
+    pub kind: Animation,
+    /// Frames (for `growth`, orders 0 to `--order`, one frame each).
+    pub frames: u32,
+    /// `NAME.gif`, `NAME.png` (APNG), or a folder of numbered PNGs.
+    pub out: PathBuf,
+    /// Milliseconds a frame shows in a GIF or APNG.
+    pub delay_ms: u32,
+    pub size: (u32, u32),
+    pub stats: bool,
+}
+
+/// What `animate` animates.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Animation {
+    /// A zoom from `view`'s width to `end_width` (or by `factor` a frame), reusing frames
+    /// within `tolerance` % of a pixel unless `exact`.
+    Zoom {
+        view: EscapeArgs,
+        end_width: Option<String>,
+        factor: f64,
+        tolerance: u32,
+        exact: bool,
+    },
+    /// One view, its gradient turned by `step` entries a frame.
+    Palette { view: EscapeArgs, step: u16 },
+    /// An L-system, one order a frame.
+    Growth { source: Source, seed: Option<u32> },
+    /// The walking (or waving) figure.
+    Figure { pose: crate::figure_scene::PoseName },
 }
 
 /// `derive`'s arguments.
@@ -201,11 +237,127 @@ enum Commands {
         #[arg(long, value_name = "DIR", default_value = "gallery")]
         out: PathBuf,
     },
+    /// Write an animation: numbered PNG frames, an animated GIF or an APNG
+    Animate(AnimateOptions),
     /// Print a shell completion script
     Completions {
         /// bash, zsh, fish, elvish or powershell
         shell: clap_complete::Shell,
     },
+}
+
+#[derive(Debug, Args)]
+struct AnimateOptions {
+    #[command(subcommand)]
+    kind: Box<AnimationKind>,
+}
+
+#[derive(Debug, Args)]
+struct FrameOptions {
+    /// Frames to write (growth writes one an order, 0 to --order, instead)
+    #[arg(long, value_name = "N", default_value_t = 100)]
+    frames: u32,
+    /// NAME.gif (animated GIF), NAME.png (APNG), or a folder for frame-0000.png, ...
+    #[arg(long, value_name = "PATH", default_value = "animation.gif")]
+    out: PathBuf,
+    /// How long a frame shows in a GIF or APNG, in milliseconds
+    #[arg(long = "delay", value_name = "MS", default_value_t = 40)]
+    delay_ms: u32,
+    /// Picture size in pixels, WxH
+    #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = parse_size)]
+    size: (u32, u32),
+    /// Print one line of statistics
+    #[arg(long)]
+    stats: bool,
+}
+
+#[derive(Debug, Subcommand)]
+enum AnimationKind {
+    /// A zoom into the Mandelbrot set (or a Julia set with --c), reusing each frame's
+    /// columns and rows for the next
+    Zoom(ZoomOptions),
+    /// Colour cycling: one view, its gradient turned a step each frame
+    Palette(PaletteOptions),
+    /// An L-system growing, one order a frame
+    Growth(GrowthOptions),
+    /// The lecture's figure walking (or waving), one cycle
+    Figure(FigureAnimationOptions),
+}
+
+#[derive(Debug, Args)]
+struct ZoomOptions {
+    /// The Julia parameter k, RE,IM (a Julia set instead of the Mandelbrot set)
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = parse_pair)]
+    c: Option<(String, String)>,
+    /// The width of the last frame (default: --width shrunk by --factor a frame)
+    #[arg(long = "end-width", value_name = "W", allow_hyphen_values = true)]
+    end_width: Option<String>,
+    /// How much each frame zooms in
+    #[arg(long, value_name = "F", default_value_t = 1.05)]
+    factor: f64,
+    /// Reuse a line of the previous frame within this share of a pixel, in percent
+    #[arg(long, value_name = "PERCENT", default_value_t = 100)]
+    tolerance: u32,
+    /// Compute every pixel of every frame
+    #[arg(long)]
+    exact: bool,
+    #[command(flatten)]
+    view: AnimatedView,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+/// The view options an animation shares with `render mandelbrot`.
+#[derive(Debug, Args)]
+struct AnimatedView {
+    /// Centre of the view (the point zoomed into), RE,IM
+    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", default_value = "-0.743643887037151,0.131825904205330", allow_hyphen_values = true, value_parser = parse_pair)]
+    centre: (String, String),
+    /// Width along the real axis (of the first frame)
+    #[arg(
+        long,
+        value_name = "W",
+        default_value = "3",
+        allow_hyphen_values = true
+    )]
+    width: String,
+    /// Iteration cap
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256)]
+    max_iterations: u32,
+    /// The colours
+    #[arg(long, value_enum, default_value = "classic")]
+    palette: PaletteName,
+}
+
+#[derive(Debug, Args)]
+struct PaletteOptions {
+    /// The Julia parameter k, RE,IM (a Julia set instead of the Mandelbrot set)
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = parse_pair)]
+    c: Option<(String, String)>,
+    /// Gradient entries the colours move a frame
+    #[arg(long, value_name = "N", default_value_t = 4)]
+    step: u16,
+    #[command(flatten)]
+    view: AnimatedView,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+#[derive(Debug, Args)]
+struct GrowthOptions {
+    #[command(flatten)]
+    system: SystemOptions,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+#[derive(Debug, Args)]
+struct FigureAnimationOptions {
+    /// The movement
+    #[arg(long, value_enum, default_value = "walk")]
+    pose: crate::figure_scene::PoseName,
+    #[command(flatten)]
+    frames: FrameOptions,
 }
 
 #[derive(Debug, Subcommand)]
@@ -488,6 +640,7 @@ where
             max_length: options.max_length,
         }),
         Some(Commands::Completions { shell }) => Command::Completions(shell),
+        Some(Commands::Animate(options)) => Command::Animate(animation(*options.kind)?),
         Some(Commands::Render { scene }) => match *scene {
             Scene::Lsystem(options) => Command::RenderLSystem(lsystem(options)?),
             Scene::Mandelbrot(options) => Command::RenderEscape(escape(None, options)),
@@ -572,6 +725,75 @@ fn source(options: SystemOptions, angle_required: bool) -> Result<Source, clap::
                 "give a system: --file PATH --name NAME, or --axiom STR",
             ))
         }
+    })
+}
+
+fn animation(kind: AnimationKind) -> Result<AnimateArgs, clap::Error> {
+    let animated = |julia: Option<(String, String)>, view: AnimatedView| EscapeArgs {
+        julia,
+        centre: view.centre,
+        width: view.width,
+        max_iterations: view.max_iterations,
+        algorithm: tinyfractal::Algorithm::Exact,
+        tier: None,
+        palette: view.palette.name().to_string(),
+        common: Common {
+            size: (0, 0),
+            out: None,
+            stats: false,
+            window: false,
+            dimension: false,
+        },
+        dwell: None,
+    };
+    let (kind, frames) = match kind {
+        AnimationKind::Zoom(options) => (
+            Animation::Zoom {
+                view: animated(options.c, options.view),
+                end_width: options.end_width,
+                factor: options.factor,
+                tolerance: options.tolerance,
+                exact: options.exact,
+            },
+            options.frames,
+        ),
+        AnimationKind::Palette(options) => (
+            Animation::Palette {
+                view: animated(options.c, options.view),
+                step: options.step,
+            },
+            options.frames,
+        ),
+        AnimationKind::Growth(options) => {
+            let mut frames = options.frames;
+            // Orders 0 to N: N + 1 frames.
+            frames.frames = options.system.order.saturating_add(1);
+            let seed = options.system.seed;
+            (
+                Animation::Growth {
+                    source: source(options.system, true)?,
+                    seed,
+                },
+                frames,
+            )
+        }
+        AnimationKind::Figure(options) => {
+            (Animation::Figure { pose: options.pose }, options.frames)
+        }
+    };
+    if frames.frames == 0 {
+        return Err(usage(
+            ErrorKind::ValueValidation,
+            "--frames 0: give at least one frame",
+        ));
+    }
+    Ok(AnimateArgs {
+        kind,
+        frames: frames.frames,
+        out: frames.out,
+        delay_ms: frames.delay_ms,
+        size: frames.size,
+        stats: frames.stats,
     })
 }
 

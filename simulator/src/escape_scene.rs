@@ -42,8 +42,8 @@ fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
     })
 }
 
-/// Checks and renders a request.
-pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
+/// The fractal and centre of a request, checked.
+pub fn fractal_and_centre(request: &Request<'_>) -> Result<(Fractal, (Coord, Coord)), String> {
     let fractal = match request.julia {
         None => Fractal::Mandelbrot,
         Some((re, im)) => Fractal::Julia {
@@ -55,24 +55,32 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
         coordinate("--center", request.centre.0)?,
         coordinate("--center", request.centre.1)?,
     );
-    let width = coordinate("--width", request.width)?;
+    Ok((fractal, centre))
+}
+
+/// A request's view at `width` (text, as the user wrote it), and its palette.
+pub fn view_at(request: &Request<'_>, width: &str) -> Result<(View, HostPalette), String> {
+    let (fractal, centre) = fractal_and_centre(request)?;
+    let width = coordinate("--width", width)?;
     let (palette, shading) = palette(request.palette)?;
-    let failed = |e: Error| e.to_string();
     let mut view = View::new(fractal, centre, width, request.size, request.max_iterations)
         .and_then(|view| view.with_shading(shading))
-        .map_err(failed)?;
+        .map_err(|e: Error| e.to_string())?;
     if let Some(tier) = request.tier {
         view = view.with_tier(tier);
     }
     // Checked here, so that the size is known to fit before anything is computed.
     pixel_count(request.size)?;
+    Ok((view, palette))
+}
+
+/// Checks and renders a request.
+pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
+    let (view, palette) = view_at(request, request.width)?;
     let started = Instant::now();
     let (values, stats) = compute(view, request.algorithm)?;
     let elapsed = started.elapsed();
-    let mut display = SimulatorDisplay::new(request.size);
-    let inside = view.inside_value();
-    let colours = values.iter().map(|&value| palette.color(value, inside));
-    let Ok(()) = display.fill_contiguous(&display.bounding_box(), colours);
+    let display = paint(&view, &values, &palette);
     Ok(Rendered {
         view,
         values,
@@ -83,13 +91,22 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
     })
 }
 
+/// `values` (of `view`, row by row) through `palette`.
+pub fn paint(view: &View, values: &[u16], palette: &HostPalette) -> SimulatorDisplay<Rgb888> {
+    let mut display = SimulatorDisplay::new(view.size());
+    let inside = view.inside_value();
+    let colours = values.iter().map(|&value| palette.color(value, inside));
+    let Ok(()) = display.fill_contiguous(&display.bounding_box(), colours);
+    display
+}
+
 fn pixel_count(size: Size) -> Result<usize, String> {
     usize::try_from(u64::from(size.width) * u64::from(size.height))
         .map_err(|_| "the picture is too large for this machine".to_string())
 }
 
 /// Every pixel's value, row by row.
-fn compute(view: View, algorithm: Algorithm) -> Result<(Vec<u16>, RenderStats), String> {
+pub fn compute(view: View, algorithm: Algorithm) -> Result<(Vec<u16>, RenderStats), String> {
     let size = view.size();
     let mut values = vec![0; pixel_count(size)?];
     let Ok(stats) =
@@ -184,6 +201,18 @@ pub enum HostPalette {
     Smooth(Box<Gradient<Rgb888, 4096>>),
     Bands(Bands<'static, Rgb888>),
     TwoColor(TwoColor<Rgb888>),
+}
+
+impl HostPalette {
+    /// The palette with its gradient turned by `offset` entries (colour cycling); `None`
+    /// for palettes that are not gradients.
+    pub fn turned(&self, offset: u16) -> Option<Self> {
+        match self {
+            Self::Gradient(p) => Some(Self::Gradient(Box::new(p.with_offset(offset)))),
+            Self::Smooth(p) => Some(Self::Smooth(Box::new(p.with_offset(offset)))),
+            Self::Bands(_) | Self::TwoColor(_) => None,
+        }
+    }
 }
 
 impl Palette for HostPalette {

@@ -76,14 +76,33 @@ fn render(
 /// Fits `figure` to a target of the requested size so that it also fits in `poses`.
 fn fit(
     figure: &Figure,
-    common: &Common,
+    size: Size,
     poses: impl IntoIterator<Item = Pose>,
 ) -> Result<(FigureDrawing<Colors<'static, Rgb888>>, Size), String> {
-    let size = Size::new(common.width(), common.height());
     let drawing = figure
         .fit_poses(Rectangle::new(Point::zero(), size), &PALETTE, poses)
         .map_err(|e| format!("figure: {e}"))?;
     Ok((drawing, size))
+}
+
+/// `frames` pictures of one cycle of `movement` at `size`, fitted once over all of them,
+/// so the figure walks in place instead of jumping.
+pub fn cycle(
+    movement: PoseName,
+    frames: u32,
+    size: Size,
+) -> Result<Vec<SimulatorDisplay<Rgb888>>, String> {
+    let poses = (0..frames)
+        .map(|index| pose(movement, f64::from(index) / f64::from(frames)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let Some(&first) = poses.first() else {
+        return Ok(Vec::new());
+    };
+    let (drawing, size) = fit(&Figure::new(&BODY, first), size, poses.iter().copied())?;
+    poses
+        .iter()
+        .map(|&pose| render(&drawing.with_pose(pose), size).map(|(display, _)| display))
+        .collect()
 }
 
 /// `render figure`.
@@ -100,16 +119,10 @@ pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
             .clone()
             .unwrap_or_else(|| PathBuf::from("figure.png"));
         let stem = out.with_extension("");
-        let poses = (0..frames)
-            .map(|index| pose(options.pose, f64::from(index) / f64::from(frames)))
-            .collect::<Result<Vec<_>, _>>()?;
-        // One fit for every frame, so the figure walks in place instead of jumping.
-        let first = Figure::new(&BODY, poses[0]);
-        let (drawing, size) = fit(&first, &options.common, poses.iter().copied())?;
-        for (index, &pose) in poses.iter().enumerate() {
-            let (display, _) = render(&drawing.with_pose(pose), size)?;
+        let size = Size::new(options.common.width(), options.common.height());
+        for (index, display) in cycle(options.pose, frames, size)?.iter().enumerate() {
             let path = PathBuf::from(format!("{}-{index:03}.png", stem.display()));
-            crate::output::save_png(&display, "--frames", &path)?;
+            crate::output::save_png(display, "--frames", &path)?;
         }
         if options.common.stats {
             println!(
@@ -120,7 +133,8 @@ pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
         return Ok(());
     }
     let figure = Figure::new(&BODY, pose(options.pose, options.time)?);
-    let (drawing, size) = fit(&figure, &options.common, [])?;
+    let size = Size::new(options.common.width(), options.common.height());
+    let (drawing, size) = fit(&figure, size, [])?;
     let (display, drawn) = render(&drawing, size)?;
     let stats = format!(
         "lines={drawn} elapsed_ms={:.3}",

@@ -41,15 +41,18 @@ pub fn run(out: &Path) -> Result<(), String> {
     );
     println!("|{:-<24}|{:-<16}|{:->20}|{:->11}|-----", "", "", "", "");
     let mut ok = true;
+    let scenes = GALLERY.len() + GENERAL_GALLERY.len() + IFS_GALLERY.len();
+    let bar = crate::animate::progress(scenes as u64, "gallery");
     let mut report =
         |name: &str, result: Result<(String, String, std::time::Duration), String>, path: &Path| {
-            match result {
+            bar.suspend(|| match result {
                 Ok((detail, work, elapsed)) => row(name, &detail, &work, elapsed, path),
                 Err(error) => {
                     eprintln!("tinyfractal: error: {name}: {error}");
                     ok = false;
                 }
-            }
+            });
+            bar.inc(1);
         };
     for entry in &GALLERY {
         let path = out.join(format!("{}.png", entry.name));
@@ -176,6 +179,7 @@ pub fn run(out: &Path) -> Result<(), String> {
                 });
         report(entry.name, result, &path);
     }
+    bar.finish_and_clear();
     if ok {
         Ok(())
     } else {

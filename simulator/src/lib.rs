@@ -2,6 +2,7 @@
 //! fuzz targets share it: the argument parser, each family's host renderer, the gallery and
 //! the all-or-nothing output plan. `src/main.rs` only calls [`run`].
 
+pub mod animate;
 pub mod args;
 pub mod environment;
 pub mod escape_scene;
@@ -46,6 +47,7 @@ pub fn run() -> ExitCode {
             Ok(())
         }
         Command::List(path) => list(&path),
+        Command::Animate(arguments) => animate::animate(&arguments),
         Command::Derive(arguments) => derive(&arguments),
         Command::Gallery { out } => gallery::run(&out),
         Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
@@ -126,14 +128,17 @@ fn list(path: &Path) -> Result<(), String> {
 }
 
 /// A system as a source names it: plain (Fractint, ABOP, stochastic) or parametric.
-enum Loaded<'a> {
+pub(crate) enum Loaded<'a> {
     Plain(Box<Grammar<'a>>),
     Parametric(Box<ParametricGrammar>),
 }
 
 /// The system a source names, and the name to report it by; warnings go to stderr. The
 /// file is read once, here.
-fn load<'a>(source: &'a Source, file_text: &'a mut String) -> Result<(Loaded<'a>, String), String> {
+pub(crate) fn load<'a>(
+    source: &'a Source,
+    file_text: &'a mut String,
+) -> Result<(Loaded<'a>, String), String> {
     Ok(match source {
         Source::File { path, name } => {
             *file_text = read_text(path)?;

@@ -444,6 +444,9 @@ fn help_version_and_completions() {
         (vec!["render", "mandelbrot", "--help"], "--max-iter <N>"),
         (vec!["render", "julia", "--help"], "--c <RE,IM>"),
         (vec!["help", "render"], "Usage: tinyfractal render"),
+        (vec!["animate", "--help"], "zoom"),
+        (vec!["animate", "zoom", "--help"], "--end-width <W>"),
+        (vec!["render", "mandelbrot", "--help"], "smooth-classic"),
         (vec!["--version"], "tinyfractal 0.1.0"),
         (vec!["completions", "bash"], "_tinyfractal()"),
     ] {
@@ -1482,4 +1485,156 @@ fn smooth_palettes_shade_between_the_bands() {
         stderr(&refused)
     );
     assert!(!png.exists());
+}
+
+fn frame_bytes(dir: &Path, count: usize) -> Vec<Vec<u8>> {
+    (0..count)
+        .map(|k| std::fs::read(dir.join(format!("frame-{k:04}.png"))).unwrap())
+        .collect()
+}
+
+#[test]
+fn animate_writes_its_frames_first_and_last_as_headless_renders() {
+    let dir = scratch("animate");
+    let render = |args: &[&str], out: &Path| {
+        let mut args = args.to_vec();
+        args.extend_from_slice(&["--size", "64x48", "--out", out.to_str().unwrap()]);
+        let output = run(&args);
+        assert!(output.status.success(), "{args:?}: {}", stderr(&output));
+        std::fs::read(out).unwrap()
+    };
+    let still = |width: &str, name: &str| {
+        let args = [
+            "render",
+            "mandelbrot",
+            "--algorithm",
+            "exact",
+            "--center",
+            "-0.7435,0.1314",
+        ];
+        let mut args = args.to_vec();
+        args.extend_from_slice(&["--width", width]);
+        render(&args, &dir.join(name))
+    };
+    let zoom = dir.join("zoom");
+    let output = run(&[
+        "animate",
+        "zoom",
+        "--frames",
+        "6",
+        "--center",
+        "-0.7435,0.1314",
+        "--width",
+        "3",
+        "--end-width",
+        "0.05",
+        "--size",
+        "64x48",
+        "--out",
+        zoom.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        stdout(&output).contains("frames=6 computed_share="),
+        "{}",
+        stdout(&output)
+    );
+    let frames = frame_bytes(&zoom, 6);
+    assert!(!zoom.join("frame-0006.png").exists());
+    assert_eq!(frames[0], still("3", "start.png"));
+    assert_eq!(frames[5], still("0.05", "end.png"));
+    // An animated GIF and an APNG of the same frames.
+    for (name, count) in [("zoom.gif", 6), ("zoom.png", 6)] {
+        let path = dir.join(name);
+        let output = run(&[
+            "animate",
+            "zoom",
+            "--frames",
+            "6",
+            "--width",
+            "3",
+            "--end-width",
+            "0.05",
+            "--size",
+            "64x48",
+            "--out",
+            path.to_str().unwrap(),
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        let bytes = std::fs::read(&path).unwrap();
+        if name.ends_with(".gif") {
+            use image::AnimationDecoder;
+            let decoder = image::codecs::gif::GifDecoder::new(std::io::Cursor::new(bytes)).unwrap();
+            assert_eq!(decoder.into_frames().count(), count);
+        } else {
+            let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+            let reader = decoder.read_info().unwrap();
+            let control = reader.info().animation_control().unwrap();
+            assert_eq!(control.num_frames, count as u32);
+        }
+    }
+    // Colour cycling starts at the still picture.
+    let cycle = dir.join("cycle");
+    let output = run(&[
+        "animate",
+        "palette",
+        "--frames",
+        "3",
+        "--center",
+        "-0.7435,0.1314",
+        "--width",
+        "3",
+        "--size",
+        "64x48",
+        "--out",
+        cycle.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let frames = frame_bytes(&cycle, 3);
+    assert_eq!(frames[0], std::fs::read(dir.join("start.png")).unwrap());
+    assert_ne!(frames[1], frames[0]);
+    let bands = run(&[
+        "animate",
+        "palette",
+        "--palette",
+        "bands",
+        "--out",
+        cycle.to_str().unwrap(),
+    ]);
+    assert_eq!(bands.status.code(), Some(1));
+    assert!(
+        stderr(&bands).contains("colour cycling needs a gradient"),
+        "{}",
+        stderr(&bands)
+    );
+    // Growth: order k is `render lsystem --order k`.
+    let growth = dir.join("growth");
+    let system = ["--axiom", "F", "--rule", "F=F+F-F-F+F", "--angle", "4"];
+    let mut args = vec![
+        "animate",
+        "growth",
+        "--order",
+        "3",
+        "--size",
+        "64x48",
+        "--out",
+        growth.to_str().unwrap(),
+    ];
+    args.extend_from_slice(&system);
+    let output = run(&args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let frames = frame_bytes(&growth, 4);
+    for (order, frame) in frames.iter().enumerate() {
+        let order = order.to_string();
+        let mut args = vec!["render", "lsystem", "--order", order.as_str()];
+        args.extend_from_slice(&system);
+        assert_eq!(
+            *frame,
+            render(&args, &dir.join(format!("order-{order}.png"))),
+            "order {order}"
+        );
+    }
+    let zero = run(&["animate", "figure", "--frames", "0"]);
+    assert_eq!(zero.status.code(), Some(2));
 }

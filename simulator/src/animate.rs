@@ -1,0 +1,315 @@
+//! `animate`: a zoom that reuses its frames, colour cycling, an L-system growing by order,
+//! the walking figure; written as numbered PNG frames, an animated GIF or an APNG, all or
+//! nothing, with a progress bar on a terminal.
+
+use std::io::{self, Write};
+use std::path::Path;
+use std::time::Instant;
+
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::prelude::*;
+use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
+use image::codecs::gif::{GifEncoder, Repeat};
+use image::{Delay, Frame, RgbaImage};
+use indicatif::{ProgressBar, ProgressStyle};
+use tinyfractal::{Algorithm, Coord, View, ZoomFrame};
+
+use crate::args::{AnimateArgs, Animation, EscapeArgs};
+use crate::escape_scene::{self, HostPalette, Request};
+
+/// A bar over `total` steps on stderr, drawn only when stderr is a terminal.
+pub fn progress(total: u64, what: &str) -> ProgressBar {
+    let bar = ProgressBar::new(total);
+    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} {elapsed}") {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar.set_message(what.to_string());
+    bar
+}
+
+/// `animate ...`.
+pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
+    let started = Instant::now();
+    let size = Size::new(arguments.size.0, arguments.size.1);
+    let bar = progress(u64::from(arguments.frames), "frames");
+    let (frames, detail) = match &arguments.kind {
+        Animation::Zoom {
+            view,
+            end_width,
+            factor,
+            tolerance,
+            exact,
+        } => {
+            let request = request(view, size);
+            let tolerance = if *exact { None } else { Some(*tolerance) };
+            zoom(
+                &request,
+                end_width.as_deref(),
+                *factor,
+                tolerance,
+                arguments.frames,
+                &bar,
+            )?
+        }
+        Animation::Palette { view, step } => {
+            palette_cycle(&request(view, size), *step, arguments.frames, &bar)?
+        }
+        Animation::Growth { source, seed } => growth(source, *seed, arguments.frames, size, &bar)?,
+        Animation::Figure { pose } => {
+            let frames = crate::figure_scene::cycle(*pose, arguments.frames, size)?;
+            bar.inc(u64::from(arguments.frames));
+            (frames, String::new())
+        }
+    };
+    bar.finish_and_clear();
+    write(&frames, &arguments.out, arguments.delay_ms)?;
+    if arguments.stats {
+        println!(
+            "frames={}{detail} elapsed_ms={:.3}",
+            frames.len(),
+            started.elapsed().as_secs_f64() * 1e3
+        );
+    }
+    Ok(())
+}
+
+fn request(view: &EscapeArgs, size: Size) -> Request<'_> {
+    Request {
+        julia: view
+            .julia
+            .as_ref()
+            .map(|(re, im)| (re.as_str(), im.as_str())),
+        centre: (&view.centre.0, &view.centre.1),
+        width: &view.width,
+        size,
+        max_iterations: view.max_iterations,
+        algorithm: Algorithm::Exact,
+        tier: None,
+        palette: &view.palette,
+    }
+}
+
+/// The widths of a zoom's frames, as text: the first is `--width`, the last `end_width`
+/// when given (both exactly as written), the rest shrink by one factor a frame.
+fn widths(start: &str, end: Option<&str>, factor: f64, frames: u32) -> Result<Vec<String>, String> {
+    let number = |option: &str, text: &str| {
+        Coord::parse(text)
+            .map(Coord::to_f64)
+            .filter(|&w| w > 0.0)
+            .ok_or_else(|| {
+                format!("{option}: `{text}` is not a width between 0 and 8 (e.g. 3 or 1e-5)")
+            })
+    };
+    let first = number("--width", start)?;
+    let factor = match end {
+        Some(end) if frames > 1 => {
+            (first / number("--end-width", end)?).powf(1.0 / f64::from(frames - 1))
+        }
+        _ => factor,
+    };
+    if !(factor.is_finite() && factor > 0.0) {
+        return Err(format!(
+            "--factor {factor}: give a factor above 0 (e.g. 1.05)"
+        ));
+    }
+    Ok((0..frames)
+        .map(|k| match (k, end) {
+            (0, _) => start.to_string(),
+            (k, Some(end)) if k + 1 == frames => end.to_string(),
+            (k, _) => format!("{:e}", first / factor.powi(k as i32)),
+        })
+        .collect())
+}
+
+/// A zoom: each frame reuses the last within `tolerance` % of a pixel (`None`: every
+/// frame computed in full); the first and last frames are exact.
+fn zoom(
+    request: &Request<'_>,
+    end_width: Option<&str>,
+    factor: f64,
+    tolerance: Option<u32>,
+    frames: u32,
+    bar: &ProgressBar,
+) -> Result<(Vec<SimulatorDisplay<Rgb888>>, String), String> {
+    let widths = widths(request.width, end_width, factor, frames)?;
+    let views = widths
+        .iter()
+        .map(|width| escape_scene::view_at(request, width))
+        .collect::<Result<Vec<(View, HostPalette)>, String>>()?;
+    let pixels = (request.size.width * request.size.height) as usize;
+    let lines = |n: u32| vec![0i64; n as usize];
+    let mut storage = [
+        (
+            vec![0u16; pixels],
+            lines(request.size.width),
+            lines(request.size.height),
+        ),
+        (
+            vec![0u16; pixels],
+            lines(request.size.width),
+            lines(request.size.height),
+        ),
+    ];
+    let (mut computed, mut total) = (0u64, 0u64);
+    let mut pictures = Vec::with_capacity(views.len());
+    for (index, (view, palette)) in views.iter().enumerate() {
+        let [a, b] = &mut storage;
+        let (previous, next) = if index % 2 == 0 { (b, a) } else { (a, b) };
+        let old = ZoomFrame::new(
+            views[index.saturating_sub(1)].0,
+            &mut previous.0,
+            &mut previous.1,
+            &mut previous.2,
+        )
+        .map_err(|e| e.to_string())?;
+        let mut frame = ZoomFrame::new(*view, &mut next.0, &mut next.1, &mut next.2)
+            .map_err(|e| e.to_string())?;
+        let last = index + 1 == views.len();
+        let stats = match (index, tolerance) {
+            (0, _) | (_, None) => frame.compute(None, 0),
+            // The last frame takes only lines at exactly its own points: it is exact.
+            _ if last => frame.compute(Some(&old), 0),
+            (_, Some(tolerance)) => frame.compute(Some(&old), tolerance),
+        };
+        computed += u64::from(stats.computed);
+        total += u64::from(stats.computed + stats.reused);
+        pictures.push(escape_scene::paint(view, frame.values(), palette));
+        bar.inc(1);
+    }
+    let share = computed as f64 / total.max(1) as f64;
+    Ok((
+        pictures,
+        format!(
+            " computed_share={share:.4} last_width={}",
+            widths.last().map_or("", String::as_str)
+        ),
+    ))
+}
+
+/// One view, its gradient turned `step` entries a frame.
+fn palette_cycle(
+    request: &Request<'_>,
+    step: u16,
+    frames: u32,
+    bar: &ProgressBar,
+) -> Result<(Vec<SimulatorDisplay<Rgb888>>, String), String> {
+    let (view, palette) = escape_scene::view_at(request, request.width)?;
+    let (values, _) = escape_scene::compute(view, Algorithm::Exact)?;
+    let pictures = (0..frames)
+        .map(|k| {
+            let offset = (u64::from(k) * u64::from(step) % 65_536) as u16;
+            let turned = palette.turned(offset).ok_or_else(|| {
+                format!("--palette {}: colour cycling needs a gradient (classic, fire, gray or smooth-*)", request.palette)
+            })?;
+            bar.inc(1);
+            Ok(escape_scene::paint(&view, &values, &turned))
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    Ok((pictures, String::new()))
+}
+
+/// An L-system at orders 0 to `frames` − 1, each fitted to the picture.
+fn growth(
+    source: &crate::args::Source,
+    seed: Option<u32>,
+    frames: u32,
+    size: Size,
+    bar: &ProgressBar,
+) -> Result<(Vec<SimulatorDisplay<Rgb888>>, String), String> {
+    let mut text = String::new();
+    let (loaded, name) = crate::load(source, &mut text)?;
+    let crate::Loaded::Plain(grammar) = loaded else {
+        return Err(format!(
+            "{name}: growth animates plain systems; this one is parametric"
+        ));
+    };
+    let mut grammar = *grammar;
+    if let Some(seed) = seed {
+        grammar.set_seed(seed);
+    }
+    let pictures = (0..frames)
+        .map(|order| {
+            let rendered = crate::scene::render(&grammar, order, size.width, size.height, None)
+                .map_err(|e| format!("{name} at order {order}: {e}"))?;
+            bar.inc(1);
+            Ok(rendered.display)
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    Ok((pictures, String::new()))
+}
+
+/// Writes the frames: `NAME.gif`, `NAME.png` (APNG), or a folder of `frame-NNNN.png`
+/// (created if missing), all or nothing.
+fn write(frames: &[SimulatorDisplay<Rgb888>], out: &Path, delay_ms: u32) -> Result<(), String> {
+    let mut plan = crate::output::Plan::new();
+    let extension = out
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let paths: Vec<_>;
+    match extension.as_deref() {
+        Some("gif") => plan.add("--out", out, |w| gif(frames, delay_ms, w)),
+        Some("png") => plan.add("--out", out, |w| apng(frames, delay_ms, w)),
+        _ => {
+            std::fs::create_dir_all(out).map_err(|e| format!("--out {}: {e}", out.display()))?;
+            paths = (0..frames.len())
+                .map(|k| out.join(format!("frame-{k:04}.png")))
+                .collect();
+            for (frame, path) in frames.iter().zip(&paths) {
+                plan.add("--out", path, move |w| crate::output::png(frame, w));
+            }
+        }
+    }
+    plan.write()
+}
+
+/// RGB bytes of a frame, row by row.
+fn rgb(frame: &SimulatorDisplay<Rgb888>) -> Vec<u8> {
+    frame
+        .to_rgb_output_image(&OutputSettingsBuilder::new().build())
+        .as_image_buffer()
+        .as_raw()
+        .to_vec()
+}
+
+fn gif(frames: &[SimulatorDisplay<Rgb888>], delay_ms: u32, out: &mut dyn Write) -> io::Result<()> {
+    let mut encoder = GifEncoder::new_with_speed(out, 10);
+    encoder
+        .set_repeat(Repeat::Infinite)
+        .map_err(io::Error::other)?;
+    let delay = Delay::from_numer_denom_ms(delay_ms, 1);
+    encoder
+        .encode_frames(frames.iter().filter_map(|frame| {
+            let size = frame.size();
+            let rgba = rgb(frame)
+                .chunks_exact(3)
+                .flat_map(|p| [p[0], p[1], p[2], 255])
+                .collect();
+            RgbaImage::from_raw(size.width, size.height, rgba)
+                .map(|image| Frame::from_parts(image, 0, 0, delay))
+        }))
+        .map_err(io::Error::other)
+}
+
+fn apng(frames: &[SimulatorDisplay<Rgb888>], delay_ms: u32, out: &mut dyn Write) -> io::Result<()> {
+    let Some(first) = frames.first() else {
+        return Ok(());
+    };
+    let size = first.size();
+    let mut encoder = png::Encoder::new(out, size.width, size.height);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let count = u32::try_from(frames.len()).map_err(io::Error::other)?;
+    encoder.set_animated(count, 0).map_err(io::Error::other)?;
+    let delay = u16::try_from(delay_ms).unwrap_or(u16::MAX);
+    encoder
+        .set_frame_delay(delay, 1000)
+        .map_err(io::Error::other)?;
+    let mut writer = encoder.write_header().map_err(io::Error::other)?;
+    for frame in frames {
+        writer
+            .write_image_data(&rgb(frame))
+            .map_err(io::Error::other)?;
+    }
+    writer.finish().map_err(io::Error::other)
+}
