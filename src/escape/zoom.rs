@@ -84,15 +84,6 @@ impl<'a> ZoomFrame<'a> {
         self.values
     }
 
-    /// Shows `view` next, keeping the storage (the values stay until computed).
-    pub fn set_view(&mut self, view: View) -> Result<(), Error> {
-        let values = core::mem::take(&mut self.values);
-        let columns = core::mem::take(&mut self.columns);
-        let rows = core::mem::take(&mut self.rows);
-        *self = Self::new(view, values, columns, rows)?;
-        Ok(())
-    }
-
     /// Computes this frame, taking from `previous` every pixel whose column and row both
     /// lie within `tolerance_percent` % of this view's pixel spacing of one of its columns
     /// and rows (`None`, or a view of another fractal, cap or shading: nothing is taken).

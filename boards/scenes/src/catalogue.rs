@@ -463,7 +463,7 @@ pub const GALLERY: [Entry; 19] = [
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"),
     escape("seahorse-valley", None, ("-0.7435", "0.1314"), "0.02", 512, GALLERY_SIZE, "fire"),
     escape("julia", JULIA_K, ("0", "0"), "3.2", 300, GALLERY_SIZE, "classic"),
-    smooth(escape("mandelbrot-smooth", None, ("-0.6", "0"), "3.2", 256, GALLERY_SIZE, ""), "smooth-classic"),
+    smooth(escape("mandelbrot-smooth", None, ("-0.7453", "0.1127"), "0.01", 500, GALLERY_SIZE, ""), "smooth-classic"),
     // Width 10^-9: beyond the 32-bit tiers, computed in Q60 with 128-bit products.
     escape("deep-zoom", None, SPIRAL, "0.000000001", 4000, GALLERY_SIZE, "fire"),
     subdivision("sierpinski-carpet", Shape::Carpet, 4, GALLERY_SIZE),
