@@ -43,6 +43,20 @@ pub enum Command {
     Completions(clap_complete::Shell),
     /// `animate zoom|palette|growth|figure ...`
     Animate(AnimateArgs),
+    /// `explore ...`
+    Explore(ExploreArgs),
+}
+
+/// `explore`'s arguments.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExploreArgs {
+    /// An L-system file to page through, instead of the Mandelbrot set.
+    pub file: Option<PathBuf>,
+    pub julia: Option<(String, String)>,
+    pub centre: (String, String),
+    pub width: String,
+    pub max_iterations: u32,
+    pub size: (u32, u32),
 }
 
 /// `animate`'s arguments.
@@ -239,11 +253,43 @@ enum Commands {
     },
     /// Write an animation: numbered PNG frames, an animated GIF or an APNG
     Animate(AnimateOptions),
+    /// Explore in a window (needs the `window` feature): click to zoom in (right: out),
+    /// wheel, drag or arrows to pan, +/- iterations (or order), p palette, c colour
+    /// cycling, j Julia set of the point under the mouse, s save, r reset, PageUp/PageDown
+    /// the systems of an L-system file
+    Explore(ExploreOptions),
     /// Print a shell completion script
     Completions {
         /// bash, zsh, fish, elvish or powershell
         shell: clap_complete::Shell,
     },
+}
+
+#[derive(Debug, Args)]
+struct ExploreOptions {
+    /// Page through the systems of this .l or .lsys file instead
+    #[arg(long, value_name = "PATH")]
+    file: Option<PathBuf>,
+    /// Start with the Julia set of k = RE,IM
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = parse_pair)]
+    c: Option<(String, String)>,
+    /// Centre of the first view, RE,IM
+    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", default_value = "-0.75,0", allow_hyphen_values = true, value_parser = parse_pair)]
+    centre: (String, String),
+    /// Width of the first view
+    #[arg(
+        long,
+        value_name = "W",
+        default_value = "3.5",
+        allow_hyphen_values = true
+    )]
+    width: String,
+    /// Iteration cap of the first view
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256)]
+    max_iterations: u32,
+    /// Picture size in pixels, WxH (a status line goes below it)
+    #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = parse_size)]
+    size: (u32, u32),
 }
 
 #[derive(Debug, Args)]
@@ -641,6 +687,14 @@ where
         }),
         Some(Commands::Completions { shell }) => Command::Completions(shell),
         Some(Commands::Animate(options)) => Command::Animate(animation(*options.kind)?),
+        Some(Commands::Explore(options)) => Command::Explore(ExploreArgs {
+            file: options.file,
+            julia: options.c,
+            centre: options.centre,
+            width: options.width,
+            max_iterations: options.max_iterations,
+            size: options.size,
+        }),
         Some(Commands::Render { scene }) => match *scene {
             Scene::Lsystem(options) => Command::RenderLSystem(lsystem(options)?),
             Scene::Mandelbrot(options) => Command::RenderEscape(escape(None, options)),

@@ -6,6 +6,7 @@ pub mod animate;
 pub mod args;
 pub mod environment;
 pub mod escape_scene;
+pub mod explore;
 pub mod figure_scene;
 pub mod gallery;
 pub mod ifs_scene;
@@ -48,6 +49,7 @@ pub fn run() -> ExitCode {
         }
         Command::List(path) => list(&path),
         Command::Animate(arguments) => animate::animate(&arguments),
+        Command::Explore(arguments) => explore_window(&arguments),
         Command::Derive(arguments) => derive(&arguments),
         Command::Gallery { out } => gallery::run(&out),
         Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
@@ -488,6 +490,135 @@ fn show(display: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
     )
     .show_static(display);
     Ok(())
+}
+
+/// The explorer a command starts.
+fn explorer(arguments: &args::ExploreArgs) -> Result<explore::Explorer, String> {
+    let size = embedded_graphics::geometry::Size::new(arguments.size.0, arguments.size.1);
+    if let Some(path) = &arguments.file {
+        let text = read_text(path)?;
+        let names: Vec<String> = if is_lsys(path) {
+            LsysFile::new(&text)
+                .entries()
+                .filter_map(|entry| entry.ok().map(|e| e.name().to_string()))
+                .collect()
+        } else {
+            LFile::new(&text)
+                .entries()
+                .filter_map(|entry| entry.ok().map(|e| e.name().to_string()))
+                .collect()
+        };
+        if names.is_empty() {
+            return Err(format!("{}: no systems to explore", path.display()));
+        }
+        return Ok(explore::Explorer::lsystems(
+            text,
+            names,
+            is_lsys(path),
+            size,
+        ));
+    }
+    let number = |option: &str, text: &str| {
+        tinyfractal::Coord::parse(text)
+            .map(tinyfractal::Coord::to_f64)
+            .ok_or_else(|| format!("{option}: `{text}` is not a number between -8 and 8"))
+    };
+    let julia = match &arguments.julia {
+        Some((re, im)) => Some((
+            tinyfractal::Coord::parse(re).ok_or_else(|| format!("--c: `{re}` is not a number"))?,
+            tinyfractal::Coord::parse(im).ok_or_else(|| format!("--c: `{im}` is not a number"))?,
+        )),
+        None => None,
+    };
+    let start = explore::EscapeState {
+        julia,
+        centre: (
+            number("--center", &arguments.centre.0)?,
+            number("--center", &arguments.centre.1)?,
+        ),
+        width: number("--width", &arguments.width)?,
+        max_iterations: arguments.max_iterations,
+        ..explore::EscapeState::default()
+    };
+    Ok(explore::Explorer::escape(start, size))
+}
+
+#[cfg(feature = "window")]
+fn explore_window(arguments: &args::ExploreArgs) -> Result<(), String> {
+    use embedded_graphics_simulator::sdl2::{Keycode, MouseButton};
+    use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorEvent, Window};
+    use explore::Input;
+    let mut explorer = explorer(arguments)?;
+    let size = explorer.picture_size();
+    let mut display = SimulatorDisplay::<Rgb888>::new(embedded_graphics::geometry::Size::new(
+        size.width,
+        size.height + explore::STATUS_HEIGHT,
+    ));
+    let mut window = Window::new("tinyfractal explore", &OutputSettingsBuilder::new().build());
+    let (mut mouse, mut pressed) = (embedded_graphics::prelude::Point::zero(), None);
+    loop {
+        explorer.tick(&mut display, explore::TICK_BUDGET);
+        window.update(&display);
+        let events: Vec<SimulatorEvent> = window.events().collect();
+        for event in events {
+            let input = match event {
+                SimulatorEvent::Quit => return Ok(()),
+                SimulatorEvent::MouseMove { point } => {
+                    mouse = point;
+                    None
+                }
+                SimulatorEvent::MouseButtonDown { point, .. } => {
+                    pressed = Some(point);
+                    None
+                }
+                SimulatorEvent::MouseButtonUp { mouse_btn, point } => {
+                    let from = pressed.take().unwrap_or(point);
+                    let moved = point - from;
+                    if moved.x.abs() + moved.y.abs() > 3 {
+                        Some(Input::Pan(moved.x, moved.y))
+                    } else if mouse_btn == MouseButton::Right {
+                        Some(Input::ZoomOut(point))
+                    } else {
+                        Some(Input::ZoomIn(point))
+                    }
+                }
+                SimulatorEvent::MouseWheel { scroll_delta, .. } => {
+                    Some(Input::Wheel(mouse, scroll_delta.y))
+                }
+                SimulatorEvent::KeyDown { keycode, .. } => {
+                    let step = (size.width / 10) as i32;
+                    match keycode {
+                        Keycode::Left => Some(Input::Pan(step, 0)),
+                        Keycode::Right => Some(Input::Pan(-step, 0)),
+                        Keycode::Up => Some(Input::Pan(0, step)),
+                        Keycode::Down => Some(Input::Pan(0, -step)),
+                        Keycode::Plus | Keycode::Equals | Keycode::KpPlus => Some(Input::More),
+                        Keycode::Minus | Keycode::KpMinus => Some(Input::Fewer),
+                        Keycode::P => Some(Input::NextPalette),
+                        Keycode::C => Some(Input::ToggleCycling),
+                        Keycode::J => Some(Input::JuliaAt(mouse)),
+                        Keycode::S => Some(Input::Save),
+                        Keycode::R => Some(Input::Reset),
+                        Keycode::PageDown => Some(Input::NextSystem),
+                        Keycode::PageUp => Some(Input::PreviousSystem),
+                        Keycode::Escape | Keycode::Q => return Ok(()),
+                        _ => None,
+                    }
+                }
+                _ => None,
+            };
+            if let Some(input) = input {
+                explorer.input(input, &mut display);
+            }
+        }
+    }
+}
+
+#[cfg(not(feature = "window"))]
+fn explore_window(arguments: &args::ExploreArgs) -> Result<(), String> {
+    // The arguments are still checked, so a mistake is reported as such.
+    explorer(arguments)?;
+    window_available(true)
 }
 
 #[cfg(not(feature = "window"))]

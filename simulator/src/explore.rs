@@ -1,0 +1,460 @@
+//! `explore`: an explorer of escape-time views and L-system files, as Fractint and XaoS
+//! users know it. The state and its inputs live here, apart from SDL, so that they are
+//! tested headless: an [`Input`] changes the view and cancels the stale render, and
+//! [`Explorer::tick`] renders progressively (a coarse preview first, then the budgeted
+//! `Render::step`), so the window stays responsive while a deep view computes. The
+//! `window` feature's loop only maps SDL events to inputs and shows the display.
+
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use embedded_graphics::mono_font::{ascii::FONT_6X10, MonoTextStyle};
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
+use embedded_graphics::text::{Baseline, Text};
+use embedded_graphics_simulator::SimulatorDisplay;
+use tinyfractal::{Algorithm, Coord, DwellBuffer, DwellSink, Painter, Render, View};
+
+use crate::escape_scene::{self, HostPalette};
+
+/// The palettes `p` steps through.
+pub const PALETTES: [&str; 6] = [
+    "classic",
+    "fire",
+    "gray",
+    "smooth-classic",
+    "smooth-fire",
+    "bands",
+];
+
+/// Height of the status line at the bottom, in pixels.
+pub const STATUS_HEIGHT: u32 = 12;
+
+/// Iterations a tick computes at most before the window is updated.
+pub const TICK_BUDGET: u64 = 2_000_000;
+
+/// What the user did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Input {
+    /// Zoom in twice, centred on a pixel (left click).
+    ZoomIn(Point),
+    /// Zoom out twice, centred on a pixel (right click).
+    ZoomOut(Point),
+    /// The wheel: up (positive) zooms in by 1.25 a notch about the pixel, down zooms out.
+    Wheel(Point, i32),
+    /// Move the view by pixels (drag, or arrow keys: a tenth of the picture).
+    Pan(i32, i32),
+    /// `+` / `-`: double or halve the iteration cap (escape time), or the order ± 1.
+    More,
+    Fewer,
+    /// `p`: the next palette.
+    NextPalette,
+    /// `c`: colour cycling on or off.
+    ToggleCycling,
+    /// `j`: the Julia set of the point under the mouse (or back to the Mandelbrot set).
+    JuliaAt(Point),
+    /// `s`: save the picture as a PNG.
+    Save,
+    /// `r`: back to the start.
+    Reset,
+    /// Page down / page up: the next or previous system of an L-system file.
+    NextSystem,
+    PreviousSystem,
+}
+
+/// An escape-time view being explored.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EscapeState {
+    pub julia: Option<(Coord, Coord)>,
+    pub centre: (f64, f64),
+    pub width: f64,
+    pub max_iterations: u32,
+    pub palette: usize,
+    pub cycling: bool,
+    pub offset: u16,
+}
+
+impl Default for EscapeState {
+    fn default() -> Self {
+        Self {
+            julia: None,
+            centre: (-0.75, 0.0),
+            width: 3.5,
+            max_iterations: 256,
+            palette: 0,
+            cycling: false,
+            offset: 0,
+        }
+    }
+}
+
+/// What is explored.
+pub enum Subject {
+    Escape(EscapeState),
+    /// An L-system file's systems (text, names), the one shown and its order.
+    LSystems {
+        text: String,
+        /// An `.lsys` file (else Fractint's `.l`).
+        lsys: bool,
+        names: Vec<String>,
+        index: usize,
+        order: u32,
+    },
+}
+
+/// The explorer: what is shown, the render under way, and the status line's facts.
+pub struct Explorer {
+    pub subject: Subject,
+    start: EscapeState,
+    size: Size,
+    render: Option<(Render, View, HostPalette)>,
+    /// The values computed so far (colour cycling repaints from them).
+    values: Vec<u16>,
+    started: Instant,
+    pub elapsed: Duration,
+    /// Where `s` saves, numbered.
+    saves: u32,
+    pub message: String,
+}
+
+impl Explorer {
+    /// An explorer of escape-time views, its picture `size` (the status line below it).
+    pub fn escape(start: EscapeState, size: Size) -> Self {
+        Self::new(Subject::Escape(start.clone()), start, size)
+    }
+
+    /// An explorer of the systems in an L-system file.
+    pub fn lsystems(text: String, names: Vec<String>, lsys: bool, size: Size) -> Self {
+        let subject = Subject::LSystems {
+            text,
+            lsys,
+            names,
+            index: 0,
+            order: 3,
+        };
+        Self::new(subject, EscapeState::default(), size)
+    }
+
+    fn new(subject: Subject, start: EscapeState, size: Size) -> Self {
+        let mut explorer = Self {
+            subject,
+            start,
+            size,
+            render: None,
+            values: vec![0; size.width as usize * size.height as usize],
+            started: Instant::now(),
+            elapsed: Duration::ZERO,
+            saves: 0,
+            message: String::new(),
+        };
+        explorer.restart();
+        explorer
+    }
+
+    /// The picture's size (the window is `STATUS_HEIGHT` taller).
+    pub fn picture_size(&self) -> Size {
+        self.size
+    }
+
+    /// The complex point at pixel `p` of an escape-time view.
+    fn point_at(state: &EscapeState, size: Size, p: Point) -> (f64, f64) {
+        let spacing = state.width / f64::from(size.width);
+        (
+            state.centre.0 + (f64::from(p.x) + 0.5 - f64::from(size.width) / 2.0) * spacing,
+            state.centre.1 - (f64::from(p.y) + 0.5 - f64::from(size.height) / 2.0) * spacing,
+        )
+    }
+
+    /// Applies an input; a change of view cancels the render under way and starts anew.
+    pub fn input(&mut self, input: Input, display: &mut SimulatorDisplay<Rgb888>) {
+        let size = self.size;
+        let mut redraw = true;
+        match (&mut self.subject, input) {
+            (_, Input::Save) => {
+                self.save(display);
+                redraw = false;
+            }
+            (Subject::Escape(state), input) => {
+                let zoom_about = |state: &mut EscapeState, p: Point, factor: f64| {
+                    let point = Self::point_at(state, size, p);
+                    // The point under the mouse stays where it is.
+                    state.centre = (
+                        point.0 + (state.centre.0 - point.0) / factor,
+                        point.1 + (state.centre.1 - point.1) / factor,
+                    );
+                    state.width /= factor;
+                };
+                match input {
+                    Input::ZoomIn(p) => zoom_about(state, p, 2.0),
+                    Input::ZoomOut(p) => zoom_about(state, p, 0.5),
+                    Input::Wheel(p, notches) => zoom_about(state, p, 1.25f64.powi(notches)),
+                    Input::Pan(dx, dy) => {
+                        let spacing = state.width / f64::from(size.width);
+                        state.centre.0 -= f64::from(dx) * spacing;
+                        state.centre.1 += f64::from(dy) * spacing;
+                    }
+                    Input::More => state.max_iterations = (state.max_iterations * 2).min(4095),
+                    Input::Fewer => state.max_iterations = (state.max_iterations / 2).max(16),
+                    Input::NextPalette => state.palette = (state.palette + 1) % PALETTES.len(),
+                    Input::ToggleCycling => {
+                        state.cycling = !state.cycling;
+                        redraw = false;
+                    }
+                    Input::JuliaAt(p) => match state.julia {
+                        Some(_) => {
+                            state.julia = None;
+                            (state.centre, state.width) = (self.start.centre, self.start.width);
+                        }
+                        None => {
+                            let (re, im) = Self::point_at(state, size, p);
+                            state.julia = Coord::from_f64(re).zip(Coord::from_f64(im));
+                            (state.centre, state.width) = ((0.0, 0.0), 3.2);
+                        }
+                    },
+                    Input::Reset => *state = self.start.clone(),
+                    Input::NextSystem | Input::PreviousSystem | Input::Save => redraw = false,
+                }
+            }
+            (
+                Subject::LSystems {
+                    names,
+                    index,
+                    order,
+                    ..
+                },
+                input,
+            ) => match input {
+                Input::More => *order = (*order + 1).min(16),
+                Input::Fewer => *order = order.saturating_sub(1),
+                Input::NextSystem => *index = (*index + 1) % names.len().max(1),
+                Input::PreviousSystem => {
+                    *index = (*index + names.len().max(1) - 1) % names.len().max(1)
+                }
+                Input::Reset => *order = 3,
+                _ => redraw = false,
+            },
+        }
+        if redraw {
+            self.restart();
+        }
+    }
+
+    /// Starts the picture anew (a stale render is dropped).
+    fn restart(&mut self) {
+        self.render = None;
+        self.started = Instant::now();
+        self.elapsed = Duration::ZERO;
+        self.message.clear();
+        if let Subject::Escape(state) = &self.subject {
+            match self.view(state) {
+                Ok((view, palette)) => {
+                    let render = Render::new(view, Algorithm::Fast).with_preview(8);
+                    self.render = Some((render, view, palette));
+                }
+                Err(error) => self.message = error,
+            }
+        }
+    }
+
+    /// The view and palette of an escape-time state.
+    fn view(&self, state: &EscapeState) -> Result<(View, HostPalette), String> {
+        let text = |v: f64| format!("{v:e}");
+        let julia = state.julia.map(|(re, im)| (re.to_string(), im.to_string()));
+        let centre = (text(state.centre.0), text(state.centre.1));
+        let width = text(state.width);
+        let request = escape_scene::Request {
+            julia: julia.as_ref().map(|(re, im)| (re.as_str(), im.as_str())),
+            centre: (&centre.0, &centre.1),
+            width: &width,
+            size: self.size,
+            max_iterations: state.max_iterations,
+            algorithm: Algorithm::Fast,
+            tier: None,
+            palette: PALETTES[state.palette % PALETTES.len()],
+        };
+        escape_scene::view_at(&request, &width)
+    }
+
+    /// Whether the picture is complete.
+    pub fn is_complete(&self) -> bool {
+        match &self.render {
+            Some((render, _, _)) => render.progress().is_complete(),
+            None => true,
+        }
+    }
+
+    /// Works on the picture for at most `budget` iterations (escape time; an L-system is
+    /// drawn whole), and draws the status line.
+    pub fn tick(&mut self, display: &mut SimulatorDisplay<Rgb888>, budget: u64) {
+        let size = self.size;
+        let mut picture = display.cropped(&Rectangle::new(Point::zero(), size));
+        match &mut self.subject {
+            Subject::Escape(state) => {
+                if let Some((render, view, palette)) = &mut self.render {
+                    if state.cycling {
+                        state.offset = state.offset.wrapping_add(4);
+                    }
+                    let turned = palette.turned(state.offset);
+                    let palette = turned.as_ref().unwrap_or(palette);
+                    if !render.progress().is_complete() {
+                        let mut sink = Recording {
+                            painter: Painter::new(&mut picture, palette, view),
+                            values: DwellBuffer::new(&mut self.values, size.width),
+                        };
+                        let Ok(_) = render.step(&mut sink, budget);
+                        self.elapsed = self.started.elapsed();
+                    } else if state.cycling {
+                        // Cycling repaints the finished picture from its values.
+                        let painted = escape_scene::paint(view, &self.values, palette);
+                        let Ok(()) = picture.draw_iter(
+                            painted
+                                .bounding_box()
+                                .points()
+                                .map(|p| Pixel(p, painted.get_pixel(p))),
+                        );
+                    }
+                }
+            }
+            Subject::LSystems {
+                text,
+                lsys,
+                names,
+                index,
+                order,
+            } => {
+                if self.message.is_empty() && self.elapsed.is_zero() {
+                    let Ok(()) = picture.clear(Rgb888::BLACK);
+                    let name = names.get(*index).cloned().unwrap_or_default();
+                    let grammar = if *lsys {
+                        tinyfractal::LsysFile::new(text).find(&name)
+                    } else {
+                        tinyfractal::LFile::new(text).find(&name)
+                    };
+                    let drawn = grammar
+                        .map_err(|e| format!("{name}: {e}"))
+                        .and_then(|grammar| {
+                            crate::scene::render(&grammar, *order, size.width, size.height, None)
+                                .map_err(|e| e.to_string())
+                        });
+                    match drawn {
+                        Ok(rendered) => {
+                            let Ok(()) = picture.draw_iter(
+                                rendered
+                                    .display
+                                    .bounding_box()
+                                    .points()
+                                    .map(|p| Pixel(p, rendered.display.get_pixel(p))),
+                            );
+                        }
+                        Err(error) => self.message = error,
+                    }
+                    self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
+                }
+            }
+        }
+        self.draw_status(display);
+    }
+
+    /// The status line: scene, view, tier, time (or the last message).
+    pub fn status(&self) -> String {
+        if !self.message.is_empty() {
+            return self.message.clone();
+        }
+        let ms = self.elapsed.as_secs_f64() * 1e3;
+        match &self.subject {
+            Subject::Escape(state) => {
+                let name = if state.julia.is_some() {
+                    "julia"
+                } else {
+                    "mandelbrot"
+                };
+                let tier = self
+                    .render
+                    .as_ref()
+                    .map_or("-", |(_, view, _)| view.tier().name());
+                let done = if self.is_complete() { "" } else { " ..." };
+                format!(
+                    "{name} {:.6},{:.6} w={:.3e} it={} {tier} {}{done} {ms:.0}ms",
+                    state.centre.0,
+                    state.centre.1,
+                    state.width,
+                    state.max_iterations,
+                    PALETTES[state.palette % PALETTES.len()]
+                )
+            }
+            Subject::LSystems {
+                names,
+                index,
+                order,
+                ..
+            } => {
+                let name = names.get(*index).map_or("", String::as_str);
+                format!(
+                    "{name} order {order} ({}/{}) {ms:.0}ms",
+                    index + 1,
+                    names.len()
+                )
+            }
+        }
+    }
+
+    fn draw_status(&self, display: &mut SimulatorDisplay<Rgb888>) {
+        let area = Rectangle::new(
+            Point::new(0, self.size.height as i32),
+            Size::new(self.size.width, STATUS_HEIGHT),
+        );
+        let Ok(()) = area
+            .into_styled(PrimitiveStyle::with_fill(Rgb888::new(0x20, 0x20, 0x20)))
+            .draw(display);
+        let style = MonoTextStyle::new(&FONT_6X10, Rgb888::WHITE);
+        let Ok(_) = Text::with_baseline(
+            &self.status(),
+            area.top_left + Point::new(2, 1),
+            style,
+            Baseline::Top,
+        )
+        .draw(display);
+    }
+
+    /// Saves the picture (without the status line) as `explore-NNN.png`.
+    fn save(&mut self, display: &SimulatorDisplay<Rgb888>) {
+        let mut picture = SimulatorDisplay::new(self.size);
+        let Ok(()) = picture.draw_iter(
+            Rectangle::new(Point::zero(), self.size)
+                .points()
+                .map(|p| Pixel(p, display.get_pixel(p))),
+        );
+        let path = PathBuf::from(format!("explore-{:03}.png", self.saves));
+        self.saves += 1;
+        self.message = match crate::output::save_png(&picture, "explore", &path) {
+            Ok(()) => format!("saved {}", path.display()),
+            Err(error) => error,
+        };
+    }
+}
+
+/// Paints values and keeps them: the sink of the explorer's renders.
+struct Recording<'a, P> {
+    painter: P,
+    values: DwellBuffer<'a>,
+}
+
+impl<P: DwellSink<Error = core::convert::Infallible>> DwellSink for Recording<'_, P> {
+    type Error = core::convert::Infallible;
+
+    fn dwells<I: Iterator<Item = u16>>(
+        &mut self,
+        area: &Rectangle,
+        dwells: I,
+    ) -> Result<(), Self::Error> {
+        let values: Vec<u16> = dwells.collect();
+        self.values.dwells(area, values.iter().copied())?;
+        self.painter.dwells(area, values.into_iter())
+    }
+
+    fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error> {
+        self.values.uniform(area, dwell)?;
+        self.painter.uniform(area, dwell)
+    }
+}
