@@ -52,6 +52,8 @@ pub enum Command {
 pub struct ExploreArgs {
     /// An L-system file to page through, instead of the Mandelbrot set.
     pub file: Option<PathBuf>,
+    /// A gallery scene to start from, paging through the gallery.
+    pub scene: Option<String>,
     pub julia: Option<(String, String)>,
     pub centre: (String, String),
     pub width: String,
@@ -268,8 +270,12 @@ enum Commands {
 #[derive(Debug, Args)]
 struct ExploreOptions {
     /// Page through the systems of this .l or .lsys file instead
-    #[arg(long, value_name = "PATH")]
+    #[arg(long, value_name = "PATH", conflicts_with = "scene")]
     file: Option<PathBuf>,
+    /// Page through the gallery's scenes instead, starting at this one (+/- its order,
+    /// points, seed or iteration cap)
+    #[arg(long, value_name = "NAME")]
+    scene: Option<String>,
     /// Start with the Julia set of k = RE,IM
     #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = parse_pair)]
     c: Option<(String, String)>,
@@ -689,6 +695,7 @@ where
         Some(Commands::Animate(options)) => Command::Animate(animation(*options.kind)?),
         Some(Commands::Explore(options)) => Command::Explore(ExploreArgs {
             file: options.file,
+            scene: options.scene,
             julia: options.c,
             centre: options.centre,
             width: options.width,

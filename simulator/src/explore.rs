@@ -16,6 +16,8 @@ use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{Algorithm, Coord, DwellBuffer, DwellSink, Painter, Render, View};
 
+use tinyfractal_scenes::{Entry, Scene, GALLERY};
+
 use crate::escape_scene::{self, HostPalette};
 
 /// The palettes `p` steps through.
@@ -101,6 +103,95 @@ pub enum Subject {
         index: usize,
         order: u32,
     },
+    /// The gallery's scenes: the one shown (at the explorer's size), with its parameter
+    /// moved by `+`/`-`.
+    Gallery {
+        index: usize,
+        entry: Entry,
+    },
+}
+
+/// The gallery scene `index`, at `size`.
+fn gallery_entry(index: usize, size: Size) -> Entry {
+    let entry = GALLERY[index % GALLERY.len()];
+    Entry { size, ..entry }
+}
+
+/// `entry` with its own parameter one step up or down: an order, the points of a chaos
+/// game, a landscape's seed, an iteration cap.
+fn adjusted(entry: Entry, up: bool) -> Entry {
+    let step = |value: u32, low: u32, high: u32| {
+        if up {
+            (value + 1).min(high)
+        } else {
+            value.saturating_sub(1).max(low)
+        }
+    };
+    let scene = match entry.scene {
+        Scene::LSystem {
+            system,
+            order,
+            orientation,
+        } => Scene::LSystem {
+            system,
+            order: step(order, 0, 16),
+            orientation,
+        },
+        Scene::Subdivision { shape, order } => Scene::Subdivision {
+            shape,
+            order: step(order, 0, 7),
+        },
+        Scene::Ifs {
+            source,
+            system,
+            points,
+            seed,
+        } => Scene::Ifs {
+            source,
+            system,
+            points: if up {
+                (points * 2).min(10_000_000)
+            } else {
+                (points / 2).max(1_000)
+            },
+            seed,
+        },
+        Scene::Terrain {
+            mut displacement,
+            samples,
+            map,
+        } => {
+            displacement.seed = if up {
+                displacement.seed.wrapping_add(1)
+            } else {
+                displacement.seed.wrapping_sub(1)
+            };
+            Scene::Terrain {
+                displacement,
+                samples,
+                map,
+            }
+        }
+        Scene::Escape {
+            julia,
+            centre,
+            width,
+            max_iterations,
+            shading,
+        } => Scene::Escape {
+            julia,
+            centre,
+            width,
+            max_iterations: if up {
+                (max_iterations * 2).min(4095)
+            } else {
+                (max_iterations / 2).max(16)
+            },
+            shading,
+        },
+        walk @ Scene::Walk { .. } => walk,
+    };
+    Entry { scene, ..entry }
 }
 
 /// The explorer: what is shown, the render under way, and the status line's facts.
@@ -116,6 +207,8 @@ pub struct Explorer {
     /// Where `s` saves, numbered.
     saves: u32,
     pub message: String,
+    /// What a gallery scene's picture reports (its order, tier, ...).
+    detail: String,
 }
 
 impl Explorer {
@@ -136,6 +229,26 @@ impl Explorer {
         Self::new(subject, EscapeState::default(), size)
     }
 
+    /// An explorer of the gallery's scenes, starting at the one called `name`.
+    pub fn gallery(name: &str, size: Size) -> Result<Self, String> {
+        let index = GALLERY
+            .iter()
+            .position(|entry| entry.name == name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = GALLERY.iter().map(|entry| entry.name).collect();
+                format!(
+                    "--scene: `{name}` is not a gallery scene ({})",
+                    names.join(", ")
+                )
+            })?;
+        let entry = gallery_entry(index, size);
+        Ok(Self::new(
+            Subject::Gallery { index, entry },
+            EscapeState::default(),
+            size,
+        ))
+    }
+
     fn new(subject: Subject, start: EscapeState, size: Size) -> Self {
         let mut explorer = Self {
             subject,
@@ -147,6 +260,7 @@ impl Explorer {
             elapsed: Duration::ZERO,
             saves: 0,
             message: String::new(),
+            detail: String::new(),
         };
         explorer.restart();
         explorer
@@ -232,6 +346,20 @@ impl Explorer {
                     *index = (*index + names.len().max(1) - 1) % names.len().max(1)
                 }
                 Input::Reset => *order = 3,
+                _ => redraw = false,
+            },
+            (Subject::Gallery { index, entry }, input) => match input {
+                Input::More => *entry = adjusted(*entry, true),
+                Input::Fewer => *entry = adjusted(*entry, false),
+                Input::NextSystem | Input::PreviousSystem | Input::Reset => {
+                    let count = GALLERY.len();
+                    *index = match input {
+                        Input::NextSystem => (*index + 1) % count,
+                        Input::PreviousSystem => (*index + count - 1) % count,
+                        _ => *index,
+                    };
+                    *entry = gallery_entry(*index, size);
+                }
                 _ => redraw = false,
             },
         }
@@ -352,6 +480,23 @@ impl Explorer {
                     self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
                 }
             }
+            Subject::Gallery { entry, .. } => {
+                if self.message.is_empty() && self.elapsed.is_zero() {
+                    match crate::gallery::picture(entry) {
+                        Ok((drawn, detail, _, _)) => {
+                            let Ok(()) = picture.draw_iter(
+                                drawn
+                                    .bounding_box()
+                                    .points()
+                                    .map(|p| Pixel(p, drawn.get_pixel(p))),
+                            );
+                            self.detail = detail;
+                        }
+                        Err(error) => self.message = error,
+                    }
+                    self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
+                }
+            }
         }
         self.draw_status(display);
     }
@@ -396,6 +541,7 @@ impl Explorer {
                     names.len()
                 )
             }
+            Subject::Gallery { entry, .. } => format!("{} {} {ms:.0}ms", entry.name, self.detail),
         }
     }
 

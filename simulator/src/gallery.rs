@@ -2,8 +2,9 @@
 //! each took.
 
 use std::path::Path;
+use std::time::Duration;
 
-use tinyfractal_scenes::{Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY};
+use tinyfractal_scenes::{Entry, Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY};
 
 fn row(scene: &str, detail: &str, work: &str, elapsed: std::time::Duration, file: &Path) {
     println!(
@@ -56,88 +57,10 @@ pub fn run(out: &Path) -> Result<(), String> {
         };
     for entry in &GALLERY {
         let path = out.join(format!("{}.png", entry.name));
-        let size = entry.size;
-        let result = match entry.scene {
-            Scene::LSystem {
-                system,
-                order,
-                orientation,
-            } => system
-                .grammar()
-                .and_then(|grammar| {
-                    crate::scene::render_oriented(
-                        &grammar,
-                        order,
-                        size.width,
-                        size.height,
-                        orientation,
-                    )
-                })
-                .map_err(|e| e.to_string())
-                .and_then(|rendered| {
-                    save(&rendered.display, &path)?;
-                    Ok((
-                        format!("order {order}"),
-                        format!("{} segments", rendered.stats.segments),
-                        rendered.elapsed,
-                    ))
-                }),
-            Scene::Ifs {
-                source,
-                system,
-                points,
-                ..
-            } => crate::ifs_scene::render_entry(source, system, points, size).and_then(
-                |(display, plotted, elapsed)| {
-                    save(&display, &path)?;
-                    Ok((
-                        "chaos game".to_string(),
-                        format!("{plotted} points"),
-                        elapsed,
-                    ))
-                },
-            ),
-            Scene::Subdivision { .. } | Scene::Terrain { .. } | Scene::Walk { .. } => {
-                crate::shape_scene::render_entry(&entry.scene, size).and_then(
-                    |(display, detail, work, elapsed)| {
-                        save(&display, &path)?;
-                        Ok((detail, work, elapsed))
-                    },
-                )
-            }
-            Scene::Escape {
-                julia,
-                centre,
-                width,
-                max_iterations,
-                shading,
-            } => {
-                let request = crate::escape_scene::Request {
-                    julia,
-                    centre,
-                    width,
-                    size,
-                    max_iterations,
-                    algorithm: tinyfractal::Algorithm::Fast,
-                    tier: None,
-                    palette: entry.palette,
-                };
-                crate::escape_scene::render(&request).and_then(|rendered| {
-                    if rendered.view.shading() != shading {
-                        return Err(format!(
-                            "the catalogue paints a {shading:?} view with `{}`",
-                            entry.palette
-                        ));
-                    }
-                    save(&rendered.display, &path)?;
-                    Ok((
-                        format!("{} tier", rendered.stats.tier.name()),
-                        format!("{} iterations", rendered.stats.iterations),
-                        rendered.elapsed,
-                    ))
-                })
-            }
-        };
+        let result = picture(entry).and_then(|(display, detail, work, elapsed)| {
+            save(&display, &path)?;
+            Ok((detail, work, elapsed))
+        });
         report(entry.name, result, &path);
     }
     for entry in &GENERAL_GALLERY {
@@ -193,3 +116,83 @@ fn save(
 ) -> Result<(), String> {
     crate::output::save_png(display, "gallery --out", path)
 }
+
+/// A catalogue entry's picture at its size, with what the gallery reports: a detail (order,
+/// tier, ...), the work done, and the time it took.
+pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), String> {
+    let size = entry.size;
+    match entry.scene {
+        Scene::LSystem {
+            system,
+            order,
+            orientation,
+        } => system
+            .grammar()
+            .and_then(|grammar| {
+                crate::scene::render_oriented(&grammar, order, size.width, size.height, orientation)
+            })
+            .map_err(|e| e.to_string())
+            .map(|rendered| {
+                (
+                    rendered.display,
+                    format!("order {order}"),
+                    format!("{} segments", rendered.stats.segments),
+                    rendered.elapsed,
+                )
+            }),
+        Scene::Ifs {
+            source,
+            system,
+            points,
+            ..
+        } => crate::ifs_scene::render_entry(source, system, points, size).map(
+            |(display, plotted, elapsed)| {
+                (
+                    display,
+                    "chaos game".to_string(),
+                    format!("{plotted} points"),
+                    elapsed,
+                )
+            },
+        ),
+        Scene::Subdivision { .. } | Scene::Terrain { .. } | Scene::Walk { .. } => {
+            crate::shape_scene::render_entry(&entry.scene, size)
+        }
+        Scene::Escape {
+            julia,
+            centre,
+            width,
+            max_iterations,
+            shading,
+        } => {
+            let request = crate::escape_scene::Request {
+                julia,
+                centre,
+                width,
+                size,
+                max_iterations,
+                algorithm: tinyfractal::Algorithm::Fast,
+                tier: None,
+                palette: entry.palette,
+            };
+            crate::escape_scene::render(&request).and_then(|rendered| {
+                if rendered.view.shading() != shading {
+                    return Err(format!(
+                        "the catalogue paints a {shading:?} view with `{}`",
+                        entry.palette
+                    ));
+                }
+                Ok((
+                    rendered.display,
+                    format!("{} tier", rendered.stats.tier.name()),
+                    format!("{} iterations", rendered.stats.iterations),
+                    rendered.elapsed,
+                ))
+            })
+        }
+    }
+}
+
+/// A rendered picture.
+pub type Picture =
+    embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>;

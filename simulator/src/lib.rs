@@ -495,6 +495,9 @@ fn show(display: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
 /// The explorer a command starts.
 fn explorer(arguments: &args::ExploreArgs) -> Result<explore::Explorer, String> {
     let size = embedded_graphics::geometry::Size::new(arguments.size.0, arguments.size.1);
+    if let Some(name) = &arguments.scene {
+        return explore::Explorer::gallery(name, size);
+    }
     if let Some(path) = &arguments.file {
         let text = read_text(path)?;
         let names: Vec<String> = if is_lsys(path) {

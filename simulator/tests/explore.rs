@@ -19,7 +19,7 @@ fn window() -> SimulatorDisplay<Rgb888> {
 fn state(explorer: &Explorer) -> EscapeState {
     match &explorer.subject {
         Subject::Escape(state) => state.clone(),
-        Subject::LSystems { .. } => panic!("not an escape-time view"),
+        Subject::LSystems { .. } | Subject::Gallery { .. } => panic!("not an escape-time view"),
     }
 }
 
@@ -203,4 +203,73 @@ fn lsystem_files_page_through_their_systems() {
     explorer.input(Input::PreviousSystem, &mut display);
     explorer.tick(&mut display, 1);
     assert_picture(&display, &expected(names.last().unwrap(), 4));
+}
+
+#[test]
+fn gallery_scenes_page_and_move_their_own_parameter() {
+    use tinyfractal_scenes::{Entry, Scene, GALLERY};
+    let mut display = window();
+    let first = GALLERY[0];
+    let mut explorer = Explorer::gallery(first.name, SIZE).unwrap();
+    explorer.tick(&mut display, 1);
+    let at_size = |entry: Entry| Entry {
+        size: SIZE,
+        ..entry
+    };
+    let expected = |entry: Entry| {
+        tinyfractal_simulator::gallery::picture(&at_size(entry))
+            .unwrap()
+            .0
+    };
+    assert_picture(&display, &expected(first));
+    assert!(
+        explorer.status().starts_with(first.name),
+        "{}",
+        explorer.status()
+    );
+    // `+` raises the L-system's order by one.
+    explorer.input(Input::More, &mut display);
+    explorer.tick(&mut display, 1);
+    let Scene::LSystem {
+        system,
+        order,
+        orientation,
+    } = first.scene
+    else {
+        panic!("the gallery starts with an L-system");
+    };
+    let higher = Entry {
+        scene: Scene::LSystem {
+            system,
+            order: order + 1,
+            orientation,
+        },
+        ..first
+    };
+    assert_picture(&display, &expected(higher));
+    // Page down to the carpet; `-` lowers its order.
+    let carpet = GALLERY
+        .iter()
+        .position(|e| e.name == "sierpinski-carpet")
+        .unwrap();
+    for _ in 0..carpet {
+        explorer.input(Input::NextSystem, &mut display);
+    }
+    explorer.input(Input::Fewer, &mut display);
+    explorer.tick(&mut display, 1);
+    let Scene::Subdivision { shape, order } = GALLERY[carpet].scene else {
+        panic!("the carpet is a subdivision");
+    };
+    let lower = Entry {
+        scene: Scene::Subdivision {
+            shape,
+            order: order - 1,
+        },
+        ..GALLERY[carpet]
+    };
+    assert_picture(&display, &expected(lower));
+    assert!(Explorer::gallery("no-such-scene", SIZE)
+        .err()
+        .unwrap()
+        .contains("sierpinski-carpet"));
 }
