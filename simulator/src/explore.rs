@@ -206,6 +206,8 @@ pub struct Explorer {
     pub elapsed: Duration,
     /// Where `s` saves, numbered.
     saves: u32,
+    /// `s` was pressed: save once the picture is complete.
+    save_pending: bool,
     pub message: String,
     /// What a gallery scene's picture reports (its order, tier, ...).
     detail: String,
@@ -259,6 +261,7 @@ impl Explorer {
             started: Instant::now(),
             elapsed: Duration::ZERO,
             saves: 0,
+            save_pending: false,
             message: String::new(),
             detail: String::new(),
         };
@@ -281,12 +284,13 @@ impl Explorer {
     }
 
     /// Applies an input; a change of view cancels the render under way and starts anew.
-    pub fn input(&mut self, input: Input, display: &mut SimulatorDisplay<Rgb888>) {
+    pub fn input(&mut self, input: Input) {
         let size = self.size;
         let mut redraw = true;
         match (&mut self.subject, input) {
             (_, Input::Save) => {
-                self.save(display);
+                // The finished picture is saved, not a preview of it.
+                self.save_pending = true;
                 redraw = false;
             }
             (Subject::Escape(state), input) => {
@@ -497,6 +501,10 @@ impl Explorer {
                     self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
                 }
             }
+        }
+        if self.save_pending && self.is_complete() {
+            self.save_pending = false;
+            self.save(display);
         }
         self.draw_status(display);
     }

@@ -611,7 +611,7 @@ fn explore_window(arguments: &args::ExploreArgs) -> Result<(), String> {
                 _ => None,
             };
             if let Some(input) = input {
-                explorer.input(input, &mut display);
+                explorer.input(input);
             }
         }
     }

@@ -82,7 +82,7 @@ fn clicks_zoom_about_the_mouse_and_the_picture_is_the_headless_render() {
     );
     // A click zooms in twice about the point under the mouse, which stays put.
     let click = Point::new(16, 12);
-    explorer.input(Input::ZoomIn(click), &mut display);
+    explorer.input(Input::ZoomIn(click));
     let zoomed = state(&explorer);
     assert_eq!(zoomed.width, 1.75);
     let spacing = 3.5 / 64.0;
@@ -94,9 +94,9 @@ fn clicks_zoom_about_the_mouse_and_the_picture_is_the_headless_render() {
     assert!((before.0 - after.0).abs() < 1e-12 && (before.1 - after.1).abs() < 1e-12);
     finish(&mut explorer, &mut display, 1 << 40);
     assert_picture(&display, &headless(&zoomed));
-    explorer.input(Input::ZoomOut(click), &mut display);
+    explorer.input(Input::ZoomOut(click));
     assert_eq!(state(&explorer).width, 3.5);
-    explorer.input(Input::Wheel(click, 2), &mut display);
+    explorer.input(Input::Wheel(click, 2));
     assert!((state(&explorer).width - 3.5 / 1.5625).abs() < 1e-12);
 }
 
@@ -121,7 +121,7 @@ fn an_input_cancels_the_stale_render() {
         "{}",
         explorer.status()
     );
-    explorer.input(Input::Pan(8, 0), &mut display);
+    explorer.input(Input::Pan(8, 0));
     let moved = state(&explorer);
     assert!((moved.centre.0 - (-0.743_643_887 - 8.0 * 1e-6 / 64.0)).abs() < 1e-15);
     let ticks = finish(&mut explorer, &mut display, 100_000);
@@ -133,15 +133,15 @@ fn an_input_cancels_the_stale_render() {
 fn keys_change_iterations_palette_julia_and_reset() {
     let mut display = window();
     let mut explorer = Explorer::escape(EscapeState::default(), SIZE);
-    explorer.input(Input::More, &mut display);
+    explorer.input(Input::More);
     assert_eq!(state(&explorer).max_iterations, 512);
-    explorer.input(Input::Fewer, &mut display);
-    explorer.input(Input::Fewer, &mut display);
+    explorer.input(Input::Fewer);
+    explorer.input(Input::Fewer);
     assert_eq!(state(&explorer).max_iterations, 128);
-    explorer.input(Input::NextPalette, &mut display);
+    explorer.input(Input::NextPalette);
     assert_eq!(PALETTES[state(&explorer).palette], "fire");
     // j: the Julia set of the point under the mouse, framed at the origin.
-    explorer.input(Input::JuliaAt(Point::new(32, 24)), &mut display);
+    explorer.input(Input::JuliaAt(Point::new(32, 24)));
     let julia = state(&explorer);
     let k = julia.julia.expect("a Julia set");
     assert!((k.0.to_f64() - (-0.75 + 0.5 * 3.5 / 64.0)).abs() < 1e-9);
@@ -153,14 +153,14 @@ fn keys_change_iterations_palette_julia_and_reset() {
         "{}",
         explorer.status()
     );
-    explorer.input(Input::JuliaAt(Point::zero()), &mut display);
+    explorer.input(Input::JuliaAt(Point::zero()));
     assert_eq!(state(&explorer).julia, None);
-    explorer.input(Input::Reset, &mut display);
+    explorer.input(Input::Reset);
     assert_eq!(state(&explorer), EscapeState::default());
     // Colour cycling turns the finished picture's colours without recomputing it.
     finish(&mut explorer, &mut display, 1 << 40);
     let still = headless(&state(&explorer));
-    explorer.input(Input::ToggleCycling, &mut display);
+    explorer.input(Input::ToggleCycling);
     explorer.tick(&mut display, 1 << 40);
     let changed = Rectangle::new(Point::zero(), SIZE)
         .points()
@@ -188,8 +188,8 @@ fn lsystem_files_page_through_their_systems() {
             .display
     };
     assert_picture(&display, &expected(&names[0], 3));
-    explorer.input(Input::NextSystem, &mut display);
-    explorer.input(Input::More, &mut display);
+    explorer.input(Input::NextSystem);
+    explorer.input(Input::More);
     explorer.tick(&mut display, 1);
     assert_picture(&display, &expected(&names[1], 4));
     assert!(
@@ -199,8 +199,8 @@ fn lsystem_files_page_through_their_systems() {
         "{}",
         explorer.status()
     );
-    explorer.input(Input::PreviousSystem, &mut display);
-    explorer.input(Input::PreviousSystem, &mut display);
+    explorer.input(Input::PreviousSystem);
+    explorer.input(Input::PreviousSystem);
     explorer.tick(&mut display, 1);
     assert_picture(&display, &expected(names.last().unwrap(), 4));
 }
@@ -228,7 +228,7 @@ fn gallery_scenes_page_and_move_their_own_parameter() {
         explorer.status()
     );
     // `+` raises the L-system's order by one.
-    explorer.input(Input::More, &mut display);
+    explorer.input(Input::More);
     explorer.tick(&mut display, 1);
     let Scene::LSystem {
         system,
@@ -253,9 +253,9 @@ fn gallery_scenes_page_and_move_their_own_parameter() {
         .position(|e| e.name == "sierpinski-carpet")
         .unwrap();
     for _ in 0..carpet {
-        explorer.input(Input::NextSystem, &mut display);
+        explorer.input(Input::NextSystem);
     }
-    explorer.input(Input::Fewer, &mut display);
+    explorer.input(Input::Fewer);
     explorer.tick(&mut display, 1);
     let Scene::Subdivision { shape, order } = GALLERY[carpet].scene else {
         panic!("the carpet is a subdivision");

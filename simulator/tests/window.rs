@@ -87,16 +87,21 @@ fn a_click_in_the_window_zooms_and_the_saved_picture_is_the_headless_render() {
     );
     let mut window = String::new();
     wait_for("the window", || {
-        window = xdotool(&display, &["search", "--name", "tinyfractal explore"]);
+        window = xdotool(
+            &display,
+            &["search", "--onlyvisible", "--name", "tinyfractal explore"],
+        );
         !window.trim().is_empty()
     });
     let window = window.lines().next().unwrap().trim().to_string();
+    // Let the window come up and draw its first picture before it is clicked.
+    std::thread::sleep(Duration::from_millis(2000));
     xdotool(
         &display,
         &["mousemove", "--window", &window, "16", "12", "click", "1"],
     );
-    // The 64x48 view renders in well under a second; then `s` saves what is shown.
-    std::thread::sleep(Duration::from_millis(1500));
+    std::thread::sleep(Duration::from_millis(500));
+    // `s` saves the picture once it is complete.
     xdotool(&display, &["key", "--window", &window, "s"]);
     let saved = dir.join("explore-000.png");
     wait_for("the saved picture", || saved.exists());
