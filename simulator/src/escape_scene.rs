@@ -94,10 +94,19 @@ pub fn render(request: &Request<'_>) -> Result<Rendered, String> {
 /// `values` (of `view`, row by row) through `palette`.
 pub fn paint(view: &View, values: &[u16], palette: &HostPalette) -> SimulatorDisplay<Rgb888> {
     let mut display = SimulatorDisplay::new(view.size());
+    paint_into(&mut display, view, values, palette);
+    display
+}
+
+/// `values` (of `view`, row by row) through `palette` into `target`'s top-left corner.
+pub fn paint_into<D>(target: &mut D, view: &View, values: &[u16], palette: &HostPalette)
+where
+    D: DrawTarget<Color = Rgb888, Error = core::convert::Infallible>,
+{
     let inside = view.inside_value();
     let colours = values.iter().map(|&value| palette.color(value, inside));
-    let Ok(()) = display.fill_contiguous(&display.bounding_box(), colours);
-    display
+    let area = embedded_graphics::primitives::Rectangle::new(Point::zero(), view.size());
+    let Ok(()) = target.fill_contiguous(&area, colours);
 }
 
 fn pixel_count(size: Size) -> Result<usize, String> {

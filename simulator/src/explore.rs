@@ -14,7 +14,9 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::SimulatorDisplay;
-use tinyfractal::{Algorithm, Coord, DwellBuffer, DwellSink, Painter, Render, View};
+use tinyfractal::{
+    Algorithm, Coord, DwellBuffer, DwellSink, Painter, Render, View, MAX_SMOOTH_ITERATIONS,
+};
 
 use tinyfractal_scenes::{Entry, Scene, GALLERY};
 
@@ -111,6 +113,38 @@ pub enum Subject {
     },
 }
 
+/// Highest order `+` reaches.
+const MAX_ORDER: u32 = 16;
+
+/// `value` one up (at most `high`) or one down (at least `low`).
+fn stepped(value: u32, up: bool, low: u32, high: u32) -> u32 {
+    if up {
+        value.saturating_add(1).min(high)
+    } else {
+        value.saturating_sub(1).max(low)
+    }
+}
+
+/// An iteration cap doubled or halved, within 16 and the smooth palettes' cap (so every
+/// palette can show it).
+fn stepped_cap(cap: u32, up: bool) -> u32 {
+    if up {
+        cap.saturating_mul(2).min(MAX_SMOOTH_ITERATIONS)
+    } else {
+        (cap / 2).max(16)
+    }
+}
+
+/// The index after `index` (`next`) or before it, of `count`, wrapping round.
+fn paged(index: usize, count: usize, next: bool) -> usize {
+    let count = count.max(1);
+    if next {
+        (index + 1) % count
+    } else {
+        (index + count - 1) % count
+    }
+}
+
 /// The gallery scene `index`, at `size`.
 fn gallery_entry(index: usize, size: Size) -> Entry {
     let entry = GALLERY[index % GALLERY.len()];
@@ -120,13 +154,6 @@ fn gallery_entry(index: usize, size: Size) -> Entry {
 /// `entry` with its own parameter one step up or down: an order, the points of a chaos
 /// game, a landscape's seed, an iteration cap.
 fn adjusted(entry: Entry, up: bool) -> Entry {
-    let step = |value: u32, low: u32, high: u32| {
-        if up {
-            (value + 1).min(high)
-        } else {
-            value.saturating_sub(1).max(low)
-        }
-    };
     let scene = match entry.scene {
         Scene::LSystem {
             system,
@@ -134,12 +161,12 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             orientation,
         } => Scene::LSystem {
             system,
-            order: step(order, 0, 16),
+            order: stepped(order, up, 0, MAX_ORDER),
             orientation,
         },
         Scene::Subdivision { shape, order } => Scene::Subdivision {
             shape,
-            order: step(order, 0, 7),
+            order: stepped(order, up, 0, 7),
         },
         Scene::Ifs {
             source,
@@ -182,11 +209,7 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             julia,
             centre,
             width,
-            max_iterations: if up {
-                (max_iterations * 2).min(4095)
-            } else {
-                (max_iterations / 2).max(16)
-            },
+            max_iterations: stepped_cap(max_iterations, up),
             shading,
         },
         walk @ Scene::Walk { .. } => walk,
@@ -312,8 +335,10 @@ impl Explorer {
                         state.centre.0 -= f64::from(dx) * spacing;
                         state.centre.1 += f64::from(dy) * spacing;
                     }
-                    Input::More => state.max_iterations = (state.max_iterations * 2).min(4095),
-                    Input::Fewer => state.max_iterations = (state.max_iterations / 2).max(16),
+                    Input::More | Input::Fewer => {
+                        state.max_iterations =
+                            stepped_cap(state.max_iterations, input == Input::More);
+                    }
                     Input::NextPalette => state.palette = (state.palette + 1) % PALETTES.len(),
                     Input::ToggleCycling => {
                         state.cycling = !state.cycling;
@@ -343,11 +368,11 @@ impl Explorer {
                 },
                 input,
             ) => match input {
-                Input::More => *order = (*order + 1).min(16),
-                Input::Fewer => *order = order.saturating_sub(1),
-                Input::NextSystem => *index = (*index + 1) % names.len().max(1),
-                Input::PreviousSystem => {
-                    *index = (*index + names.len().max(1) - 1) % names.len().max(1)
+                Input::More | Input::Fewer => {
+                    *order = stepped(*order, input == Input::More, 0, MAX_ORDER);
+                }
+                Input::NextSystem | Input::PreviousSystem => {
+                    *index = paged(*index, names.len(), input == Input::NextSystem);
                 }
                 Input::Reset => *order = 3,
                 _ => redraw = false,
@@ -356,12 +381,9 @@ impl Explorer {
                 Input::More => *entry = adjusted(*entry, true),
                 Input::Fewer => *entry = adjusted(*entry, false),
                 Input::NextSystem | Input::PreviousSystem | Input::Reset => {
-                    let count = GALLERY.len();
-                    *index = match input {
-                        Input::NextSystem => (*index + 1) % count,
-                        Input::PreviousSystem => (*index + count - 1) % count,
-                        _ => *index,
-                    };
+                    if input != Input::Reset {
+                        *index = paged(*index, GALLERY.len(), input == Input::NextSystem);
+                    }
                     *entry = gallery_entry(*index, size);
                 }
                 _ => redraw = false,
@@ -421,6 +443,7 @@ impl Explorer {
     pub fn tick(&mut self, display: &mut SimulatorDisplay<Rgb888>, budget: u64) {
         let size = self.size;
         let mut picture = display.cropped(&Rectangle::new(Point::zero(), size));
+        let mut drawn = None;
         match &mut self.subject {
             Subject::Escape(state) => {
                 if let Some((render, view, palette)) = &mut self.render {
@@ -438,69 +461,51 @@ impl Explorer {
                         self.elapsed = self.started.elapsed();
                     } else if state.cycling {
                         // Cycling repaints the finished picture from its values.
-                        let painted = escape_scene::paint(view, &self.values, palette);
-                        let Ok(()) = picture.draw_iter(
-                            painted
-                                .bounding_box()
-                                .points()
-                                .map(|p| Pixel(p, painted.get_pixel(p))),
-                        );
+                        escape_scene::paint_into(&mut picture, view, &self.values, palette);
                     }
                 }
             }
+            // An L-system or a gallery scene is drawn whole, once.
             Subject::LSystems {
                 text,
                 lsys,
                 names,
                 index,
                 order,
-            } => {
-                if self.message.is_empty() && self.elapsed.is_zero() {
-                    let Ok(()) = picture.clear(Rgb888::BLACK);
-                    let name = names.get(*index).cloned().unwrap_or_default();
-                    let grammar = if *lsys {
-                        tinyfractal::LsysFile::new(text).find(&name)
-                    } else {
-                        tinyfractal::LFile::new(text).find(&name)
-                    };
-                    let drawn = grammar
+            } if self.elapsed.is_zero() => {
+                let name = names.get(*index).cloned().unwrap_or_default();
+                let grammar = if *lsys {
+                    tinyfractal::LsysFile::new(text).find(&name)
+                } else {
+                    tinyfractal::LFile::new(text).find(&name)
+                };
+                drawn = Some(
+                    grammar
                         .map_err(|e| format!("{name}: {e}"))
                         .and_then(|grammar| {
                             crate::scene::render(&grammar, *order, size.width, size.height, None)
                                 .map_err(|e| e.to_string())
-                        });
-                    match drawn {
-                        Ok(rendered) => {
-                            let Ok(()) = picture.draw_iter(
-                                rendered
-                                    .display
-                                    .bounding_box()
-                                    .points()
-                                    .map(|p| Pixel(p, rendered.display.get_pixel(p))),
-                            );
-                        }
-                        Err(error) => self.message = error,
-                    }
-                    self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
-                }
+                        })
+                        .map(|rendered| (rendered.display, String::new())),
+                );
             }
-            Subject::Gallery { entry, .. } => {
-                if self.message.is_empty() && self.elapsed.is_zero() {
-                    match crate::gallery::picture(entry) {
-                        Ok((drawn, detail, _, _)) => {
-                            let Ok(()) = picture.draw_iter(
-                                drawn
-                                    .bounding_box()
-                                    .points()
-                                    .map(|p| Pixel(p, drawn.get_pixel(p))),
-                            );
-                            self.detail = detail;
-                        }
-                        Err(error) => self.message = error,
-                    }
-                    self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
-                }
+            Subject::Gallery { entry, .. } if self.elapsed.is_zero() => {
+                drawn = Some(
+                    crate::gallery::picture(entry).map(|(display, detail, _, _)| (display, detail)),
+                );
             }
+            Subject::LSystems { .. } | Subject::Gallery { .. } => {}
+        }
+        if let Some(drawn) = drawn {
+            let Ok(()) = picture.clear(Rgb888::BLACK);
+            match drawn {
+                Ok((drawn, detail)) => {
+                    copy(&drawn, drawn.bounding_box(), &mut picture);
+                    self.detail = detail;
+                }
+                Err(error) => self.message = error,
+            }
+            self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
         }
         if self.save_pending && self.is_complete() {
             self.save_pending = false;
@@ -574,11 +579,7 @@ impl Explorer {
     /// Saves the picture (without the status line) as `explore-NNN.png`.
     fn save(&mut self, display: &SimulatorDisplay<Rgb888>) {
         let mut picture = SimulatorDisplay::new(self.size);
-        let Ok(()) = picture.draw_iter(
-            Rectangle::new(Point::zero(), self.size)
-                .points()
-                .map(|p| Pixel(p, display.get_pixel(p))),
-        );
+        copy(display, picture.bounding_box(), &mut picture);
         let path = PathBuf::from(format!("explore-{:03}.png", self.saves));
         self.saves += 1;
         self.message = match crate::output::save_png(&picture, "explore", &path) {
@@ -586,6 +587,14 @@ impl Explorer {
             Err(error) => error,
         };
     }
+}
+
+/// Copies `area` of `from` into `to`.
+fn copy<D>(from: &SimulatorDisplay<Rgb888>, area: Rectangle, to: &mut D)
+where
+    D: DrawTarget<Color = Rgb888, Error = core::convert::Infallible>,
+{
+    let Ok(()) = to.draw_iter(area.points().map(|p| Pixel(p, from.get_pixel(p))));
 }
 
 /// Paints values and keeps them: the sink of the explorer's renders.
