@@ -14,7 +14,7 @@ use image::{Delay, Frame, RgbaImage};
 use indicatif::{ProgressBar, ProgressStyle};
 use tinyfractal::{Algorithm, Coord, View, ZoomFrame};
 
-use crate::args::{AnimateArgs, Animation, EscapeArgs};
+use crate::args::{AnimateArgs, Animation};
 use crate::escape_scene::{self, HostPalette, Request};
 
 /// A bar over `total` steps on stderr, drawn only when stderr is a terminal.
@@ -40,7 +40,7 @@ pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
             tolerance,
             exact,
         } => {
-            let request = request(view, size);
+            let request = escape_scene::request(view, size);
             let tolerance = if *exact { None } else { Some(*tolerance) };
             zoom(
                 &request,
@@ -51,9 +51,12 @@ pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
                 &bar,
             )?
         }
-        Animation::Palette { view, step } => {
-            palette_cycle(&request(view, size), *step, arguments.frames, &bar)?
-        }
+        Animation::Palette { view, step } => palette_cycle(
+            &escape_scene::request(view, size),
+            *step,
+            arguments.frames,
+            &bar,
+        )?,
         Animation::Growth { source, seed } => growth(source, *seed, arguments.frames, size, &bar)?,
         Animation::Figure { pose } => {
             let frames = crate::figure_scene::cycle(*pose, arguments.frames, size)?;
@@ -71,22 +74,6 @@ pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
         );
     }
     Ok(())
-}
-
-fn request(view: &EscapeArgs, size: Size) -> Request<'_> {
-    Request {
-        julia: view
-            .julia
-            .as_ref()
-            .map(|(re, im)| (re.as_str(), im.as_str())),
-        centre: (&view.centre.0, &view.centre.1),
-        width: &view.width,
-        size,
-        max_iterations: view.max_iterations,
-        algorithm: Algorithm::Exact,
-        tier: None,
-        palette: &view.palette,
-    }
 }
 
 /// The widths of a zoom's frames, as text: the first is `--width`, the last `end_width`

@@ -34,7 +34,25 @@ pub struct Request<'a> {
     pub palette: &'a str,
 }
 
-fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
+/// What `render mandelbrot|julia` (or an animation's view) asked for, at `size`.
+pub fn request(arguments: &crate::args::EscapeArgs, size: Size) -> Request<'_> {
+    Request {
+        julia: arguments
+            .julia
+            .as_ref()
+            .map(|(re, im)| (re.as_str(), im.as_str())),
+        centre: (&arguments.centre.0, &arguments.centre.1),
+        width: &arguments.width,
+        size,
+        max_iterations: arguments.max_iterations,
+        algorithm: arguments.algorithm,
+        tier: arguments.tier,
+        palette: &arguments.palette,
+    }
+}
+
+/// A number the user wrote for `what` (`--center`, `--width`, `--c`), checked.
+pub fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
     Coord::parse(text).ok_or_else(|| {
         format!(
             "{what}: `{text}` is not a number between -8 and 8 (write e.g. -0.75, 1e-9 or 2.5E-3)"

@@ -108,21 +108,29 @@ fn is_lsys(path: &Path) -> bool {
         .is_some_and(|extension| extension == "lsys")
 }
 
+/// The names of the entries of `text`, the file at `path` (`.lsys` or Fractint's `.l`),
+/// each or the error reading it.
+fn entry_names<'a>(path: &Path, text: &'a str) -> Vec<Result<&'a str, tinyfractal::Error>> {
+    if is_lsys(path) {
+        LsysFile::new(text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect()
+    } else {
+        LFile::new(text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect()
+    }
+}
+
 fn list(path: &Path) -> Result<(), String> {
     let text = read_text(path)?;
     let failed = |e: tinyfractal::Error| format!("{}: {e}", path.display());
-    let names: Vec<&str> = if is_lsys(path) {
-        LsysFile::new(&text)
-            .entries()
-            .map(|entry| entry.map(|entry| entry.name()))
-            .collect::<Result<_, _>>()
-    } else {
-        LFile::new(&text)
-            .entries()
-            .map(|entry| entry.map(|entry| entry.name()))
-            .collect::<Result<_, _>>()
-    }
-    .map_err(failed)?;
+    let names: Vec<&str> = entry_names(path, &text)
+        .into_iter()
+        .collect::<Result<_, _>>()
+        .map_err(failed)?;
     for name in names {
         println!("{name}");
     }
@@ -362,19 +370,8 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
     } else {
         "mandelbrot"
     };
-    let request = escape_scene::Request {
-        julia: arguments
-            .julia
-            .as_ref()
-            .map(|(re, im)| (re.as_str(), im.as_str())),
-        centre: (&arguments.centre.0, &arguments.centre.1),
-        width: &arguments.width,
-        size: embedded_graphics::geometry::Size::new(common.width(), common.height()),
-        max_iterations: arguments.max_iterations,
-        algorithm: arguments.algorithm,
-        tier: arguments.tier,
-        palette: &arguments.palette,
-    };
+    let size = embedded_graphics::geometry::Size::new(common.width(), common.height());
+    let request = escape_scene::request(arguments, size);
     window_available(common.window)?;
     // Everything is computed and every output checked before anything is written.
     let rendered = escape_scene::render(&request).map_err(|e| format!("{name}: {e}"))?;
@@ -500,17 +497,10 @@ fn explorer(arguments: &args::ExploreArgs) -> Result<explore::Explorer, String> 
     }
     if let Some(path) = &arguments.file {
         let text = read_text(path)?;
-        let names: Vec<String> = if is_lsys(path) {
-            LsysFile::new(&text)
-                .entries()
-                .filter_map(|entry| entry.ok().map(|e| e.name().to_string()))
-                .collect()
-        } else {
-            LFile::new(&text)
-                .entries()
-                .filter_map(|entry| entry.ok().map(|e| e.name().to_string()))
-                .collect()
-        };
+        let names: Vec<String> = entry_names(path, &text)
+            .into_iter()
+            .filter_map(|name| name.ok().map(str::to_string))
+            .collect();
         if names.is_empty() {
             return Err(format!("{}: no systems to explore", path.display()));
         }
@@ -522,14 +512,12 @@ fn explorer(arguments: &args::ExploreArgs) -> Result<explore::Explorer, String> 
         ));
     }
     let number = |option: &str, text: &str| {
-        tinyfractal::Coord::parse(text)
-            .map(tinyfractal::Coord::to_f64)
-            .ok_or_else(|| format!("{option}: `{text}` is not a number between -8 and 8"))
+        escape_scene::coordinate(option, text).map(tinyfractal::Coord::to_f64)
     };
     let julia = match &arguments.julia {
         Some((re, im)) => Some((
-            tinyfractal::Coord::parse(re).ok_or_else(|| format!("--c: `{re}` is not a number"))?,
-            tinyfractal::Coord::parse(im).ok_or_else(|| format!("--c: `{im}` is not a number"))?,
+            escape_scene::coordinate("--c", re)?,
+            escape_scene::coordinate("--c", im)?,
         )),
         None => None,
     };
