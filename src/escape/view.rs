@@ -102,8 +102,9 @@ pub enum Shading {
     /// shows bands).
     #[default]
     Dwell,
-    /// The normalised iteration count ν = n + 2 − log₂(log₂|zₙ|²), taken two steps past
-    /// the escape so it is continuous across the bands, in sixteenths of an iteration
+    /// The normalised iteration count ν = N + 2 − log₂(log₂|z_N|²), taken at the first N
+    /// past the escape with |z_N| ≥ 256 so it is continuous across the bands, in
+    /// sixteenths of an iteration
     /// ([`SMOOTH_FRACTION_BITS`]): a gradient of 16× the entries shows no bands. Computed
     /// in fixed point with a logarithm table (`log₂`, 64 entries), only for escaping
     /// pixels, once each: no floats, the same bits on every core.
