@@ -15,7 +15,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use tinyfractal::{Algorithm, Coord, View, ZoomFrame};
 
 use crate::args::{AnimateArgs, Animation};
-use crate::escape_scene::{self, HostPalette, Request};
+use crate::escape_scene::{self, Request};
 
 /// A bar over `total` steps on stderr, drawn only when stderr is a terminal.
 pub fn progress(total: u64, what: &str) -> ProgressBar {
@@ -119,10 +119,20 @@ fn zoom(
     bar: &ProgressBar,
 ) -> Result<(Vec<SimulatorDisplay<Rgb888>>, String), String> {
     let widths = widths(request.width, end_width, factor, frames)?;
+    // Every frame has the same palette: one is kept.
+    let mut palette = None;
     let views = widths
         .iter()
-        .map(|width| escape_scene::view_at(request, width))
-        .collect::<Result<Vec<(View, HostPalette)>, String>>()?;
+        .map(|width| {
+            escape_scene::view_at(request, width).map(|(view, frame_palette)| {
+                palette.get_or_insert(frame_palette);
+                view
+            })
+        })
+        .collect::<Result<Vec<View>, String>>()?;
+    let Some(palette) = palette else {
+        return Ok((Vec::new(), String::new()));
+    };
     let pixels = (request.size.width * request.size.height) as usize;
     let lines = |n: u32| vec![0i64; n as usize];
     let mut storage = [
@@ -139,11 +149,11 @@ fn zoom(
     ];
     let (mut computed, mut total) = (0u64, 0u64);
     let mut pictures = Vec::with_capacity(views.len());
-    for (index, (view, palette)) in views.iter().enumerate() {
+    for (index, view) in views.iter().enumerate() {
         let [a, b] = &mut storage;
         let (previous, next) = if index % 2 == 0 { (b, a) } else { (a, b) };
         let old = ZoomFrame::new(
-            views[index.saturating_sub(1)].0,
+            views[index.saturating_sub(1)],
             &mut previous.0,
             &mut previous.1,
             &mut previous.2,
@@ -160,7 +170,7 @@ fn zoom(
         };
         computed += u64::from(stats.computed);
         total += u64::from(stats.computed + stats.reused);
-        pictures.push(escape_scene::paint(view, frame.values(), palette));
+        pictures.push(escape_scene::paint(view, frame.values(), &palette));
         bar.inc(1);
     }
     let share = computed as f64 / total.max(1) as f64;
