@@ -179,7 +179,7 @@ fn point(source: Option<u32>, old: &[i64], nominal: i128) -> i64 {
 fn assign(slots: &mut [i64], nominal: impl Fn(u32) -> i128, old: &[i64], tolerance: i128) {
     slots.fill(NONE);
     let count = slots.len();
-    if count == 0 || tolerance < 0 {
+    if count == 0 {
         return;
     }
     let first = nominal(0);
