@@ -121,6 +121,7 @@ pub use error::{
     Unsupported, ViewError, WalkError,
 };
 pub use escape::drawing::{EscapeTime, Painter};
+pub use escape::perturbation::{ReferenceOrbit, ReferencePoint, REFERENCE_POINT_BYTES};
 pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
 pub use escape::view::{
     Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
@@ -156,7 +157,10 @@ pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFA
 pub use lsystem::walker::{DerivedSymbol, Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::affine::{Affine2, Affine3};
 pub use math::random::Generator;
-pub use math::{Angle, Coord, Real, MAX_ANGLE_DIVISIONS};
+pub use math::{
+    Angle, Coord, DeepCoord, DeepParseError, Real, DEEP_LIMBS, MAX_ANGLE_DIVISIONS,
+    MAX_DECIMAL_PLACES,
+};
 pub use render::fit::{Orientation, DEFAULT_MARGIN};
 pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use render::projection::Projection;

@@ -749,9 +749,9 @@ fn palettes_for_every_colour_type() {
 #[test]
 fn a_render_fits_in_a_few_kilobytes() {
     let bytes = core::mem::size_of::<Render>();
-    // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view, the kernel constants and
-    // the counters.
-    assert!(bytes <= 2750, "Render is {bytes} bytes");
+    // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view (with its 72-byte deep
+    // centre and spacing), the kernel constants and the counters.
+    assert!(bytes <= 2850, "Render is {bytes} bytes");
 }
 
 /// A naive `f32` loop, as a user writes it on an FPU (separate multiply and add), at the

@@ -222,7 +222,7 @@ pub struct Explorer {
     pub subject: Subject,
     start: EscapeState,
     size: Size,
-    render: Option<(Render, View, HostPalette)>,
+    render: Option<(Render<'static>, View, HostPalette)>,
     /// The values computed so far (colour cycling repaints from them).
     values: Vec<u16>,
     started: Instant,

@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use crate::math::Coord;
+use crate::math::{Coord, DeepCoord};
 
 /// The view cannot be computed. Each variant names the one condition that failed and the
 /// value that failed it.
@@ -52,6 +52,24 @@ pub enum ViewError {
         /// The finest spacing supported, 2⁻⁵⁴.
         finest: Coord,
     },
+    /// The pixel spacing is finer than perturbation resolves (its reference keeps 40 bits
+    /// below a pixel in at most 188 fractional bits).
+    PerturbationTooDeep {
+        /// The spacing.
+        spacing: DeepCoord,
+        /// The finest spacing supported, 2⁻¹⁴⁸.
+        finest: DeepCoord,
+    },
+    /// Perturbation asked of a Julia view: one reference orbit with rebasing serves the
+    /// Mandelbrot set only.
+    PerturbationNeedsMandelbrot,
+    /// The storage given for a reference orbit holds fewer points than the view may need.
+    ReferenceTooShort {
+        /// Points needed: max-iter + 1.
+        needed: usize,
+        /// Points given.
+        given: usize,
+    },
 }
 
 impl fmt::Display for ViewError {
@@ -82,6 +100,21 @@ impl fmt::Display for ViewError {
                 f,
                 "the zoom is too deep: a pixel spacing of {spacing} (width ÷ pixels across) \
                  is finer than the deepest tier's {finest}; widen the view or use fewer pixels"
+            ),
+            Self::PerturbationTooDeep { spacing, finest } => write!(
+                f,
+                "the zoom is too deep: a pixel spacing of {spacing:e} (width ÷ pixels across) is \
+                 finer than perturbation's finest, {finest:e} (2^-148); widen the view or use \
+                 fewer pixels"
+            ),
+            Self::PerturbationNeedsMandelbrot => f.write_str(
+                "perturbation computes the Mandelbrot set only: a Julia view is limited to the \
+                 deep tier's spacing of 2^-54",
+            ),
+            Self::ReferenceTooShort { needed, given } => write!(
+                f,
+                "the reference orbit needs {needed} points (max-iter + 1) but its storage holds \
+                 {given}: give more storage or fewer iterations"
             ),
         }
     }

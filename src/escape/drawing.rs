@@ -89,7 +89,7 @@ impl<P: Palette> EscapeTime<P> {
     }
 
     /// A render to run in steps from a main loop (see [`Render::step`]).
-    pub fn render(&self) -> Render {
+    pub fn render(&self) -> Render<'static> {
         Render::new(self.view, self.algorithm)
     }
 }

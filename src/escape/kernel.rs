@@ -66,7 +66,7 @@ impl Orbit {
 /// One coordinate of a pixel's point in the tier's units, converted once per column or
 /// row rather than once per pixel.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub(crate) struct Part(i64);
+pub(crate) struct Part(pub(crate) i64);
 
 /// What is the same for every pixel of a render, in the tier's units: converted once, so
 /// a pixel costs its cardioid test and its iterations, nothing more.
@@ -89,13 +89,17 @@ pub(crate) struct Kernel {
 impl Kernel {
     /// The kernel of `view`, recognising repeats as `periodicity` says.
     pub(crate) fn new(view: &View, periodicity: Periodicity) -> Self {
-        let frac = view.tier.frac_bits();
+        let frac = view.tier.frac_bits().min(Tier::Deep.frac_bits());
         let tolerance = match periodicity {
             Periodicity::Exact => 0,
             Periodicity::Within(bits) => bits,
         };
         Self {
-            tier: view.tier,
+            // A perturbation view rendered without a reference: `Render::new` documents it.
+            tier: match view.tier {
+                Tier::Perturbation => Tier::Deep,
+                tier => tier,
+            },
             max: view.max_iterations,
             inside: u32::from(view.inside_value()),
             smooth: view.shading == Shading::Smooth,
@@ -124,7 +128,7 @@ impl Kernel {
             Tier::Narrow => orbit::<Narrow>(self, re.0, im.0),
             Tier::Medium => orbit::<Medium>(self, re.0, im.0),
             Tier::Standard => orbit::<Standard>(self, re.0, im.0),
-            Tier::Deep => orbit::<Deep>(self, re.0, im.0),
+            Tier::Deep | Tier::Perturbation => orbit::<Deep>(self, re.0, im.0),
         }
     }
 }
@@ -381,7 +385,8 @@ fn orbit<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
                     n,
                     (A::q28(z.x), A::q28(z.y)),
                     (A::q28(cr), A::q28(ci)),
-                    kernel,
+                    kernel.max,
+                    kernel.inside,
                 )
             } else {
                 n.max(1)
@@ -462,10 +467,10 @@ fn orbit<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
 /// In i64, Q20: a point is only squared while |x|, |y| < 256, so squares stay below 2⁵⁶;
 /// the next point is below 2¹⁷ (Q20: 2³⁷), and its |z|² is taken in Q16 from Q8 parts.
 #[inline(never)]
-fn smooth_value(n: u32, z: (i32, i32), c: (i32, i32), kernel: &Kernel) -> u32 {
+pub(crate) fn smooth_value(n: u32, z: (i32, i32), c: (i32, i32), max: u32, inside: u32) -> u32 {
     const BAILOUT: u64 = 256 << 20;
-    if n >= kernel.max {
-        return kernel.inside;
+    if n >= max {
+        return inside;
     }
     let (cr, ci) = (i64::from(c.0) >> 8, i64::from(c.1) >> 8);
     let (mut x, mut y) = (i64::from(z.0) >> 8, i64::from(z.1) >> 8);
@@ -491,7 +496,7 @@ fn smooth_value(n: u32, z: (i32, i32), c: (i32, i32), kernel: &Kernel) -> u32 {
     let value = (nu + (1 << (shift - 1))) >> shift;
     u32::try_from(value)
         .unwrap_or(0)
-        .clamp(1, kernel.inside.saturating_sub(1).max(1))
+        .clamp(1, inside.saturating_sub(1).max(1))
 }
 
 /// Most steps a smooth value takes past the escape.
@@ -529,7 +534,7 @@ fn standard_twice_xy(x: i32, y: i32, x2: i64, y2: i64) -> i32 {
 /// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
 /// or next to the boundary is iterated instead. |x|, |y| ≤ 3.5 (the view's limit), so every
 /// value below fits its type.
-fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
+pub(crate) fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
     const ONE: i32 = 1 << 28;
     // 2^-20 in Q56.
     const MARGIN: i64 = 1 << 36;

@@ -3,6 +3,7 @@
 
 pub(crate) mod drawing;
 pub(crate) mod kernel;
+pub(crate) mod perturbation;
 pub(crate) mod schedule;
 pub(crate) mod view;
 pub(crate) mod zoom;

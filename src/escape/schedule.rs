@@ -13,7 +13,7 @@
 //!
 //! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB), the tile's 32 column and 32
 //! row coordinates (512 bytes: points are separable, so they are computed once per tile,
-//! not once per pixel), the view and its kernel constants, about 2.7 KiB;
+//! not once per pixel), the view and its kernel constants, about 2.8 KiB (a perturbed render adds the reference orbit, in storage the caller gives: 24 bytes an iteration);
 //! while a tile is computed, a subdivision stack of 32 rectangles (512 bytes) is on the
 //! stack. That is the worst case for a 320×240 view or any other: nothing is read back
 //! from the target.
@@ -21,8 +21,10 @@
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use heapless::Vec;
 
-use super::kernel::{Kernel, Part, Periodicity};
+use super::kernel::{Kernel, Orbit, Part, Periodicity};
+use super::perturbation::{Perturbation, ReferenceOrbit, ReferencePoint};
 use super::view::{Symmetry, Tier, View};
+use crate::error::Error;
 use crate::render::sink::DwellSink;
 
 /// Side of a fast-mode tile, in pixels.
@@ -74,6 +76,9 @@ pub struct RenderStats {
     pub draw_calls: u32,
     /// The tier computed in.
     pub tier: Tier,
+    /// Times a perturbed pixel left the reference orbit for its start (0 in a fixed
+    /// tier): each a glitch avoided.
+    pub rebases: u64,
 }
 
 /// How far a render has come.
@@ -92,10 +97,49 @@ impl Progress {
     }
 }
 
+/// How a render computes a pixel: in a fixed-point tier, or by perturbation against a
+/// reference orbit in storage borrowed for `'r`.
+#[derive(Debug, Clone, Copy)]
+enum Pixels<'r> {
+    Fixed(Kernel),
+    Perturbed(Perturbation<'r>),
+}
+
+impl Pixels<'_> {
+    /// Column i's part of its pixels' points.
+    #[inline(always)]
+    fn column(&self, view: &View, i: i64) -> Part {
+        match self {
+            Self::Fixed(kernel) => kernel.part(in_view(view.column(i))),
+            // Half spacings from the centre, as `View::column` places points.
+            Self::Perturbed(_) => Part(2 * i + 1 - i64::from(view.size.width)),
+        }
+    }
+
+    /// Row j's part of its pixels' points.
+    #[inline(always)]
+    fn row(&self, view: &View, j: i64) -> Part {
+        match self {
+            Self::Fixed(kernel) => kernel.part(in_view(view.row(j))),
+            Self::Perturbed(_) => Part(i64::from(view.size.height) - 2 * j - 1),
+        }
+    }
+
+    /// The pixel's orbit and its rebases.
+    #[inline(always)]
+    fn dwell(&self, re: Part, im: Part) -> (Orbit, u32) {
+        match self {
+            Self::Fixed(kernel) => (kernel.dwell(re, im), 0),
+            Self::Perturbed(pixels) => pixels.dwell(re.0, im.0),
+        }
+    }
+}
+
 /// A render in progress: call [`step`](Self::step) from a main loop with a budget, or
-/// [`run`](Self::run) to finish in one go.
+/// [`run`](Self::run) to finish in one go. A perturbed render borrows its reference
+/// orbit's storage for `'r`; any other is a `Render<'static>`.
 #[derive(Debug, Clone)]
-pub struct Render {
+pub struct Render<'r> {
     view: View,
     algorithm: Algorithm,
     next: u32,
@@ -103,7 +147,7 @@ pub struct Render {
     preview: u32,
     previewed: u32,
     stats: RenderStats,
-    kernel: Kernel,
+    pixels: Pixels<'r>,
     /// The current tile's dwells, row by row with no gaps (w×h of them): a tile leaves as
     /// one slice.
     tile: [u16; CELLS],
@@ -123,15 +167,51 @@ struct Block {
     y1: u32,
 }
 
-impl Render {
-    /// A render of `view`, nothing computed yet.
+impl Render<'static> {
+    /// A render of `view`, nothing computed yet, in the view's fixed-point tier. A
+    /// [`Tier::Perturbation`] view needs storage for its reference orbit, so it is made
+    /// with [`Render::perturbed`]; given here, it is computed in `Deep`, whose stats say
+    /// so, and which does not resolve pixels finer than 2⁻⁵⁴.
     pub fn new(view: View, algorithm: Algorithm) -> Self {
         let periodicity = match algorithm {
             Algorithm::Exact => Periodicity::Exact,
             Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
         };
+        let mut render = Render::with_pixels(
+            view,
+            algorithm,
+            Pixels::Fixed(Kernel::new(&view, periodicity)),
+        );
+        if view.tier == Tier::Perturbation {
+            render.stats.tier = Tier::Deep;
+        }
+        render
+    }
+}
+
+impl<'r> Render<'r> {
+    /// A render of a Mandelbrot `view` by perturbation, whatever its tier: computes the
+    /// reference orbit at the view's centre into `storage`, which must hold
+    /// [`ReferenceOrbit::points_needed`] points (12 bytes each). Fails if the view is a
+    /// Julia set or the storage is too short.
+    pub fn perturbed(
+        view: View,
+        algorithm: Algorithm,
+        storage: &'r mut [ReferencePoint],
+    ) -> Result<Self, Error> {
+        let reference = ReferenceOrbit::compute(&view, storage)?;
+        let mut render = Self::with_pixels(
+            view,
+            algorithm,
+            Pixels::Perturbed(Perturbation::new(&view, reference)),
+        );
+        render.stats.tier = Tier::Perturbation;
+        Ok(render)
+    }
+
+    fn with_pixels(view: View, algorithm: Algorithm, pixels: Pixels<'r>) -> Self {
         Self {
-            kernel: Kernel::new(&view, periodicity),
+            pixels,
             view,
             algorithm,
             next: 0,
@@ -142,6 +222,7 @@ impl Render {
                 pixels: 0,
                 draw_calls: 0,
                 tier: view.tier(),
+                rebases: 0,
             },
             tile: [0; CELLS],
             width: TILE,
@@ -177,15 +258,11 @@ impl Render {
         let (block, size) = (self.preview, self.view.size);
         let y0 = self.previewed * block;
         let h = block.min(size.height - y0);
-        let im = self
-            .kernel
-            .part(in_view(self.view.row(i64::from(y0 + h / 2))));
+        let im = self.pixels.row(&self.view, i64::from(y0 + h / 2));
         let mut x0 = 0;
         while x0 < size.width {
             let w = block.min(size.width - x0);
-            let re = self
-                .kernel
-                .part(in_view(self.view.column(i64::from(x0 + w / 2))));
+            let re = self.pixels.column(&self.view, i64::from(x0 + w / 2));
             let dwell = self.compute_at(re, im);
             self.stats.draw_calls += 1;
             let area = Rectangle::new(Point::new(coordinate(x0), coordinate(y0)), Size::new(w, h));
@@ -261,8 +338,9 @@ impl Render {
 
     /// The dwell of the point with column part `re` and row part `im`.
     fn compute_at(&mut self, re: Part, im: Part) -> u16 {
-        let orbit = self.kernel.dwell(re, im);
+        let (orbit, rebases) = self.pixels.dwell(re, im);
         self.stats.iterations += u64::from(orbit.iterations);
+        self.stats.rebases += u64::from(rebases);
         self.stats.pixels += 1;
         // max_iterations <= u16::MAX is checked by the view.
         u16::try_from(orbit.dwell).unwrap_or(u16::MAX)
@@ -273,9 +351,9 @@ impl Render {
         let width = self.view.size.width;
         let area = Rectangle::new(Point::new(0, coordinate(j)), Size::new(width, 1));
         self.stats.draw_calls += 1;
-        let im = self.kernel.part(in_view(self.view.row(i64::from(j))));
+        let im = self.pixels.row(&self.view, i64::from(j));
         let dwells = (0..width).map(|i| {
-            let re = self.kernel.part(in_view(self.view.column(i64::from(i))));
+            let re = self.pixels.column(&self.view, i64::from(i));
             self.compute_at(re, im)
         });
         sink.dwells(&area, dwells)
@@ -292,10 +370,10 @@ impl Render {
             let (column, row) = (i64::from(x0 + k), i64::from(y0 + k));
             // Columns and rows past the view's edge are not used.
             if let Some(slot) = self.columns.get_mut(k as usize) {
-                *slot = self.kernel.part(in_view(self.view.column(column)));
+                *slot = self.pixels.column(&self.view, column);
             }
             if let Some(slot) = self.rows.get_mut(k as usize) {
-                *slot = self.kernel.part(in_view(self.view.row(row)));
+                *slot = self.pixels.row(&self.view, row);
             }
         }
         let uniform = self.subdivide(w, h);

@@ -5,7 +5,7 @@ use embedded_graphics::geometry::Size;
 
 use crate::error::{Error, FitError, ViewError};
 use crate::math::wide::{div_round, mul_wide, shift_round};
-use crate::math::Coord;
+use crate::math::{Coord, DeepCoord};
 
 /// Most iterations a view may ask for (dwells are kept in 16 bits).
 pub const MAX_ITERATIONS: u32 = u16::MAX as u32;
@@ -23,6 +23,9 @@ const COORDINATE_LIMIT: i64 = 7 << 59; // 3.5 in Q60
 
 /// The finest pixel spacing, 2⁻⁵⁴ in Q60 bits: the deep tier keeps 6 bits below it.
 const FINEST_SPACING: i64 = 1 << 6;
+
+/// Perturbation's finest pixel spacing is 2 to the minus this.
+const FINEST_PERTURBATION_BITS: u32 = 148;
 
 /// Which escape-time fractal.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -60,18 +63,27 @@ pub enum Tier {
     /// Deepest zoom: pixel spacing ≥ 2⁻⁵⁴ (a width of 1.8·10⁻¹⁴ on 320 pixels); with 12
     /// guard bits and 1024 iterations, full accuracy down to widths of about 10⁻⁹.
     Deep,
+    /// Perturbation against one reference orbit (see [`ReferenceOrbit`](crate::ReferenceOrbit)):
+    /// the reference in up to 192-bit fixed point, each pixel a difference from it in 32-bit
+    /// mantissas with an exponent. Chosen for Mandelbrot views finer than `Deep` resolves
+    /// (spacing below 2⁻⁵⁴), down to a spacing of 2⁻¹⁴⁸ (a width of about 10⁻⁴² on 320
+    /// pixels); by hand on any Mandelbrot view. Needs storage for the reference: a render
+    /// of it is made with [`Render::perturbed`](crate::Render::perturbed).
+    Perturbation,
 }
 
 impl Tier {
-    /// Every tier, narrowest first.
+    /// Every fixed-point tier, narrowest first.
     pub const ALL: [Tier; 4] = [Tier::Narrow, Tier::Medium, Tier::Standard, Tier::Deep];
 
-    /// Fractional bits of the tier's numbers.
+    /// Fractional bits of the tier's numbers (a perturbation's pixels keep 30 bits
+    /// relative to their distance from the reference; its reference, up to 188).
     pub const fn frac_bits(self) -> u32 {
         match self {
             Self::Narrow => 12,
             Self::Medium | Self::Standard => 28,
             Self::Deep => 60,
+            Self::Perturbation => DeepCoord::FRAC_BITS,
         }
     }
 
@@ -91,6 +103,7 @@ impl Tier {
             Self::Medium => "medium",
             Self::Standard => "standard",
             Self::Deep => "deep",
+            Self::Perturbation => "perturbation",
         }
     }
 }
@@ -126,6 +139,10 @@ pub struct View {
     /// The tier the automatic rule chose.
     automatic: Tier,
     pub(crate) shading: Shading,
+    /// The centre and spacing to all the bits given (perturbation's reference and offsets;
+    /// the fixed tiers read the Q60 ones above).
+    pub(crate) deep_centre: (DeepCoord, DeepCoord),
+    pub(crate) deep_spacing: DeepCoord,
 }
 
 impl View {
@@ -183,6 +200,11 @@ impl View {
             tier,
             automatic: tier,
             shading: Shading::Dwell,
+            deep_centre: (
+                DeepCoord::from_coord(centre.0),
+                DeepCoord::from_coord(centre.1),
+            ),
+            deep_spacing: DeepCoord::from_coord(Coord::from_bits(spacing)),
         };
         // Every pixel within ±3.5: the corners are the extremes.
         let (w, h) = (i64::from(size.width), i64::from(size.height));
@@ -198,6 +220,51 @@ impl View {
             let reach = Coord::from_bits(i64::try_from(reach).unwrap_or(i64::MAX));
             return Err(Error::View(ViewError::BeyondLimit { reach, limit }));
         }
+        Ok(view)
+    }
+
+    /// A view whose centre and width have more bits than a [`Coord`] holds: past `Deep`'s
+    /// finest spacing (2⁻⁵⁴) a Mandelbrot view takes [`Tier::Perturbation`], down to a
+    /// spacing of 2⁻¹⁴⁸; above it, the same view and tier as [`View::new`] with the centre
+    /// and width rounded to Q60 (perturbation by hand still uses every bit).
+    pub fn deep(
+        fractal: Fractal,
+        centre: (DeepCoord, DeepCoord),
+        width: DeepCoord,
+        size: Size,
+        max_iterations: u32,
+    ) -> Result<Self, Error> {
+        if width.is_negative() || width == DeepCoord::ZERO {
+            return Err(Error::View(ViewError::WidthNotPositive {
+                width: width.to_coord(),
+            }));
+        }
+        let deep_spacing = width.div_small(size.width.max(1));
+        let rounded = (centre.0.to_coord(), centre.1.to_coord());
+        let shallow = deep_spacing.to_coord().to_bits() >= FINEST_SPACING;
+        let mut view = if shallow {
+            Self::new(fractal, rounded, width.to_coord(), size, max_iterations)?
+        } else {
+            if let Fractal::Julia { .. } = fractal {
+                return Err(Error::View(ViewError::PerturbationNeedsMandelbrot));
+            }
+            let finest = DeepCoord::unit_at(DeepCoord::FRAC_BITS - FINEST_PERTURBATION_BITS);
+            if deep_spacing.top_bit() < finest.top_bit() {
+                return Err(Error::View(ViewError::PerturbationTooDeep {
+                    spacing: deep_spacing,
+                    finest,
+                }));
+            }
+            // The checks of `new` on a stand-in of the finest fixed spacing at the same
+            // centre: the corners are the centre to far below a unit of Q60.
+            let stand_in = Coord::from_bits(FINEST_SPACING * i64::from(size.width));
+            let mut view = Self::new(fractal, rounded, stand_in, size, max_iterations)?;
+            view.tier = Tier::Perturbation;
+            view.automatic = Tier::Perturbation;
+            view
+        };
+        view.deep_centre = centre;
+        view.deep_spacing = deep_spacing;
         Ok(view)
     }
 
@@ -278,7 +345,8 @@ impl View {
     /// blocks or flat. The automatic tier always does; a forced one may not, and the CLI
     /// warns then.
     pub const fn resolves_pixels(&self) -> bool {
-        self.spacing >= 1 << (Coord::FRAC_BITS - self.tier.precision_bits())
+        matches!(self.tier, Tier::Perturbation)
+            || self.spacing >= 1 << (Coord::FRAC_BITS - self.tier.precision_bits())
     }
 
     /// The size in pixels.
@@ -296,9 +364,19 @@ impl View {
         self.fractal
     }
 
-    /// The centre (real, imaginary).
+    /// The centre (real, imaginary), rounded to Q60.
     pub const fn centre(&self) -> (Coord, Coord) {
         self.centre
+    }
+
+    /// The centre with every bit given (what perturbation's reference orbit starts from).
+    pub const fn deep_centre(&self) -> (DeepCoord, DeepCoord) {
+        self.deep_centre
+    }
+
+    /// The pixel spacing with every bit kept.
+    pub const fn deep_spacing(&self) -> DeepCoord {
+        self.deep_spacing
     }
 
     /// Pixel spacing in Q60 bits.
@@ -334,7 +412,9 @@ impl View {
     pub(crate) const fn symmetry(&self) -> Symmetry {
         match self.fractal {
             // c and its conjugate have the same dwell.
-            Fractal::Mandelbrot if self.centre.1.to_bits() == 0 => Symmetry::MirrorRows,
+            Fractal::Mandelbrot if self.centre.1.to_bits() == 0 && self.deep_centre.1.is_zero() => {
+                Symmetry::MirrorRows
+            }
             // z0 and -z0 have the same z1, so the same dwell.
             Fractal::Julia { .. }
                 if self.centre.0.to_bits() == 0 && self.centre.1.to_bits() == 0 =>

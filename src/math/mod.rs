@@ -5,6 +5,7 @@
 
 pub(crate) mod affine;
 pub(crate) mod angle;
+pub(crate) mod big;
 pub(crate) mod coord;
 pub(crate) mod decimal;
 pub(crate) mod frame3;
@@ -15,5 +16,6 @@ pub(crate) mod trig;
 pub(crate) mod wide;
 
 pub use angle::{Angle, MAX_ANGLE_DIVISIONS};
+pub use big::{DeepCoord, DeepParseError, DEEP_LIMBS, MAX_DECIMAL_PLACES};
 pub use coord::Coord;
 pub use real::Real;

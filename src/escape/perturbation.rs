@@ -1,0 +1,445 @@
+//! Perturbation: one reference orbit in wide fixed point, every pixel as a small
+//! difference from it in 32-bit mantissas with an exponent, so a zoom far past 2⁻⁵⁴ costs
+//! about what a shallow one does.
+//!
+//! The reference Z₀ = 0, Zₙ₊₁ = Zₙ² + C is computed once per view at the view's centre
+//! C, in [`DeepCoord`] limbs (as many as the spacing needs: 40 bits below a pixel), and
+//! stored as [`ReferencePoint`]s: a complex 32-bit mantissa with one exponent, 12 bytes
+//! per iteration, in storage the caller provides. A pixel c = C + δc then iterates
+//! δₙ₊₁ = 2Zₙδₙ + δₙ² + δc, its δ also a complex mantissa with one exponent: the two
+//! parts of a point share a scale, and 30 bits of it are as many as `Standard` keeps of
+//! a point, relative to its distance from the reference instead of to 1.
+//!
+//! Glitches are handled by rebasing (Zhuoran's method): when the pixel's own point
+//! z = Zₙ + δₙ is smaller than δₙ, or the reference has ended (escaped), δ becomes z and
+//! the reference restarts from Z₀ = 0. So one reference suffices for the Mandelbrot set,
+//! and a pixel never follows a reference it has left behind (the glitch tests check a view
+//! whose pixels must rebase against an independent big-number model). The test costs
+//! nothing while the reference is far larger than δ (it is only made when the exponents
+//! say |Zₙ| < 8|δₙ|).
+//!
+//! Everything is integer arithmetic with floor shifts: every core draws the same bits.
+//! Periodicity is not tested (an orbit is never an exact repeat of itself here); the
+//! cardioid and bulb test is, at the reference's precision.
+
+use super::kernel::{in_cardioid_or_bulb, smooth_value, Orbit};
+use super::view::{Fractal, Shading, View};
+use crate::error::{Error, ViewError};
+use crate::math::big::{DeepCoord, DEEP_LIMBS};
+use crate::math::wide::{mul_i32_wide, mul_wide};
+
+/// Bytes of one [`ReferencePoint`]: the reference orbit's RAM per iteration.
+pub const REFERENCE_POINT_BYTES: usize = size_of::<ReferencePoint>();
+
+/// Bits the reference keeps below the pixel spacing, at least: rounding in a long orbit
+/// is magnified, so it keeps 4 more for every doubling of the cap (96 at 4096
+/// iterations), as the limbs allow.
+const GUARD_BITS: u32 = 48;
+
+/// The exponent of zero: larger than any other, so zero's terms shift away.
+const ZERO_EXPONENT: i32 = 1 << 12;
+
+/// Bits of a normalised mantissa: the larger part's magnitude is in [2⁶¹, 2⁶²).
+const MANTISSA_BITS: u32 = 62;
+
+/// One value of a reference orbit: (x + iy)·2^−exponent, the larger of |x|, |y| in
+/// [2⁶¹, 2⁶²] (or both 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ReferencePoint {
+    x: i64,
+    y: i64,
+    exponent: i32,
+}
+
+impl ReferencePoint {
+    /// The value as `f64` (for tests and host output).
+    pub fn to_f64(self) -> (f64, f64) {
+        let scale = pow2(-self.exponent);
+        (self.x as f64 * scale, self.y as f64 * scale)
+    }
+
+    fn scaled(self) -> Scaled {
+        Scaled {
+            x: self.x,
+            y: self.y,
+            s: self.exponent,
+        }
+    }
+}
+
+/// A reference orbit computed into caller storage, ready for a perturbed render.
+#[derive(Debug, Clone, Copy)]
+pub struct ReferenceOrbit<'r> {
+    points: &'r [ReferencePoint],
+    limbs: u32,
+    escaped: bool,
+}
+
+impl<'r> ReferenceOrbit<'r> {
+    /// Points a view's reference may need: one per iteration and Z₀.
+    pub const fn points_needed(view: &View) -> usize {
+        view.max_iterations as usize + 1
+    }
+
+    /// Computes the reference orbit of `view` (a Mandelbrot view) at its centre into
+    /// `storage`, which must hold [`points_needed`](Self::points_needed) points (12 bytes
+    /// each): 1001 points, 12 KiB, for 1000 iterations.
+    pub fn compute(view: &View, storage: &'r mut [ReferencePoint]) -> Result<Self, Error> {
+        if let Fractal::Julia { .. } = view.fractal {
+            return Err(Error::View(ViewError::PerturbationNeedsMandelbrot));
+        }
+        let needed = Self::points_needed(view);
+        if storage.len() < needed {
+            return Err(Error::View(ViewError::ReferenceTooShort {
+                needed,
+                given: storage.len(),
+            }));
+        }
+        let limbs = limbs_for(view);
+        let (cx, cy) = (
+            view.deep_centre.0.truncated(limbs),
+            view.deep_centre.1.truncated(limbs),
+        );
+        let four = DeepCoord::from_coord(crate::math::Coord::from_bits(1 << 62));
+        let (mut x, mut y) = (DeepCoord::ZERO, DeepCoord::ZERO);
+        let mut length = 0;
+        let mut escaped = false;
+        for slot in storage.iter_mut().take(needed) {
+            *slot = normalise_pair(x, y);
+            length += 1;
+            let (x2, y2) = (x.mul(x, limbs), y.mul(y, limbs));
+            if x2.add(y2).sub(four).is_negative() || x2.add(y2) == four {
+                // |Z|² ≤ 4: the next value stays within ±8.
+                let xy = x.mul(y, limbs);
+                (x, y) = (x2.sub(y2).add(cx), xy.add(xy).add(cy));
+            } else {
+                escaped = true;
+                break;
+            }
+        }
+        let points = storage.get(..length).unwrap_or(&[]);
+        Ok(Self {
+            points,
+            limbs: limbs as u32,
+            escaped,
+        })
+    }
+
+    /// The orbit's points: Z₀ (0) first, to the first that escaped or to max-iter.
+    pub const fn points(&self) -> &'r [ReferencePoint] {
+        self.points
+    }
+
+    /// Limbs of 32 bits the orbit was computed in.
+    pub const fn limbs(&self) -> u32 {
+        self.limbs
+    }
+
+    /// Whether the reference point itself escaped (its last point is past radius 2).
+    pub const fn escaped(&self) -> bool {
+        self.escaped
+    }
+}
+
+/// Limbs the reference of `view` needs: its integer bits and fraction down to
+/// the guard bits below the pixel spacing.
+fn limbs_for(view: &View) -> usize {
+    let spacing_bit = view.deep_spacing.top_bit().unwrap_or(0);
+    let iteration_bits = 32 - view.max_iterations.saturating_sub(1).leading_zeros();
+    let guard = GUARD_BITS + 4 * iteration_bits;
+    let fraction = DeepCoord::FRAC_BITS - spacing_bit.min(DeepCoord::FRAC_BITS) + guard;
+    let bits = fraction + (32 * DEEP_LIMBS as u32 - DeepCoord::FRAC_BITS);
+    (bits.div_ceil(32) as usize).min(DEEP_LIMBS)
+}
+
+/// A complex value (x + iy)·2^−s with a shared exponent.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Scaled {
+    x: i64,
+    y: i64,
+    s: i32,
+}
+
+impl Scaled {
+    const ZERO: Self = Self {
+        x: 0,
+        y: 0,
+        s: ZERO_EXPONENT,
+    };
+}
+
+/// (x + iy)·2^−s normalised: the larger part's top bit at bit 61. Shifts floor.
+#[inline(always)]
+fn normalise(x: i128, y: i128, s: i32) -> Scaled {
+    let magnitude = x.unsigned_abs() | y.unsigned_abs();
+    if magnitude == 0 {
+        return Scaled::ZERO;
+    }
+    let shift = (128 - magnitude.leading_zeros()) as i32 - MANTISSA_BITS as i32;
+    if shift >= 0 {
+        Scaled {
+            x: (x >> shift) as i64,
+            y: (y >> shift) as i64,
+            s: s - shift,
+        }
+    } else {
+        Scaled {
+            x: (x << -shift) as i64,
+            y: (y << -shift) as i64,
+            s: s - shift,
+        }
+    }
+}
+
+/// A pair of wide numbers as a normalised reference point.
+fn normalise_pair(x: DeepCoord, y: DeepCoord) -> ReferencePoint {
+    let top = match (x.top_bit(), y.top_bit()) {
+        (None, None) => {
+            return ReferencePoint {
+                x: 0,
+                y: 0,
+                exponent: ZERO_EXPONENT,
+            }
+        }
+        (a, b) => a.unwrap_or(0).max(b.unwrap_or(0)),
+    };
+    // Keep the top 63 bits of the larger part (its sign bit included), then normalise.
+    let shift = top.saturating_sub(MANTISSA_BITS);
+    let scaled = normalise(
+        i128::from(x.bits_from(shift)),
+        i128::from(y.bits_from(shift)),
+        DeepCoord::FRAC_BITS as i32 - shift as i32,
+    );
+    ReferencePoint {
+        x: scaled.x,
+        y: scaled.y,
+        exponent: scaled.s,
+    }
+}
+
+/// `value` >> `shift` for any shift ≥ 0 (past 127: the sign).
+#[inline(always)]
+fn shr(value: i128, shift: i32) -> i128 {
+    value >> shift.clamp(0, 127)
+}
+
+/// A mantissa with exponent in Q28, to the floor; the exponent must be at least 54
+/// (callers check), so the result is below 2³⁶.
+#[inline(always)]
+fn to_q28(mantissa: i64, exponent: i32) -> i64 {
+    mantissa >> (exponent - 28).clamp(0, 63)
+}
+
+/// The pixels of a perturbed render: the reference, the spacing, and the view's cap.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Perturbation<'r> {
+    reference: &'r [ReferencePoint],
+    /// Half the pixel spacing: `spacing_mantissa`·2^−`spacing_exponent`, the mantissa in
+    /// [2⁶¹, 2⁶²).
+    spacing_mantissa: i64,
+    spacing_exponent: i32,
+    /// The centre in Q28, for the cardioid test and the smooth value.
+    centre: (i32, i32),
+    max: u32,
+    inside: u32,
+    smooth: bool,
+}
+
+impl<'r> Perturbation<'r> {
+    /// The pixels of `view` against `reference` (computed for that view).
+    pub(crate) fn new(view: &View, reference: ReferenceOrbit<'r>) -> Self {
+        let spacing = view.deep_spacing;
+        let top = spacing.top_bit().unwrap_or(0);
+        let mantissa = if top >= 61 {
+            spacing.bits_from(top - 61)
+        } else {
+            spacing.shl(61 - top).bits_from(0)
+        };
+        // spacing = mantissa·2^(top − 61 − FRAC_BITS); half of it one more.
+        let exponent = DeepCoord::FRAC_BITS as i32 + 61 - top as i32 + 1;
+        let q28 = |value: DeepCoord| value.bits_from(DeepCoord::FRAC_BITS - 28) as i32;
+        Self {
+            reference: reference.points,
+            spacing_mantissa: mantissa,
+            spacing_exponent: exponent,
+            centre: (q28(view.deep_centre.0), q28(view.deep_centre.1)),
+            max: view.max_iterations,
+            inside: u32::from(view.inside_value()),
+            smooth: view.shading == Shading::Smooth,
+        }
+    }
+
+    /// δc of the pixel whose offsets from the centre are `re`·spacing/2 and
+    /// `im`·spacing/2 (odd integers, as the view's points are).
+    fn offset(&self, re: i64, im: i64) -> Scaled {
+        normalise(
+            mul_wide(re, self.spacing_mantissa),
+            mul_wide(im, self.spacing_mantissa),
+            self.spacing_exponent,
+        )
+    }
+
+    /// The value of the pixel offset by (`re`, `im`) half spacings from the centre, and
+    /// how many times it rebased.
+    pub(crate) fn dwell(&self, re: i64, im: i64) -> (Orbit, u32) {
+        let c = self.offset(re, im);
+        let point = (
+            i64::from(self.centre.0) + to_q28(c.x, c.s),
+            i64::from(self.centre.1) + to_q28(c.y, c.s),
+        );
+        let point = (clamp_i32(point.0), clamp_i32(point.1));
+        if in_cardioid_or_bulb(point.0, point.1) {
+            return (
+                Orbit {
+                    dwell: self.inside,
+                    iterations: 0,
+                },
+                0,
+            );
+        }
+        let last = self.reference.len().saturating_sub(1);
+        let mut delta = Scaled::ZERO;
+        let mut m = 0usize;
+        let mut n = 0u32;
+        let mut rebases = 0;
+        while n < self.max {
+            let Some(&z) = self.reference.get(m) else {
+                break;
+            };
+            delta = step(delta, z.scaled(), c);
+            m += 1;
+            n += 1;
+            let Some(&next) = self.reference.get(m) else {
+                break;
+            };
+            let next = next.scaled();
+            if let Some(z) = escaped(next, delta) {
+                let dwell = if self.smooth {
+                    smooth_value(n, z, point, self.max, self.inside)
+                } else {
+                    n
+                };
+                return (
+                    Orbit {
+                        dwell,
+                        iterations: n,
+                    },
+                    rebases,
+                );
+            }
+            // |Z| < 2|δ| is only possible when Z's exponent is within 3 of δ's.
+            if m == last || next.s + 3 > delta.s {
+                if let Some(z) = rebased(next, delta, m == last) {
+                    delta = z;
+                    m = 0;
+                    rebases += 1;
+                }
+            }
+        }
+        (
+            Orbit {
+                dwell: self.inside,
+                iterations: n,
+            },
+            rebases,
+        )
+    }
+}
+
+fn clamp_i32(value: i64) -> i32 {
+    value.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+}
+
+/// δ ← 2Zδ + δ² + δc.
+///
+/// The three terms are summed in the units of the largest one's bound (each below 2¹²⁴
+/// there, the sum below 2¹²⁶), not in δ's: when Zₙ is near 0 (a reference passing through
+/// its own minibrot's period) δ² and δc can be far smaller than δ, and summed in δ's
+/// units they would be lost.
+#[inline(always)]
+fn step(d: Scaled, z: Scaled, c: Scaled) -> Scaled {
+    // Mantissas below 2^62 + 1: 2Zδ in units 2^-(e+s) is below 2^126, δ² in 2^-2s below
+    // 2^125, δc in 2^-sc below 2^62.
+    let u = (z.s + d.s - 2).min(2 * d.s - 2).min(c.s + 61);
+    let px = mul_wide(z.x, d.x) - mul_wide(z.y, d.y);
+    let py = mul_wide(z.x, d.y) + mul_wide(z.y, d.x);
+    let k = z.s + d.s - 1 - u;
+    let (mut x, mut y) = (shr(px, k), shr(py, k));
+    let k = 2 * d.s - u;
+    if k < 126 {
+        x += shr(mul_wide(d.x, d.x) - mul_wide(d.y, d.y), k);
+        y += shr(2 * mul_wide(d.x, d.y), k);
+    }
+    let k = c.s - u;
+    if k >= 0 {
+        x += shr(i128::from(c.x), k);
+        y += shr(i128::from(c.y), k);
+    } else {
+        // At most 61 bits up: below 2^123.
+        x += i128::from(c.x) << -k;
+        y += i128::from(c.y) << -k;
+    }
+    normalise(x, y, u)
+}
+
+/// z = Z + δ in Q28 if |z| > 2 (escaped), else `None`.
+#[inline(always)]
+fn escaped(z: Scaled, d: Scaled) -> Option<(i32, i32)> {
+    // A part of δ beyond 2⁷: certainly out (|Z| ≤ 8 for a reference point).
+    if d.s < 54 {
+        return Some((clamp_i32(to_q28(z.x, z.s)), clamp_i32(to_q28(z.y, z.s))));
+    }
+    let x = to_q28(z.x, z.s) + to_q28(d.x, d.s);
+    let y = to_q28(z.y, z.s) + to_q28(d.y, d.s);
+    // Beyond 4 in a part: out, without squaring.
+    const FOUR: u64 = 1 << 30;
+    if x.unsigned_abs() > FOUR || y.unsigned_abs() > FOUR {
+        return Some((clamp_i32(x), clamp_i32(y)));
+    }
+    let (x, y) = (x as i32, y as i32);
+    let modulus = mul_i32_wide(x, x) + mul_i32_wide(y, y);
+    (modulus > 4 << 56).then_some((x, y))
+}
+
+/// z = Z + δ as the new δ if |z| < |δ| or `always`, else `None`.
+#[inline(never)]
+fn rebased(z: Scaled, d: Scaled, always: bool) -> Option<Scaled> {
+    // Both in the larger one's units (the smaller exponent): each below 2^62, sums below
+    // 2^63, squares below 2^126.
+    let u = z.s.min(d.s);
+    let align = |m: i64, s: i32| m >> (s - u).clamp(0, 63);
+    let (dx, dy) = (align(d.x, d.s), align(d.y, d.s));
+    let (x, y) = (align(z.x, z.s) + dx, align(z.y, z.s) + dy);
+    let square = |a: i64, b: i64| mul_wide(a, a) + mul_wide(b, b);
+    (always || square(x, y) < square(dx, dy)).then(|| normalise(i128::from(x), i128::from(y), u))
+}
+
+/// 2^`power` as f64, for `to_f64`.
+fn pow2(power: i32) -> f64 {
+    let mut value = 1.0;
+    let step = if power < 0 { 0.5 } else { 2.0 };
+    for _ in 0..power.unsigned_abs().min(2000) {
+        value *= step;
+    }
+    value
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalise_keeps_sixty_two_bits() {
+        let value = normalise(3, -1, 10);
+        assert_eq!(value.x, 3 << 60);
+        assert_eq!(value.y, -(1 << 60));
+        assert_eq!(value.x as f64 * pow2(-value.s), 3.0 / 1024.0);
+        assert_eq!(normalise(0, 0, 5), Scaled::ZERO);
+    }
+
+    #[test]
+    fn a_step_from_zero_is_the_offset() {
+        let c = normalise(5, 7, 40);
+        assert_eq!(step(Scaled::ZERO, Scaled::ZERO, c), c);
+    }
+}

@@ -1,0 +1,211 @@
+//! Perturbation against an independent big-number model: each pixel's orbit iterated
+//! directly in 256-bit fixed point with `num-bigint` (its own decimal parser, its own
+//! points), at 10⁻¹², 10⁻²⁰ (around a minibrot, whose reference passes near 0 so its
+//! pixels must rebase) and 10⁻³⁰ (a spiral around a Misiurewicz point).
+
+use embedded_graphics::geometry::Size;
+use num_bigint::BigInt;
+use tinyfractal::{
+    Algorithm, DeepCoord, DwellBuffer, Error, Fractal, ReferencePoint, Render, Tier, View,
+    ViewError,
+};
+
+/// Fractional bits of the model.
+const P: u32 = 256;
+
+/// Decimal text to P-bit fixed point, rounded toward −∞ (independent of the crate's
+/// parser).
+fn fixed(text: &str) -> BigInt {
+    let (mantissa, exponent) = match text.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i64>().unwrap()),
+        None => (text, 0),
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let digits: BigInt = format!("{whole}{fraction}").parse().unwrap();
+    let power = exponent - fraction.len() as i64;
+    let scaled = digits << P;
+    if power >= 0 {
+        scaled * BigInt::from(10).pow(power as u32)
+    } else {
+        let divisor = BigInt::from(10).pow((-power) as u32);
+        let quotient = &scaled / &divisor;
+        // BigInt division truncates toward zero; floor it.
+        if &quotient * &divisor != scaled && scaled < BigInt::from(0) {
+            quotient - 1
+        } else {
+            quotient
+        }
+    }
+}
+
+/// Each pixel's dwell, z ← z² + c from 0 in P-bit fixed point, c = centre + (2i + 1 − W)
+/// · width / 2W (and − for rows, down).
+fn model(centre: (&str, &str), width: &str, size: (u32, u32), max: u32) -> Vec<u16> {
+    let (cx, cy, width) = (fixed(centre.0), fixed(centre.1), fixed(width));
+    let (w, h) = (i64::from(size.0), i64::from(size.1));
+    let four = BigInt::from(4) << (2 * P);
+    let mut dwells = Vec::new();
+    for j in 0..h {
+        let ci = &cy - (&width * (2 * j + 1 - h)) / (2 * w);
+        for i in 0..w {
+            let cr = &cx + (&width * (2 * i + 1 - w)) / (2 * w);
+            let (mut x, mut y) = (BigInt::from(0), BigInt::from(0));
+            let mut dwell = max;
+            for n in 1..=max {
+                let (x2, y2) = (&x * &x, &y * &y);
+                y = ((&x * &y) >> (P - 1)) + &ci;
+                x = ((x2 - y2) >> P) + &cr;
+                if &x * &x + &y * &y > four {
+                    dwell = n;
+                    break;
+                }
+            }
+            dwells.push(dwell as u16);
+        }
+    }
+    dwells
+}
+
+fn deep_view(centre: (&str, &str), width: &str, size: (u32, u32), max: u32) -> View {
+    let parse = |text: &str| DeepCoord::parse(text).unwrap();
+    View::deep(
+        Fractal::Mandelbrot,
+        (parse(centre.0), parse(centre.1)),
+        parse(width),
+        Size::new(size.0, size.1),
+        max,
+    )
+    .unwrap()
+}
+
+fn perturbed(view: View, algorithm: Algorithm) -> Vec<u16> {
+    let size = view.size();
+    let mut storage = vec![ReferencePoint::default(); view.max_iterations() as usize + 1];
+    let mut dwells = vec![0; (size.width * size.height) as usize];
+    let mut render = Render::perturbed(view, algorithm, &mut storage).unwrap();
+    let Ok(_) = render.run(&mut DwellBuffer::new(&mut dwells, size.width));
+    dwells
+}
+
+/// (identical, pixels) of our dwells against the model's.
+fn agreement(centre: (&str, &str), width: &str, size: (u32, u32), max: u32) -> (usize, usize) {
+    let view = deep_view(centre, width, size, max);
+    let ours = perturbed(view, Algorithm::Exact);
+    let expected = model(centre, width, size, max);
+    let same = ours.iter().zip(&expected).filter(|(a, b)| a == b).count();
+    // The views are not flat: a test of one dwell everywhere could not fail.
+    let mut distinct = expected.clone();
+    distinct.sort_unstable();
+    distinct.dedup();
+    assert!(
+        distinct.len() > 20,
+        "{width}: only {} dwells",
+        distinct.len()
+    );
+    (same, expected.len())
+}
+
+const SEAHORSE: (&str, &str) = (
+    "-0.743643887037158704752191506114774",
+    "0.131825904205311970493132056385139",
+);
+/// The nucleus of a period-78 minibrot (about 2.5·10⁻²¹ across), found by Newton's method
+/// near the Misiurewicz point below.
+const MINIBROT: (&str, &str) = (
+    "-0.10109636410757091114366614915908574412568301067472",
+    "0.95628651094936751151473189358592427640764366257311",
+);
+/// The Misiurewicz point M₄,₁ (z₄ is a repelling fixed point): spirals at every scale.
+const MISIUREWICZ: (&str, &str) = (
+    "-0.1010963638456221610257854457386225654638",
+    "0.9562865108091415007710960577299774358098",
+);
+
+#[test]
+fn dwells_match_a_big_number_model_at_three_depths() {
+    let views = [
+        (SEAHORSE, "1e-12", 3000),
+        (MINIBROT, "1e-20", 4000),
+        (MISIUREWICZ, "1e-30", 1000),
+    ];
+    let (mut same, mut total) = (0, 0);
+    for (centre, width, max) in views {
+        let (s, t) = agreement(centre, width, (48, 36), max);
+        eprintln!("{width}: {s} of {t} dwells identical");
+        same += s;
+        total += t;
+    }
+    assert!(
+        same * 1000 >= total * 999,
+        "{same} of {total} dwells identical"
+    );
+}
+
+#[test]
+fn views_past_deep_take_perturbation_and_shallower_ones_a_fixed_tier() {
+    assert_eq!(
+        deep_view(MISIUREWICZ, "1e-30", (48, 36), 100).tier(),
+        Tier::Perturbation
+    );
+    assert_eq!(
+        deep_view(MISIUREWICZ, "1e-6", (48, 36), 100).tier(),
+        Tier::Deep
+    );
+}
+
+#[test]
+fn bad_input_is_a_typed_error_naming_the_limit() {
+    let parse = |text: &str| DeepCoord::parse(text).unwrap();
+    let view = View::deep(
+        Fractal::Mandelbrot,
+        (parse(MISIUREWICZ.0), parse(MISIUREWICZ.1)),
+        parse("1e-44"),
+        Size::new(320, 240),
+        100,
+    );
+    let Err(Error::View(error @ ViewError::PerturbationTooDeep { .. })) = view else {
+        panic!("{view:?}");
+    };
+    assert!(error.to_string().contains("2^-148"), "{error}");
+    let view = deep_view(MISIUREWICZ, "1e-30", (48, 36), 100);
+    let mut short = [ReferencePoint::default(); 100];
+    let Err(Error::View(ViewError::ReferenceTooShort {
+        needed: 101,
+        given: 100,
+    })) = Render::perturbed(view, Algorithm::Fast, &mut short)
+    else {
+        panic!("a short reference was accepted");
+    };
+}
+
+/// Beside the minibrot above, not on it: the reference does not pass near 0 where the
+/// pixels inside and around the minibrot do, so those pixels' z = Z + δ becomes far
+/// smaller than δ (the classic glitch), and they must rebase.
+const BESIDE_MINIBROT: (&str, &str) = (
+    "-0.10109636410757091114066614915908574412568301067472",
+    "0.95628651094936751151273189358592427640764366257311",
+);
+
+#[test]
+fn glitching_pixels_rebase_and_match_the_model() {
+    let (centre, width, size, max) = (BESIDE_MINIBROT, "1e-20", (48, 36), 4000);
+    let view = deep_view(centre, width, size, max);
+    let mut storage = vec![ReferencePoint::default(); max as usize + 1];
+    let mut dwells = vec![0; (size.0 * size.1) as usize];
+    let mut render = Render::perturbed(view, Algorithm::Exact, &mut storage).unwrap();
+    let Ok(stats) = render.run(&mut DwellBuffer::new(&mut dwells, size.0));
+    let expected = model(centre, width, size, max);
+    let same = dwells.iter().zip(&expected).filter(|(a, b)| a == b).count();
+    let inside = expected.iter().filter(|&&d| d == max as u16).count();
+    eprintln!("rebases {} same {same} inside {inside}", stats.rebases);
+    assert!(stats.rebases > 100, "{} rebases", stats.rebases);
+    assert!(
+        inside > 20,
+        "the minibrot is in view: {inside} pixels inside"
+    );
+    assert!(
+        same * 1000 >= expected.len() * 999,
+        "{same} of {}",
+        expected.len()
+    );
+}
