@@ -655,6 +655,7 @@ enum Precision {
     Medium,
     Standard,
     Deep,
+    Perturbation,
 }
 
 impl Precision {
@@ -665,6 +666,7 @@ impl Precision {
             Self::Medium => Some(tinyfractal::Tier::Medium),
             Self::Standard => Some(tinyfractal::Tier::Standard),
             Self::Deep => Some(tinyfractal::Tier::Deep),
+            Self::Perturbation => Some(tinyfractal::Tier::Perturbation),
         }
     }
 }

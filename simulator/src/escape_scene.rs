@@ -7,8 +7,8 @@ use std::time::{Duration, Instant};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    Algorithm, Bands, Coord, DwellBuffer, Error, Fractal, Gradient, Palette, Render, RenderStats,
-    Shading, Tier, TwoColor, View,
+    Algorithm, Bands, Coord, DeepCoord, DwellBuffer, Error, Fractal, Gradient, Palette,
+    ReferenceOrbit, ReferencePoint, Render, RenderStats, Shading, Tier, TwoColor, View,
 };
 
 /// A rendered view.
@@ -60,6 +60,12 @@ pub fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
     })
 }
 
+/// A `--center` or `--width` number with every digit kept (up to
+/// [`MAX_DECIMAL_PLACES`](tinyfractal::MAX_DECIMAL_PLACES) after the point), checked.
+pub fn deep_coordinate(what: &str, text: &str) -> Result<DeepCoord, String> {
+    DeepCoord::parse(text).map_err(|error| format!("{what}: `{text}`: {error}"))
+}
+
 /// The fractal and centre of a request, checked.
 pub fn fractal_and_centre(request: &Request<'_>) -> Result<(Fractal, (Coord, Coord)), String> {
     let fractal = match request.julia {
@@ -78,10 +84,14 @@ pub fn fractal_and_centre(request: &Request<'_>) -> Result<(Fractal, (Coord, Coo
 
 /// A request's view at `width` (text, as the user wrote it), and its palette.
 pub fn view_at(request: &Request<'_>, width: &str) -> Result<(View, HostPalette), String> {
-    let (fractal, centre) = fractal_and_centre(request)?;
-    let width = coordinate("--width", width)?;
+    let (fractal, _) = fractal_and_centre(request)?;
+    let centre = (
+        deep_coordinate("--center", request.centre.0)?,
+        deep_coordinate("--center", request.centre.1)?,
+    );
+    let width = deep_coordinate("--width", width)?;
     let (palette, shading) = palette(request.palette)?;
-    let mut view = View::new(fractal, centre, width, request.size, request.max_iterations)
+    let mut view = View::deep(fractal, centre, width, request.size, request.max_iterations)
         .and_then(|view| view.with_shading(shading))
         .map_err(|e: Error| e.to_string())?;
     if let Some(tier) = request.tier {
@@ -132,12 +142,20 @@ fn pixel_count(size: Size) -> Result<usize, String> {
         .map_err(|_| "the picture is too large for this machine".to_string())
 }
 
-/// Every pixel's value, row by row.
+/// Every pixel's value, row by row; a perturbation view's reference orbit in a buffer
+/// allocated here.
 pub fn compute(view: View, algorithm: Algorithm) -> Result<(Vec<u16>, RenderStats), String> {
     let size = view.size();
     let mut values = vec![0; pixel_count(size)?];
-    let Ok(stats) =
-        Render::new(view, algorithm).run(&mut DwellBuffer::new(&mut values, size.width));
+    let mut sink = DwellBuffer::new(&mut values, size.width);
+    let Ok(stats) = if view.tier() == Tier::Perturbation {
+        let mut reference = vec![ReferencePoint::default(); ReferenceOrbit::points_needed(&view)];
+        Render::perturbed(view, algorithm, &mut reference)
+            .map_err(|e| e.to_string())?
+            .run(&mut sink)
+    } else {
+        Render::new(view, algorithm).run(&mut sink)
+    };
     Ok((values, stats))
 }
 
@@ -209,7 +227,8 @@ pub fn tier_warning(view: &View) -> Option<String> {
         return None;
     }
     let tier = view.tier();
-    let unit = Coord::from_bits(1 << (Coord::FRAC_BITS - tier.precision_bits()));
+    let bits = Coord::FRAC_BITS.saturating_sub(tier.precision_bits());
+    let unit = Coord::from_bits(1 << bits);
     Some(format!(
         "--precision {} cannot tell this view's pixels apart (pixel spacing {} is below its \
          unit {unit}): the picture comes out flat or in blocks; the automatic tier for this \

@@ -427,7 +427,16 @@ impl Explorer {
             tier: None,
             palette: PALETTES[state.palette % PALETTES.len()],
         };
-        escape_scene::view_at(&request, &width)
+        let (view, palette) = escape_scene::view_at(&request, &width)?;
+        // Its centre is an f64: past Deep's spacing it has no more digits to zoom into.
+        if view.tier() == tinyfractal::Tier::Perturbation {
+            return Err(format!(
+                "the explorer zooms to a pixel spacing of 2^-54; for deeper views use \
+                 `tinyfractal render mandelbrot --center RE,IM --width {width}` with all the \
+                 centre's digits"
+            ));
+        }
+        Ok((view, palette))
     }
 
     /// Whether the picture is complete.

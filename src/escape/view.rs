@@ -261,6 +261,8 @@ impl View {
             let mut view = Self::new(fractal, rounded, stand_in, size, max_iterations)?;
             view.tier = Tier::Perturbation;
             view.automatic = Tier::Perturbation;
+            // What a fixed tier forced on it sees: a spacing below its resolution.
+            view.spacing = deep_spacing.to_coord().to_bits();
             view
         };
         view.deep_centre = centre;

@@ -71,6 +71,21 @@ pub(crate) fn twice_product_by_squares(a: i32, b: i32, a_squared: i64, b_squared
 /// The exact product of two i64 as i128, from four 32×32→64 products: an i128 multiply is
 /// a library call on Cortex-M, and these are single instructions on M3/M4.
 pub(crate) fn mul_wide(a: i64, b: i64) -> i128 {
+    // On 64-bit hosts the native product is the same exact value, in one or two
+    // instructions.
+    #[cfg(target_pointer_width = "64")]
+    {
+        i128::from(a) * i128::from(b)
+    }
+    #[cfg(not(target_pointer_width = "64"))]
+    {
+        mul_wide_by_halves(a, b)
+    }
+}
+
+/// [`mul_wide`] from four 32×32→64 products.
+#[cfg(any(test, not(target_pointer_width = "64")))]
+fn mul_wide_by_halves(a: i64, b: i64) -> i128 {
     let negative = (a < 0) != (b < 0);
     let (a, b) = (a.unsigned_abs(), b.unsigned_abs());
     let (a_low, a_high) = (a as u32, (a >> 32) as u32);
@@ -186,7 +201,11 @@ mod tests {
         ];
         for &a in &values {
             for &b in &values {
-                assert_eq!(mul_wide(a, b), i128::from(a) * i128::from(b), "{a} × {b}");
+                assert_eq!(
+                    mul_wide_by_halves(a, b),
+                    i128::from(a) * i128::from(b),
+                    "{a} × {b}"
+                );
             }
         }
     }
