@@ -241,6 +241,136 @@ fn gallery_renders_every_scene() {
             .any(|l| l.contains("deep-zoom") && l.contains("deep tier")),
         "{table}"
     );
+    for deep in ["deep-minibrot", "deep-spiral"] {
+        assert!(
+            table
+                .lines()
+                .any(|l| l.contains(deep) && l.contains("perturbation tier")),
+            "{table}"
+        );
+    }
+}
+
+/// The spiral around the Misiurewicz point M₄,₁, to 40 digits.
+const M41: &str =
+    "--center=-0.1010963638456221610257854457386225654638,0.9562865108091415007710960577299774358098";
+
+#[test]
+fn a_centre_with_forty_digits_zooms_to_ten_to_the_minus_thirty() {
+    let dir = scratch("deep-render");
+    let (out, dwell) = (dir.join("deep.png"), dir.join("deep.txt"));
+    let output = run(&[
+        "render",
+        "mandelbrot",
+        M41,
+        "--width",
+        "1e-30",
+        "--max-iter",
+        "600",
+        "--size",
+        "64x48",
+        "--out",
+        out.to_str().unwrap(),
+        "--dwell",
+        dwell.to_str().unwrap(),
+        "--stats",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        stdout(&output).contains("tier=perturbation"),
+        "{}",
+        stdout(&output)
+    );
+    let (_, rows) = read_dwell(&dwell);
+    let mut dwells: Vec<u32> = rows.concat();
+    dwells.sort_unstable();
+    dwells.dedup();
+    // The spiral's arms, not one flat colour: dwells from about 240 to 290.
+    assert!(dwells.len() > 20, "{dwells:?}");
+    assert!(
+        dwells[0] > 200 && dwells[dwells.len() - 1] < 600,
+        "{dwells:?}"
+    );
+}
+
+#[test]
+fn perturbation_by_hand_draws_the_deep_tiers_dwells() {
+    let dir = scratch("deep-by-hand");
+    let mut dwells = Vec::new();
+    for precision in ["deep", "perturbation"] {
+        let path = dir.join(format!("{precision}.txt"));
+        let output = run(&[
+            "render",
+            "mandelbrot",
+            "--center=-0.743643887037151,0.131825904205330",
+            "--width",
+            "1e-7",
+            "--max-iter",
+            "1000",
+            "--size",
+            "64x32",
+            "--precision",
+            precision,
+            "--out",
+            dir.join(format!("{precision}.png")).to_str().unwrap(),
+            "--dwell",
+            path.to_str().unwrap(),
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        dwells.push(read_dwell(&path).1.concat());
+    }
+    let same = dwells[0]
+        .iter()
+        .zip(&dwells[1])
+        .filter(|(a, b)| a == b)
+        .count();
+    assert!(
+        same * 1000 >= dwells[0].len() * 999,
+        "{same} of {}",
+        dwells[0].len()
+    );
+}
+
+#[test]
+fn deep_input_beyond_the_limits_is_refused_with_the_limit() {
+    let dir = scratch("deep-limits");
+    let out = dir.join("x.png");
+    let cases = [
+        ("--width=1e-45".to_string(), M41.to_string(), "2^-148"),
+        (
+            "--width=1e-30".to_string(),
+            format!("--center=0.{}1,0", "0".repeat(60)),
+            "tells apart at most 56",
+        ),
+    ];
+    for (width, centre, message) in cases {
+        let output = run(&[
+            "render",
+            "mandelbrot",
+            &centre,
+            &width,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(output.status.code(), Some(1), "{width} {centre}");
+        let err = stderr(&output);
+        assert!(err.contains(message), "{err}");
+        assert!(!out.exists());
+    }
+    let output = run(&[
+        "render",
+        "julia",
+        "--c=-0.8,0.156",
+        "--width=1e-30",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr(&output).contains("Mandelbrot set only"),
+        "{}",
+        stderr(&output)
+    );
 }
 
 fn read_dwell(path: &Path) -> (Vec<u32>, Vec<Vec<u32>>) {

@@ -3,8 +3,10 @@
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 
+use super::perturbation::ReferencePoint;
 use super::schedule::{Algorithm, Render, RenderStats};
 use super::view::View;
+use crate::error::DrawError;
 use crate::render::palette::Palette;
 use crate::render::sink::DwellSink;
 
@@ -91,6 +93,24 @@ impl<P: Palette> EscapeTime<P> {
     /// A render to run in steps from a main loop (see [`Render::step`]).
     pub fn render(&self) -> Render<'static> {
         Render::new(self.view, self.algorithm)
+    }
+
+    /// Draws a Mandelbrot view by perturbation (what a [`Tier::Perturbation`] view
+    /// needs), its reference orbit in `storage`: at least
+    /// [`ReferenceOrbit::points_needed`](crate::ReferenceOrbit::points_needed) points.
+    ///
+    /// [`Tier::Perturbation`]: crate::Tier::Perturbation
+    pub fn draw_perturbed<D>(
+        &self,
+        target: &mut D,
+        storage: &mut [ReferencePoint],
+    ) -> Result<RenderStats, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let mut render = Render::perturbed(self.view, self.algorithm, storage)?;
+        let mut painter = Painter::new(target, &self.palette, &self.view);
+        render.run(&mut painter).map_err(DrawError::Target)
     }
 }
 

@@ -138,6 +138,13 @@ mod firmware {
                 entry.draw(target, &GREY)
             });
         }
+        // Perturbation's views, where the RAM holds a reference orbit (not the micro:bit's).
+        #[cfg(measure_general)]
+        for entry in tinyfractal_scenes::DEEP_SCENES.iter() {
+            measure(&clock, (entry.name, entry.size), None, |target| {
+                entry.scene.draw(target, &GREY)
+            });
+        }
         hprintln!("measure done");
         debug::exit(debug::EXIT_SUCCESS);
         loop {

@@ -26,7 +26,7 @@ use rp2040_hal::{
     gpio::{FunctionSpi, Pins},
     pac, Sio, Spi, Timer, Watchdog,
 };
-use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, SCENES};
+use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES};
 
 /// The second-stage bootloader for the Pico's W25Q080 flash, first in the image.
 // SAFETY: `.boot2` is the 256 bytes memory.x reserves at the start of the flash for it.
@@ -104,7 +104,7 @@ fn main() -> ! {
     info!("ST7789 320x240 ready; GP15 shows the next scene");
 
     loop {
-        for entry in SCENES.iter() {
+        for entry in SCENES.iter().chain(&DEEP_SCENES) {
             let (name, scene) = (entry.name, entry.scene);
             let start = timer.get_counter();
             // An animated scene (the walking figure) waits FRAME_MS between frames.

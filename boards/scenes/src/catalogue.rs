@@ -4,8 +4,8 @@
 
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
-    Angle, Coord, CubeVariant, Dialect, Displacement, Error, Fractal, Grammar, Orientation, Real,
-    Shading, View,
+    Angle, Coord, CubeVariant, DeepCoord, Dialect, Displacement, Error, Fractal, Grammar,
+    Orientation, Real, Shading, View,
 };
 
 /// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
@@ -194,6 +194,7 @@ pub(crate) fn escape_view(
 ) -> Result<View, Error> {
     // Every catalogue number parses: `escape()` asserts it when the tables compile.
     let coord = |text: &str| Coord::parse(text).unwrap_or_default();
+    let deep = |text: &str| DeepCoord::parse(text).unwrap_or_default();
     let fractal = match julia {
         None => Fractal::Mandelbrot,
         Some((re, im)) => Fractal::Julia {
@@ -201,10 +202,10 @@ pub(crate) fn escape_view(
             im: coord(im),
         },
     };
-    View::new(
+    View::deep(
         fractal,
-        (coord(centre.0), coord(centre.1)),
-        coord(width),
+        (deep(centre.0), deep(centre.1)),
+        deep(width),
         size,
         max_iterations,
     )
@@ -414,6 +415,17 @@ const MANDELBROT_CENTRE: (&str, &str) = ("-0.75", "0");
 const JULIA_K: Option<(&str, &str)> = Some(("-0.8", "0.156"));
 /// Seahorse valley's spiral, for the deep zooms.
 const SPIRAL: (&str, &str) = ("-0.743643887037151", "0.131825904205330");
+/// The Misiurewicz point M₄,₁ (z₄ a repelling fixed point, found by Newton's method):
+/// spirals at every depth, and dwells that grow only with the log of the zoom.
+const MISIUREWICZ_4_1: (&str, &str) = (
+    "-0.1010963638456221610257854457386225654638",
+    "0.9562865108091415007710960577299774358098",
+);
+/// The nucleus of a period-78 minibrot about 2.5·10⁻²¹ across, near M₄,₁.
+const MINIBROT_78: (&str, &str) = (
+    "-0.10109636410757091114366614915908574412568301067472",
+    "0.95628651094936751151473189358592427640764366257311",
+);
 
 const fn subdivision(name: &'static str, shape: Shape, order: u32, size: Size) -> Entry {
     Entry {
@@ -451,7 +463,7 @@ const fn terrain(
 /// The gallery (`cargo run --release`): classic L-systems, escape-time views, the
 /// Sierpiński family and midpoint-displacement terrain, 320×240.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 19] = [
+pub const GALLERY: [Entry; 21] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -466,6 +478,9 @@ pub const GALLERY: [Entry; 19] = [
     smooth(escape("mandelbrot-smooth", None, ("-0.7453", "0.1127"), "0.01", 500, GALLERY_SIZE, ""), "smooth-classic"),
     // Width 10^-9: beyond the 32-bit tiers, computed in Q60 with 128-bit products.
     escape("deep-zoom", None, SPIRAL, "0.000000001", 4000, GALLERY_SIZE, "fire"),
+    // Past Deep's 2^-54: perturbation against one reference orbit.
+    escape("deep-minibrot", None, MINIBROT_78, "1e-20", 2000, GALLERY_SIZE, "fire"),
+    escape("deep-spiral", None, MISIUREWICZ_4_1, "1e-30", 1000, GALLERY_SIZE, "classic"),
     subdivision("sierpinski-carpet", Shape::Carpet, 4, GALLERY_SIZE),
     subdivision("sierpinski-gasket", Shape::Gasket, 7, GALLERY_SIZE),
     subdivision("sierpinski-cube", Shape::Cube(CubeVariant::Centre), 3, GALLERY_SIZE),
@@ -599,6 +614,20 @@ pub const SCENES: [Entry; 14] = [
     // Width 10^-7: needs the 60-bit tier with 128-bit products.
     escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire"),
 ];
+
+/// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the
+/// stack ([`MAX_BOARD_REFERENCE_POINTS`](crate::MAX_BOARD_REFERENCE_POINTS), 24 KiB):
+/// on the boards with the RAM for it and measured on Cortex-M3 and M4, not on the
+/// micro:bit (16 KiB). A minibrot 2.5·10⁻²¹ across in a view 10⁻²⁰ wide.
+pub const DEEP_SCENES: [Entry; 1] = [escape(
+    "perturbation-zoom",
+    None,
+    MINIBROT_78,
+    "1e-20",
+    1000,
+    OLED,
+    "fire",
+)];
 
 /// The escape-time views at a real board's display size (320×240), measured on
 /// Cortex-M0/M3/M4 beside the OLED's frames: the full Mandelbrot view at 256 iterations

@@ -14,10 +14,10 @@ pub mod measure;
 mod wait;
 
 pub use catalogue::{
-    Entry, GeneralEntry, IfsEntry, Scene, Shape, System, ABOP_LSYS, BUSH, CUBE_COLOUR,
+    Entry, GeneralEntry, IfsEntry, Scene, Shape, System, ABOP_LSYS, BUSH, CUBE_COLOUR, DEEP_SCENES,
     DISPLAY_SCENES, DRAGON, FERN, GALLERY, GENERAL_GALLERY, GENERAL_SCENES, GOSPER, HILBERT,
     IFS_GALLERY, KOCH_SNOWFLAKE, LECTURE_IFS, PLANT, SCENES, SIERPINSKI_ARROWHEAD,
     STOCHASTIC_PLANT,
 };
-pub use look::{Look, Work, COLOUR, GREY, MAX_BOARD_MAP_CELLS};
+pub use look::{Look, Work, COLOUR, GREY, MAX_BOARD_MAP_CELLS, MAX_BOARD_REFERENCE_POINTS};
 pub use wait::wait_for_press_or;

@@ -9,8 +9,8 @@ use tinyfractal::FitError;
 use tinyfractal::{
     walk_pose, Carpet, Colors, Displacement, DrawError, Error, EscapeTime, Figure, Gasket,
     Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile, Orientation, ParametricGrammar,
-    ParametricLSystem, Real, Shading, SierpinskiCube, Terrain, TerrainMap, View, BODY,
-    DEFAULT_DEPTH, DEFAULT_STACK,
+    ParametricLSystem, Real, ReferencePoint, Shading, SierpinskiCube, Terrain, TerrainMap, Tier,
+    View, BODY, DEFAULT_DEPTH, DEFAULT_STACK,
 };
 
 use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
@@ -146,10 +146,11 @@ impl Scene {
             } => {
                 let size = target.bounding_box().size;
                 let view = escape_view(julia, centre, width, max_iterations, shading, size)?;
-                match shading {
-                    Shading::Dwell => draw_escape::<D, 16>(target, look, view),
+                match (shading, view.tier()) {
+                    (_, Tier::Perturbation) => draw_perturbed(target, look, view),
+                    (Shading::Dwell, _) => draw_escape::<D, 16>(target, look, view),
                     // 16 entries a dwell: the same colours at whole dwells.
-                    Shading::Smooth => draw_escape::<D, 256>(target, look, view),
+                    (Shading::Smooth, _) => draw_escape::<D, 256>(target, look, view),
                 }
             }
         }
@@ -371,6 +372,29 @@ where
     let stats = EscapeTime::new(view, palette)
         .draw(target)
         .map_err(DrawError::Target)?;
+    Ok(Work::Iterations(stats.iterations))
+}
+
+/// Most points of a reference orbit a board keeps (on the stack, only while a deep view
+/// draws): 24 bytes each, 24 KiB for a cap of 1000 iterations.
+pub const MAX_BOARD_REFERENCE_POINTS: usize = 1001;
+
+/// A view past `Deep`'s spacing by perturbation, its reference orbit on the stack, out of
+/// line: dwell shading (a smooth deep scene would need the smooth gradient here too).
+#[inline(never)]
+fn draw_perturbed<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    view: View,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
+        .ok_or(Error::Fit(FitError::EmptyPalette))?;
+    let mut storage = [ReferencePoint::default(); MAX_BOARD_REFERENCE_POINTS];
+    let stats = EscapeTime::new(view, palette).draw_perturbed(target, &mut storage)?;
     Ok(Work::Iterations(stats.iterations))
 }
 

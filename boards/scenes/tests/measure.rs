@@ -20,7 +20,7 @@ use std::process::Command;
 
 use embedded_graphics::prelude::Size;
 use tinyfractal_scenes::measure::Checksum;
-use tinyfractal_scenes::{Work, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES};
+use tinyfractal_scenes::{Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES};
 
 struct Core {
     name: &'static str,
@@ -196,8 +196,8 @@ impl Expected {
 )]
 fn every_core_draws_the_host_picture_and_fits() {
     // The host's checksums: the same scene code into the same checksum target, for every
-    // core's scenes (the OLED's and the display-size views), then the general engine's,
-    // measured where the RAM holds them (not on the M0).
+    // core's scenes (the OLED's and the display-size views), then the general engine's
+    // and perturbation's, measured where the RAM holds them (not on the M0).
     let mut host: Vec<Expected> = SCENES
         .iter()
         .chain(&DISPLAY_SCENES)
@@ -221,6 +221,17 @@ fn every_core_draws_the_host_picture_and_fits() {
         };
         host.push(Expected::new(
             entry.name, "segment", entry.size, target, work,
+        ));
+    }
+    for entry in &DEEP_SCENES {
+        let mut target = Checksum::of_size(entry.size);
+        let work = entry.scene.draw(&mut target, &GREY).unwrap().count();
+        host.push(Expected::new(
+            entry.name,
+            entry.scene.work_unit(),
+            entry.size,
+            target,
+            work,
         ));
     }
 

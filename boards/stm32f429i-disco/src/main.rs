@@ -25,7 +25,7 @@ use stm32f4xx_hal::{
     spi::{Mode, Phase, Polarity},
     timer::Counter,
 };
-use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, SCENES};
+use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES};
 
 /// The board's 8 MHz HSE clock.
 const HSE_MHZ: u32 = 8;
@@ -115,7 +115,7 @@ fn main() -> ! {
     info!("ILI9341 240x320 ready; the user button shows the next scene");
 
     loop {
-        for entry in SCENES.iter() {
+        for entry in SCENES.iter().chain(&DEEP_SCENES) {
             let (name, scene) = (entry.name, entry.scene);
             let start = clock.now();
             // An animated scene (the walking figure) waits FRAME_MS between frames.
