@@ -487,8 +487,12 @@ fn escape_time_errors() {
             "max-iter 100000",
         ),
         (
-            vec!["mandelbrot", "--width", "0.00000000000001"],
-            "pixel spacing of 3.1225e-17",
+            vec!["julia", "--c", "-0.8,0.156", "--width", "0.00000000000001"],
+            "a Julia view is limited to the deep tier's spacing of 2^-54",
+        ),
+        (
+            vec!["mandelbrot", "--width", "1e-45"],
+            "pixel spacing of 3.1250e-48",
         ),
         (vec!["mandelbrot", "--size", "0x5"], "zero width or height"),
         (

@@ -103,8 +103,8 @@ impl fmt::Display for ViewError {
             ),
             Self::PerturbationTooDeep { spacing, finest } => write!(
                 f,
-                "the zoom is too deep: a pixel spacing of {spacing:e} (width ÷ pixels across) is \
-                 finer than perturbation's finest, {finest:e} (2^-148); widen the view or use \
+                "the zoom is too deep: a pixel spacing of {spacing:.4e} (width ÷ pixels across) is \
+                 finer than perturbation's finest, {finest:.4e} (2^-148); widen the view or use \
                  fewer pixels"
             ),
             Self::PerturbationNeedsMandelbrot => f.write_str(
