@@ -8,6 +8,7 @@
 use core::fmt;
 
 use super::coord::Coord;
+use super::decimal::{split_decimal, DecimalText};
 use super::wide::mul_u32_wide;
 
 /// Limbs of a [`DeepCoord`].
@@ -72,75 +73,41 @@ impl DeepCoord {
     /// Parses decimal text with an optional sign and exponent (`-0.743643887037158704752191506114774`,
     /// `1e-30`, `2.5E-3`), rounded to nearest from every digit given (half away from zero).
     pub fn parse(text: &str) -> Result<Self, DeepParseError> {
-        let bytes = text.as_bytes();
-        let (negative, mut at) = match bytes.first() {
-            Some(b'-') => (true, 1),
-            Some(b'+') => (false, 1),
-            _ => (false, 0),
-        };
+        let DecimalText {
+            negative,
+            digits: text,
+            power,
+        } = split_decimal(text).ok_or(DeepParseError::Malformed)?;
         // The value is `digits` × 10^`exponent`; `digits` as decimal digit values.
         let mut digits = [0u8; 64];
         let mut count = 0usize;
         let mut exponent: i64 = 0;
-        let (mut any_digit, mut after_point) = (false, false);
-        while let Some(&byte) = bytes.get(at) {
-            if byte == b'.' && !after_point {
+        let mut after_point = false;
+        for &byte in text {
+            if byte == b'.' {
                 after_point = true;
-            } else if byte.is_ascii_digit() {
-                any_digit = true;
-                if count > 0 || byte != b'0' {
-                    // Too many significant digits are too many places (checked below), or
-                    // too large a number.
-                    let Some(slot) = digits.get_mut(count) else {
-                        return Err(if after_point {
-                            DeepParseError::TooManyDigits {
-                                places: u32::try_from(1 - exponent).unwrap_or(u32::MAX),
-                                max: MAX_DECIMAL_PLACES,
-                            }
-                        } else {
-                            DeepParseError::OutOfRange
-                        });
-                    };
-                    *slot = byte - b'0';
-                    count += 1;
-                    if after_point {
-                        exponent -= 1;
-                    }
-                } else if after_point {
+            } else if count > 0 || byte != b'0' {
+                // Too many significant digits are too many places, or too large a number.
+                let Some(slot) = digits.get_mut(count) else {
+                    return Err(if after_point {
+                        DeepParseError::TooManyDigits {
+                            places: u32::try_from(1 - exponent).unwrap_or(u32::MAX),
+                            max: MAX_DECIMAL_PLACES,
+                        }
+                    } else {
+                        DeepParseError::OutOfRange
+                    });
+                };
+                *slot = byte - b'0';
+                count += 1;
+                if after_point {
                     exponent -= 1;
                 }
-            } else {
-                break;
+            } else if after_point {
+                exponent -= 1;
             }
-            at += 1;
         }
-        if !any_digit {
-            return Err(DeepParseError::Malformed);
-        }
-        if let Some(b'e' | b'E') = bytes.get(at) {
-            at += 1;
-            let (minus, start) = match bytes.get(at) {
-                Some(b'-') => (true, at + 1),
-                Some(b'+') => (false, at + 1),
-                _ => (false, at),
-            };
-            at = start;
-            let mut power: i64 = 0;
-            while let Some(&byte) = bytes.get(at) {
-                if !byte.is_ascii_digit() || power > 99_999 {
-                    return Err(DeepParseError::Malformed);
-                }
-                power = power * 10 + i64::from(byte - b'0');
-                at += 1;
-            }
-            if at == start {
-                return Err(DeepParseError::Malformed);
-            }
-            exponent += if minus { -power } else { power };
-        }
-        if at != bytes.len() {
-            return Err(DeepParseError::Malformed);
-        }
+        exponent += power;
         // Trailing zeros of the digits say nothing.
         while count > 0 && digits.get(count - 1) == Some(&0) {
             count -= 1;
@@ -407,8 +374,8 @@ impl fmt::Debug for DeepCoord {
     }
 }
 
-/// 2^`power` as f64, for `to_f64`.
-fn pow2(power: i32) -> f64 {
+/// 2^`power` as f64, for the `to_f64`s of wide numbers (no `powi` in `core`).
+pub(crate) fn pow2(power: i32) -> f64 {
     let mut value = 1.0;
     let step = if power < 0 { 0.5 } else { 2.0 };
     for _ in 0..power.unsigned_abs() {

@@ -8,30 +8,99 @@ use super::wide::div_round;
 /// fits 128.
 const SIGNIFICANT_DIGITS: u32 = 19;
 
-/// Parses a decimal number with an optional sign and exponent (`-0.75`, `.5`, `3`, `1e-9`,
-/// `2.5E-3`) into fixed point with `frac_bits` fractional bits (at most 62), rounded to
-/// nearest from its first 19 significant digits (beyond them a digit moves the value by
-/// less than 10⁻¹⁹ of itself). `None` if malformed or beyond ±2⁶³.
-pub(crate) const fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
+/// Decimal text split into its parts, `[±]digits[.digits][(e|E)[±]digits]`: the one
+/// grammar behind every parser of numbers (`parse_fixed`, `DeepCoord::parse`).
+pub(crate) struct DecimalText<'a> {
+    /// A leading `-`.
+    pub(crate) negative: bool,
+    /// The digits, with at most one `.` among them, and at least one digit.
+    pub(crate) digits: &'a [u8],
+    /// The power of ten written after `e` (0 if none): at most five digits.
+    pub(crate) power: i64,
+}
+
+/// Splits `text` into its parts; `None` if it is not a decimal number.
+pub(crate) const fn split_decimal(text: &str) -> Option<DecimalText<'_>> {
     // Written with index loops so that it is a `const fn`: constant tables of scenes are
     // checked when they are compiled.
     let bytes = text.as_bytes();
-    let (negative, mut at) = match bytes.first() {
+    let (negative, start) = match bytes.first() {
         Some(b'-') => (true, 1),
         Some(b'+') => (false, 1),
         _ => (false, 0),
     };
-    // The value is `digits` × 10^`exponent`.
-    let mut digits: u128 = 0;
-    let mut kept = 0;
-    let mut exponent: i64 = 0;
-    let mut any_digit = false;
-    let mut after_point = false;
+    let mut at = start;
+    let (mut any_digit, mut after_point) = (false, false);
     while let Some(&byte) = byte_at(bytes, at) {
         if byte == b'.' && !after_point {
             after_point = true;
         } else if byte.is_ascii_digit() {
             any_digit = true;
+        } else {
+            break;
+        }
+        at += 1;
+    }
+    if !any_digit {
+        return None;
+    }
+    let digits = bytes.split_at(at).0.split_at(start).1;
+    let mut power: i64 = 0;
+    if let Some(b'e' | b'E') = byte_at(bytes, at) {
+        at += 1;
+        let (minus, first) = match byte_at(bytes, at) {
+            Some(b'-') => (true, at + 1),
+            Some(b'+') => (false, at + 1),
+            _ => (false, at),
+        };
+        at = first;
+        while let Some(&byte) = byte_at(bytes, at) {
+            if !byte.is_ascii_digit() || power > 9_999 {
+                return None;
+            }
+            power = power * 10 + (byte - b'0') as i64;
+            at += 1;
+        }
+        if at == first {
+            return None;
+        }
+        if minus {
+            power = -power;
+        }
+    }
+    if at != bytes.len() {
+        return None;
+    }
+    Some(DecimalText {
+        negative,
+        digits,
+        power,
+    })
+}
+
+/// Parses a decimal number with an optional sign and exponent (`-0.75`, `.5`, `3`, `1e-9`,
+/// `2.5E-3`) into fixed point with `frac_bits` fractional bits (at most 62), rounded to
+/// nearest from its first 19 significant digits (beyond them a digit moves the value by
+/// less than 10⁻¹⁹ of itself). `None` if malformed or beyond ±2⁶³.
+pub(crate) const fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
+    let Some(DecimalText {
+        negative,
+        digits: text_digits,
+        power,
+    }) = split_decimal(text)
+    else {
+        return None;
+    };
+    // The value is `digits` × 10^`exponent`.
+    let mut digits: u128 = 0;
+    let mut kept = 0;
+    let mut exponent: i64 = power;
+    let mut after_point = false;
+    let mut at = 0;
+    while let Some(&byte) = byte_at(text_digits, at) {
+        if byte == b'.' {
+            after_point = true;
+        } else {
             let digit = (byte - b'0') as u128;
             if kept < SIGNIFICANT_DIGITS && (digits > 0 || digit > 0) {
                 digits = digits * 10 + digit;
@@ -48,37 +117,8 @@ pub(crate) const fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
                 // A digit past the kept ones, before the point: a power of ten.
                 exponent += 1;
             }
-        } else {
-            break;
         }
         at += 1;
-    }
-    if !any_digit {
-        return None;
-    }
-    if let Some(b'e' | b'E') = byte_at(bytes, at) {
-        at += 1;
-        let (minus, start) = match byte_at(bytes, at) {
-            Some(b'-') => (true, at + 1),
-            Some(b'+') => (false, at + 1),
-            _ => (false, at),
-        };
-        at = start;
-        let mut power: i64 = 0;
-        while let Some(&byte) = byte_at(bytes, at) {
-            if !byte.is_ascii_digit() || power > 9_999 {
-                return None;
-            }
-            power = power * 10 + (byte - b'0') as i64;
-            at += 1;
-        }
-        if at == start {
-            return None;
-        }
-        exponent += if minus { -power } else { power };
-    }
-    if at != bytes.len() {
-        return None;
     }
     let magnitude = if digits == 0 {
         0
