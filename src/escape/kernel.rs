@@ -89,17 +89,18 @@ pub(crate) struct Kernel {
 impl Kernel {
     /// The kernel of `view`, recognising repeats as `periodicity` says.
     pub(crate) fn new(view: &View, periodicity: Periodicity) -> Self {
-        let frac = view.tier.frac_bits().min(Tier::Deep.frac_bits());
+        // A perturbation view rendered without a reference: `Render::new` documents it.
+        let tier = match view.tier {
+            Tier::Perturbation => Tier::Deep,
+            tier => tier,
+        };
+        let frac = tier.frac_bits();
         let tolerance = match periodicity {
             Periodicity::Exact => 0,
             Periodicity::Within(bits) => bits,
         };
         Self {
-            // A perturbation view rendered without a reference: `Render::new` documents it.
-            tier: match view.tier {
-                Tier::Perturbation => Tier::Deep,
-                tier => tier,
-            },
+            tier,
             max: view.max_iterations,
             inside: u32::from(view.inside_value()),
             smooth: view.shading == Shading::Smooth,
@@ -113,6 +114,11 @@ impl Kernel {
             tolerance: from_q60(tolerance, frac),
             plain: FIRST_SAVE.min(view.max_iterations),
         }
+    }
+
+    /// The tier the kernel computes in.
+    pub(crate) const fn tier(&self) -> Tier {
+        self.tier
     }
 
     /// A point coordinate (Q60, within ±3.5 as the view guarantees) ready for

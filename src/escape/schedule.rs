@@ -106,13 +106,20 @@ enum Pixels<'r> {
 }
 
 impl Pixels<'_> {
+    /// The tier the pixels are computed in.
+    const fn tier(&self) -> Tier {
+        match self {
+            Self::Fixed(kernel) => kernel.tier(),
+            Self::Perturbed(_) => Tier::Perturbation,
+        }
+    }
+
     /// Column i's part of its pixels' points.
     #[inline(always)]
     fn column(&self, view: &View, i: i64) -> Part {
         match self {
             Self::Fixed(kernel) => kernel.part(in_view(view.column(i))),
-            // Half spacings from the centre, as `View::column` places points.
-            Self::Perturbed(_) => Part(2 * i + 1 - i64::from(view.size.width)),
+            Self::Perturbed(_) => Part(view.column_steps(i)),
         }
     }
 
@@ -121,7 +128,7 @@ impl Pixels<'_> {
     fn row(&self, view: &View, j: i64) -> Part {
         match self {
             Self::Fixed(kernel) => kernel.part(in_view(view.row(j))),
-            Self::Perturbed(_) => Part(i64::from(view.size.height) - 2 * j - 1),
+            Self::Perturbed(_) => Part(view.row_steps(j)),
         }
     }
 
@@ -177,22 +184,18 @@ impl Render<'static> {
             Algorithm::Exact => Periodicity::Exact,
             Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
         };
-        let mut render = Render::with_pixels(
+        Render::with_pixels(
             view,
             algorithm,
             Pixels::Fixed(Kernel::new(&view, periodicity)),
-        );
-        if view.tier == Tier::Perturbation {
-            render.stats.tier = Tier::Deep;
-        }
-        render
+        )
     }
 }
 
 impl<'r> Render<'r> {
     /// A render of a Mandelbrot `view` by perturbation, whatever its tier: computes the
     /// reference orbit at the view's centre into `storage`, which must hold
-    /// [`ReferenceOrbit::points_needed`] points (12 bytes each). Fails if the view is a
+    /// [`ReferenceOrbit::points_needed`] points (24 bytes each). Fails if the view is a
     /// Julia set or the storage is too short.
     pub fn perturbed(
         view: View,
@@ -200,13 +203,11 @@ impl<'r> Render<'r> {
         storage: &'r mut [ReferencePoint],
     ) -> Result<Self, Error> {
         let reference = ReferenceOrbit::compute(&view, storage)?;
-        let mut render = Self::with_pixels(
+        Ok(Self::with_pixels(
             view,
             algorithm,
             Pixels::Perturbed(Perturbation::new(&view, reference)),
-        );
-        render.stats.tier = Tier::Perturbation;
-        Ok(render)
+        ))
     }
 
     fn with_pixels(view: View, algorithm: Algorithm, pixels: Pixels<'r>) -> Self {
@@ -221,7 +222,7 @@ impl<'r> Render<'r> {
                 iterations: 0,
                 pixels: 0,
                 draw_calls: 0,
-                tier: view.tier(),
+                tier: pixels.tier(),
                 rebases: 0,
             },
             tile: [0; CELLS],

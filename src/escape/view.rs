@@ -64,7 +64,7 @@ pub enum Tier {
     /// guard bits and 1024 iterations, full accuracy down to widths of about 10⁻⁹.
     Deep,
     /// Perturbation against one reference orbit (see [`ReferenceOrbit`](crate::ReferenceOrbit)):
-    /// the reference in up to 192-bit fixed point, each pixel a difference from it in 32-bit
+    /// the reference in up to 192-bit fixed point, each pixel a difference from it in 62-bit
     /// mantissas with an exponent. Chosen for Mandelbrot views finer than `Deep` resolves
     /// (spacing below 2⁻⁵⁴), down to a spacing of 2⁻¹⁴⁸ (a width of about 10⁻⁴² on 320
     /// pixels); by hand on any Mandelbrot view. Needs storage for the reference: a render
@@ -76,7 +76,7 @@ impl Tier {
     /// Every fixed-point tier, narrowest first.
     pub const ALL: [Tier; 4] = [Tier::Narrow, Tier::Medium, Tier::Standard, Tier::Deep];
 
-    /// Fractional bits of the tier's numbers (a perturbation's pixels keep 30 bits
+    /// Fractional bits of the tier's numbers (a perturbation's pixels keep 62 bits
     /// relative to their distance from the reference; its reference, up to 188).
     pub const fn frac_bits(self) -> u32 {
         match self {
@@ -234,7 +234,7 @@ impl View {
         size: Size,
         max_iterations: u32,
     ) -> Result<Self, Error> {
-        if width.is_negative() || width == DeepCoord::ZERO {
+        if width.is_negative() || width.is_zero() {
             return Err(Error::View(ViewError::WidthNotPositive {
                 width: width.to_coord(),
             }));
@@ -396,14 +396,22 @@ impl View {
     /// The real part of column i's points (Q60): points are a column part and a row part,
     /// so a render can compute each once per tile instead of once per pixel.
     pub(crate) fn column(&self, i: i64) -> i128 {
-        let w = i64::from(self.size.width);
-        i128::from(self.centre.0.to_bits()) + self.offset(2 * i + 1 - w)
+        i128::from(self.centre.0.to_bits()) + self.offset(self.column_steps(i))
     }
 
     /// The imaginary part of row j's points (Q60).
     pub(crate) fn row(&self, j: i64) -> i128 {
-        let h = i64::from(self.size.height);
-        i128::from(self.centre.1.to_bits()) - self.offset(2 * j + 1 - h)
+        i128::from(self.centre.1.to_bits()) + self.offset(self.row_steps(j))
+    }
+
+    /// Column i's real offset from the centre in half spacings: 2i + 1 − W.
+    pub(crate) const fn column_steps(&self, i: i64) -> i64 {
+        2 * i + 1 - self.size.width as i64
+    }
+
+    /// Row j's imaginary offset from the centre in half spacings: H − 2j − 1 (up).
+    pub(crate) const fn row_steps(&self, j: i64) -> i64 {
+        self.size.height as i64 - 2 * j - 1
     }
 
     fn offset(&self, k: i64) -> i128 {
