@@ -6,8 +6,8 @@
 use embedded_graphics::geometry::Size;
 use num_bigint::BigInt;
 use tinyfractal::{
-    Algorithm, DeepCoord, DwellBuffer, Error, Fractal, ReferencePoint, Render, Tier, View,
-    ViewError,
+    Algorithm, DeepCoord, DwellBuffer, Error, Fractal, ReferencePoint, Render, RenderStats, Tier,
+    View, ViewError,
 };
 
 /// Fractional bits of the model.
@@ -78,19 +78,20 @@ fn deep_view(centre: (&str, &str), width: &str, size: (u32, u32), max: u32) -> V
     .unwrap()
 }
 
-fn perturbed(view: View, algorithm: Algorithm) -> Vec<u16> {
+/// The view's dwells by perturbation, and the render's stats.
+fn perturbed(view: View, algorithm: Algorithm) -> (Vec<u16>, RenderStats) {
     let size = view.size();
     let mut storage = vec![ReferencePoint::default(); view.max_iterations() as usize + 1];
     let mut dwells = vec![0; (size.width * size.height) as usize];
     let mut render = Render::perturbed(view, algorithm, &mut storage).unwrap();
-    let Ok(_) = render.run(&mut DwellBuffer::new(&mut dwells, size.width));
-    dwells
+    let Ok(stats) = render.run(&mut DwellBuffer::new(&mut dwells, size.width));
+    (dwells, stats)
 }
 
 /// (identical, pixels) of our dwells against the model's.
 fn agreement(centre: (&str, &str), width: &str, size: (u32, u32), max: u32) -> (usize, usize) {
     let view = deep_view(centre, width, size, max);
-    let ours = perturbed(view, Algorithm::Exact);
+    let (ours, _) = perturbed(view, Algorithm::Exact);
     let expected = model(centre, width, size, max);
     let same = ours.iter().zip(&expected).filter(|(a, b)| a == b).count();
     // The views are not flat: a test of one dwell everywhere could not fail.
@@ -189,11 +190,7 @@ const BESIDE_MINIBROT: (&str, &str) = (
 #[test]
 fn glitching_pixels_rebase_and_match_the_model() {
     let (centre, width, size, max) = (BESIDE_MINIBROT, "1e-20", (48, 36), 4000);
-    let view = deep_view(centre, width, size, max);
-    let mut storage = vec![ReferencePoint::default(); max as usize + 1];
-    let mut dwells = vec![0; (size.0 * size.1) as usize];
-    let mut render = Render::perturbed(view, Algorithm::Exact, &mut storage).unwrap();
-    let Ok(stats) = render.run(&mut DwellBuffer::new(&mut dwells, size.0));
+    let (dwells, stats) = perturbed(deep_view(centre, width, size, max), Algorithm::Exact);
     let expected = model(centre, width, size, max);
     let same = dwells.iter().zip(&expected).filter(|(a, b)| a == b).count();
     let inside = expected.iter().filter(|&&d| d == max as u16).count();

@@ -7,8 +7,8 @@ use std::time::{Duration, Instant};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    Algorithm, Bands, Coord, DeepCoord, DwellBuffer, Error, Fractal, Gradient, Palette,
-    ReferenceOrbit, ReferencePoint, Render, RenderStats, Shading, Tier, TwoColor, View,
+    Algorithm, Bands, Coord, DeepCoord, DeepParseError, DwellBuffer, Error, Fractal, Gradient,
+    Palette, ReferenceOrbit, ReferencePoint, Render, RenderStats, Shading, Tier, TwoColor, View,
 };
 
 /// A rendered view.
@@ -53,38 +53,38 @@ pub fn request(arguments: &crate::args::EscapeArgs, size: Size) -> Request<'_> {
 
 /// A number the user wrote for `what` (`--center`, `--width`, `--c`), checked.
 pub fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
-    Coord::parse(text).ok_or_else(|| {
-        format!(
-            "{what}: `{text}` is not a number between -8 and 8 (write e.g. -0.75, 1e-9 or 2.5E-3)"
-        )
-    })
+    Coord::parse(text).ok_or_else(|| not_a_number(what, text))
 }
 
 /// A `--center` or `--width` number with every digit kept (up to
-/// [`MAX_DECIMAL_PLACES`](tinyfractal::MAX_DECIMAL_PLACES) after the point), checked.
+/// [`MAX_DECIMAL_PLACES`](tinyfractal::MAX_DECIMAL_PLACES) after the point), checked: text
+/// that is no number, or not within ±8, gets [`coordinate`]'s message.
 pub fn deep_coordinate(what: &str, text: &str) -> Result<DeepCoord, String> {
-    DeepCoord::parse(text).map_err(|error| format!("{what}: `{text}`: {error}"))
+    DeepCoord::parse(text).map_err(|error| match error {
+        DeepParseError::TooManyDigits { .. } => format!("{what}: `{text}`: {error}"),
+        _ => not_a_number(what, text),
+    })
 }
 
-/// The fractal and centre of a request, checked.
-pub fn fractal_and_centre(request: &Request<'_>) -> Result<(Fractal, (Coord, Coord)), String> {
-    let fractal = match request.julia {
+/// The message for text that is not a coordinate.
+fn not_a_number(what: &str, text: &str) -> String {
+    format!("{what}: `{text}` is not a number between -8 and 8 (write e.g. -0.75, 1e-9 or 2.5E-3)")
+}
+
+/// The fractal of a request, checked.
+fn fractal(request: &Request<'_>) -> Result<Fractal, String> {
+    Ok(match request.julia {
         None => Fractal::Mandelbrot,
         Some((re, im)) => Fractal::Julia {
             re: coordinate("--c", re)?,
             im: coordinate("--c", im)?,
         },
-    };
-    let centre = (
-        coordinate("--center", request.centre.0)?,
-        coordinate("--center", request.centre.1)?,
-    );
-    Ok((fractal, centre))
+    })
 }
 
 /// A request's view at `width` (text, as the user wrote it), and its palette.
 pub fn view_at(request: &Request<'_>, width: &str) -> Result<(View, HostPalette), String> {
-    let (fractal, _) = fractal_and_centre(request)?;
+    let fractal = fractal(request)?;
     let centre = (
         deep_coordinate("--center", request.centre.0)?,
         deep_coordinate("--center", request.centre.1)?,

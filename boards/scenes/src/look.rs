@@ -58,6 +58,14 @@ pub const COLOUR: Look<'static, Rgb565> = Look {
     inside: Rgb565::BLACK,
 };
 
+impl<C: PixelColor + From<Rgb888>> Look<'_, C> {
+    /// The escape-time gradient of `N` entries over the keys (16 for dwells, 256 for smooth
+    /// values).
+    fn gradient<const N: usize>(&self) -> Result<Gradient<C, N>, Error> {
+        Gradient::new(self.keys, self.inside).ok_or(Error::Fit(FitError::EmptyPalette))
+    }
+}
+
 /// What drawing a scene did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Work {
@@ -367,9 +375,7 @@ where
     D: DrawTarget,
     D::Color: From<Rgb888>,
 {
-    let palette = Gradient::<D::Color, N>::new(look.keys, look.inside)
-        .ok_or(Error::Fit(FitError::EmptyPalette))?;
-    let stats = EscapeTime::new(view, palette)
+    let stats = EscapeTime::new(view, look.gradient::<N>()?)
         .draw(target)
         .map_err(DrawError::Target)?;
     Ok(Work::Iterations(stats.iterations))
@@ -391,10 +397,9 @@ where
     D: DrawTarget,
     D::Color: From<Rgb888>,
 {
-    let palette = Gradient::<D::Color, 16>::new(look.keys, look.inside)
-        .ok_or(Error::Fit(FitError::EmptyPalette))?;
     let mut storage = [ReferencePoint::default(); MAX_BOARD_REFERENCE_POINTS];
-    let stats = EscapeTime::new(view, palette).draw_perturbed(target, &mut storage)?;
+    let stats =
+        EscapeTime::new(view, look.gradient::<16>()?).draw_perturbed(target, &mut storage)?;
     Ok(Work::Iterations(stats.iterations))
 }
 

@@ -20,7 +20,7 @@ use std::process::Command;
 
 use embedded_graphics::prelude::Size;
 use tinyfractal_scenes::measure::Checksum;
-use tinyfractal_scenes::{Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES};
+use tinyfractal_scenes::{Entry, Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES};
 
 struct Core {
     name: &'static str,
@@ -198,21 +198,18 @@ fn every_core_draws_the_host_picture_and_fits() {
     // The host's checksums: the same scene code into the same checksum target, for every
     // core's scenes (the OLED's and the display-size views), then the general engine's
     // and perturbation's, measured where the RAM holds them (not on the M0).
-    let mut host: Vec<Expected> = SCENES
-        .iter()
-        .chain(&DISPLAY_SCENES)
-        .map(|entry| {
-            let mut target = Checksum::of_size(entry.size);
-            let work = entry.scene.draw(&mut target, &GREY).unwrap().count();
-            Expected::new(
-                entry.name,
-                entry.scene.work_unit(),
-                entry.size,
-                target,
-                work,
-            )
-        })
-        .collect();
+    let expected = |entry: &Entry| {
+        let mut target = Checksum::of_size(entry.size);
+        let work = entry.scene.draw(&mut target, &GREY).unwrap().count();
+        Expected::new(
+            entry.name,
+            entry.scene.work_unit(),
+            entry.size,
+            target,
+            work,
+        )
+    };
+    let mut host: Vec<Expected> = SCENES.iter().chain(&DISPLAY_SCENES).map(expected).collect();
     let every_core = host.len();
     for entry in &GENERAL_SCENES {
         let mut target = Checksum::of_size(entry.size);
@@ -223,17 +220,7 @@ fn every_core_draws_the_host_picture_and_fits() {
             entry.name, "segment", entry.size, target, work,
         ));
     }
-    for entry in &DEEP_SCENES {
-        let mut target = Checksum::of_size(entry.size);
-        let work = entry.scene.draw(&mut target, &GREY).unwrap().count();
-        host.push(Expected::new(
-            entry.name,
-            entry.scene.work_unit(),
-            entry.size,
-            target,
-            work,
-        ));
-    }
+    host.extend(DEEP_SCENES.iter().map(expected));
 
     let mut json = String::from("[\n");
     let mut table = String::new();
