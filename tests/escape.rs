@@ -750,8 +750,9 @@ fn palettes_for_every_colour_type() {
 fn a_render_fits_in_a_few_kilobytes() {
     let bytes = core::mem::size_of::<Render>();
     // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view (with its 72-byte deep
-    // centre and spacing), the kernel constants and the counters.
-    assert!(bytes <= 2850, "Render is {bytes} bytes");
+    // centre and spacing), the kernel constants, the counters, and a perturbed render's
+    // series (16 terms of 24 bytes) and finish.
+    assert!(bytes <= 3300, "Render is {bytes} bytes");
 }
 
 /// A naive `f32` loop, as a user writes it on an FPU (separate multiply and add), at the

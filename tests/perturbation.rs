@@ -206,3 +206,27 @@ fn glitching_pixels_rebase_and_match_the_model() {
         expected.len()
     );
 }
+
+/// The series skips the first iterations: at the deep-zoom view (10⁻⁷, where `Deep`
+/// works) every pixel's dwell stays `Deep`'s, and the steps computed fall by more than
+/// half; at 10⁻³⁰ the series skips most of each pixel's iterations and the dwells stay the
+/// big-number model's.
+#[test]
+fn the_series_skips_iterations_and_keeps_the_dwells() {
+    let spiral = ("-0.743643887037151", "0.131825904205330");
+    let view = deep_view(spiral, "1e-7", (64, 32), 1000);
+    assert_eq!(view.tier(), Tier::Deep);
+    let (ours, stats) = perturbed(view.with_tier(Tier::Perturbation), Algorithm::Exact);
+    let mut deep = vec![0; 64 * 32];
+    let Ok(fixed) = Render::new(view, Algorithm::Exact).run(&mut DwellBuffer::new(&mut deep, 64));
+    assert_eq!(ours, deep);
+    assert!(
+        stats.skipped > 0 && 2 * stats.iterations < fixed.iterations,
+        "{stats:?}"
+    );
+
+    let view = deep_view(MISIUREWICZ, "1e-30", (48, 36), 1000);
+    let (ours, stats) = perturbed(view, Algorithm::Exact);
+    assert!(stats.skipped > stats.iterations, "{stats:?}");
+    assert_eq!(ours, model(MISIUREWICZ, "1e-30", (48, 36), 1000));
+}

@@ -210,8 +210,15 @@ pub fn stats_line(rendered: &Rendered) -> String {
             view.automatic_tier().name()
         )
     };
+    // Perturbation also says how many iterations its series skipped and how many
+    // times pixels rebased.
+    let perturbed = if s.tier == Tier::Perturbation {
+        format!(" skipped={} rebases={}", s.skipped, s.rebases)
+    } else {
+        String::new()
+    };
     format!(
-        "iterations={} pixels={} draw_calls={} tier={} elapsed_ms={:.3}{warning}",
+        "iterations={} pixels={} draw_calls={} tier={} elapsed_ms={:.3}{perturbed}{warning}",
         s.iterations,
         s.pixels,
         s.draw_calls,

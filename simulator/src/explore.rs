@@ -205,12 +205,14 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             width,
             max_iterations,
             shading,
+            tier,
         } => Scene::Escape {
             julia,
             centre,
             width,
             max_iterations: stepped_cap(max_iterations, up),
             shading,
+            tier,
         },
         walk @ Scene::Walk { .. } => walk,
     };

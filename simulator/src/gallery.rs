@@ -164,6 +164,7 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
             width,
             max_iterations,
             shading,
+            tier,
         } => {
             let request = crate::escape_scene::Request {
                 julia,
@@ -172,7 +173,7 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                 size,
                 max_iterations,
                 algorithm: tinyfractal::Algorithm::Fast,
-                tier: None,
+                tier,
                 palette: entry.palette,
             };
             crate::escape_scene::render(&request).and_then(|rendered| {

@@ -357,6 +357,34 @@ impl<A: Arithmetic> Z<A> {
     }
 }
 
+impl Kernel {
+    /// The dwell of the Mandelbrot point c (Q60, `Deep`'s units) whose orbit is at z
+    /// (Q60) after `steps` steps: the finish of a perturbed pixel whose first steps the
+    /// series skipped. Escape only: past the series a pixel is rarely periodic, and
+    /// perturbation does not test repeats either.
+    #[inline(never)]
+    pub(crate) fn resume_deep(&self, c: (i64, i64), z: (i64, i64), steps: u32) -> Orbit {
+        let mut z = Z::<Deep>::new(z.0, z.1);
+        let mut n = steps;
+        while !z.escaped() {
+            if n >= self.max {
+                return Orbit::inside_after(self, n);
+            }
+            n += 1;
+            z.step(c.0, c.1);
+        }
+        Orbit {
+            dwell: if self.smooth {
+                let q28 = |(x, y): (i64, i64)| (Deep::q28(x), Deep::q28(y));
+                smooth_value(n, q28((z.x, z.y)), q28(c), self.max, self.inside)
+            } else {
+                n.max(1)
+            },
+            iterations: n,
+        }
+    }
+}
+
 /// The dwell of the point (`re`, `im`) in tier `A`'s units.
 ///
 /// The first `FIRST_SAVE` steps test only escape. Then repeats are found by Brent's

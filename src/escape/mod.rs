@@ -5,5 +5,6 @@ pub(crate) mod drawing;
 pub(crate) mod kernel;
 pub(crate) mod perturbation;
 pub(crate) mod schedule;
+pub(crate) mod series;
 pub(crate) mod view;
 pub(crate) mod zoom;

@@ -13,7 +13,7 @@
 //!
 //! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB), the tile's 32 column and 32
 //! row coordinates (512 bytes: points are separable, so they are computed once per tile,
-//! not once per pixel), the view and its kernel constants, about 2.8 KiB (a perturbed render adds the reference orbit, in storage the caller gives: 24 bytes an iteration);
+//! not once per pixel), the view and its kernel constants, about 3.2 KiB with a perturbed render's series (and it adds the reference orbit, in storage the caller gives: 24 bytes an iteration);
 //! while a tile is computed, a subdivision stack of 32 rectangles (512 bytes) is on the
 //! stack. That is the worst case for a 320×240 view or any other: nothing is read back
 //! from the target.
@@ -21,8 +21,8 @@
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use heapless::Vec;
 
-use super::kernel::{Kernel, Orbit, Part, Periodicity};
-use super::perturbation::{Perturbation, ReferenceOrbit, ReferencePoint};
+use super::kernel::{Kernel, Part, Periodicity};
+use super::perturbation::{Perturbation, Perturbed, ReferenceOrbit, ReferencePoint};
 use super::view::{Symmetry, Tier, View};
 use crate::error::Error;
 use crate::render::sink::DwellSink;
@@ -65,6 +65,14 @@ pub(crate) const fn fast_tolerance(spacing: i64) -> i64 {
     }
 }
 
+/// How the kernel of a render of `view` by `algorithm` recognises repeats.
+fn periodicity(view: &View, algorithm: Algorithm) -> Periodicity {
+    match algorithm {
+        Algorithm::Exact => Periodicity::Exact,
+        Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
+    }
+}
+
 /// What a render did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RenderStats {
@@ -79,6 +87,9 @@ pub struct RenderStats {
     /// Times a perturbed pixel left the reference orbit for its start (0 in a fixed
     /// tier): each a glitch avoided.
     pub rebases: u64,
+    /// Iterations the series approximation skipped, in total (0 in a fixed tier): not
+    /// counted in `iterations`, which are the steps computed.
+    pub skipped: u64,
 }
 
 /// How far a render has come.
@@ -99,6 +110,9 @@ impl Progress {
 
 /// How a render computes a pixel: in a fixed-point tier, or by perturbation against a
 /// reference orbit in storage borrowed for `'r`.
+// A perturbed render keeps its series' terms in place (no heap in the core): a few
+// hundred bytes beside the render's tile of dwells.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, Copy)]
 enum Pixels<'r> {
     Fixed(Kernel),
@@ -129,15 +143,6 @@ impl Pixels<'_> {
         match self {
             Self::Fixed(kernel) => kernel.part(in_view(view.row(j))),
             Self::Perturbed(_) => Part(view.row_steps(j)),
-        }
-    }
-
-    /// The pixel's orbit and its rebases.
-    #[inline(always)]
-    fn dwell(&self, re: Part, im: Part) -> (Orbit, u32) {
-        match self {
-            Self::Fixed(kernel) => (kernel.dwell(re, im), 0),
-            Self::Perturbed(pixels) => pixels.dwell(re.0, im.0),
         }
     }
 }
@@ -180,14 +185,10 @@ impl Render<'static> {
     /// with [`Render::perturbed`]; given here, it is computed in `Deep`, whose stats say
     /// so, and which does not resolve pixels finer than 2⁻⁵⁴.
     pub fn new(view: View, algorithm: Algorithm) -> Self {
-        let periodicity = match algorithm {
-            Algorithm::Exact => Periodicity::Exact,
-            Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
-        };
         Render::with_pixels(
             view,
             algorithm,
-            Pixels::Fixed(Kernel::new(&view, periodicity)),
+            Pixels::Fixed(Kernel::new(&view, periodicity(&view, algorithm))),
         )
     }
 }
@@ -206,7 +207,11 @@ impl<'r> Render<'r> {
         Ok(Self::with_pixels(
             view,
             algorithm,
-            Pixels::Perturbed(Perturbation::new(&view, reference)),
+            Pixels::Perturbed(Perturbation::new(
+                &view,
+                reference,
+                periodicity(&view, algorithm),
+            )),
         ))
     }
 
@@ -224,6 +229,7 @@ impl<'r> Render<'r> {
                 draw_calls: 0,
                 tier: pixels.tier(),
                 rebases: 0,
+                skipped: 0,
             },
             tile: [0; CELLS],
             width: TILE,
@@ -339,9 +345,20 @@ impl<'r> Render<'r> {
 
     /// The dwell of the point with column part `re` and row part `im`.
     fn compute_at(&mut self, re: Part, im: Part) -> u16 {
-        let (orbit, rebases) = self.pixels.dwell(re, im);
+        let orbit = match &self.pixels {
+            Pixels::Fixed(kernel) => kernel.dwell(re, im),
+            Pixels::Perturbed(pixels) => {
+                let Perturbed {
+                    orbit,
+                    rebases,
+                    skipped,
+                } = pixels.dwell(re.0, im.0);
+                self.stats.rebases += u64::from(rebases);
+                self.stats.skipped += u64::from(skipped);
+                orbit
+            }
+        };
         self.stats.iterations += u64::from(orbit.iterations);
-        self.stats.rebases += u64::from(rebases);
         self.stats.pixels += 1;
         // max_iterations <= u16::MAX is checked by the view.
         u16::try_from(orbit.dwell).unwrap_or(u16::MAX)

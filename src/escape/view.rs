@@ -415,7 +415,13 @@ impl View {
     }
 
     fn offset(&self, k: i64) -> i128 {
-        shift_round(mul_wide(self.spacing, k), 1)
+        half_spacings(self.spacing, k)
+    }
+
+    /// Whether the fixed-point tiers resolve the view's pixels (its spacing is at least
+    /// `Deep`'s finest, 2⁻⁵⁴).
+    pub(crate) const fn fixed_point_resolves(&self) -> bool {
+        self.spacing >= FINEST_SPACING
     }
 
     /// Which pixels are the same by symmetry, exactly (see the kernel's rounding).
@@ -434,6 +440,12 @@ impl View {
             _ => Symmetry::None,
         }
     }
+}
+
+/// `k` half spacings (`spacing` in Q60), rounded half away from zero, as every tier's
+/// pixel offsets are.
+pub(crate) fn half_spacings(spacing: i64, k: i64) -> i128 {
+    shift_round(mul_wide(spacing, k), 1)
 }
 
 /// A symmetry of a view's pixels.
