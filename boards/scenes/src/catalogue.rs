@@ -5,7 +5,7 @@
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
     Angle, Coord, CubeVariant, DeepCoord, Dialect, Displacement, Error, Fractal, Grammar,
-    Orientation, Real, Shading, View,
+    Orientation, Real, Shading, Tier, View,
 };
 
 /// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
@@ -120,6 +120,8 @@ pub enum Scene {
         max_iterations: u32,
         /// Dwells or smooth values (a `smooth-*` palette on the host).
         shading: Shading,
+        /// The tier forced on the view, or `None` for its own (the calibrated rule's).
+        tier: Option<Tier>,
     },
 }
 
@@ -168,6 +170,7 @@ impl Scene {
             width,
             max_iterations,
             shading,
+            tier,
         } = *self
         else {
             return None;
@@ -176,8 +179,7 @@ impl Scene {
             julia,
             centre,
             width,
-            max_iterations,
-            shading,
+            (max_iterations, shading, tier),
             size,
         ))
     }
@@ -188,8 +190,7 @@ pub(crate) fn escape_view(
     julia: Option<(&str, &str)>,
     centre: (&str, &str),
     width: &str,
-    max_iterations: u32,
-    shading: Shading,
+    (max_iterations, shading, tier): (u32, Shading, Option<Tier>),
     size: Size,
 ) -> Result<View, Error> {
     // Every catalogue number parses: `escape()` asserts it when the tables compile.
@@ -209,6 +210,10 @@ pub(crate) fn escape_view(
         size,
         max_iterations,
     )
+    .map(|view| match tier {
+        Some(tier) => view.with_tier(tier),
+        None => view,
+    })
     .and_then(|view| view.with_shading(shading))
 }
 
@@ -376,6 +381,7 @@ const fn escape(
             width,
             max_iterations,
             shading: Shading::Dwell,
+            tier: None,
         },
         size,
         palette,
@@ -385,26 +391,54 @@ const fn escape(
 /// `entry`, an escape-time view, in smooth colour: painted with `palette` (a `smooth-*`
 /// name) on the host, with 16× the gradient's entries on a board.
 const fn smooth(entry: Entry, palette: &'static str) -> Entry {
+    Entry {
+        palette,
+        ..adjusted(entry, Some(Shading::Smooth), None)
+    }
+}
+
+/// `entry`, an escape-time view, by perturbation whatever its depth (the side-by-side
+/// with the tier its view would take).
+const fn perturbed(name: &'static str, entry: Entry) -> Entry {
+    Entry {
+        name,
+        ..adjusted(entry, None, Some(Tier::Perturbation))
+    }
+}
+
+/// `entry`, an escape-time view, with the shading and the forced tier given (the others
+/// kept).
+const fn adjusted(entry: Entry, shading: Option<Shading>, tier: Option<Tier>) -> Entry {
     let Scene::Escape {
         julia,
         centre,
         width,
         max_iterations,
-        ..
+        shading: own_shading,
+        tier: own_tier,
     } = entry.scene
     else {
-        panic!("only an escape-time view can be smooth");
+        panic!("only an escape-time view can be adjusted");
     };
-    assert!(max_iterations <= tinyfractal::MAX_SMOOTH_ITERATIONS);
+    let shading = match shading {
+        Some(shading) => shading,
+        None => own_shading,
+    };
+    if let Shading::Smooth = shading {
+        assert!(max_iterations <= tinyfractal::MAX_SMOOTH_ITERATIONS);
+    }
     Entry {
         scene: Scene::Escape {
             julia,
             centre,
             width,
             max_iterations,
-            shading: Shading::Smooth,
+            shading,
+            tier: match tier {
+                Some(tier) => Some(tier),
+                None => own_tier,
+            },
         },
-        palette,
         ..entry
     }
 }
@@ -619,15 +653,12 @@ pub const SCENES: [Entry; 14] = [
 /// stack ([`MAX_BOARD_REFERENCE_POINTS`](crate::MAX_BOARD_REFERENCE_POINTS), 24 KiB):
 /// on the boards with the RAM for it and measured on Cortex-M3 and M4, not on the
 /// micro:bit (16 KiB). A minibrot 2.5·10⁻²¹ across in a view 10⁻²⁰ wide.
-pub const DEEP_SCENES: [Entry; 1] = [escape(
-    "perturbation-zoom",
-    None,
-    MINIBROT_78,
-    "1e-20",
-    1000,
-    OLED,
-    "fire",
-)];
+#[rustfmt::skip]
+pub const DEEP_SCENES: [Entry; 2] = [
+    escape("perturbation-zoom", None, MINIBROT_78, "1e-20", 1000, OLED, "fire"),
+    // The deep-zoom view by perturbation: its series and a `Deep` finish, against `Deep`.
+    perturbed("deep-zoom-perturbed", escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire")),
+];
 
 /// The escape-time views at a real board's display size (320×240), measured on
 /// Cortex-M0/M3/M4 beside the OLED's frames: the full Mandelbrot view at 256 iterations

@@ -151,9 +151,11 @@ impl Scene {
                 width,
                 max_iterations,
                 shading,
+                tier,
             } => {
                 let size = target.bounding_box().size;
-                let view = escape_view(julia, centre, width, max_iterations, shading, size)?;
+                let view =
+                    escape_view(julia, centre, width, (max_iterations, shading, tier), size)?;
                 match (shading, view.tier()) {
                     (_, Tier::Perturbation) => draw_perturbed(target, look, view),
                     (Shading::Dwell, _) => draw_escape::<D, 16>(target, look, view),

@@ -237,6 +237,7 @@ impl BaselineView {
             width,
             max_iterations,
             shading: Shading::Dwell,
+            ..
         } = *scene
         else {
             return None;

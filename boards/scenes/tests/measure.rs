@@ -281,11 +281,12 @@ fn every_core_draws_the_host_picture_and_fits() {
                 ratio(&record["baseline_fixed20"]),
             );
         }
-        // Budgets with room to spare: seven eighths of flash (this firmware carries every
-        // engine and both baselines, which no board's firmware does: 32 KiB of the
-        // LM3S6965's 256 stay free), three quarters of RAM with the deepest stack.
+        // Budgets with room to spare: fifteen sixteenths of flash (this firmware carries
+        // every engine, both baselines and the perturbation's series and finish, which no
+        // board's firmware does: 16 KiB of the LM3S6965's 256 stay free), three quarters
+        // of RAM with the deepest stack.
         assert!(
-            text + data <= core.flash * 7 / 8,
+            text + data <= core.flash * 15 / 16,
             "{}: {text} + {data} bytes of flash",
             core.name
         );
