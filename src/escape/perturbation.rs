@@ -299,6 +299,8 @@ struct Finish {
     /// The view's centre and spacing in Q60, as `Deep` takes its pixels' points.
     centre: (i64, i64),
     spacing: i64,
+    /// The reference at the skip in Q60: each pixel's z there is it plus its δ.
+    reference: (i64, i64),
 }
 
 /// How far below a pixel `Deep`'s rounding must stay, beyond 2 bits for each doubling of
@@ -320,13 +322,8 @@ pub(crate) struct Perturbed {
 }
 
 impl<'r> Perturbation<'r> {
-    /// The pixels of `view` against `reference` (computed for that view), a `Deep` finish
-    /// recognising repeats as `periodicity` says.
-    pub(crate) fn new(
-        view: &View,
-        reference: ReferenceOrbit<'r>,
-        periodicity: Periodicity,
-    ) -> Self {
+    /// The pixels of `view` against `reference` (computed for that view).
+    pub(crate) fn new(view: &View, reference: ReferenceOrbit<'r>) -> Self {
         let spacing = view.deep_spacing;
         let top = spacing.top_bit().unwrap_or(0);
         let mantissa = if top >= 61 {
@@ -363,11 +360,15 @@ impl<'r> Perturbation<'r> {
         let spacing_bits = 63 - view.spacing().to_bits().max(1).leading_zeros() as i32;
         let iteration_bits = 32 - view.max_iterations.leading_zeros() as i32;
         let margin = spacing_bits - 2 * iteration_bits;
-        if view.fixed_point_resolves() && pixels.series.skip() > 0 && margin >= FINISH_BITS {
+        let skip = pixels.series.skip();
+        let finishes = skip > 0 && view.fixed_point_resolves() && margin >= FINISH_BITS;
+        if let Some(z) = pixels.reference.get(skip as usize).filter(|_| finishes) {
             pixels.finish = Some(Finish {
-                kernel: Kernel::new(view, periodicity),
+                // The finish tests escape only (`Kernel::resume_deep`): no repeats.
+                kernel: Kernel::new(view, Periodicity::Exact),
                 centre: (view.centre.0.to_bits(), view.centre.1.to_bits()),
                 spacing: view.spacing().to_bits(),
+                reference: (to_q60(z.0.x, z.0.s), to_q60(z.0.y, z.0.s)),
             });
         }
         pixels
@@ -403,34 +404,7 @@ impl<'r> Perturbation<'r> {
             };
         }
         let skip = self.series.skip();
-        let mut delta = Scaled::ZERO;
-        if skip > 0 {
-            let start = self.series.delta(c);
-            if let (Some(finish), Some(z)) = (&self.finish, self.reference.get(skip as usize)) {
-                let z = (
-                    to_q60(z.0.x, z.0.s).saturating_add(to_q60(start.x, start.s)),
-                    to_q60(z.0.y, z.0.s).saturating_add(to_q60(start.y, start.s)),
-                );
-                let c = (
-                    finish.point(finish.centre.0, re),
-                    finish.point(finish.centre.1, im),
-                );
-                let orbit = finish.kernel.resume_deep(c, z, skip);
-                return Perturbed {
-                    orbit: Orbit {
-                        iterations: orbit.iterations.saturating_sub(skip),
-                        ..orbit
-                    },
-                    rebases: 0,
-                    skipped: skip,
-                };
-            }
-            delta = start;
-        }
-        let last = self.reference.len().saturating_sub(1);
-        let mut m = skip as usize;
-        let mut n = skip;
-        let mut rebases = 0;
+        // Steps computed are those past the skip.
         let result = |orbit: Orbit, rebases| Perturbed {
             orbit: Orbit {
                 iterations: orbit.iterations.saturating_sub(skip),
@@ -439,6 +413,25 @@ impl<'r> Perturbation<'r> {
             rebases,
             skipped: skip,
         };
+        let mut delta = Scaled::ZERO;
+        if skip > 0 {
+            delta = self.series.delta(c);
+            if let Some(finish) = &self.finish {
+                let z = (
+                    finish.reference.0.saturating_add(to_q60(delta.x, delta.s)),
+                    finish.reference.1.saturating_add(to_q60(delta.y, delta.s)),
+                );
+                let c = (
+                    finish.point(finish.centre.0, re),
+                    finish.point(finish.centre.1, im),
+                );
+                return result(finish.kernel.resume_deep(c, z, skip), 0);
+            }
+        }
+        let last = self.reference.len().saturating_sub(1);
+        let mut m = skip as usize;
+        let mut n = skip;
+        let mut rebases = 0;
         while n < self.max {
             let Some(&z) = self.reference.get(m) else {
                 break;
@@ -464,8 +457,7 @@ impl<'r> Perturbation<'r> {
                     rebases,
                 );
             }
-            // |Z| < 2|δ| is only possible when Z's exponent is within 3 of δ's.
-            if m == last || next.s + 3 > delta.s {
+            if m == last || may_rebase(next, delta) {
                 if let Some(z) = rebased(next, delta, m == last) {
                     delta = z;
                     m = 0;
@@ -554,6 +546,13 @@ pub(super) fn escaped(z: Scaled, d: Scaled) -> Option<(i32, i32)> {
     let (x, y) = (x as i32, y as i32);
     let modulus = mul_i32_wide(x, x) + mul_i32_wide(y, y);
     (modulus > 4 << 56).then_some((x, y))
+}
+
+/// Whether |Z + δ| < |δ| is possible: only when Z's exponent is within 3 of δ's (|Z| < 8|δ|),
+/// so the full test costs nothing while the reference is far larger.
+#[inline(always)]
+pub(super) const fn may_rebase(z: Scaled, d: Scaled) -> bool {
+    z.s + 3 > d.s
 }
 
 /// z = Z + δ as the new δ if |z| < |δ| or `always`, else `None`.

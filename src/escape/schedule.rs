@@ -65,14 +65,6 @@ pub(crate) const fn fast_tolerance(spacing: i64) -> i64 {
     }
 }
 
-/// How the kernel of a render of `view` by `algorithm` recognises repeats.
-fn periodicity(view: &View, algorithm: Algorithm) -> Periodicity {
-    match algorithm {
-        Algorithm::Exact => Periodicity::Exact,
-        Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
-    }
-}
-
 /// What a render did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RenderStats {
@@ -185,10 +177,14 @@ impl Render<'static> {
     /// with [`Render::perturbed`]; given here, it is computed in `Deep`, whose stats say
     /// so, and which does not resolve pixels finer than 2⁻⁵⁴.
     pub fn new(view: View, algorithm: Algorithm) -> Self {
+        let periodicity = match algorithm {
+            Algorithm::Exact => Periodicity::Exact,
+            Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
+        };
         Render::with_pixels(
             view,
             algorithm,
-            Pixels::Fixed(Kernel::new(&view, periodicity(&view, algorithm))),
+            Pixels::Fixed(Kernel::new(&view, periodicity)),
         )
     }
 }
@@ -207,11 +203,7 @@ impl<'r> Render<'r> {
         Ok(Self::with_pixels(
             view,
             algorithm,
-            Pixels::Perturbed(Perturbation::new(
-                &view,
-                reference,
-                periodicity(&view, algorithm),
-            )),
+            Pixels::Perturbed(Perturbation::new(&view, reference)),
         ))
     }
 

@@ -19,7 +19,7 @@
 //! 10⁷ of δ after 600), and at the deep-zoom view a shift of 10⁻⁵ of a pixel already
 //! changes some dwells, so 6 of its 8192 pixels came out wrong.
 
-use super::perturbation::{escaped, rebased, step, ReferencePoint, Scaled};
+use super::perturbation::{escaped, may_rebase, rebased, step, ReferencePoint, Scaled};
 
 /// Terms of the series: each costs every pixel a multiply-add, and the coefficients about
 /// `SERIES_TERMS`/4 products an iteration each. Measured on Cortex-M3 at the deep-zoom
@@ -74,9 +74,8 @@ impl Series {
             return Self::NONE;
         }
         let scale = far.s - 63;
-        // One pixel's spacing is at least 2^(62 - s) for a step of two half spacings.
-        let spacing = offset(2, 0);
-        let spacing_log2 = (64 - spacing.x.unsigned_abs().leading_zeros()) as i32 - 1 - spacing.s;
+        // One pixel's spacing: two half spacings.
+        let spacing_log2 = offset(2, 0).lower_log2();
         // The pixel's image is |b1|·spacing/R: the error may be 2^(-TOLERANCE_BITS) of it.
         let tolerance_shift = -scale - spacing_log2 + TOLERANCE_BITS;
         let probe_steps = [
@@ -98,8 +97,10 @@ impl Series {
             s: 61 + scale,
         };
         let mut terms = [Scaled::ZERO; SERIES_TERMS];
-        let mut series = Self::NONE;
-        series.scale = scale;
+        let mut series = Self {
+            scale,
+            ..Self::NONE
+        };
         let last = reference.len().min(max as usize);
         let pairs = reference.get(..last).unwrap_or(&[]).windows(2);
         for (n, pair) in (1..).zip(pairs) {
@@ -111,7 +112,7 @@ impl Series {
                 *d = step(*d, z, c);
                 // A probe that escapes, or would rebase, ends the series there.
                 if escaped(next, *d).is_some()
-                    || (next.s + 3 > d.s && rebased(next, *d, false).is_some())
+                    || (may_rebase(next, *d) && rebased(next, *d, false).is_some())
                 {
                     return series;
                 }
