@@ -61,7 +61,7 @@ fn step(
 }
 
 #[test]
-fn a_zoom_by_1_05_computes_an_eighth_of_each_frame() {
+fn a_zoom_by_1_05_computes_a_tenth_of_each_frame() {
     let size = Size::new(320, 240);
     let (mut previous, mut next) = (Storage::new(size), Storage::new(size));
     let mut previous_view = view(3.0, size);
@@ -88,13 +88,14 @@ fn a_zoom_by_1_05_computes_an_eighth_of_each_frame() {
     let mean = shares.iter().sum::<f64>() / shares.len() as f64;
     let worst = shares.iter().copied().fold(0.0, f64::max);
     eprintln!("computed per frame: mean {mean:.4}, worst {worst:.4}; agreement {agreement:?}");
-    // Measured: 11.6 % on average, 16.7 % at worst (the goal is 10 %; at half a
-    // pixel's tolerance it is 30.6 %).
-    assert!(mean <= 0.12, "mean share computed {mean}");
-    assert!(worst <= 0.18, "worst share computed {worst}");
+    // Measured: 9.2 % on average, 10.7 % at worst (the goal is 10 %; a zoom by 1.05 must
+    // compute about 1 - 1/1.05^2 = 9.3 % of the nominal lines; taking lines earliest
+    // first without moving them on computed 11.6 %; at half a pixel's tolerance 30.6 %).
+    assert!(mean <= 0.10, "mean share computed {mean}");
+    assert!(worst <= 0.12, "worst share computed {worst}");
     // Reused pixels show a grid point up to a pixel from the nominal one, and the grid
     // does not drift: most pixels keep the nominal point's dwell (the share falls as the
-    // zoom reaches finer detail: 92 % at frame 25, 77 % at frame 100).
+    // zoom reaches finer detail: 93 % at frame 25, 78 % at frame 100).
     assert!(agreement.iter().all(|&a| a >= 0.75), "{agreement:?}");
 }
 
