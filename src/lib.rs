@@ -126,7 +126,7 @@ pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TO
 pub use escape::view::{
     Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
 };
-pub use escape::zoom::{ReuseStats, ZoomFrame};
+pub use escape::zoom::{ReuseStats, ZoomFrame, ZoomLine, ZoomValue};
 pub use figure::body::{walk as walk_pose, wave as wave_pose, Joint, BODY};
 pub use figure::{
     Figure, FigureDrawing, FigureLine, Part, Pose, Shape, MAX_FIGURE_DEPTH, MAX_JOINTS,

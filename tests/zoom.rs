@@ -2,18 +2,24 @@
 //! fully computed ones, and that a frame with no tolerance is exact.
 
 use embedded_graphics::geometry::Size;
-use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Render, ReuseStats, View, ZoomFrame};
+use tinyfractal::{
+    Algorithm, Coord, DwellBuffer, Fractal, Render, ReuseStats, View, ZoomFrame, ZoomLine,
+};
 
 const CENTRE: (f64, f64) = (-0.743_5, 0.131_4);
 
 fn view(width: f64, size: Size) -> View {
+    capped(width, size, 256)
+}
+
+fn capped(width: f64, size: Size, cap: u32) -> View {
     let c = |v: f64| Coord::from_f64(v).unwrap();
     View::new(
         Fractal::Mandelbrot,
         (c(CENTRE.0), c(CENTRE.1)),
         c(width),
         size,
-        256,
+        cap,
     )
     .unwrap()
 }
@@ -29,16 +35,16 @@ fn computed(view: View) -> Vec<u16> {
 /// Storage for one frame of `size`.
 struct Storage {
     values: Vec<u16>,
-    columns: Vec<i64>,
-    rows: Vec<i64>,
+    columns: Vec<ZoomLine>,
+    rows: Vec<ZoomLine>,
 }
 
 impl Storage {
     fn new(size: Size) -> Self {
         Self {
             values: vec![0; (size.width * size.height) as usize],
-            columns: vec![0; size.width as usize],
-            rows: vec![0; size.height as usize],
+            columns: vec![ZoomLine::default(); size.width as usize],
+            rows: vec![ZoomLine::default(); size.height as usize],
         }
     }
 
@@ -133,7 +139,11 @@ fn nothing_is_taken_from_a_different_fractal_or_cap() {
 #[test]
 fn short_storage_is_a_typed_error() {
     let size = Size::new(40, 30);
-    let (mut values, mut columns, mut rows) = (vec![0; 1199], vec![0; 40], vec![0; 30]);
+    let (mut values, mut columns, mut rows) = (
+        vec![0u16; 1199],
+        vec![ZoomLine::default(); 40],
+        vec![ZoomLine::default(); 30],
+    );
     let error = ZoomFrame::new(view(1.0, size), &mut values, &mut columns, &mut rows).unwrap_err();
     assert_eq!(
         error,
@@ -142,4 +152,135 @@ fn short_storage_is_a_typed_error() {
             given: 1199
         })
     );
+}
+
+/// The dwell at one point, as a 1×1 view of `tier` computes it.
+fn dwell_at(frame_view: &View, (re, im): (i64, i64)) -> u16 {
+    let one = Size::new(1, 1);
+    let view = View::new(
+        frame_view.fractal(),
+        (Coord::from_bits(re), Coord::from_bits(im)),
+        frame_view.spacing(),
+        one,
+        frame_view.max_iterations(),
+    )
+    .unwrap()
+    .with_tier(frame_view.tier());
+    computed(view)[0]
+}
+
+#[test]
+fn one_frame_moved_in_place_holds_each_pixels_own_dwell() {
+    // Zooming in, out and panning move lines both ways: whatever the order the values are
+    // moved in, every pixel must hold the dwell at the point its column and row stand for
+    // (a value overwritten before it was read would not), and those points stay within
+    // the tolerance of the nominal ones.
+    let size = Size::new(48, 36);
+    let mut storage = Storage::new(size);
+    let mut frame = storage.frame(view(0.02, size));
+    let first = frame.advance(view(0.02, size), Some(100)).unwrap();
+    assert_eq!(first.computed, 48 * 36, "a new frame computes everything");
+    let c = |v: f64| Coord::from_f64(v).unwrap();
+    let panned = |dx: f64, width: f64| {
+        View::new(
+            Fractal::Mandelbrot,
+            (
+                c(CENTRE.0 + dx * width / 48.0),
+                c(CENTRE.1 - dx * width / 96.0),
+            ),
+            c(width),
+            size,
+            256,
+        )
+        .unwrap()
+    };
+    let mut reused = 0;
+    let mut width = 0.02;
+    for step in 0..24 {
+        let next = match step % 4 {
+            0 | 1 => {
+                width /= 1.05;
+                view(width, size)
+            }
+            2 => {
+                width *= 1.1;
+                view(width, size)
+            }
+            _ => panned(if step % 8 == 3 { 5.0 } else { -7.0 }, width),
+        };
+        let stats = frame.advance(next, Some(100)).unwrap();
+        reused += stats.reused;
+        let spacing = next.spacing().to_bits() as i128;
+        for row in 0..size.height {
+            for column in 0..size.width {
+                let point = frame.point(column, row).unwrap();
+                let value = frame.values()[(row * size.width + column) as usize];
+                assert_eq!(
+                    value,
+                    dwell_at(&next, point),
+                    "step {step} at ({column}, {row})"
+                );
+                let nominal = (
+                    i128::from(next.centre().0.to_bits())
+                        + spacing * (2 * i128::from(column) + 1 - 48) / 2,
+                    i128::from(next.centre().1.to_bits())
+                        - spacing * (2 * i128::from(row) + 1 - 36) / 2,
+                );
+                assert!(
+                    (i128::from(point.0) - nominal.0).abs() <= spacing + 2,
+                    "step {step}"
+                );
+                assert!(
+                    (i128::from(point.1) - nominal.1).abs() <= spacing + 2,
+                    "step {step}"
+                );
+            }
+        }
+    }
+    assert!(
+        reused > 24 * 48 * 36 / 2,
+        "most pixels are moved, not computed: {reused}"
+    );
+}
+
+#[test]
+fn byte_cells_hold_the_same_frames_and_refuse_larger_values() {
+    let size = Size::new(40, 30);
+    let (mut bytes, mut columns, mut rows) = (
+        vec![0u8; 1200],
+        vec![ZoomLine::default(); 40],
+        vec![ZoomLine::default(); 30],
+    );
+    let mut words = Storage::new(size);
+    let start = capped(0.1, size, 255);
+    let mut small = ZoomFrame::new(start, &mut bytes, &mut columns, &mut rows).unwrap();
+    let mut wide = words.frame(start);
+    for width in [0.1, 0.09, 0.08] {
+        small.advance(capped(width, size, 255), Some(100)).unwrap();
+        wide.advance(capped(width, size, 255), Some(100)).unwrap();
+        let widened: Vec<u16> = small.values().iter().map(|&v| u16::from(v)).collect();
+        assert_eq!(widened, wide.values());
+    }
+    let c = |v: f64| Coord::from_f64(v).unwrap();
+    let high_cap = View::new(Fractal::Mandelbrot, (c(-0.5), c(0.0)), c(3.0), size, 256).unwrap();
+    assert_eq!(
+        small.advance(high_cap, None).unwrap_err(),
+        tinyfractal::Error::Fit(tinyfractal::FitError::CellTooNarrow {
+            largest: 256,
+            cell_max: 255
+        })
+    );
+    let larger = View::new(
+        Fractal::Mandelbrot,
+        (c(-0.5), c(0.0)),
+        c(3.0),
+        Size::new(41, 30),
+        100,
+    );
+    assert!(matches!(
+        small.advance(larger.unwrap(), None),
+        Err(tinyfractal::Error::Fit(
+            tinyfractal::FitError::BufferTooSmall { .. }
+        ))
+    ));
 }

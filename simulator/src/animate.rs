@@ -12,7 +12,7 @@ use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
 use indicatif::{ProgressBar, ProgressStyle};
-use tinyfractal::{Algorithm, Coord, View, ZoomFrame};
+use tinyfractal::{Algorithm, Coord, View, ZoomFrame, ZoomLine};
 
 use crate::args::{AnimateArgs, Animation};
 use crate::escape_scene::{self, Request};
@@ -134,40 +134,19 @@ fn zoom(
         return Ok((Vec::new(), String::new()));
     };
     let pixels = (request.size.width * request.size.height) as usize;
-    let lines = |n: u32| vec![0i64; n as usize];
-    let mut storage = [
-        (
-            vec![0u16; pixels],
-            lines(request.size.width),
-            lines(request.size.height),
-        ),
-        (
-            vec![0u16; pixels],
-            lines(request.size.width),
-            lines(request.size.height),
-        ),
-    ];
+    let mut values = vec![0u16; pixels];
+    let mut columns = vec![ZoomLine::default(); request.size.width as usize];
+    let mut rows = vec![ZoomLine::default(); request.size.height as usize];
     let (mut computed, mut total) = (0u64, 0u64);
     let mut pictures = Vec::with_capacity(views.len());
-    for (index, view) in views.iter().enumerate() {
-        let [a, b] = &mut storage;
-        let (previous, next) = if index % 2 == 0 { (b, a) } else { (a, b) };
-        let old = ZoomFrame::new(
-            views[index.saturating_sub(1)],
-            &mut previous.0,
-            &mut previous.1,
-            &mut previous.2,
-        )
+    // One frame, moved in place from view to view.
+    let mut frame = ZoomFrame::new(views[0], &mut values, &mut columns, &mut rows)
         .map_err(|e| e.to_string())?;
-        let mut frame = ZoomFrame::new(*view, &mut next.0, &mut next.1, &mut next.2)
-            .map_err(|e| e.to_string())?;
+    for (index, view) in views.iter().enumerate() {
         let last = index + 1 == views.len();
-        let stats = match (index, tolerance) {
-            (0, _) | (_, None) => frame.compute(None, 0),
-            // The last frame takes only lines at exactly its own points: it is exact.
-            _ if last => frame.compute(Some(&old), 0),
-            (_, Some(tolerance)) => frame.compute(Some(&old), tolerance),
-        };
+        // The last frame takes only lines at exactly its own points: it is exact.
+        let tolerance = tolerance.map(|percent| if last { 0 } else { percent });
+        let stats = frame.advance(*view, tolerance).map_err(|e| e.to_string())?;
         computed += u64::from(stats.computed);
         total += u64::from(stats.computed + stats.reused);
         pictures.push(escape_scene::paint(view, frame.values(), &palette));

@@ -27,6 +27,14 @@ pub enum FitError {
         /// Cells given.
         given: usize,
     },
+    /// A frame's cells are too narrow for the view's values (a `u8` cell and a cap above
+    /// 255, or smooth values).
+    CellTooNarrow {
+        /// The largest value the view gives (its inside value).
+        largest: u32,
+        /// The largest value a cell holds.
+        cell_max: u32,
+    },
 }
 
 impl fmt::Display for FitError {
@@ -44,6 +52,11 @@ impl fmt::Display for FitError {
                 f,
                 "the buffer has {given} cells and {needed} are needed (one a pixel of the area, \
                  or one a height of a landscape): give a larger buffer"
+            ),
+            Self::CellTooNarrow { largest, cell_max } => write!(
+                f,
+                "the view's values reach {largest} but a cell holds at most {cell_max}: use \
+                 u16 cells or a lower iteration cap"
             ),
         }
     }

@@ -1,7 +1,9 @@
 //! A zoom that reuses its frames, as XaoS does: each column and row of a new frame takes
 //! a column or row of the previous frame that lies within a stated fraction of the new
 //! pixel spacing (one old line for at most one new line, as many as can be matched), and
-//! only the pixels on neither are computed.
+//! only the pixels on neither are computed. One frame is enough: [`ZoomFrame::advance`]
+//! moves the old values to their new places in the same storage, in an order that reads
+//! every old value before it is overwritten (a board holds one frame, not two).
 //!
 //! A frame keeps the point each of its columns and rows was computed at, and a new pixel
 //! on a reused column or row is computed at that point, not at its nominal one: every
@@ -24,12 +26,16 @@
 //! every frame: by frame 100 only 72 % of the pixels had the nominal point's dwell,
 //! against 78 % here.
 //!
-//! RAM: the caller holds each frame: W×H×2 bytes of values and 8 bytes a column and a row;
-//! this module keeps nothing.
+//! RAM: the caller holds the frame: W×H cells of values (`u16`, or `u8` where RAM is short)
+//! and 12 bytes a column and a row ([`ZoomLine`]); this module keeps nothing. A 128×64
+//! frame of `u8` takes 10,496 bytes.
+
+use embedded_graphics::{prelude::*, primitives::Rectangle};
 
 use super::kernel::{Kernel, Periodicity};
 use super::view::View;
 use crate::error::{Error, FitError};
+use crate::render::palette::Palette;
 
 /// What a reusing frame did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -42,42 +48,132 @@ pub struct ReuseStats {
     pub iterations: u64,
 }
 
-/// One frame of a zoom, in the caller's storage: its view, its values row by row, and the
-/// point (Q60 bits) each column and row was computed at.
-#[derive(Debug)]
-pub struct ZoomFrame<'a> {
-    view: View,
-    values: &'a mut [u16],
-    columns: &'a mut [i64],
-    rows: &'a mut [i64],
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for u8 {}
+    impl Sealed for u16 {}
 }
 
-impl<'a> ZoomFrame<'a> {
+/// A frame's cell: `u16`, or `u8` to halve a frame's RAM for views whose values stay at or
+/// below 255 (dwells with a cap of at most 255).
+pub trait ZoomValue: Copy + Default + sealed::Sealed {
+    /// The largest value a cell holds.
+    const MAX: u16;
+
+    /// A cell holding `value` (at most [`MAX`](Self::MAX): views are checked).
+    fn from_value(value: u16) -> Self;
+
+    /// The value held.
+    fn value(self) -> u16;
+}
+
+impl ZoomValue for u8 {
+    const MAX: u16 = u8::MAX as u16;
+
+    fn from_value(value: u16) -> Self {
+        u8::try_from(value).unwrap_or(u8::MAX)
+    }
+
+    fn value(self) -> u16 {
+        u16::from(self)
+    }
+}
+
+impl ZoomValue for u16 {
+    const MAX: u16 = u16::MAX;
+
+    fn from_value(value: u16) -> Self {
+        value
+    }
+
+    fn value(self) -> u16 {
+        self
+    }
+}
+
+/// A column or row of a frame: the point it was computed at (Q60 bits, not always its
+/// nominal one), and while a frame is computed, the old line it takes. 12 bytes: the
+/// point is kept as two 32-bit halves so that a line is aligned to 4, not 8.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct ZoomLine {
+    high: i32,
+    low: u32,
+    /// The old line taken, or [`NONE`].
+    source: u16,
+}
+
+/// A line that takes no old line.
+const NONE: u16 = u16::MAX;
+
+impl ZoomLine {
+    fn point(self) -> i64 {
+        i64::from(self.high) << 32 | i64::from(self.low)
+    }
+
+    fn set_point(&mut self, point: i64) {
+        self.high = (point >> 32) as i32;
+        self.low = point as u32;
+    }
+
+    fn source(self) -> Option<usize> {
+        (self.source != NONE).then_some(usize::from(self.source))
+    }
+}
+
+/// One frame of a zoom, in the caller's storage: its view, its values row by row, and the
+/// point each column and row was computed at.
+#[derive(Debug)]
+pub struct ZoomFrame<'a, V: ZoomValue = u16> {
+    view: View,
+    values: &'a mut [V],
+    columns: &'a mut [ZoomLine],
+    rows: &'a mut [ZoomLine],
+    /// Whether the values and lines hold `view`'s picture.
+    computed: bool,
+}
+
+impl<'a, V: ZoomValue> ZoomFrame<'a, V> {
     /// A frame of `view` over `values` (W×H of them), `columns` (W) and `rows` (H); nothing
-    /// computed yet. [`FitError::BufferTooSmall`] if a slice is too short.
+    /// computed yet. [`FitError::BufferTooSmall`] if a slice is too short,
+    /// [`FitError::CellTooNarrow`] if the view's values do not fit a `V`.
     pub fn new(
         view: View,
-        values: &'a mut [u16],
-        columns: &'a mut [i64],
-        rows: &'a mut [i64],
+        values: &'a mut [V],
+        columns: &'a mut [ZoomLine],
+        rows: &'a mut [ZoomLine],
     ) -> Result<Self, Error> {
+        let frame = Self {
+            view,
+            values,
+            columns,
+            rows,
+            computed: false,
+        };
+        frame.check(&view)?;
+        Ok(frame)
+    }
+
+    /// Whether this frame's storage holds `view`.
+    fn check(&self, view: &View) -> Result<(), Error> {
         let size = view.size();
         let pixels = size.width as usize * size.height as usize;
         for (needed, given) in [
-            (pixels, values.len()),
-            (size.width as usize, columns.len()),
-            (size.height as usize, rows.len()),
+            (pixels, self.values.len()),
+            (size.width as usize, self.columns.len()),
+            (size.height as usize, self.rows.len()),
         ] {
             if given < needed {
                 return Err(Error::Fit(FitError::BufferTooSmall { needed, given }));
             }
         }
-        Ok(Self {
-            view,
-            values,
-            columns,
-            rows,
-        })
+        let largest = view.inside_value();
+        if largest > V::MAX {
+            return Err(Error::Fit(FitError::CellTooNarrow {
+                largest: largest.into(),
+                cell_max: V::MAX.into(),
+            }));
+        }
+        Ok(())
     }
 
     /// The frame's view.
@@ -86,120 +182,234 @@ impl<'a> ZoomFrame<'a> {
     }
 
     /// The values, row by row.
-    pub fn values(&self) -> &[u16] {
+    pub fn values(&self) -> &[V] {
         self.values
+    }
+
+    /// The point (real, imaginary; Q60 bits as [`Coord`](crate::Coord) holds them) that
+    /// pixel (`column`, `row`) was computed at, once the frame is computed.
+    pub fn point(&self, column: u32, row: u32) -> Option<(i64, i64)> {
+        let re = self.columns.get(column as usize)?.point();
+        let im = self.rows.get(row as usize)?.point();
+        Some((re, im))
     }
 
     /// Computes this frame, taking from `previous` every pixel whose column and row both
     /// lie within `tolerance_percent` % of this view's pixel spacing of one of its columns
-    /// and rows (`None`, or a view of another fractal, cap or shading: nothing is taken).
+    /// and rows (`None`, or a frame of another size, fractal, cap or shading: nothing is
+    /// taken). `previous` is trusted to hold what its own `compute` or `advance` left, even
+    /// if it was wrapped again since (its storage is the frame). Tolerances above 100 %
+    /// count as 100 %.
     pub fn compute(
         &mut self,
-        previous: Option<&ZoomFrame<'_>>,
+        previous: Option<&ZoomFrame<'_, V>>,
         tolerance_percent: u32,
     ) -> ReuseStats {
         let view = self.view;
-        let previous = previous.filter(|p| {
-            p.view.fractal == view.fractal
-                && p.view.max_iterations == view.max_iterations
-                && p.view.shading == view.shading
-        });
-        let tolerance = i128::from(view.spacing) * i128::from(tolerance_percent) / 100;
-        let (old_columns, old_rows): (&[i64], &[i64]) = match previous {
-            Some(p) => (
-                p.columns.get(..p.view.size.width as usize).unwrap_or(&[]),
-                p.rows.get(..p.view.size.height as usize).unwrap_or(&[]),
-            ),
-            None => (&[], &[]),
-        };
-        let old_width = old_columns.len();
-        let old_values: &[u16] = previous.map_or(&[], |p| &*p.values);
+        self.computed = false;
+        if let Some(previous) = previous.filter(|p| compatible(&p.view, &view)) {
+            let size = view.size();
+            let pixels = size.width as usize * size.height as usize;
+            copy(self.values, previous.values, pixels);
+            copy(self.columns, previous.columns, size.width as usize);
+            copy(self.rows, previous.rows, size.height as usize);
+            (self.view, self.computed) = (previous.view, true);
+        }
+        self.step(view, Some(tolerance_percent))
+    }
+
+    /// Moves this frame to `view` in place: pixels whose column and row both lie within
+    /// `tolerance_percent` % of the new pixel spacing of this frame's are taken (as
+    /// [`compute`](Self::compute) takes them from a previous frame), the rest computed;
+    /// `None`, or a frame not yet computed (by this value: a frame wrapped anew holds
+    /// nothing it knows of) or of another size, fractal, cap or shading, computes every
+    /// pixel. The storage's errors are [`new`](Self::new)'s.
+    pub fn advance(
+        &mut self,
+        view: View,
+        tolerance_percent: Option<u32>,
+    ) -> Result<ReuseStats, Error> {
+        self.check(&view)?;
+        self.computed &= compatible(&self.view, &view);
+        Ok(self.step(view, tolerance_percent))
+    }
+
+    /// Paints the frame into `target` at its origin, in one run (`fill_contiguous`).
+    pub fn draw<D, P>(&self, target: &mut D, palette: &P) -> Result<(), D::Error>
+    where
+        D: DrawTarget,
+        P: Palette<Color = D::Color>,
+    {
+        let size = self.view.size();
+        let max = self.view.inside_value();
+        let pixels = size.width as usize * size.height as usize;
+        let colours = self.values.iter().take(pixels);
+        target.fill_contiguous(
+            &Rectangle::new(Point::zero(), size),
+            colours.map(|v| palette.color(v.value(), max)),
+        )
+    }
+
+    /// Computes `view` over this frame's storage, taking what lies within the tolerance of
+    /// the picture held (if any). The storage is checked.
+    fn step(&mut self, view: View, tolerance_percent: Option<u32>) -> ReuseStats {
+        let reach = tolerance_percent
+            .filter(|_| self.computed)
+            .map(|percent| i128::from(view.spacing) * i128::from(percent.min(100)) / 100);
+        self.view = view;
+        let (width, height) = (view.size.width as usize, view.size.height as usize);
+        let columns = self.columns.get_mut(..width).unwrap_or_default();
+        let rows = self.rows.get_mut(..height).unwrap_or_default();
+        let column = |i: usize| view.column(i as i64);
+        let row = |j: usize| view.row(j as i64);
+        assign(columns, column, reach);
+        assign(rows, row, reach);
         let mut stats = ReuseStats::default();
         let kernel = Kernel::new(&view, Periodicity::Exact);
-        let (width, height) = (view.size.width, view.size.height);
-        let column = |i: u32| view.column(i64::from(i));
-        let row = |j: u32| view.row(i64::from(j));
         let values = &mut *self.values;
-        // Sources first (old line indices, or NONE), points once the values are in.
-        let columns = self.columns.get_mut(..width as usize).unwrap_or(&mut []);
-        let rows = self.rows.get_mut(..height as usize).unwrap_or(&mut []);
-        assign(columns, column, old_columns, tolerance);
-        assign(rows, row, old_rows, tolerance);
-        for (j, row_slot) in (0..height).zip(rows.iter_mut()) {
-            let old_row = line_source(*row_slot);
-            let row_point = point(old_row, old_rows, row(j));
-            let im = kernel.part(row_point);
-            let start = j as usize * width as usize;
-            for (i, &column_slot) in (0..width).zip(columns.iter()) {
-                let old_column = line_source(column_slot);
-                let taken = old_row.zip(old_column).and_then(|(r, c)| {
-                    old_values.get(r as usize * old_width + c as usize).copied()
-                });
+        for (row_pass, r) in in_place_order(height) {
+            let Some(&row_line) = rows.get(r).filter(|line| row_pass.takes(r, **line)) else {
+                continue;
+            };
+            let im = kernel.part(point(rows, r, row));
+            for (pass, c) in in_place_order(width) {
+                let Some(&line) = columns.get(c).filter(|line| pass.takes(c, **line)) else {
+                    continue;
+                };
+                let taken = row_line
+                    .source()
+                    .zip(line.source())
+                    .and_then(|(old_row, old_column)| values.get(old_row * width + old_column));
                 let value = match taken {
-                    Some(value) => {
+                    Some(&value) => {
                         stats.reused += 1;
                         value
                     }
                     None => {
-                        let re = kernel.part(point(old_column, old_columns, column(i)));
-                        let orbit = kernel.dwell(re, im);
+                        let orbit = kernel.dwell(kernel.part(point(columns, c, column)), im);
                         stats.computed += 1;
                         stats.iterations += u64::from(orbit.iterations);
-                        u16::try_from(orbit.dwell).unwrap_or(u16::MAX)
+                        V::from_value(u16::try_from(orbit.dwell).unwrap_or(u16::MAX))
                     }
                 };
-                if let Some(cell) = values.get_mut(start + i as usize) {
+                if let Some(cell) = values.get_mut(r * width + c) {
                     *cell = value;
                 }
             }
-            *row_slot = row_point;
         }
-        for (i, slot) in (0..width).zip(columns.iter_mut()) {
-            *slot = point(line_source(*slot), old_columns, column(i));
-        }
+        move_points(columns, column);
+        move_points(rows, row);
+        self.computed = true;
         stats
     }
 }
 
-/// A line with no old line to take.
-const NONE: i64 = -1;
-
-/// The old line a slot names, if any.
-fn line_source(slot: i64) -> Option<u32> {
-    u32::try_from(slot).ok()
+/// Whether a frame of `old` holds values `new` may take.
+fn compatible(old: &View, new: &View) -> bool {
+    old.fractal == new.fractal
+        && old.max_iterations == new.max_iterations
+        && old.shading == new.shading
+        && old.size == new.size
 }
 
-/// The point a line stands for: its old line's, or its nominal one.
-fn point(source: Option<u32>, old: &[i64], nominal: i128) -> i64 {
-    source
-        .and_then(|j| old.get(j as usize).copied())
-        .unwrap_or_else(|| in_range(nominal))
-}
-
-/// Gives old lines (points `old`, running the same way as the new lines' nominal points)
-/// to new lines within `tolerance` (Q60 bits) of them, one old line for at most one new
-/// line, in order, as many as can be: each old line in turn takes the first new line
-/// after the last one given that lies within reach (earliest first is optimal for
-/// points matched to windows on a line). `slots[i]` becomes the old line's index, or
-/// [`NONE`].
-fn assign(slots: &mut [i64], nominal: impl Fn(u32) -> i128, old: &[i64], tolerance: i128) {
-    slots.fill(NONE);
-    let count = slots.len();
-    if count == 0 {
-        return;
+/// The first `count` of `from` into `to`.
+fn copy<T: Copy>(to: &mut [T], from: &[T], count: usize) {
+    if let (Some(to), Some(from)) = (to.get_mut(..count), from.get(..count)) {
+        to.copy_from_slice(from);
     }
+}
+
+/// The point line `k` stands for while its frame is computed: its old line's, or its
+/// nominal one.
+fn point(lines: &[ZoomLine], k: usize, nominal: impl Fn(usize) -> i128) -> i64 {
+    lines
+        .get(k)
+        .and_then(|line| line.source())
+        .and_then(|old| lines.get(old))
+        .map_or_else(|| in_range(nominal(k)), |old| old.point())
+}
+
+/// Each line's point becomes the one it stands for, in place.
+fn move_points(lines: &mut [ZoomLine], nominal: impl Fn(usize) -> i128 + Copy) {
+    for (pass, k) in in_place_order(lines.len()) {
+        if lines.get(k).is_some_and(|line| pass.takes(k, *line)) {
+            let moved = point(lines, k, nominal);
+            if let Some(line) = lines.get_mut(k) {
+                line.set_point(moved);
+            }
+        }
+    }
+}
+
+/// The three passes that move lines in place. Old lines are taken in order (the map from
+/// new line to old is increasing), so a line whose old line lies at or after it is written
+/// before any line after it reads, and one whose old line lies before it before any line
+/// before it reads: the first, going up, then the second, going down, read every old value
+/// before it is overwritten. Lines that take nothing only write, last.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Pass {
+    /// Lines whose old line is at or after them, going up.
+    Up,
+    /// Lines whose old line is before them, going down.
+    Down,
+    /// Lines that take no old line.
+    Fresh,
+}
+
+impl Pass {
+    /// Whether line `k` moves in this pass.
+    fn takes(self, k: usize, line: ZoomLine) -> bool {
+        match (self, line.source()) {
+            (Self::Up, Some(old)) => old >= k,
+            (Self::Down, Some(old)) => old < k,
+            (Self::Fresh, None) => true,
+            _ => false,
+        }
+    }
+}
+
+/// Every (pass, line) of `count` lines in the order [`Pass`] gives.
+fn in_place_order(count: usize) -> impl Iterator<Item = (Pass, usize)> {
+    [Pass::Up, Pass::Down, Pass::Fresh]
+        .into_iter()
+        .flat_map(move |pass| {
+            (0..count).map(move |i| match pass {
+                Pass::Down => (pass, count - 1 - i),
+                _ => (pass, i),
+            })
+        })
+}
+
+/// Gives the old lines (the points `lines` hold, running the same way as the new lines'
+/// nominal points) to new lines within `reach` (Q60 bits) of them, one old line for at
+/// most one new line, in order, as many as can be: each old line in turn takes the first
+/// new line after the last one given that lies within reach (earliest first is optimal
+/// for points matched to windows on a line). `None` gives none.
+fn assign(lines: &mut [ZoomLine], nominal: impl Fn(usize) -> i128, reach: Option<i128>) {
+    for line in lines.iter_mut() {
+        line.source = NONE;
+    }
+    let count = lines.len();
+    let Some(reach) = reach.filter(|_| count > 0) else {
+        return;
+    };
     let first = nominal(0);
     let step = if count > 1 { nominal(1) - first } else { 1 };
     // Both ways of running become "up".
     let sign = if step < 0 { -1 } else { 1 };
-    let at = |k: usize| sign * nominal(k as u32);
+    let at = |k: usize| sign * nominal(k);
     let step = step.abs().max(1);
+    let old_point = |lines: &[ZoomLine], j: usize| {
+        lines
+            .get(j)
+            .map_or(0, |line| sign * i128::from(line.point()))
+    };
     let mut next_free = 0;
-    for (j, &o) in old.iter().enumerate() {
-        let o = sign * i128::from(o);
-        // The first new line at or past o − tolerance: estimated by the nominal spacing,
-        // then stepped (offsets are rounded, so the spacing is not exact).
-        let low = o - tolerance;
+    for j in 0..count.min(usize::from(NONE)) {
+        let o = old_point(lines, j);
+        // The first new line at or past o − reach: estimated by the nominal spacing, then
+        // stepped (offsets are rounded, so the spacing is not exact).
+        let low = o - reach;
         let estimate = (low - at(0)).div_euclid(step).clamp(0, count as i128);
         let mut k = usize::try_from(estimate).unwrap_or(count).max(next_free);
         while k > next_free && at(k - 1) >= low {
@@ -208,9 +418,9 @@ fn assign(slots: &mut [i64], nominal: impl Fn(u32) -> i128, old: &[i64], toleran
         while k < count && at(k) < low {
             k += 1;
         }
-        if k < count && at(k) <= o + tolerance {
-            if let Some(slot) = slots.get_mut(k) {
-                *slot = j as i64;
+        if k < count && at(k) <= o + reach {
+            if let Some(line) = lines.get_mut(k) {
+                line.source = j as u16;
             }
             next_free = k + 1;
         }
@@ -221,16 +431,21 @@ fn assign(slots: &mut [i64], nominal: impl Fn(u32) -> i128, old: &[i64], toleran
     // allow, and the next frame finds its lines evenly spread.
     let mut limit = count;
     for k in (0..count).rev() {
-        let Some(j) = slots.get(k).copied().and_then(line_source) else {
+        let Some(j) = lines.get(k).and_then(|line| line.source()) else {
             continue;
         };
-        let o = old.get(j as usize).map_or(0, |&o| sign * i128::from(o));
+        let o = old_point(lines, j);
         let mut nearest = k;
         while nearest + 1 < limit && (at(nearest + 1) - o).abs() < (at(nearest) - o).abs() {
             nearest += 1;
         }
         if nearest != k {
-            slots.swap(k, nearest);
+            if let Some(line) = lines.get_mut(k) {
+                line.source = NONE;
+            }
+            if let Some(line) = lines.get_mut(nearest) {
+                line.source = j as u16;
+            }
         }
         limit = nearest;
     }
