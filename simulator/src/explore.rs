@@ -214,6 +214,22 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             shading,
             tier,
         },
+        Scene::Zoom {
+            centre,
+            width,
+            max_iterations,
+            frames,
+            shrink,
+            tolerance_percent,
+        } => Scene::Zoom {
+            centre,
+            width,
+            // A board keeps a byte a pixel.
+            max_iterations: stepped_cap(max_iterations, up).min(255),
+            frames,
+            shrink,
+            tolerance_percent,
+        },
         walk @ Scene::Walk { .. } => walk,
     };
     Entry { scene, ..entry }

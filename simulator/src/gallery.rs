@@ -155,9 +155,10 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                 )
             },
         ),
-        Scene::Subdivision { .. } | Scene::Terrain { .. } | Scene::Walk { .. } => {
-            crate::shape_scene::render_entry(&entry.scene, size)
-        }
+        Scene::Subdivision { .. }
+        | Scene::Terrain { .. }
+        | Scene::Walk { .. }
+        | Scene::Zoom { .. } => crate::shape_scene::render_entry(&entry.scene, size),
         Scene::Escape {
             julia,
             centre,

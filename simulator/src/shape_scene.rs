@@ -314,7 +314,7 @@ pub fn render_entry(
     let detail = match *scene {
         Scene::Subdivision { order, .. } => format!("order {order}"),
         Scene::Terrain { samples, .. } => format!("{samples} samples"),
-        Scene::Walk { frames } => format!("{frames} frames"),
+        Scene::Walk { frames } | Scene::Zoom { frames, .. } => format!("{frames} frames"),
         _ => String::new(),
     };
     let work = format!("{} {}s", work.count(), scene.work_unit());

@@ -32,7 +32,7 @@
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 
-use super::kernel::{Kernel, Periodicity};
+use super::kernel::{Kernel, Orbit, Part, Periodicity};
 use super::view::View;
 use crate::error::{Error, FitError};
 use crate::render::palette::Palette;
@@ -260,48 +260,60 @@ impl<'a, V: ZoomValue> ZoomFrame<'a, V> {
         let (width, height) = (view.size.width as usize, view.size.height as usize);
         let columns = self.columns.get_mut(..width).unwrap_or_default();
         let rows = self.rows.get_mut(..height).unwrap_or_default();
-        let column = |i: usize| view.column(i as i64);
-        let row = |j: usize| view.row(j as i64);
-        assign(columns, column, reach);
-        assign(rows, row, reach);
+        assign(columns, &view, Axis::Columns, reach);
+        assign(rows, &view, Axis::Rows, reach);
         let mut stats = ReuseStats::default();
         let kernel = Kernel::new(&view, Periodicity::Exact);
         let values = &mut *self.values;
-        for (row_pass, r) in in_place_order(height) {
-            let Some(&row_line) = rows.get(r).filter(|line| row_pass.takes(r, **line)) else {
-                continue;
-            };
-            let im = kernel.part(point(rows, r, row));
-            for (pass, c) in in_place_order(width) {
-                let Some(&line) = columns.get(c).filter(|line| pass.takes(c, **line)) else {
+        for row_pass in PASSES {
+            for i in 0..height {
+                let r = row_pass.line(i, height);
+                let Some(&row_line) = rows.get(r).filter(|line| row_pass.takes(r, **line)) else {
                     continue;
                 };
-                let taken = row_line
-                    .source()
-                    .zip(line.source())
-                    .and_then(|(old_row, old_column)| values.get(old_row * width + old_column));
-                let value = match taken {
-                    Some(&value) => {
-                        stats.reused += 1;
-                        value
+                let im = kernel.part(point(rows, r, &view, Axis::Rows));
+                for pass in PASSES {
+                    for i in 0..width {
+                        let c = pass.line(i, width);
+                        let Some(&line) = columns.get(c).filter(|line| pass.takes(c, **line))
+                        else {
+                            continue;
+                        };
+                        let taken = row_line.source().zip(line.source()).and_then(
+                            |(old_row, old_column)| values.get(old_row * width + old_column),
+                        );
+                        let value = match taken {
+                            Some(&value) => {
+                                stats.reused += 1;
+                                value
+                            }
+                            None => {
+                                let re = point(columns, c, &view, Axis::Columns);
+                                let orbit = dwell(&kernel, re, im);
+                                stats.computed += 1;
+                                stats.iterations += u64::from(orbit.iterations);
+                                V::from_value(u16::try_from(orbit.dwell).unwrap_or(u16::MAX))
+                            }
+                        };
+                        if let Some(cell) = values.get_mut(r * width + c) {
+                            *cell = value;
+                        }
                     }
-                    None => {
-                        let orbit = kernel.dwell(kernel.part(point(columns, c, column)), im);
-                        stats.computed += 1;
-                        stats.iterations += u64::from(orbit.iterations);
-                        V::from_value(u16::try_from(orbit.dwell).unwrap_or(u16::MAX))
-                    }
-                };
-                if let Some(cell) = values.get_mut(r * width + c) {
-                    *cell = value;
                 }
             }
         }
-        move_points(columns, column);
-        move_points(rows, row);
+        move_points(columns, &view, Axis::Columns);
+        move_points(rows, &view, Axis::Rows);
         self.computed = true;
         stats
     }
+}
+
+/// The dwell at (`re`, `im`), out of line: the kernel's orbits once, not inlined into every
+/// frame's loop (a frame computes a tenth of its pixels; flash is what a board lacks).
+#[inline(never)]
+fn dwell(kernel: &Kernel, re: i64, im: Part) -> Orbit {
+    kernel.dwell(kernel.part(re), im)
 }
 
 /// Whether a frame of `old` holds values `new` may take.
@@ -319,23 +331,45 @@ fn copy<T: Copy>(to: &mut [T], from: &[T], count: usize) {
     }
 }
 
+/// A frame's columns or rows.
+#[derive(Debug, Clone, Copy)]
+enum Axis {
+    Columns,
+    Rows,
+}
+
+/// Line `k`'s nominal point part (Q60) in `view`, out of line (128-bit products: a call
+/// costs less flash than a copy at each of its uses).
+#[inline(never)]
+fn nominal(view: &View, axis: Axis, k: usize) -> i128 {
+    match axis {
+        Axis::Columns => view.column(k as i64),
+        Axis::Rows => view.row(k as i64),
+    }
+}
+
 /// The point line `k` stands for while its frame is computed: its old line's, or its
 /// nominal one.
-fn point(lines: &[ZoomLine], k: usize, nominal: impl Fn(usize) -> i128) -> i64 {
+fn point(lines: &[ZoomLine], k: usize, view: &View, axis: Axis) -> i64 {
     lines
         .get(k)
         .and_then(|line| line.source())
         .and_then(|old| lines.get(old))
-        .map_or_else(|| in_range(nominal(k)), |old| old.point())
+        .map_or_else(|| in_range(nominal(view, axis, k)), |old| old.point())
 }
 
 /// Each line's point becomes the one it stands for, in place.
-fn move_points(lines: &mut [ZoomLine], nominal: impl Fn(usize) -> i128 + Copy) {
-    for (pass, k) in in_place_order(lines.len()) {
-        if lines.get(k).is_some_and(|line| pass.takes(k, *line)) {
-            let moved = point(lines, k, nominal);
-            if let Some(line) = lines.get_mut(k) {
-                line.set_point(moved);
+#[inline(never)]
+fn move_points(lines: &mut [ZoomLine], view: &View, axis: Axis) {
+    let count = lines.len();
+    for pass in PASSES {
+        for i in 0..count {
+            let k = pass.line(i, count);
+            if lines.get(k).is_some_and(|line| pass.takes(k, *line)) {
+                let moved = point(lines, k, view, axis);
+                if let Some(line) = lines.get_mut(k) {
+                    line.set_point(moved);
+                }
             }
         }
     }
@@ -356,7 +390,18 @@ enum Pass {
     Fresh,
 }
 
+/// The passes in their order.
+const PASSES: [Pass; 3] = [Pass::Up, Pass::Down, Pass::Fresh];
+
 impl Pass {
+    /// The `i`th line of `count` this pass visits.
+    const fn line(self, i: usize, count: usize) -> usize {
+        match self {
+            Self::Down => count - 1 - i,
+            _ => i,
+        }
+    }
+
     /// Whether line `k` moves in this pass.
     fn takes(self, k: usize, line: ZoomLine) -> bool {
         match (self, line.source()) {
@@ -368,24 +413,14 @@ impl Pass {
     }
 }
 
-/// Every (pass, line) of `count` lines in the order [`Pass`] gives.
-fn in_place_order(count: usize) -> impl Iterator<Item = (Pass, usize)> {
-    [Pass::Up, Pass::Down, Pass::Fresh]
-        .into_iter()
-        .flat_map(move |pass| {
-            (0..count).map(move |i| match pass {
-                Pass::Down => (pass, count - 1 - i),
-                _ => (pass, i),
-            })
-        })
-}
-
 /// Gives the old lines (the points `lines` hold, running the same way as the new lines'
 /// nominal points) to new lines within `reach` (Q60 bits) of them, one old line for at
 /// most one new line, in order, as many as can be: each old line in turn takes the first
 /// new line after the last one given that lies within reach (earliest first is optimal
 /// for points matched to windows on a line). `None` gives none.
-fn assign(lines: &mut [ZoomLine], nominal: impl Fn(usize) -> i128, reach: Option<i128>) {
+#[inline(never)]
+fn assign(lines: &mut [ZoomLine], view: &View, axis: Axis, reach: Option<i128>) {
+    let nominal = |k: usize| nominal(view, axis, k);
     for line in lines.iter_mut() {
         line.source = NONE;
     }
@@ -393,29 +428,25 @@ fn assign(lines: &mut [ZoomLine], nominal: impl Fn(usize) -> i128, reach: Option
     let Some(reach) = reach.filter(|_| count > 0) else {
         return;
     };
-    let first = nominal(0);
-    let step = if count > 1 { nominal(1) - first } else { 1 };
     // Both ways of running become "up".
-    let sign = if step < 0 { -1 } else { 1 };
+    let sign = if count > 1 && nominal(1) < nominal(0) {
+        -1
+    } else {
+        1
+    };
     let at = |k: usize| sign * nominal(k);
-    let step = step.abs().max(1);
     let old_point = |lines: &[ZoomLine], j: usize| {
         lines
             .get(j)
             .map_or(0, |line| sign * i128::from(line.point()))
     };
-    let mut next_free = 0;
+    // The first new line at or past the last old line's o − reach (old points run up, so
+    // it only moves up), and the first not given yet.
+    let (mut k, mut next_free) = (0, 0);
     for j in 0..count.min(usize::from(NONE)) {
         let o = old_point(lines, j);
-        // The first new line at or past o − reach: estimated by the nominal spacing, then
-        // stepped (offsets are rounded, so the spacing is not exact).
-        let low = o - reach;
-        let estimate = (low - at(0)).div_euclid(step).clamp(0, count as i128);
-        let mut k = usize::try_from(estimate).unwrap_or(count).max(next_free);
-        while k > next_free && at(k - 1) >= low {
-            k -= 1;
-        }
-        while k < count && at(k) < low {
+        k = k.max(next_free);
+        while k < count && at(k) < o - reach {
             k += 1;
         }
         if k < count && at(k) <= o + reach {

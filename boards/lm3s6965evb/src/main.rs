@@ -15,7 +15,7 @@ mod firmware {
     use cortex_m_semihosting::{debug, hprintln};
     use panic_semihosting as _;
     use tinyfractal_lm3s6965evb::{
-        scenes::{self, DEEP_SCENES, SCENES},
+        scenes::{self, DEEP_SCENES, SCENES, ZOOM_SCENES},
         Framebuffer,
     };
 
@@ -25,7 +25,12 @@ mod firmware {
     fn main() -> ! {
         let mut board = Board::init();
         let mut framebuffer = Framebuffer::new();
-        for (index, entry) in SCENES.iter().chain(&DEEP_SCENES).enumerate() {
+        for (index, entry) in SCENES
+            .iter()
+            .chain(&DEEP_SCENES)
+            .chain(&ZOOM_SCENES)
+            .enumerate()
+        {
             let (name, result) = (
                 entry.name,
                 entry.scene.draw(&mut framebuffer, &scenes::GREY),

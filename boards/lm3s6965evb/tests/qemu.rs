@@ -19,7 +19,7 @@ use std::time::{Duration, Instant};
 
 use tinyfractal_lm3s6965evb::{
     framebuffer,
-    scenes::{self, DEEP_SCENES, SCENES},
+    scenes::{self, DEEP_SCENES, SCENES, ZOOM_SCENES},
     Framebuffer,
 };
 
@@ -155,7 +155,12 @@ fn firmware_matches_the_host_pixel_for_pixel() {
             .expect("the firmware speaks")
     };
 
-    for (index, entry) in SCENES.iter().chain(&DEEP_SCENES).enumerate() {
+    for (index, entry) in SCENES
+        .iter()
+        .chain(&DEEP_SCENES)
+        .chain(&ZOOM_SCENES)
+        .enumerate()
+    {
         let (name, scene) = (entry.name, entry.scene);
         let line = next_line();
         assert!(

@@ -19,7 +19,7 @@ mod firmware {
     use embedded_graphics::prelude::Size;
     use panic_semihosting as _;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
-    use tinyfractal_scenes::{Work, DISPLAY_SCENES, GREY, SCENES};
+    use tinyfractal_scenes::{Work, DISPLAY_SCENES, GREY, SCENES, ZOOM_SCENES};
 
     const RELOAD: u32 = 0x00FF_FFFF;
     static WRAPS: AtomicU32 = AtomicU32::new(0);
@@ -125,7 +125,7 @@ mod firmware {
         let clock = Clock::calibrate();
         hprintln!("measure calibration scale={}", clock.scale);
         // Every core's scenes, with the baselines where they apply.
-        for entry in SCENES.iter().chain(DISPLAY_SCENES.iter()) {
+        for entry in SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES) {
             let view = BaselineView::of(&entry.scene);
             measure(&clock, (entry.name, entry.size), view, |target| {
                 entry.scene.draw(target, &GREY)

@@ -26,7 +26,7 @@ use rp2040_hal::{
     gpio::{FunctionSpi, Pins},
     pac, Sio, Spi, Timer, Watchdog,
 };
-use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES};
+use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES, ZOOM_SCENES};
 
 /// The second-stage bootloader for the Pico's W25Q080 flash, first in the image.
 // SAFETY: `.boot2` is the 256 bytes memory.x reserves at the start of the flash for it.
@@ -104,10 +104,10 @@ fn main() -> ! {
     info!("ST7789 320x240 ready; GP15 shows the next scene");
 
     loop {
-        for entry in SCENES.iter().chain(&DEEP_SCENES) {
+        for entry in SCENES.iter().chain(&DEEP_SCENES).chain(&ZOOM_SCENES) {
             let (name, scene) = (entry.name, entry.scene);
             let start = timer.get_counter();
-            // An animated scene (the walking figure) waits FRAME_MS between frames.
+            // An animated scene (the walking figure, the zoom) waits FRAME_MS between frames.
             let result = scene.draw_frames(&mut display, &COLOUR, || {
                 let since = timer.get_counter();
                 wait_for_press_or(
@@ -122,6 +122,7 @@ fn main() -> ! {
                 Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
                 Ok(Work::Points(n)) => info!("{}: {} points in {} ms", name, n, ms),
                 Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", name, n, ms),
+                Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", name, n, ms),
                 Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
             }
             let shown = timer.get_counter();

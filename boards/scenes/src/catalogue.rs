@@ -123,16 +123,34 @@ pub enum Scene {
         /// The tier forced on the view, or `None` for its own (the calibrated rule's).
         tier: Option<Tier>,
     },
+    /// A zoom into the Mandelbrot set, `frames` frames in one frame of storage: each frame
+    /// takes the last one's columns and rows within `tolerance_percent` % of a pixel
+    /// (`ZoomFrame::advance`) and computes the rest; the last is exact.
+    Zoom {
+        /// Centre.
+        centre: (&'static str, &'static str),
+        /// The first frame's width.
+        width: &'static str,
+        /// Iteration cap: at most 255 (a board keeps a byte a pixel).
+        max_iterations: u32,
+        /// Frames drawn.
+        frames: u32,
+        /// Each frame's width is the last one's times this ratio (numerator, denominator).
+        shrink: (u32, u32),
+        /// How far (in % of a pixel) a line may be from the one it takes.
+        tolerance_percent: u32,
+    },
 }
 
 impl Scene {
     /// What the scene's [`Work`](crate::Work) counts, singular: `segment`, `point`,
-    /// `iteration`, `square`, `triangle`, `cube`, `height` or `line`.
+    /// `iteration`, `frame`, `square`, `triangle`, `cube`, `height` or `line`.
     pub const fn work_unit(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "segment",
             Self::Ifs { .. } => "point",
             Self::Escape { .. } => "iteration",
+            Self::Zoom { .. } => "frame",
             Self::Subdivision { shape, .. } => match shape {
                 Shape::Carpet => "square",
                 Shape::Gasket => "triangle",
@@ -144,7 +162,7 @@ impl Scene {
     }
 
     /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
-    /// `terrain`, `terrain2d`, `figure`, `mandelbrot` or `julia`.
+    /// `terrain`, `terrain2d`, `figure`, `mandelbrot`, `julia` or `zoom` (`animate zoom`).
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
@@ -159,10 +177,12 @@ impl Scene {
             Self::Walk { .. } => "figure",
             Self::Escape { julia: None, .. } => "mandelbrot",
             Self::Escape { julia: Some(_), .. } => "julia",
+            Self::Zoom { .. } => "zoom",
         }
     }
 
-    /// The escape-time view of this scene at `size`; `None` for an L-system.
+    /// The escape-time view of this scene at `size`; `None` for any other scene (a zoom
+    /// has many).
     pub fn view(&self, size: Size) -> Option<Result<View, Error>> {
         let Self::Escape {
             julia,
@@ -659,6 +679,44 @@ pub const DEEP_SCENES: [Entry; 2] = [
     // The deep-zoom view by perturbation: its series and a `Deep` finish, against `Deep`.
     perturbed("deep-zoom-perturbed", escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire")),
 ];
+
+/// A zoom drawn on every board and measured on every core: 32 frames into the spiral at
+/// 1.05× a frame, in one frame of a byte a pixel (10 KiB on the stack at 128×64), each
+/// frame taking the last one's lines within a pixel; beside it the same frames with no
+/// tolerance (lines only at exactly the same points: in a zoom, nearly every pixel is
+/// computed), what a zoom costs without reuse.
+#[rustfmt::skip]
+pub const ZOOM_SCENES: [Entry; 2] = [
+    zoom("zoom", SPIRAL, "0.01", 200, (32, 100)),
+    zoom("zoom-every-frame", SPIRAL, "0.01", 200, (32, 0)),
+];
+
+/// A zoom toward `centre` from `width`, `frames` frames at 1.05× (20/21) a frame, at a
+/// tolerance of `tolerance_percent` % of a pixel, on the OLED.
+const fn zoom(
+    name: &'static str,
+    centre: (&'static str, &'static str),
+    width: &'static str,
+    max_iterations: u32,
+    (frames, tolerance_percent): (u32, u32),
+) -> Entry {
+    assert!(Coord::parse(centre.0).is_some() && Coord::parse(centre.1).is_some());
+    assert!(Coord::parse(width).is_some());
+    assert!(max_iterations <= 255);
+    Entry {
+        name,
+        scene: Scene::Zoom {
+            centre,
+            width,
+            max_iterations,
+            frames,
+            shrink: (20, 21),
+            tolerance_percent,
+        },
+        size: OLED,
+        palette: "fire",
+    }
+}
 
 /// The escape-time views at a real board's display size (320×240), measured on
 /// Cortex-M0/M3/M4 beside the OLED's frames: the full Mandelbrot view at 256 iterations

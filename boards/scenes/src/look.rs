@@ -7,10 +7,10 @@ use embedded_graphics::{
 };
 use tinyfractal::FitError;
 use tinyfractal::{
-    walk_pose, Carpet, Colors, Displacement, DrawError, Error, EscapeTime, Figure, Gasket,
-    Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile, Orientation, ParametricGrammar,
-    ParametricLSystem, Real, ReferencePoint, Shading, SierpinskiCube, Terrain, TerrainMap, Tier,
-    View, BODY, DEFAULT_DEPTH, DEFAULT_STACK,
+    walk_pose, Carpet, Colors, Coord, DeepCoord, Displacement, DrawError, Error, EscapeTime,
+    Figure, Fractal, Gasket, Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile, Orientation,
+    ParametricGrammar, ParametricLSystem, Real, ReferencePoint, Shading, SierpinskiCube, Terrain,
+    TerrainMap, Tier, View, ZoomFrame, ZoomLine, BODY, DEFAULT_DEPTH, DEFAULT_STACK,
 };
 
 use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
@@ -77,21 +77,27 @@ pub enum Work {
     Points(u64),
     /// Cells drawn: squares (carpet), triangles (gasket), cubes, or terrain heights.
     Cells(u64),
+    /// Frames drawn (a zoom).
+    Frames(u64),
 }
 
 impl Work {
     /// The count, whatever it counts.
     pub const fn count(self) -> u64 {
         match self {
-            Self::Segments(n) | Self::Iterations(n) | Self::Points(n) | Self::Cells(n) => n,
+            Self::Segments(n)
+            | Self::Iterations(n)
+            | Self::Points(n)
+            | Self::Cells(n)
+            | Self::Frames(n) => n,
         }
     }
 }
 
 impl Scene {
     /// Draws the scene as [`Scene::draw`] does, calling `between_frames` after each frame
-    /// of an animated scene (the walking figure): a board waits there, so the animation
-    /// runs at its pace rather than the display's.
+    /// of an animated scene (the walking figure, a zoom): a board waits there, so the
+    /// animation runs at its pace rather than the display's.
     pub fn draw_frames<D>(
         &self,
         target: &mut D,
@@ -104,6 +110,7 @@ impl Scene {
     {
         match *self {
             Scene::Walk { frames } => draw_walk(target, look, frames, between_frames),
+            Scene::Zoom { .. } => draw_zoom(target, look, self, between_frames),
             _ => self.draw(target, look),
         }
     }
@@ -145,6 +152,7 @@ impl Scene {
                 map,
             } => draw_terrain(target, look, displacement, samples, map),
             Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
+            Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
             Scene::Escape {
                 julia,
                 centre,
@@ -381,6 +389,100 @@ where
         .draw(target)
         .map_err(DrawError::Target)?;
     Ok(Work::Iterations(stats.iterations))
+}
+
+/// A zoom over the whole of `target`, one frame of storage on the stack, a byte a pixel:
+/// 10,496 bytes up to the OLED's 128×64 (the micro:bit's 16 KiB hold it), 84,480 bytes up
+/// to a display's 320×240 or 240×320.
+fn draw_zoom<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    scene: &Scene,
+    between_frames: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let size = target.bounding_box().size;
+    if size.width <= 128 && size.height <= 64 {
+        zoom_on_stack::<D, { 128 * 64 }, { 128 + 64 }>(target, look, scene, between_frames)
+    } else {
+        zoom_on_stack::<D, { 320 * 240 }, { 320 + 320 }>(target, look, scene, between_frames)
+    }
+}
+
+/// A zoom in `PIXELS` bytes and `LINES` lines on the stack, out of line: each size's
+/// storage exists only while its zoom draws.
+#[inline(never)]
+fn zoom_on_stack<D, const PIXELS: usize, const LINES: usize>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    scene: &Scene,
+    between_frames: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let mut values = [0u8; PIXELS];
+    let mut lines = [ZoomLine::default(); LINES];
+    draw_zoom_in(target, look, scene, &mut values, &mut lines, between_frames)
+}
+
+/// A zoom in `values` and `lines` (the columns, then the rows), out of line:
+/// `between_frames` after each frame. Counts frames.
+#[inline(never)]
+fn draw_zoom_in<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    scene: &Scene,
+    values: &mut [u8],
+    lines: &mut [ZoomLine],
+    mut between_frames: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let Scene::Zoom {
+        centre,
+        width,
+        max_iterations,
+        frames,
+        shrink: (numerator, denominator),
+        tolerance_percent,
+    } = *scene
+    else {
+        return Ok(Work::Frames(0));
+    };
+    let size = target.bounding_box().size;
+    // Every catalogue number parses: `zoom()` asserts it when the tables compile.
+    let deep = |text: &str| DeepCoord::parse(text).unwrap_or_default();
+    let centre = (deep(centre.0), deep(centre.1));
+    let view_of = |width: i128| {
+        let width = Coord::from_bits(i64::try_from(width).unwrap_or(0));
+        let width = DeepCoord::from_coord(width);
+        View::deep(Fractal::Mandelbrot, centre, width, size, max_iterations)
+    };
+    let mut width = i128::from(Coord::parse(width).unwrap_or_default().to_bits());
+    let gradient = look.gradient::<16>()?;
+    let (columns, rows) = lines.split_at_mut(lines.len().min(size.width as usize));
+    let mut frame = ZoomFrame::new(view_of(width)?, values, columns, rows)?;
+    for index in 0..frames {
+        let view = view_of(width)?;
+        // The last frame takes only lines at exactly its points: it is exact.
+        let tolerance = if index + 1 == frames {
+            0
+        } else {
+            tolerance_percent
+        };
+        frame.advance(view, Some(tolerance))?;
+        frame.draw(target, &gradient).map_err(DrawError::Target)?;
+        between_frames();
+        width = width * i128::from(numerator) / i128::from(denominator.max(1));
+    }
+    Ok(Work::Frames(frames.into()))
 }
 
 /// Most points of a reference orbit a board keeps (on the stack, only while a deep view

@@ -7,7 +7,7 @@ use embedded_graphics::{
     pixelcolor::{Rgb565, Rgb888},
     prelude::*,
 };
-use tinyfractal_scenes::{Entry, Look, Work, COLOUR, GREY, SCENES};
+use tinyfractal_scenes::{Entry, Look, Work, COLOUR, GREY, SCENES, ZOOM_SCENES};
 
 #[path = "../../../tests/support/frame.rs"]
 mod frame;
@@ -27,7 +27,9 @@ fn marks<C: PixelColor + From<Rgb888>>(
         Work::Segments(_) | Work::Points(_) | Work::Cells(_) => {
             frame.pixels.iter().map(|&p| p != look.background).collect()
         }
-        Work::Iterations(_) => frame.pixels.iter().map(|&p| p == look.inside).collect(),
+        Work::Iterations(_) | Work::Frames(_) => {
+            frame.pixels.iter().map(|&p| p == look.inside).collect()
+        }
     };
     (work, marked)
 }
@@ -35,7 +37,8 @@ fn marks<C: PixelColor + From<Rgb888>>(
 #[test]
 fn every_scene_marks_the_same_pixels_in_colour_and_in_grey() {
     // The deep zoom (1000 iterations at 60 bits) is left to the QEMU test at 128×64.
-    for scene @ Entry { name, .. } in SCENES.iter().filter(|entry| entry.name != "deep-zoom") {
+    let scenes = SCENES.iter().chain(&ZOOM_SCENES);
+    for scene @ Entry { name, .. } in scenes.filter(|entry| entry.name != "deep-zoom") {
         for size in [Size::new(320, 240), Size::new(240, 320)] {
             // An inside colour no gradient entry has: the classic gradient's last key is
             // black in RGB565, and a smooth view's 256 entries come that close to it.

@@ -25,7 +25,7 @@ use stm32f4xx_hal::{
     spi::{Mode, Phase, Polarity},
     timer::Counter,
 };
-use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES};
+use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES, ZOOM_SCENES};
 
 /// The board's 8 MHz HSE clock.
 const HSE_MHZ: u32 = 8;
@@ -115,10 +115,10 @@ fn main() -> ! {
     info!("ILI9341 240x320 ready; the user button shows the next scene");
 
     loop {
-        for entry in SCENES.iter().chain(&DEEP_SCENES) {
+        for entry in SCENES.iter().chain(&DEEP_SCENES).chain(&ZOOM_SCENES) {
             let (name, scene) = (entry.name, entry.scene);
             let start = clock.now();
-            // An animated scene (the walking figure) waits FRAME_MS between frames.
+            // An animated scene (the walking figure, the zoom) waits FRAME_MS between frames.
             let result = scene.draw_frames(&mut display, &COLOUR, || {
                 let since = clock.now();
                 wait_for_press_or(
@@ -133,6 +133,7 @@ fn main() -> ! {
                 Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
                 Ok(Work::Points(n)) => info!("{}: {} points in {} ms", name, n, ms),
                 Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", name, n, ms),
+                Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", name, n, ms),
                 Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
             }
             let shown = clock.now();
