@@ -378,6 +378,47 @@ fn escape_table(results: &Value) -> String {
     table
 }
 
+/// The deep-zoom benches (320×240): perturbation against `Deep` where both draw, and alone
+/// past `Deep`'s reach; then the boards' deep scenes on Cortex-M3 and M4.
+fn deep_table(records: &[Value], results: &Value) -> String {
+    let mut table = String::from(
+        "| view | method | tier | time | iterations computed | skipped by the series | rebases |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    let times = &results["times_ns"];
+    let work = results["work"].as_array().cloned().unwrap_or_default();
+    for row in work.iter().filter(|w| w.get("method").is_some()) {
+        let name = text(row, "view").replace('_', " ");
+        let method = text(row, "method");
+        let group = format!("deep {name} 320x240");
+        table.push_str(&format!(
+            "| {name} | {method} | {} | {} | {} | {} | {} |\n",
+            text(row, "tier"),
+            milliseconds(number(times, &format!("{group} / {method}")).unwrap_or(0)),
+            thousands(number(row, "iterations").unwrap_or(0)),
+            thousands(number(row, "skipped").unwrap_or(0)),
+            thousands(number(row, "rebases").unwrap_or(0)),
+        ));
+    }
+    table.push_str(
+        "\n| core | board scene (128×64) | instructions | iterations computed |\n|---|---|---|---|\n",
+    );
+    for scene in ["deep-zoom", "deep-zoom-perturbed", "perturbation-zoom"] {
+        for record in records.iter().filter(|r| text(r, "scene") == scene) {
+            if text(record, "core") == "cortex-m0" {
+                continue;
+            }
+            table.push_str(&format!(
+                "| {} | {scene} | {} | {} |\n",
+                text(record, "core"),
+                thousands(number(record, "instructions").unwrap_or(0)),
+                thousands(number(record, "work").unwrap_or(0)),
+            ));
+        }
+    }
+    table
+}
+
 /// `document` with each named region replaced by its table.
 fn regenerated(document: &str, tables: &[(&str, String)]) -> String {
     let mut out = document.to_string();
@@ -410,6 +451,7 @@ fn performance_tables_are_generated_from_the_measurements() {
         ("summary", summary_table(records)),
         ("lsystem-bench", lsystem_table(&results)),
         ("escape-bench", escape_table(&results)),
+        ("deep-bench", deep_table(records, &results)),
         ("general-bench", general_table(records, &results)),
         ("ifs-bench", ifs_table(records, &results)),
         ("shapes-bench", shapes_table(records, &results)),
