@@ -284,3 +284,38 @@ fn byte_cells_hold_the_same_frames_and_refuse_larger_values() {
         ))
     ));
 }
+
+#[test]
+fn no_tolerance_takes_nothing_from_another_tier() {
+    // Found by the `zoom` fuzz target: the same point computed in another tier can have
+    // another dwell, so a frame that must be exact takes no line from a frame in another
+    // tier. The case: a view 0.99 wide, then 31/256 of it, panned by (-1, 2) pixels.
+    let size = Size::new(3, 15);
+    let bits = |v: i64| Coord::from_bits(v);
+    let at = |centre: (i64, i64), width: i64| {
+        View::new(
+            Fractal::Mandelbrot,
+            (bits(centre.0), bits(centre.1)),
+            bits(width),
+            size,
+            195,
+        )
+        .unwrap()
+    };
+    let (centre, width) = (
+        (167_783_424i64 << 30, 65_561i64 << 30),
+        4_243_991_296i64 << 28,
+    );
+    let first = at(centre, width);
+    let spacing = first.spacing().to_bits();
+    let next = at(
+        (centre.0 - spacing, centre.1 + 2 * spacing),
+        (i128::from(width) * 31 / 256) as i64,
+    );
+    assert_ne!(first.tier(), next.tier(), "the case crosses tiers");
+    let mut storage = Storage::new(size);
+    let mut frame = storage.frame(first);
+    frame.advance(first, None).unwrap();
+    frame.advance(next, Some(0)).unwrap();
+    assert_eq!(frame.values(), computed(next));
+}
