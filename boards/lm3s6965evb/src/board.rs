@@ -5,6 +5,9 @@
 //! enables it), and its receive FIFO must be drained after every byte or sending stalls.
 //! PC7 is the OLED's data/command line (low = command); PD0 selects the OLED (QEMU treats it
 //! as active high) and stays high. The gamepad's select button reads low on PF1 while held.
+//! Its release (a rising edge: GPIOIEV) is latched in GPIORIS, so a press is seen even when
+//! QEMU's vCPU does not run during the 100 ms that `sendkey` holds it. The release, not the
+//! press: QEMU leaves PF1 low until the first release, so a first press makes no edge.
 
 use core::ptr::{read_volatile, write_volatile};
 
@@ -17,7 +20,11 @@ const GPIO_C: usize = 0x4000_6000;
 const GPIO_D: usize = 0x4000_7000;
 const GPIO_F: usize = 0x4002_5000;
 const GPIO_DIR: usize = 0x400;
+const GPIO_IEV: usize = 0x40C;
+const GPIO_RIS: usize = 0x414;
+const GPIO_ICR: usize = 0x41C;
 const GPIO_DEN: usize = 0x51C;
+const SELECT: u32 = 1 << 1;
 const SSI_CR0: usize = 0x00;
 const SSI_CR1: usize = 0x04;
 const SSI_DR: usize = 0x08;
@@ -46,10 +53,6 @@ fn gpio_set(port: usize, mask: u32, high: bool) {
     write(port + ((mask as usize) << 2), if high { mask } else { 0 });
 }
 
-fn gpio_get(port: usize, mask: u32) -> bool {
-    read(port + ((mask as usize) << 2)) & mask != 0
-}
-
 /// The board, set up.
 pub struct Board;
 
@@ -62,7 +65,8 @@ impl Board {
             write(port + GPIO_DIR, read(port + GPIO_DIR) | pins);
             write(port + GPIO_DEN, read(port + GPIO_DEN) | pins);
         }
-        write(GPIO_F + GPIO_DEN, read(GPIO_F + GPIO_DEN) | 1 << 1);
+        write(GPIO_F + GPIO_DEN, read(GPIO_F + GPIO_DEN) | SELECT);
+        write(GPIO_F + GPIO_IEV, read(GPIO_F + GPIO_IEV) | SELECT);
         gpio_set(GPIO_D, 1 << 0, true);
         write(SSI0 + SSI_CR1, 0);
         write(SSI0 + SSI_CPSR, 2);
@@ -93,9 +97,16 @@ impl Board {
         }
     }
 
-    /// Waits for the select button to be pressed and released.
+    /// Forgets any earlier release of select: call it before saying a scene is done, so the
+    /// press that answers it is the one [`Board::wait_for_select`] sees.
+    pub fn arm_select(&mut self) {
+        write(GPIO_F + GPIO_ICR, SELECT);
+    }
+
+    /// Waits for select to be pressed and released since [`Board::arm_select`]. The release
+    /// is latched as an edge, not polled as a level: a short press is not missed.
     pub fn wait_for_select(&mut self) {
-        while gpio_get(GPIO_F, 1 << 1) {}
-        while !gpio_get(GPIO_F, 1 << 1) {}
+        while read(GPIO_F + GPIO_RIS) & SELECT == 0 {}
+        write(GPIO_F + GPIO_ICR, SELECT);
     }
 }

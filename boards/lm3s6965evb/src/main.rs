@@ -36,6 +36,7 @@ mod firmware {
                 entry.scene.draw(&mut framebuffer, &scenes::GREY),
             );
             board.show(&framebuffer);
+            board.arm_select();
             match result {
                 Ok(work) => hprintln!("scene {} {} done: {:?}", index, name, work),
                 Err(error) => hprintln!("scene {} {} failed: {}", index, name, error),
