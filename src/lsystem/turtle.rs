@@ -86,6 +86,11 @@ pub(crate) struct Turtle<'g, const STACK: usize> {
     max_stack: usize,
     /// Steps below this (but 0) are [`WalkError::StepUnderflow`].
     min_step: Real,
+    /// One step along the main heading, `step × (cos, sin)`, while neither has changed:
+    /// a run of steps computes it once (two 64-bit products, in software on Cortex-M0).
+    /// Not in [`State`], so `[` saves no more; anything that changes the heading or the
+    /// step (a turn, `@`, `]`, an expansion passed over) forgets it.
+    main_step: Option<(Real, Real)>,
 }
 
 impl<'g, const STACK: usize> Turtle<'g, STACK> {
@@ -111,6 +116,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             stack: Vec::new(),
             max_stack: 0,
             min_step: MIN_STEP,
+            main_step: None,
         };
         let left = start.turns >= 0;
         for _ in 0..start.turns.unsigned_abs() % 65_536 {
@@ -123,6 +129,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     /// comparison, not `%`: Cortex-M0 has no divide instruction.
     #[inline(always)]
     fn turn(&mut self, left: bool) {
+        self.main_step = None;
         let n = self.headings.divisions();
         let state = &mut self.state;
         if n == 0 {
@@ -147,22 +154,37 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         }
     }
 
-    /// Moves one step along `(cos, sin)` and returns the segment it covered.
-    fn advance(&mut self, direction: (i32, i32)) -> Result<Segment, Error> {
-        self.advance_by(self.state.step, direction)
+    /// Moves one step along the main heading and returns the segment it covered.
+    #[inline(always)]
+    fn advance_main(&mut self) -> Result<Segment, Error> {
+        let vector = match self.main_step {
+            Some(vector) => vector,
+            None => {
+                let vector = scaled(self.state.step, self.main_direction());
+                self.main_step = Some(vector);
+                vector
+            }
+        };
+        self.advance_along(vector)
     }
 
-    /// Moves `step` along `(cos, sin)` and returns the segment it covered.
-    fn advance_by(&mut self, step: Real, (cos, sin): (i32, i32)) -> Result<Segment, Error> {
+    /// Moves `step` along `direction` and returns the segment it covered.
+    fn advance_by(&mut self, step: Real, direction: (i32, i32)) -> Result<Segment, Error> {
+        self.advance_along(scaled(step, direction))
+    }
+
+    /// Moves by `(dx, dy)` and returns the segment it covered.
+    #[inline(always)]
+    fn advance_along(&mut self, (dx, dy): (Real, Real)) -> Result<Segment, Error> {
         let start = self.state.position;
         let end = TurtlePoint {
             x: start
                 .x
-                .checked_add(step.mul_q30(cos))
+                .checked_add(dx)
                 .ok_or(Error::Walk(WalkError::Overflow))?,
             y: start
                 .y
-                .checked_add(step.mul_q30(sin))
+                .checked_add(dy)
                 .ok_or(Error::Walk(WalkError::Overflow))?,
         };
         self.state.position = end;
@@ -187,8 +209,12 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     pub(crate) fn execute(&mut self, command: Command) -> Result<Option<Segment>, Error> {
         let state = &mut self.state;
         match command {
-            Command::Draw => return self.advance(self.main_direction()).map(Some),
-            Command::DrawFree => return self.advance(self.state.free.cos_sin()).map(Some),
+            Command::Draw => return self.advance_main().map(Some),
+            Command::DrawFree => {
+                return self
+                    .advance_by(self.state.step, self.state.free.cos_sin())
+                    .map(Some)
+            }
             Command::DrawBy(length) | Command::MoveBy(length) => {
                 let step = state
                     .step
@@ -198,10 +224,10 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 return Ok(matches!(command, Command::DrawBy(_)).then_some(segment));
             }
             Command::Move => {
-                self.advance(self.main_direction())?;
+                self.advance_main()?;
             }
             Command::MoveFree => {
-                self.advance(self.state.free.cos_sin())?;
+                self.advance_by(self.state.step, self.state.free.cos_sin())?;
             }
             Command::Left => {
                 let left = !state.reversed;
@@ -212,6 +238,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 self.turn(left);
             }
             Command::Around => {
+                self.main_step = None;
                 let n = self.headings.divisions();
                 if n == 0 {
                     state.free.0 = state.free.0.wrapping_add(1 << 31);
@@ -223,6 +250,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             }
             Command::Reverse => state.reversed = !state.reversed,
             Command::FreeLeft(turn) | Command::FreeRight(turn) => {
+                self.main_step = None;
                 let delta = turn.0;
                 let left = matches!(command, Command::FreeLeft(_)) != state.reversed;
                 state.free.0 = if left {
@@ -232,6 +260,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 };
             }
             Command::Scale(factor) => {
+                self.main_step = None;
                 state.step = state
                     .step
                     .checked_mul(factor)
@@ -260,6 +289,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 // Fractint's `]` restores everything but the colour; ABOP's restores all.
                 let color = state.color;
                 *state = saved;
+                self.main_step = None;
                 if self.dialect == Dialect::Fractint {
                     state.color = color;
                 }
@@ -268,6 +298,12 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         }
         Ok(None)
     }
+}
+
+/// `step` along `(cos, sin)` (Q30): the vector one step moves by.
+#[inline(always)]
+fn scaled(step: Real, (cos, sin): (i32, i32)) -> (Real, Real) {
+    (step.mul_q30(cos), step.mul_q30(sin))
 }
 
 /// What a guided walk hands out.
@@ -294,6 +330,7 @@ pub(crate) enum Decision {
 impl<const STACK: usize> Turtle<'_, STACK> {
     /// The turtle moved past an expansion summarised by `cell`; `None` on overflow.
     fn pass(&mut self, cell: &Summary) -> Option<()> {
+        self.main_step = None;
         let state = &mut self.state;
         state.position = TurtlePoint {
             x: state.position.x.checked_add(cell.displacement.0)?,
