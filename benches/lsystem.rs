@@ -106,7 +106,7 @@ fn bench(c: &mut Criterion) {
     let walked = LSystem::new(&grammar, ORDER)
         .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
         .unwrap();
-    group.bench_function("fit (walks: sizing + checking passes)", |b| {
+    group.bench_function("fit (walk: sizing pass, box predicted)", |b| {
         b.iter(|| {
             LSystem::new(black_box(&grammar), ORDER)
                 .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])

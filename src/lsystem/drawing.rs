@@ -3,6 +3,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
+use super::alphabet::Command;
 use super::grammar::Grammar;
 use super::table::{Cell, Summary, Table};
 use super::turtle::{Decision, Drawn, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
@@ -101,7 +102,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 
     /// The bounding box of what is drawn, by a walk in turtle units, and the unit: one step,
     /// or 2¹⁰, 2²⁰ or 2³⁰ of them where `@` shrinks steps below what one step resolves.
-    fn sized_bounds(&self) -> Result<(Option<Bounds>, Real), Error> {
+    fn sized_bounds(&self) -> Result<(Sizing, Real), Error> {
         let mut result = Err(Error::Walk(WalkError::StepUnderflow));
         for shift in [0, 10, 20, 30] {
             let unit = Real::from_int(1 << shift);
@@ -109,7 +110,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
                 step: unit,
                 ..Start::default()
             };
-            result = self.bounds_from(start, false).map(|bounds| (bounds, unit));
+            result = self.sizing_from(start, false).map(|sizing| (sizing, unit));
             if !matches!(result, Err(Error::Walk(WalkError::StepUnderflow))) {
                 break;
             }
@@ -120,17 +121,31 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     /// The bounding box of what is drawn from `start`, by a walk; `None` if nothing is.
     /// `in_pixels`: the walk's unit is a pixel (see `Segments::in_pixels`).
     fn bounds_from(&self, start: Start, in_pixels: bool) -> Result<Option<Bounds>, Error> {
+        self.sizing_from(start, in_pixels)
+            .map(|sizing| sizing.bounds)
+    }
+
+    /// [`bounds_from`](Self::bounds_from), with the segments counted.
+    fn sizing_from(&self, start: Start, in_pixels: bool) -> Result<Sizing, Error> {
         let mut walk = self.segments(start)?;
         if in_pixels {
             walk = walk.in_pixels();
         }
-        measure(walk)
+        let bounds = measure(walk.by_ref())?;
+        Ok(Sizing {
+            bounds,
+            segments: walk.stats().segments,
+        })
     }
 
     /// Scales and centres the drawing into `area` (less the margin), colours from `palette`.
     ///
-    /// A sizing pass measures the drawing in turtle units; a second pass at the chosen scale
-    /// checks it and measures its pixel bounding box, so that drawing cannot fail.
+    /// A sizing pass measures the drawing in turtle units. Where the turtle moves only by
+    /// drawing steps of one length (no `@`, no lengths, no `f`/`G`/`M`), the drawing pass is
+    /// that walk scaled to within half an ulp a step, so its pixel bounding box follows from
+    /// the sizing pass's and it cannot fail: fitting and drawing take two walks. Otherwise,
+    /// or where an edge of the box lies within that margin of a pixel's boundary, a second
+    /// pass at the chosen scale checks the drawing and measures the box (three walks).
     /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::WalkError::Overflow): fitted, its step would
     /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
@@ -184,18 +199,27 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             .as_deref_mut()
             .and_then(|cells| Table::build(self.grammar, self.order, Real::ONE, cells))
             .and_then(|table| table.picture(self.grammar, 0));
-        let (bounds, unit) = match measured {
+        let (bounds, walked, unit) = match measured {
             Some(summary) => (
                 summary.drawn.map(|drawn| Bounds {
                     min: point(drawn.min),
                     max: point(drawn.max),
                 }),
+                None,
                 Real::ONE,
             ),
-            None => self.sized_bounds()?,
+            None => {
+                let (sizing, unit) = self.sized_bounds()?;
+                (sizing.bounds, Some(sizing.segments), unit)
+            }
         };
-        let start = fitted_start(bounds, unit, self.orientation, &area, self.margin)?;
-        self.prepared(start, palette, cells)
+        let (start, scale) = fitted_placement(bounds, unit, self.orientation, &area, self.margin)?;
+        // Known from the sizing walk where the drawing pass is that walk scaled (see
+        // `predicted_box`): then the pass that would measure it is not walked.
+        let predicted = walked
+            .filter(|_| steps_only_by_drawing(self.grammar))
+            .and_then(|segments| predicted_box(self.orientation, bounds, scale, start, segments));
+        self.prepared(start, palette, cells, predicted)
     }
 
     /// Draws from an explicit placement, colours from `palette`. The drawing is walked once
@@ -227,27 +251,38 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             },
             palette,
             None,
+            None,
         )
     }
 
     /// Checks the drawing from `start` and measures its pixel box: from the table at this
-    /// step if `cells` can hold one, else by a walk.
+    /// step if `cells` can hold one, else the `predicted` box if there is one, else by a
+    /// walk.
     fn prepared<P: Palette>(
         &self,
         start: Start,
         palette: P,
         cells: Option<&'g mut [Cell]>,
+        predicted: Option<Rectangle>,
     ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
         let table =
             cells.and_then(|cells| Table::build(self.grammar, self.order, start.step, cells));
-        let (pixels, table) = match table {
-            Some(table) => match self.checked_picture(&table, start)? {
-                Some(pixels) => (pixels, Some(table)),
-                None => (self.bounds_from(start, true)?, None),
-            },
-            None => (self.bounds_from(start, true)?, None),
+        let walked = |system: &Self| -> Result<Rectangle, Error> {
+            if let Some(predicted) = predicted {
+                // What the pass would refuse before its first step (the order, the step).
+                system.segments(start)?;
+                return Ok(predicted);
+            }
+            let pixels = system.bounds_from(start, true)?;
+            Ok(pixel_box(system.orientation, pixels, start))
         };
-        let bounding_box = pixel_box(self.orientation, pixels, start);
+        let (bounding_box, table) = match table {
+            Some(table) => match self.checked_picture(&table, start)? {
+                Some(pixels) => (pixel_box(self.orientation, pixels, start), Some(table)),
+                None => (walked(self)?, None),
+            },
+            None => (walked(self)?, None),
+        };
         Ok(LSystemDrawing {
             system: *self,
             start,
@@ -368,6 +403,17 @@ pub(crate) fn fitted_start(
     area: &Rectangle,
     margin: u32,
 ) -> Result<Start, Error> {
+    fitted_placement(bounds, unit, orientation, area, margin).map(|(start, _)| start)
+}
+
+/// [`fitted_start`], and the scale: pixels per unit of `bounds`.
+fn fitted_placement(
+    bounds: Option<Bounds>,
+    unit: Real,
+    orientation: Orientation,
+    area: &Rectangle,
+    margin: u32,
+) -> Result<(Start, Real), Error> {
     let (low, high) = bounds.map_or(((Real::ZERO, Real::ZERO), (Real::ZERO, Real::ZERO)), |b| {
         ((b.min.x, b.min.y), (b.max.x, b.max.y))
     });
@@ -378,11 +424,78 @@ pub(crate) fn fitted_start(
         .scale
         .checked_mul(unit)
         .ok_or(Error::Walk(WalkError::Overflow))?;
-    Ok(Start {
-        position: TurtlePoint { x, y },
-        step,
-        turns: 0,
+    Ok((
+        Start {
+            position: TurtlePoint { x, y },
+            step,
+            turns: 0,
+        },
+        fitted.scale,
+    ))
+}
+
+/// What a sizing walk found: the box of what is drawn, and how many segments.
+struct Sizing {
+    bounds: Option<Bounds>,
+    segments: u64,
+}
+
+/// Whether the turtle moves only by drawing a step of the one length (no `@`, no lengths,
+/// no moves without drawing): then every place it stands on is the origin or a segment's
+/// end, and a walk at another step is the same walk scaled (see [`predicted_box`]).
+fn steps_only_by_drawing(grammar: &Grammar<'_>) -> bool {
+    grammar.all_ops().iter().all(|&op| {
+        !matches!(
+            grammar.command(op),
+            Command::Move
+                | Command::MoveFree
+                | Command::MoveBy(_)
+                | Command::DrawBy(_)
+                | Command::Scale(_)
+        )
     })
+}
+
+/// The pixel box a drawing pass from `start` would measure, without walking it, from a
+/// sizing walk of `segments` segments (a grammar whose turtle moves only by drawing fixed
+/// steps) that drew inside `bounds`, picture units of `scale` pixels.
+///
+/// The sizing walk's unit is 2ᵏ steps, so its positions are exact sums of the heading
+/// table's Q30 directions; the pass rounds each step to nearest, so each of its positions
+/// is `start + scale × p` for the walk's p within half a unit of the last place (2⁻³²) a
+/// step. Every place the turtle stands on is the origin or a segment's end, all in the
+/// box: the pass cannot overflow. The box is the pass's own when each of its edges rounds
+/// to the same pixel anywhere within that margin; `None` when one might round either way
+/// (then the pass is walked).
+fn predicted_box(
+    orientation: Orientation,
+    bounds: Option<Bounds>,
+    scale: Real,
+    start: Start,
+    segments: u64,
+) -> Option<Rectangle> {
+    let Some(bounds) = bounds else {
+        return Some(pixel_box(orientation, None, start));
+    };
+    // Half an ulp a step, half for the product below, and one to spare.
+    let margin = i64::try_from(segments).ok()?.checked_add(2)?;
+    let mapped = |p: TurtlePoint, by: i64| -> Option<TurtlePoint> {
+        let at = |origin: Real, p: Real| {
+            let bits = origin.checked_add(scale.checked_mul(p)?)?.to_bits();
+            Some(Real::from_bits(bits.checked_add(by)?))
+        };
+        Some(TurtlePoint {
+            x: at(start.position.x, p.x)?,
+            y: at(start.position.y, p.y)?,
+        })
+    };
+    let settled = |p: TurtlePoint| -> Option<TurtlePoint> {
+        let (low, high) = (mapped(p, -margin)?, mapped(p, margin)?);
+        let same = pixel_of(orientation, low) == pixel_of(orientation, high);
+        same.then_some(low)
+    };
+    let (min, max) = (settled(bounds.min)?, settled(bounds.max)?);
+    Some(pixel_box(orientation, Some(Bounds { min, max }), start))
 }
 
 /// A pair as a turtle point.

@@ -162,8 +162,8 @@ fn lsystem_table(results: &Value) -> String {
     for (key, what) in [
         ("segments (walk + turtle)", "walk + turtle (`Segments`)"),
         (
-            "fit (walks: sizing + checking passes)",
-            "fit by walking (sizing and checking passes)",
+            "fit (walk: sizing pass, box predicted)",
+            "fit by walking (a sizing pass; the box predicted from it)",
         ),
         (
             "draw (walk + rasterise)",
