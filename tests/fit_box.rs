@@ -116,12 +116,13 @@ fn an_edge_on_a_rounding_boundary_is_measured_by_walking() {
 proptest! {
     #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
 
-    /// Random bracketed systems over `F + - [ ] | !`, `Angle n` or a free angle, any size.
+    /// Random bracketed systems over `F G M + - [ ] | !`, `Angle n` or a free angle, any
+    /// size (`G` and `M` move without drawing).
     #[test]
     fn random_systems_fit_the_box_their_drawing_pass_measures(
-        axiom in "[F+\\-X]{1,5}",
-        rule_f in "[F+\\-]{0,4}(\\[[F+\\-X]{0,4}\\])?[F+\\-|!]{0,3}",
-        rule_x in "[F+\\-X]{0,6}",
+        axiom in "[F+\\-XG]{1,5}",
+        rule_f in "[F+\\-]{0,4}(\\[[F+\\-XG]{0,4}\\])?[F+\\-|!M]{0,3}",
+        rule_x in "[F+\\-XG]{0,6}",
         divisions in 3u16..24,
         free in proptest::option::of(1i64..90),
         order in 0u32..5,

@@ -132,20 +132,23 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             walk = walk.in_pixels();
         }
         let bounds = measure(walk.by_ref())?;
+        let stats = walk.stats();
         Ok(Sizing {
             bounds,
-            segments: walk.stats().segments,
+            segments: stats.segments,
+            symbols: stats.symbols,
         })
     }
 
     /// Scales and centres the drawing into `area` (less the margin), colours from `palette`.
     ///
-    /// A sizing pass measures the drawing in turtle units. Where the turtle moves only by
-    /// drawing steps of one length (no `@`, no lengths, no `f`/`G`/`M`), the drawing pass is
-    /// that walk scaled to within half an ulp a step, so its pixel bounding box follows from
-    /// the sizing pass's and it cannot fail: fitting and drawing take two walks. Otherwise,
-    /// or where an edge of the box lies within that margin of a pixel's boundary, a second
-    /// pass at the chosen scale checks the drawing and measures the box (three walks).
+    /// A sizing pass measures the drawing in turtle units. Where every step has one length
+    /// (no `@`, no lengths; moves `f`/`G`/`M` only at a step of at most half a pixel), the
+    /// drawing pass is that walk scaled to within half an ulp a step, so its pixel bounding
+    /// box follows from the sizing pass's and it cannot fail: fitting and drawing take two
+    /// walks. Otherwise, or where an edge of the box lies within that margin of a pixel's
+    /// boundary, a second pass at the chosen scale checks the drawing and measures the box
+    /// (three walks).
     /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::WalkError::Overflow): fitted, its step would
     /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
@@ -210,15 +213,15 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             ),
             None => {
                 let (sizing, unit) = self.sized_bounds()?;
-                (sizing.bounds, Some(sizing.segments), unit)
+                (sizing.bounds, Some(sizing), unit)
             }
         };
         let (start, scale) = fitted_placement(bounds, unit, self.orientation, &area, self.margin)?;
         // Known from the sizing walk where the drawing pass is that walk scaled (see
         // `predicted_box`): then the pass that would measure it is not walked.
         let predicted = walked
-            .filter(|_| steps_only_by_drawing(self.grammar))
-            .and_then(|segments| predicted_box(self.orientation, bounds, scale, start, segments));
+            .and_then(|sizing| sizing.steps(self.grammar, scale, start))
+            .and_then(|steps| predicted_box(self.orientation, bounds, scale, start, steps));
         self.prepared(start, palette, cells, predicted)
     }
 
@@ -434,37 +437,46 @@ fn fitted_placement(
     ))
 }
 
-/// What a sizing walk found: the box of what is drawn, and how many segments.
+/// What a sizing walk found: the box of what is drawn, how many segments, how many symbols.
 struct Sizing {
     bounds: Option<Bounds>,
     segments: u64,
+    symbols: u64,
 }
 
-/// Whether the turtle moves only by drawing a step of the one length (no `@`, no lengths,
-/// no moves without drawing): then every place it stands on is the origin or a segment's
-/// end, and a walk at another step is the same walk scaled (see [`predicted_box`]).
-fn steps_only_by_drawing(grammar: &Grammar<'_>) -> bool {
-    grammar.all_ops().iter().all(|&op| {
-        !matches!(
-            grammar.command(op),
-            Command::Move
-                | Command::MoveFree
-                | Command::MoveBy(_)
-                | Command::DrawBy(_)
-                | Command::Scale(_)
-        )
-    })
+impl Sizing {
+    /// How many steps the drawing pass from `start`, at `scale` pixels a unit of this walk,
+    /// takes, where it is this walk scaled and cannot fail (see [`predicted_box`]): every
+    /// step of the one length (no `@`, no lengths). If the turtle only moves by drawing,
+    /// every place it stands on is the origin or a segment's end, inside the box; moves
+    /// (`f`, `G`, `M`) are counted by the symbols read and need a scale of at most ½ (then
+    /// every place this walk reached, below 2³¹, lands within 2³⁰ of the start).
+    fn steps(&self, grammar: &Grammar<'_>, scale: Real, start: Start) -> Option<u64> {
+        let mut moves = false;
+        for &op in grammar.all_ops() {
+            match grammar.command(op) {
+                Command::Move | Command::MoveFree => moves = true,
+                Command::MoveBy(_) | Command::DrawBy(_) | Command::Scale(_) => return None,
+                _ => {}
+            }
+        }
+        if !moves {
+            return Some(self.segments);
+        }
+        let near = |v: Real| v.abs() < Real::from_int(1 << 29);
+        let small = scale <= Real::from_ratio(1, 2)?;
+        (small && near(start.position.x) && near(start.position.y)).then_some(self.symbols)
+    }
 }
 
 /// The pixel box a drawing pass from `start` would measure, without walking it, from a
-/// sizing walk of `segments` segments (a grammar whose turtle moves only by drawing fixed
-/// steps) that drew inside `bounds`, picture units of `scale` pixels.
+/// sizing walk of at most `steps` steps, all of one length (see [`Sizing::steps`]), that
+/// drew inside `bounds`, picture units of `scale` pixels.
 ///
 /// The sizing walk's unit is 2ᵏ steps, so its positions are exact sums of the heading
 /// table's Q30 directions; the pass rounds each step to nearest, so each of its positions
 /// is `start + scale × p` for the walk's p within half a unit of the last place (2⁻³²) a
-/// step. Every place the turtle stands on is the origin or a segment's end, all in the
-/// box: the pass cannot overflow. The box is the pass's own when each of its edges rounds
+/// step. The box is the pass's own when each of its edges rounds
 /// to the same pixel anywhere within that margin; `None` when one might round either way
 /// (then the pass is walked).
 fn predicted_box(
@@ -472,13 +484,13 @@ fn predicted_box(
     bounds: Option<Bounds>,
     scale: Real,
     start: Start,
-    segments: u64,
+    steps: u64,
 ) -> Option<Rectangle> {
     let Some(bounds) = bounds else {
         return Some(pixel_box(orientation, None, start));
     };
     // Half an ulp a step, half for the product below, and one to spare.
-    let margin = i64::try_from(segments).ok()?.checked_add(2)?;
+    let margin = i64::try_from(steps).ok()?.checked_add(2)?;
     let mapped = |p: TurtlePoint, by: i64| -> Option<TurtlePoint> {
         let at = |origin: Real, p: Real| {
             let bits = origin.checked_add(scale.checked_mul(p)?)?.to_bits();
