@@ -63,3 +63,50 @@ fn coordinates_accept_scientific_notation_exactly_rounded() {
         assert_eq!(Coord::parse(bad), None, "{bad}");
     }
 }
+
+/// `Real::round_to_i32`: half away from zero, saturating at the i32 range, over the whole
+/// range of bits, against the rule written out in 128 bits.
+#[test]
+fn reals_round_half_away_from_zero_over_every_bit_pattern() {
+    use tinyfractal::Real;
+    let model = |bits: i64| -> i32 {
+        let half = 1i128 << 31;
+        let value = i128::from(bits);
+        let rounded = if value >= 0 {
+            (value + half) >> 32
+        } else {
+            -((-value + half) >> 32)
+        };
+        rounded.clamp(i128::from(i32::MIN), i128::from(i32::MAX)) as i32
+    };
+    let by_hand = [
+        (Real::from_ratio(1, 2).unwrap(), 1),
+        (Real::from_ratio(-1, 2).unwrap(), -1),
+        (Real::from_ratio(5, 2).unwrap(), 3),
+        (Real::from_ratio(-5, 2).unwrap(), -3),
+        (Real::from_bits((3 << 31) - 1), 1),
+        (Real::from_bits(-(3 << 31) + 1), -1),
+        (Real::from_bits(i64::MIN), i32::MIN),
+        (Real::from_bits(i64::MAX), i32::MAX),
+    ];
+    for (value, expected) in by_hand {
+        assert_eq!(value.round_to_i32(), expected, "{:?}", value.to_bits());
+    }
+    // Every half-bit and carry boundary, and a deterministic spread of all 64-bit patterns.
+    let mut bits = 0x9E37_79B9_7F4A_7C15u64;
+    for shift in 0..64 {
+        for delta in [-1i64, 0, 1] {
+            let edge = (1i64 << shift.min(62)).wrapping_add(delta);
+            for value in [edge, edge.wrapping_neg(), edge | 1 << 31, -(edge | 1 << 31)] {
+                assert_eq!(Real::from_bits(value).round_to_i32(), model(value), "{value}");
+            }
+        }
+    }
+    for _ in 0..100_000 {
+        bits ^= bits << 13;
+        bits ^= bits >> 7;
+        bits ^= bits << 17;
+        let value = bits as i64;
+        assert_eq!(Real::from_bits(value).round_to_i32(), model(value), "{value}");
+    }
+}
