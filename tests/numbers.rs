@@ -98,7 +98,11 @@ fn reals_round_half_away_from_zero_over_every_bit_pattern() {
         for delta in [-1i64, 0, 1] {
             let edge = (1i64 << shift.min(62)).wrapping_add(delta);
             for value in [edge, edge.wrapping_neg(), edge | 1 << 31, -(edge | 1 << 31)] {
-                assert_eq!(Real::from_bits(value).round_to_i32(), model(value), "{value}");
+                assert_eq!(
+                    Real::from_bits(value).round_to_i32(),
+                    model(value),
+                    "{value}"
+                );
             }
         }
     }
@@ -107,6 +111,10 @@ fn reals_round_half_away_from_zero_over_every_bit_pattern() {
         bits ^= bits >> 7;
         bits ^= bits << 17;
         let value = bits as i64;
-        assert_eq!(Real::from_bits(value).round_to_i32(), model(value), "{value}");
+        assert_eq!(
+            Real::from_bits(value).round_to_i32(),
+            model(value),
+            "{value}"
+        );
     }
 }

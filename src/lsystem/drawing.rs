@@ -137,18 +137,20 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             bounds,
             segments: stats.segments,
             symbols: stats.symbols,
+            scalings: walk.scalings(),
         })
     }
 
     /// Scales and centres the drawing into `area` (less the margin), colours from `palette`.
     ///
-    /// A sizing pass measures the drawing in turtle units. Where every step has one length
-    /// (no `@`, no lengths; moves `f`/`G`/`M` only at a step of at most half a pixel), the
-    /// drawing pass is that walk scaled to within half an ulp a step, so its pixel bounding
-    /// box follows from the sizing pass's and it cannot fail: fitting and drawing take two
-    /// walks. Otherwise, or where an edge of the box lies within that margin of a pixel's
-    /// boundary, a second pass at the chosen scale checks the drawing and measures the box
-    /// (three walks).
+    /// A sizing pass measures the drawing in turtle units. The drawing pass is that walk
+    /// scaled, each position within a margin of rounding (half an ulp a step, more for each
+    /// `@`), where no `@` factor is larger than 1, there are no lengths, and moves (`f`, `G`,
+    /// `M`) come at a step of at most half a pixel: then its pixel bounding box follows from
+    /// the sizing pass's and it cannot fail, and fitting and drawing take two walks.
+    /// Otherwise, or where an edge of the box lies within that margin of a pixel's boundary,
+    /// a second pass at the chosen scale checks the drawing and measures the box (three
+    /// walks).
     /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::WalkError::Overflow): fitted, its step would
     /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
@@ -220,8 +222,8 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         // Known from the sizing walk where the drawing pass is that walk scaled (see
         // `predicted_box`): then the pass that would measure it is not walked.
         let predicted = walked
-            .and_then(|sizing| sizing.steps(self.grammar, scale, start))
-            .and_then(|steps| predicted_box(self.orientation, bounds, scale, start, steps));
+            .and_then(|sizing| sizing.margin(self.grammar, scale, start))
+            .and_then(|margin| predicted_box(self.orientation, bounds, scale, start, margin));
         self.prepared(start, palette, cells, predicted)
     }
 
@@ -437,46 +439,75 @@ fn fitted_placement(
     ))
 }
 
-/// What a sizing walk found: the box of what is drawn, how many segments, how many symbols.
+/// What a sizing walk found: the box of what is drawn, and how many segments, symbols and
+/// `@` commands.
 struct Sizing {
     bounds: Option<Bounds>,
     segments: u64,
     symbols: u64,
+    scalings: u64,
 }
 
+/// The largest margin, in units of the last place, [`predicted_box`] is given: 2⁻⁸ pixel.
+const MAX_MARGIN: i64 = 1 << 24;
+
 impl Sizing {
-    /// How many steps the drawing pass from `start`, at `scale` pixels a unit of this walk,
-    /// takes, where it is this walk scaled and cannot fail (see [`predicted_box`]): every
-    /// step of the one length (no `@`, no lengths). If the turtle only moves by drawing,
-    /// every place it stands on is the origin or a segment's end, inside the box; moves
-    /// (`f`, `G`, `M`) are counted by the symbols read and need a scale of at most ½ (then
-    /// every place this walk reached, below 2³¹, lands within 2³⁰ of the start).
-    fn steps(&self, grammar: &Grammar<'_>, scale: Real, start: Start) -> Option<u64> {
+    /// How far (in units of the last place, 2⁻³²) each position of the drawing pass from
+    /// `start`, at `scale` pixels a unit of this walk, can be from `start + scale × p` for
+    /// this walk's position p, where that pass is this walk scaled and cannot fail (see
+    /// [`predicted_box`]); `None` where it is not, or the margin would pass [`MAX_MARGIN`].
+    ///
+    /// Each step of the pass rounds once (half an ulp). Without `@` this walk's steps are
+    /// exact (its unit is 2ᵏ steps and directions are Q30), so that is all. Each `@` rounds
+    /// both walks' step lengths: with factors of at most 1 in size, the pass's step stays
+    /// within half an ulp × (1 + scale) per `@` so far of the scaled step, and so does each
+    /// step's vector, plus its own rounding in both walks. Counted over every step and
+    /// every `@` of the walk, generously. Lengths (`DrawBy`, `MoveBy`) do not qualify.
+    /// If the turtle only moves by drawing, every place it stands on is the origin or a
+    /// segment's end, inside the box; moves (`f`, `G`, `M`) are counted by the symbols read
+    /// and need a scale of at most ½ (then every place this walk reached, below 2³¹, lands
+    /// within 2³⁰ of the start).
+    fn margin(&self, grammar: &Grammar<'_>, scale: Real, start: Start) -> Option<i64> {
         let mut moves = false;
         for &op in grammar.all_ops() {
             match grammar.command(op) {
                 Command::Move | Command::MoveFree => moves = true,
-                Command::MoveBy(_) | Command::DrawBy(_) | Command::Scale(_) => return None,
+                Command::Scale(factor) if factor.abs() > Real::ONE => return None,
+                Command::MoveBy(_) | Command::DrawBy(_) => return None,
                 _ => {}
             }
         }
-        if !moves {
-            return Some(self.segments);
-        }
-        let near = |v: Real| v.abs() < Real::from_int(1 << 29);
-        let small = scale <= Real::from_ratio(1, 2)?;
-        (small && near(start.position.x) && near(start.position.y)).then_some(self.symbols)
+        let steps = if moves {
+            let near = |v: Real| v.abs() < Real::from_int(1 << 29);
+            let small = scale <= Real::from_ratio(1, 2)?;
+            if !(small && near(start.position.x) && near(start.position.y)) {
+                return None;
+            }
+            self.symbols
+        } else {
+            self.segments
+        };
+        let steps = i64::try_from(steps).ok()?;
+        // Half an ulp a step, half for the product in `predicted_box`, and one to spare.
+        let margin = if self.scalings == 0 {
+            steps.checked_add(2)?
+        } else {
+            // (1 + scale) / 2 ≤ 1 + ⌈scale⌉ ulp, for each `@` and each step's own rounding.
+            let per_rounding = (scale.to_bits() >> 32).checked_add(2)?;
+            let scalings = i64::try_from(self.scalings).ok()?.checked_add(1)?;
+            steps
+                .checked_mul(scalings)?
+                .checked_mul(per_rounding)?
+                .checked_add(2)?
+        };
+        (margin <= MAX_MARGIN).then_some(margin)
     }
 }
 
 /// The pixel box a drawing pass from `start` would measure, without walking it, from a
-/// sizing walk of at most `steps` steps, all of one length (see [`Sizing::steps`]), that
-/// drew inside `bounds`, picture units of `scale` pixels.
-///
-/// The sizing walk's unit is 2ᵏ steps, so its positions are exact sums of the heading
-/// table's Q30 directions; the pass rounds each step to nearest, so each of its positions
-/// is `start + scale × p` for the walk's p within half a unit of the last place (2⁻³²) a
-/// step. The box is the pass's own when each of its edges rounds
+/// sizing walk that drew inside `bounds`, picture units of `scale` pixels, where each of
+/// the pass's positions is `start + scale × p` for the walk's p within `margin` units of
+/// the last place (see [`Sizing::margin`]). The box is the pass's own when each of its edges rounds
 /// to the same pixel anywhere within that margin; `None` when one might round either way
 /// (then the pass is walked).
 fn predicted_box(
@@ -484,13 +515,11 @@ fn predicted_box(
     bounds: Option<Bounds>,
     scale: Real,
     start: Start,
-    steps: u64,
+    margin: i64,
 ) -> Option<Rectangle> {
     let Some(bounds) = bounds else {
         return Some(pixel_box(orientation, None, start));
     };
-    // Half an ulp a step, half for the product below, and one to spare.
-    let margin = i64::try_from(steps).ok()?.checked_add(2)?;
     let mapped = |p: TurtlePoint, by: i64| -> Option<TurtlePoint> {
         let at = |origin: Real, p: Real| {
             let bits = origin.checked_add(scale.checked_mul(p)?)?.to_bits();

@@ -91,6 +91,8 @@ pub(crate) struct Turtle<'g, const STACK: usize> {
     /// Not in [`State`], so `[` saves no more; anything that changes the heading or the
     /// step (a turn, `@`, `]`, an expansion passed over) forgets it.
     main_step: Option<(Real, Real)>,
+    /// `@` commands carried out (for the fit's bound on rounding, see `LSystem::fit`).
+    scalings: u64,
 }
 
 impl<'g, const STACK: usize> Turtle<'g, STACK> {
@@ -117,6 +119,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             max_stack: 0,
             min_step: MIN_STEP,
             main_step: None,
+            scalings: 0,
         };
         let left = start.turns >= 0;
         for _ in 0..start.turns.unsigned_abs() % 65_536 {
@@ -261,6 +264,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             }
             Command::Scale(factor) => {
                 self.main_step = None;
+                self.scalings += 1;
                 state.step = state
                     .step
                     .checked_mul(factor)
@@ -423,6 +427,11 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
     pub fn with_budget(mut self, symbols: u64) -> Self {
         self.walker = self.walker.with_budget(symbols);
         self
+    }
+
+    /// How many `@` commands the walk has carried out.
+    pub(crate) fn scalings(&self) -> u64 {
+        self.turtle.scalings
     }
 
     /// What the walk has done so far.
