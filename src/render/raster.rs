@@ -52,7 +52,7 @@ impl Runs {
         let twice_major = 2 * length.max(1);
         let twice_minor = 2 * d_minor.abs();
         // Closed form at t = first: offset = floor((t·2|d_minor| + |d_major|) / 2|d_major|).
-        // An unclipped line starts at t = 0 and needs no division at all; a clipped one
+        // An unclipped line starts at t = 0 or 1 and needs no division at all; a clipped one
         // usually fits i64 (64-bit division is much cheaper than 128-bit on Cortex-M).
         let (offset, remainder) = if first == 0 {
             (0, length)
@@ -61,6 +61,15 @@ impl Runs {
                 .checked_mul(twice_minor)
                 .and_then(|n| n.checked_add(length))
             {
+                // Below twice the divisor the quotient is 0 or 1: so for a continuing line,
+                // which starts one step in (|d_minor| ≤ |d_major|), no division at all.
+                Some(numerator) if numerator < 2 * twice_major => {
+                    if numerator >= twice_major {
+                        (1, numerator - twice_major)
+                    } else {
+                        (0, numerator)
+                    }
+                }
                 Some(numerator) => (numerator / twice_major, numerator % twice_major),
                 None => {
                     let numerator =
@@ -215,6 +224,47 @@ mod tests {
                 .filter(|p| clip.contains(*p))
                 .collect();
             assert_eq!(inside, clipped);
+        }
+    }
+
+    /// A continuing line (its first pixel skipped) and lines clipped a step or more in
+    /// start past the major axis's first steps: the same pixels as the whole line, which
+    /// starts at step 0 and takes no quotient, less the first pixel and what lies outside.
+    #[test]
+    fn lines_started_steps_in_keep_the_whole_lines_pixels() {
+        let everything = Rectangle::new(Point::new(-1000, -1000), Size::new(3000, 3000));
+        let ends = [-9, -4, -1, 0, 1, 2, 3, 5, 8, 13];
+        for &x1 in &ends {
+            for &y1 in &ends {
+                let (from, to) = (Point::zero(), Point::new(x1, y1));
+                let whole = pixels(from, to, &everything);
+                let skipped: Vec<Point> = Runs::new(from, to, true, &everything)
+                    .flat_map(|run| run.points().collect::<Vec<_>>())
+                    .collect();
+                let expected: Vec<Point> = whole.iter().copied().filter(|&p| p != from).collect();
+                assert_eq!(skipped, expected, "{from:?}-{to:?} skipping the first");
+                for inset in 1..4 {
+                    for clip in [
+                        Rectangle::new(Point::new(inset, -20), Size::new(40, 40)),
+                        Rectangle::new(Point::new(-20, inset), Size::new(40, 40)),
+                        Rectangle::new(Point::new(-39, -20), Size::new(40 - inset as u32, 40)),
+                        Rectangle::new(Point::new(-20, -39), Size::new(40, 40 - inset as u32)),
+                    ] {
+                        for skip_first in [false, true] {
+                            let got: Vec<Point> = Runs::new(from, to, skip_first, &clip)
+                                .flat_map(|run| run.points().collect::<Vec<_>>())
+                                .filter(|p| clip.contains(*p))
+                                .collect();
+                            let expected: Vec<Point> = whole
+                                .iter()
+                                .copied()
+                                .filter(|&p| clip.contains(p) && !(skip_first && p == from))
+                                .collect();
+                            assert_eq!(got, expected, "{from:?}-{to:?} in {clip:?}");
+                        }
+                    }
+                }
+            }
         }
     }
 
