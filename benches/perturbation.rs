@@ -1,4 +1,4 @@
-//! Deep zoom on the host: perturbation (its series and `Deep` finish) against `Deep`
+//! Deep zoom on the host: perturbation (its series and Q60 finish) against `Deep`
 //! itself on a view both can draw (the spiral 10⁻⁷ wide, cap 1000, the boards'
 //! `deep-zoom`), and perturbation alone past `Deep`'s reach (a minibrot 10⁻²⁰ and a
 //! Misiurewicz spiral 10⁻³⁰), 320×240. Also prints the iterations each computes and skips.

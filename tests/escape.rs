@@ -751,7 +751,7 @@ fn a_render_fits_in_a_few_kilobytes() {
     let bytes = core::mem::size_of::<Render>();
     // 2 KiB of tile dwells, 512 bytes of tile coordinates, the view (with its 72-byte deep
     // centre and spacing), the kernel constants, the counters, and a perturbed render's
-    // series (16 terms of 24 bytes) and finish.
+    // series (16 terms of 16 bytes in one scale) and finish.
     assert!(bytes <= 3300, "Render is {bytes} bytes");
 }
 

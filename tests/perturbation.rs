@@ -230,3 +230,19 @@ fn the_series_skips_iterations_and_keeps_the_dwells() {
     assert!(stats.skipped > stats.iterations, "{stats:?}");
     assert_eq!(ours, model(MISIUREWICZ, "1e-30", (48, 36), 1000));
 }
+
+/// The deep-zoom view at a display's size, by perturbation (the series, then the finish
+/// by high words) against `Deep`: 99.9 % of dwells identical (measured: 76,787 of 76,800;
+/// the 13 others are where the series' tolerance of 2⁻⁸ of a pixel's image tips a dwell),
+/// and fewer than half the iterations computed.
+#[test]
+fn the_deep_zoom_view_keeps_deeps_dwells_at_display_size() {
+    let spiral = ("-0.743643887037151", "0.131825904205330");
+    let view = deep_view(spiral, "1e-7", (320, 240), 1000);
+    let (ours, stats) = perturbed(view.with_tier(Tier::Perturbation), Algorithm::Exact);
+    let mut deep = vec![0; 320 * 240];
+    let Ok(fixed) = Render::new(view, Algorithm::Exact).run(&mut DwellBuffer::new(&mut deep, 320));
+    let same = ours.iter().zip(&deep).filter(|(a, b)| a == b).count();
+    assert!(same * 1000 >= deep.len() * 999, "{same} of {}", deep.len());
+    assert!(2 * stats.iterations < fixed.iterations, "{stats:?}");
+}

@@ -157,16 +157,6 @@ impl Scaled {
         s: ZERO_EXPONENT,
     };
 
-    /// The product (parts below 2¹²⁵ before normalising; shifts floor).
-    #[inline(never)]
-    pub(super) fn mul(self, other: Self) -> Self {
-        normalise(
-            mul_wide(self.x, other.x) - mul_wide(self.y, other.y),
-            mul_wide(self.x, other.y) + mul_wide(self.y, other.x),
-            self.s + other.s,
-        )
-    }
-
     /// The sum, in the larger one's units (the other's mantissas shifted down, floor).
     #[inline(never)]
     pub(super) fn add(self, other: Self) -> Self {
@@ -225,7 +215,7 @@ impl Scaled {
 
 /// (x + iy)·2^−s normalised: the larger part's top bit at bit 61. Shifts floor.
 #[inline(always)]
-fn normalise(x: i128, y: i128, s: i32) -> Scaled {
+pub(super) fn normalise(x: i128, y: i128, s: i32) -> Scaled {
     let magnitude = x.unsigned_abs() | y.unsigned_abs();
     if magnitude == 0 {
         return Scaled::ZERO;
@@ -274,7 +264,7 @@ fn to_q28(mantissa: i64, exponent: i32) -> i64 {
 
 /// The pixels of a perturbed render: the reference, the spacing, the view's cap, the
 /// series that skips the pixels' first iterations, and where the view allows it, the
-/// `Deep` kernel that finishes them.
+/// Q60 kernel that finishes them.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Perturbation<'r> {
     reference: &'r [ReferencePoint],
@@ -291,8 +281,9 @@ pub(crate) struct Perturbation<'r> {
     finish: Option<Finish>,
 }
 
-/// A view that `Deep` resolves finishes its pixels there after the series: from the
-/// skipped-to iteration on, z itself in Q60 costs fewer instructions a step than δ.
+/// Where the view allows it (`finishes_in_high_words`), pixels finish after the series
+/// as z itself in Q60 by the products' high words: from the skipped-to iteration on that
+/// costs far fewer instructions a step than δ (on Cortex-M3 about a third of `Deep`'s).
 #[derive(Debug, Clone, Copy)]
 struct Finish {
     kernel: Kernel,
@@ -303,12 +294,17 @@ struct Finish {
     reference: (i64, i64),
 }
 
-/// How far below a pixel `Deep`'s rounding must stay, beyond 2 bits for each doubling of
-/// the cap, for pixels to finish there; otherwise they go on by perturbation. Measured at
-/// two views: the deep-zoom view (10⁻⁷ over 128 pixels, cap 1000: 29 bits, 20 + 8) keeps
-/// every dwell in `Deep`; the seahorse at 10⁻¹² over 48 pixels with a cap of 3000 (14
-/// bits, against 24 + 8) loses 3 % of its dwells there.
+/// How far below a pixel the finish's rounding must stay, beyond 2 bits for each doubling
+/// of the iterations, for pixels to finish in Q60; otherwise they go on by perturbation.
+/// Measured at two views: the deep-zoom view (10⁻⁷ over 128 pixels, cap 1000: `Deep`'s
+/// rounding 29 bits below the spacing, 20 + 8 needed; the high words' 34 below the image
+/// at the skip, 18 + 8 needed) keeps every dwell; the seahorse at 10⁻¹² over 48 pixels
+/// with a cap of 3000 (14 bits below the spacing, against 24 + 8) lost 3 % of its dwells
+/// finishing in `Deep`.
 const FINISH_BITS: i32 = 8;
+
+/// The high-word finish's precision: each product within 2^-55, x² − y² within 2^-54.
+const HIGH_WORDS_BITS: i32 = 54;
 
 /// A perturbed pixel's result.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -355,16 +351,13 @@ impl<'r> Perturbation<'r> {
             |re, im| pixels.offset(re, im),
             pixels.max,
         );
-        // Deep's rounding (2^-60 a step) must stay far below a pixel: 2 bits for each
-        // doubling of the cap, and FINISH_BITS more.
-        let spacing_bits = 63 - view.spacing().to_bits().max(1).leading_zeros() as i32;
-        let iteration_bits = 32 - view.max_iterations.leading_zeros() as i32;
-        let margin = spacing_bits - 2 * iteration_bits;
         let skip = pixels.series.skip();
-        let finishes = skip > 0 && view.fixed_point_resolves() && margin >= FINISH_BITS;
-        if let Some(z) = pixels.reference.get(skip as usize).filter(|_| finishes) {
+        if let Some(z) = pixels
+            .reference
+            .get(skip as usize)
+            .filter(|_| skip > 0 && finishes_in_high_words(view, &pixels.series))
+        {
             pixels.finish = Some(Finish {
-                // The finish tests escape only (`Kernel::resume_deep`): no repeats.
                 kernel: Kernel::new(view, Periodicity::Exact),
                 centre: (view.centre.0.to_bits(), view.centre.1.to_bits()),
                 spacing: view.spacing().to_bits(),
@@ -376,6 +369,7 @@ impl<'r> Perturbation<'r> {
 
     /// δc of the pixel whose offsets from the centre are `re`·spacing/2 and
     /// `im`·spacing/2 (odd integers, as the view's points are).
+    #[inline(never)]
     fn offset(&self, re: i64, im: i64) -> Scaled {
         normalise(
             mul_wide(re, self.spacing_mantissa),
@@ -425,7 +419,7 @@ impl<'r> Perturbation<'r> {
                     finish.point(finish.centre.0, re),
                     finish.point(finish.centre.1, im),
                 );
-                return result(finish.kernel.resume_deep(c, z, skip), 0);
+                return result(finish.kernel.resume(c, z, skip), 0);
             }
         }
         let last = self.reference.len().saturating_sub(1);
@@ -467,6 +461,22 @@ impl<'r> Perturbation<'r> {
         }
         result(inside(n), rebases)
     }
+}
+
+/// Whether a view's pixels may finish in Q60 by high words after the series skipped its
+/// first steps. Two rules, each with `FINISH_BITS` to spare and 2 bits for each doubling
+/// of the iterations the rounding has to grow in (as the fixed tiers' calibration found
+/// rounding to grow): `Deep`'s own rounding from the start must stay below a pixel's
+/// spacing (so the view's c are distinct in Q60), and the high words' rounding after the
+/// skip below a pixel's image there, which is how far apart neighbouring pixels' orbits
+/// are by then (at the deep-zoom view 2^-20 against a spacing of 2^-30).
+fn finishes_in_high_words(view: &View, series: &Series) -> bool {
+    let bits = |n: u32| 32 - n.leading_zeros() as i32;
+    let spacing_bits = 63 - view.spacing().to_bits().max(1).leading_zeros() as i32;
+    let deep_margin = spacing_bits - 2 * bits(view.max_iterations);
+    let remaining = view.max_iterations.saturating_sub(series.skip());
+    let image_margin = series.image_log2() + HIGH_WORDS_BITS - 2 * bits(remaining);
+    view.fixed_point_resolves() && deep_margin >= FINISH_BITS && image_margin >= FINISH_BITS
 }
 
 impl Finish {

@@ -1,7 +1,7 @@
 //! Draws one board scene into the checksum target, for profiling on the host:
 //! `valgrind --tool=callgrind target/release/examples/profile_scene plant [320x240]` (the
 //! size picks among entries of one name: the OLED's 128x64 by default).
-use tinyfractal_scenes::{measure::Checksum, DISPLAY_SCENES, GREY, SCENES};
+use tinyfractal_scenes::{measure::Checksum, DEEP_SCENES, DISPLAY_SCENES, GREY, SCENES};
 
 fn main() {
     let wanted = std::env::args().nth(1).unwrap_or_else(|| "plant".into());
@@ -9,6 +9,7 @@ fn main() {
     for entry in SCENES
         .iter()
         .chain(&DISPLAY_SCENES)
+        .chain(&DEEP_SCENES)
         .filter(|entry| entry.name == wanted)
         .filter(|entry| format!("{}x{}", entry.size.width, entry.size.height) == size)
     {
