@@ -45,6 +45,16 @@ pub enum Algorithm {
     Fast,
 }
 
+impl Algorithm {
+    /// How the algorithm's renders of `view` recognise repeats.
+    fn periodicity(self, view: &View) -> Periodicity {
+        match self {
+            Self::Exact => Periodicity::Exact,
+            Self::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
+        }
+    }
+}
+
 /// Largest periodicity tolerance of a fast render, 2⁻²² in Q60 bits.
 ///
 /// A tolerance of 1/16 of a pixel alone grows with the pixel: on a 1×1 view it was 0.2,
@@ -177,14 +187,10 @@ impl Render<'static> {
     /// with [`Render::perturbed`]; given here, it is computed in `Deep`, whose stats say
     /// so, and which does not resolve pixels finer than 2⁻⁵⁴.
     pub fn new(view: View, algorithm: Algorithm) -> Self {
-        let periodicity = match algorithm {
-            Algorithm::Exact => Periodicity::Exact,
-            Algorithm::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
-        };
         Render::with_pixels(
             view,
             algorithm,
-            Pixels::Fixed(Kernel::new(&view, periodicity)),
+            Pixels::Fixed(Kernel::new(&view, algorithm.periodicity(&view))),
         )
     }
 }
@@ -203,7 +209,11 @@ impl<'r> Render<'r> {
         Ok(Self::with_pixels(
             view,
             algorithm,
-            Pixels::Perturbed(Perturbation::new(&view, reference)),
+            Pixels::Perturbed(Perturbation::new(
+                &view,
+                reference,
+                algorithm.periodicity(&view),
+            )),
         ))
     }
 

@@ -208,7 +208,7 @@ impl<'a> LsysEntry<'a> {
                     "ignore" | "define" => {}
                     _ => return Err(Error::Read(ReadError::UnknownLine { at: at(0) })),
                 }
-            } else if !text.contains("-->") {
+            } else if find_str(text, "-->").is_none() {
                 let column = text.len() - text.trim_start().len();
                 return Err(Error::Read(ReadError::UnknownLine { at: at(column) }));
             }
@@ -220,7 +220,7 @@ impl<'a> LsysEntry<'a> {
         let mut seen = [false; 128];
         let mut sums = ProbabilitySums::default();
         for (line, text) in self.lines() {
-            let Some((left, right)) = text.split_once("-->") else {
+            let Some((left, right)) = split_at_str(text, "-->") else {
                 continue;
             };
             let at = |part: &str| Location {
@@ -305,12 +305,12 @@ impl<'a> LsysEntry<'a> {
     pub fn is_parametric(&self) -> bool {
         let general = |string: &str| {
             string.contains(GENERAL_MODULES)
-                || string.contains("env(")
+                || find_str(string, "env(").is_some()
                 || string.contains(['D', 'T'])
         };
         self.lines().any(|(_, text)| match key_value(text) {
             Some((key, value)) => key == "axiom" && (value.contains('(') || general(value)),
-            None => text.split_once("-->").is_some_and(|(left, right)| {
+            None => split_at_str(text, "-->").is_some_and(|(left, right)| {
                 left.contains(['(', ':', '<', '>']) || right.contains('(') || general(right)
             }),
         })
@@ -381,7 +381,7 @@ impl<'a> LsysEntry<'a> {
         grammar.set_axiom(text, &constants, place)?;
         let mut sums = ProbabilitySums::default();
         for (line, text) in self.lines() {
-            let Some((left, right)) = text.split_once("-->") else {
+            let Some((left, right)) = split_at_str(text, "-->") else {
                 continue;
             };
             let place = |part: &str| Place {
@@ -469,11 +469,65 @@ fn value_text(line: &str) -> &str {
 fn key_value(line: &str) -> Option<(&str, &str)> {
     let (key, value) = line.split_once(':')?;
     let key = key.trim();
-    (!key.is_empty() && key.chars().all(|c| c.is_ascii_alphabetic()) && !line.contains("-->"))
-        .then(|| (key, value.trim()))
+    (!key.is_empty()
+        && key.chars().all(|c| c.is_ascii_alphabetic())
+        && find_str(line, "-->").is_none())
+    .then(|| (key, value.trim()))
+}
+
+/// Where `pattern` first starts in `text`, by bytes: `str`'s own search of a string
+/// pattern (two-way) costs about 5 KiB of Cortex-M flash, for lines of a few dozen bytes.
+fn find_str(text: &str, pattern: &str) -> Option<usize> {
+    if pattern.is_empty() {
+        return Some(0);
+    }
+    text.as_bytes()
+        .windows(pattern.len())
+        .position(|window| window == pattern.as_bytes())
+}
+
+/// `text` before and after the first `pattern` (as `str::split_once`, through
+/// [`find_str`]).
+fn split_at_str<'t>(text: &'t str, pattern: &str) -> Option<(&'t str, &'t str)> {
+    let at = find_str(text, pattern)?;
+    Some((text.get(..at)?, text.get(at + pattern.len()..)?))
 }
 
 /// Where `part`, a slice of `line`, starts in it.
 fn offset(line: &str, part: &str) -> usize {
     (part.as_ptr() as usize).saturating_sub(line.as_ptr() as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The byte search agrees with `str`'s own, at the start, the end, twice, nowhere,
+    /// after multi-byte characters and with an empty pattern.
+    #[test]
+    fn the_byte_search_agrees_with_str() {
+        for text in [
+            "-->F",
+            "F-->",
+            "F-->G-->H",
+            "F->G",
+            "ä β-->γ",
+            "",
+            "--",
+            "env(x)",
+        ] {
+            for pattern in ["-->", "env(", ""] {
+                assert_eq!(
+                    find_str(text, pattern),
+                    text.find(pattern),
+                    "{text} {pattern}"
+                );
+                assert_eq!(
+                    split_at_str(text, pattern),
+                    text.split_once(pattern),
+                    "{text} {pattern}"
+                );
+            }
+        }
+    }
 }
