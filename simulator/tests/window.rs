@@ -31,11 +31,13 @@ impl Drop for Killed {
     }
 }
 
+/// Waits for `ready`, up to 90 s: under load (both cores busy with QEMU and compiles) the
+/// window once took longer than 30.
 fn wait_for(what: &str, mut ready: impl FnMut() -> bool) {
     let started = Instant::now();
     while !ready() {
         assert!(
-            started.elapsed() < Duration::from_secs(30),
+            started.elapsed() < Duration::from_secs(90),
             "timed out waiting for {what}"
         );
         std::thread::sleep(Duration::from_millis(100));
@@ -77,7 +79,7 @@ fn a_click_in_the_window_zooms_and_the_saved_picture_is_the_headless_render() {
     );
     let socket = format!("/tmp/.X11-unix/X{}", &display[1..]);
     wait_for("Xvfb", || Path::new(&socket).exists());
-    let _explorer = Killed(
+    let mut explorer = Killed(
         Command::new(env!("CARGO_BIN_EXE_tinyfractal"))
             .args(["explore", "--size", "64x48"])
             .env("DISPLAY", &display)
@@ -87,6 +89,10 @@ fn a_click_in_the_window_zooms_and_the_saved_picture_is_the_headless_render() {
     );
     let mut window = String::new();
     wait_for("the window", || {
+        // An explorer that stopped will never show one: say how it ended.
+        if let Ok(Some(status)) = explorer.0.try_wait() {
+            panic!("the explorer exited before its window showed: {status}");
+        }
         window = xdotool(
             &display,
             &["search", "--onlyvisible", "--name", "tinyfractal explore"],
