@@ -19,9 +19,11 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use embedded_graphics::prelude::Size;
+use tinyfractal::REFERENCE_POINT_BYTES;
 use tinyfractal_scenes::measure::Checksum;
 use tinyfractal_scenes::{
-    Entry, Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, SCENES, ZOOM_SCENES,
+    Entry, Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, MAX_BOARD_REFERENCE_POINTS,
+    SCENES, ZOOM_SCENES,
 };
 
 struct Core {
@@ -157,6 +159,17 @@ fn run(core: &Core, elf: &Path) -> Vec<BTreeMap<String, String>> {
         .collect()
 }
 
+/// The largest cap whose reference orbit fits the core's RAM beside the OLED board's 4 KiB
+/// framebuffer, static data and the rest of a deep scene's measured stack (which holds a
+/// reference of `MAX_BOARD_REFERENCE_POINTS`): the README's RAM claim for perturbation.
+fn deepest_cap(core: &Core, statics: u64, stack: u64) -> u64 {
+    let point = REFERENCE_POINT_BYTES as u64;
+    let others = stack - MAX_BOARD_REFERENCE_POINTS as u64 * point;
+    let points = (core.ram - 4096 - statics - others) / point;
+    // One point more than iterations: Z0.
+    points - 1
+}
+
 /// What the host drew for a scene, which every core must draw too.
 struct Expected {
     name: &'static str,
@@ -265,6 +278,14 @@ fn every_core_draws_the_host_picture_and_fits() {
             let instructions: u64 = record["instructions"].parse().unwrap();
             let stack: u64 = record["stack"].parse().unwrap();
             deepest_stack = deepest_stack.max(stack);
+            if core.name == "cortex-m3" && name == "perturbation-zoom" {
+                let cap = deepest_cap(core, data + bss, stack);
+                println!("cortex-m3: a reference of {cap} iterations fits beside the OLED");
+                assert!(
+                    cap >= 2000,
+                    "the README says a cap of about 2,060 fits: {cap}"
+                );
+            }
             let _ = writeln!(
                 json,
                 "  {{\"core\": \"{}\", \"scene\": \"{name}\", \"size\": \"{size}\", \"instructions\": {instructions}, \"baseline_f32\": {}, \"baseline_fixed20\": {}, \"text\": {text}, \"data\": {data}, \"bss\": {bss}, \"stack\": {stack}, \"work\": {work}, \"work_unit\": \"{unit}\"}},",
