@@ -99,7 +99,7 @@ impl Kernel {
             Periodicity::Exact => 0,
             Periodicity::Within(bits) => bits,
         };
-        Self {
+        let kernel = Self {
             tier,
             max: view.max_iterations,
             inside: u32::from(view.inside_value()),
@@ -113,7 +113,27 @@ impl Kernel {
             // A tolerance below one unit of the tier means exact comparison.
             tolerance: from_q60(tolerance, frac),
             plain: FIRST_SAVE.min(view.max_iterations),
+        };
+        // A Julia set whose critical point 0 escapes (k outside the Mandelbrot set) is
+        // dust: no attracting cycle, so no orbit that settles into one. Its pixels are
+        // never tested for repeats, which could only find rounding's own cycles (never
+        // escaping either, so an exact render keeps every dwell) or call a slow escape
+        // inside within a tolerance.
+        // The critical orbit runs to `CRITICAL_STEPS` whatever the view's cap: a parameter
+        // just outside the set escapes late (−0.8 + 0.156i, the boards' Julia set, at 252).
+        let critical = Self {
+            max: CRITICAL_STEPS,
+            inside: u32::MAX,
+            smooth: false,
+            ..kernel
+        };
+        if kernel.julia.is_some() && critical.dwell(Part(0), Part(0)).dwell != u32::MAX {
+            return Self {
+                plain: kernel.max,
+                ..kernel
+            };
         }
+        kernel
     }
 
     /// The tier the kernel computes in.
@@ -211,6 +231,16 @@ trait Arithmetic {
         x2: Self::Product,
         y2: Self::Product,
     ) -> Self::Value;
+    /// x² − y² in the value's units, from the squares the loop already has.
+    #[inline(always)]
+    fn squares_difference(
+        _: Self::Value,
+        _: Self::Value,
+        x2: Self::Product,
+        y2: Self::Product,
+    ) -> Self::Value {
+        Self::to_value(x2 - y2)
+    }
     fn q28(v: Self::Value) -> i32;
 }
 
@@ -285,6 +315,15 @@ impl Arithmetic for Standard {
     #[inline(always)]
     fn twice_xy(x: i32, y: i32, x2: i64, y2: i64) -> i32 {
         standard_twice_xy(x, y, x2, y2)
+    }
+    /// (x + y)(x − y) where there is a long multiply: the same exact value as x² − y²,
+    /// and the squares are then only summed for the escape test, which `smull` and
+    /// `smlal` do in two instructions without keeping either.
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    #[inline(always)]
+    fn squares_difference(x: i32, y: i32, _: i64, _: i64) -> i32 {
+        // |x|, |y| ≤ 2 (Q28) here, so x ± y fit in an i32.
+        (mul_i32_wide(x + y, x - y) >> 28) as i32
     }
     #[inline(always)]
     fn q28(v: i32) -> i32 {
@@ -387,8 +426,9 @@ impl<A: Arithmetic> Z<A> {
     /// One step, z ← z² + c, then its squares; true if it escaped.
     #[inline(always)]
     fn step(&mut self, cr: A::Value, ci: A::Value) -> bool {
-        self.y = A::twice_xy(self.x, self.y, self.x2, self.y2) + ci;
-        self.x = A::to_value(self.x2 - self.y2) + cr;
+        let (x, y) = (self.x, self.y);
+        self.y = A::twice_xy(x, y, self.x2, self.y2) + ci;
+        self.x = A::squares_difference(x, y, self.x2, self.y2) + cr;
         self.x2 = A::mul(self.x, self.x);
         self.y2 = A::mul(self.y, self.y);
         self.escaped()
@@ -586,6 +626,10 @@ const SMOOTH_STEPS: u32 = 32;
 /// Steps before the first point is saved for the repeat test.
 const FIRST_SAVE: u32 = 16;
 
+/// Steps of a Julia parameter's critical orbit that decide whether the set is dust (see
+/// [`Kernel::new`]): once per render, a few thousand instructions at most where it escapes.
+const CRITICAL_STEPS: u32 = 1024;
+
 /// The high word of the exact product of two i32, rounded down (Q28 × Q28 → Q24): the
 /// upper register of `smull`.
 #[inline(always)]
@@ -728,5 +772,32 @@ mod tests {
                 },
             )
             .unwrap();
+    }
+
+    /// A Julia set of a parameter outside the Mandelbrot set (its critical orbit escapes)
+    /// tests no repeats, in every tier; one inside keeps Brent's test.
+    #[test]
+    fn dust_julia_sets_test_no_repeats() {
+        let julia = |re: f64, im: f64, tier| {
+            let view = View::new(
+                Fractal::Julia {
+                    re: Coord::from_f64(re).unwrap(),
+                    im: Coord::from_f64(im).unwrap(),
+                },
+                (Coord::default(), Coord::default()),
+                Coord::from_f64(3.0).unwrap(),
+                embedded_graphics::geometry::Size::new(320, 240),
+                100,
+            )
+            .unwrap();
+            Kernel::new(&view.with_tier(tier), Periodicity::Exact).plain
+        };
+        for tier in Tier::ALL {
+            // 0 escapes at step 252 for −0.8 + 0.156i (in f64), past the cap of 100,
+            // and at 15 for −0.8 + 0.2i; −0.1 + 0.1i is in the main cardioid.
+            assert_eq!(julia(-0.8, 0.156, tier), 100, "{tier:?}");
+            assert_eq!(julia(-0.8, 0.2, tier), 100, "{tier:?}");
+            assert_eq!(julia(-0.1, 0.1, tier), FIRST_SAVE, "{tier:?}");
+        }
     }
 }
