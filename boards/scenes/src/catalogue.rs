@@ -676,7 +676,7 @@ pub const SCENES: [Entry; 14] = [
 #[rustfmt::skip]
 pub const DEEP_SCENES: [Entry; 2] = [
     escape("perturbation-zoom", None, MINIBROT_78, "1e-20", 1000, OLED, "fire"),
-    // The deep-zoom view by perturbation: its series and a `Deep` finish, against `Deep`.
+    // The deep-zoom view by perturbation: its series and Q60 finish, against `Deep`.
     perturbed("deep-zoom-perturbed", escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire")),
 ];
 
