@@ -88,6 +88,19 @@ fn perturbed(view: View, algorithm: Algorithm) -> (Vec<u16>, RenderStats) {
     (dwells, stats)
 }
 
+/// The view's dwells in its own fixed-point tier (`Deep` for the spiral below), every
+/// pixel computed, and the render's stats.
+fn in_deep(view: View) -> (Vec<u16>, RenderStats) {
+    let size = view.size();
+    let mut dwells = vec![0; (size.width * size.height) as usize];
+    let Ok(stats) =
+        Render::new(view, Algorithm::Exact).run(&mut DwellBuffer::new(&mut dwells, size.width));
+    (dwells, stats)
+}
+
+/// The spiral of the boards' deep-zoom view, where both `Deep` and perturbation draw.
+const SPIRAL: (&str, &str) = ("-0.743643887037151", "0.131825904205330");
+
 /// (identical, pixels) of our dwells against the model's.
 fn agreement(centre: (&str, &str), width: &str, size: (u32, u32), max: u32) -> (usize, usize) {
     let view = deep_view(centre, width, size, max);
@@ -213,12 +226,10 @@ fn glitching_pixels_rebase_and_match_the_model() {
 /// big-number model's.
 #[test]
 fn the_series_skips_iterations_and_keeps_the_dwells() {
-    let spiral = ("-0.743643887037151", "0.131825904205330");
-    let view = deep_view(spiral, "1e-7", (64, 32), 1000);
+    let view = deep_view(SPIRAL, "1e-7", (64, 32), 1000);
     assert_eq!(view.tier(), Tier::Deep);
     let (ours, stats) = perturbed(view.with_tier(Tier::Perturbation), Algorithm::Exact);
-    let mut deep = vec![0; 64 * 32];
-    let Ok(fixed) = Render::new(view, Algorithm::Exact).run(&mut DwellBuffer::new(&mut deep, 64));
+    let (deep, fixed) = in_deep(view);
     assert_eq!(ours, deep);
     assert!(
         stats.skipped > 0 && 2 * stats.iterations < fixed.iterations,
@@ -237,11 +248,9 @@ fn the_series_skips_iterations_and_keeps_the_dwells() {
 /// and fewer than half the iterations computed.
 #[test]
 fn the_deep_zoom_view_keeps_deeps_dwells_at_display_size() {
-    let spiral = ("-0.743643887037151", "0.131825904205330");
-    let view = deep_view(spiral, "1e-7", (320, 240), 1000);
+    let view = deep_view(SPIRAL, "1e-7", (320, 240), 1000);
     let (ours, stats) = perturbed(view.with_tier(Tier::Perturbation), Algorithm::Exact);
-    let mut deep = vec![0; 320 * 240];
-    let Ok(fixed) = Render::new(view, Algorithm::Exact).run(&mut DwellBuffer::new(&mut deep, 320));
+    let (deep, fixed) = in_deep(view);
     let same = ours.iter().zip(&deep).filter(|(a, b)| a == b).count();
     assert!(same * 1000 >= deep.len() * 999, "{same} of {}", deep.len());
     assert!(2 * stats.iterations < fixed.iterations, "{stats:?}");
