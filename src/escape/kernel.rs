@@ -114,26 +114,33 @@ impl Kernel {
             tolerance: from_q60(tolerance, frac),
             plain: FIRST_SAVE.min(view.max_iterations),
         };
-        // A Julia set whose critical point 0 escapes (k outside the Mandelbrot set) is
-        // dust: no attracting cycle, so no orbit that settles into one. Its pixels are
-        // never tested for repeats, which could only find rounding's own cycles (never
-        // escaping either, so an exact render keeps every dwell) or call a slow escape
-        // inside within a tolerance.
-        // The critical orbit runs to `CRITICAL_STEPS` whatever the view's cap: a parameter
-        // just outside the set escapes late (−0.8 + 0.156i, the boards' Julia set, at 252).
-        let critical = Self {
-            max: CRITICAL_STEPS,
-            inside: u32::MAX,
-            smooth: false,
-            ..kernel
-        };
-        if kernel.julia.is_some() && critical.dwell(Part(0), Part(0)).dwell != u32::MAX {
+        if kernel.is_dust() {
+            // No orbit settles into a cycle: its pixels are never tested for repeats.
             return Self {
                 plain: kernel.max,
                 ..kernel
             };
         }
         kernel
+    }
+
+    /// Whether this is a Julia set whose critical point 0 escapes (k outside the
+    /// Mandelbrot set): dust, with no attracting cycle. Repeat tests there could only find
+    /// rounding's own cycles (which never escape either, so an exact render keeps every
+    /// dwell) or call a slow escape inside within a tolerance. The critical orbit runs to
+    /// `CRITICAL_STEPS` whatever the view's cap: a parameter just outside the set escapes
+    /// late (−0.8 + 0.156i, the boards' Julia set, at 252).
+    fn is_dust(&self) -> bool {
+        if self.julia.is_none() {
+            return false;
+        }
+        let critical = Self {
+            max: CRITICAL_STEPS,
+            inside: u32::MAX,
+            smooth: false,
+            ..*self
+        };
+        critical.dwell(Part(0), Part(0)).dwell != u32::MAX
     }
 
     /// The tier the kernel computes in.
@@ -462,7 +469,7 @@ impl Kernel {
         }
         Orbit {
             dwell: if self.smooth {
-                let q28 = |(x, y): (i64, i64)| (Deep::q28(x), Deep::q28(y));
+                let q28 = |(x, y): (i64, i64)| (HighWords::q28(x), HighWords::q28(y));
                 smooth_value(n, q28((z.x, z.y)), q28(c), self.max, self.inside)
             } else {
                 n.max(1)

@@ -258,7 +258,7 @@ fn normalise_pair(x: DeepCoord, y: DeepCoord) -> ReferencePoint {
 
 /// `value` >> `shift` for any shift ≥ 0 (past 127: the sign).
 #[inline(always)]
-fn shr(value: i128, shift: i32) -> i128 {
+pub(super) fn shr(value: i128, shift: i32) -> i128 {
     value >> shift.clamp(0, 127)
 }
 

@@ -17,20 +17,20 @@
 //! The coefficients share one exponent (block floating point, 56-bit parts): an update
 //! and a pixel's evaluation are exact 64×64 products and shifts, with nothing normalised
 //! per term. (With each term in its own 62-bit mantissa and exponent, Cortex-M3 took 1.6×
-//! the instructions an update and 5× a pixel's evaluation; 30-bit mantissas were tried before that: their
-//! rounding grows with the iterations skipped, a few parts in 10⁷ of δ after 600, and at
-//! the deep-zoom view 6 of its 8192 pixels came out wrong.)
+//! the instructions an update and 5× a pixel's evaluation; 30-bit mantissas were tried
+//! before that: their rounding grows with the iterations skipped, a few parts in 10⁷ of δ
+//! after 600, and at the deep-zoom view 6 of its 8192 pixels came out wrong.)
 
 use super::perturbation::{
-    escaped, may_rebase, normalise, rebased, step, ReferencePoint, Scaled, ZERO_EXPONENT,
+    escaped, may_rebase, normalise, rebased, shr, step, ReferencePoint, Scaled, ZERO_EXPONENT,
 };
 use crate::math::wide::mul_wide;
 
 /// Terms of the series: each costs every pixel a multiply-add, and the coefficients about
 /// `SERIES_TERMS`/4 products an iteration each. Measured on Cortex-M3 at the deep-zoom
-/// view (10⁻⁷ over 128×64, 1000 iterations), with the block coefficients: 16 terms
-/// 143 M instructions a frame, 20 terms 139 M, 24 terms 149 M; 20 would take 3.4 KiB
-/// more flash, of the 4 KiB the measuring firmware has left on the LM3S6965.
+/// view (10⁻⁷ over 128×64, 1000 iterations), with the block coefficients and a `Deep`
+/// finish: 16 terms 143 M instructions a frame, 20 terms 139 M, 24 terms 149 M; 20 took
+/// 3.4 KiB more flash, when the measuring firmware had 4 KiB left on the LM3S6965.
 pub const SERIES_TERMS: usize = 16;
 
 /// Probe points on the view's border: its four corners and the middles of its sides.
@@ -316,11 +316,6 @@ fn product((ax, ay): (i64, i64), (bx, by): (i64, i64)) -> (i128, i128) {
     )
 }
 
-/// `value` >> `shift` for any shift ≥ 0 (past 127: the sign).
-fn shr(value: i128, shift: i32) -> i128 {
-    value >> shift.clamp(0, 127)
-}
-
 /// 2^`bits` as an i128, 0 below 2⁰ (a value far below the unit) and saturated above 2¹²⁵
 /// (never reached: R is below b₁ after the first iteration).
 fn shl_or_shr(bits: i32) -> i128 {
@@ -336,8 +331,7 @@ mod tests {
     use super::*;
 
     fn value(s: Scaled) -> (f64, f64) {
-        let scale = crate::math::big::pow2(-s.s);
-        (s.x as f64 * scale, s.y as f64 * scale)
+        ReferencePoint(s).to_f64()
     }
 
     /// The block's update and Horner's rule against the same steps in f64, from R at
