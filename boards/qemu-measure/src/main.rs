@@ -22,6 +22,19 @@ mod firmware {
     use tinyfractal_scenes::{Work, DISPLAY_SCENES, GREY, SCENES, ZOOM_SCENES};
 
     const RELOAD: u32 = 0x00FF_FFFF;
+    /// Set at build time to measure one scene only, as `NAME` or `NAME:WIDTHxHEIGHT`,
+    /// without its baselines (`boards/profile` uses it); every scene otherwise.
+    const ONLY: Option<&str> = option_env!("TINYFRACTAL_MEASURE_ONLY");
+
+    fn selected(name: &str, size: Size) -> bool {
+        let Some(only) = ONLY else { return true };
+        let (only_name, only_size) = only.split_once(':').unwrap_or((only, ""));
+        let same_size = only_size
+            .split_once('x')
+            .is_none_or(|(w, h)| w.parse() == Ok(size.width) && h.parse() == Ok(size.height));
+        only_name == name && same_size
+    }
+
     static WRAPS: AtomicU32 = AtomicU32::new(0);
 
     #[exception]
@@ -160,6 +173,9 @@ mod firmware {
         view: Option<BaselineView>,
         draw: impl FnOnce(&mut Checksum) -> Result<Work, E>,
     ) {
+        if !selected(name, size) {
+            return;
+        }
         let bottom = paint_stack();
         let mut target = Checksum::of_size(size);
         let mut work = Work::Segments(0);
@@ -169,7 +185,7 @@ mod firmware {
         let stack = stack_used(bottom);
         let work = work.count();
         let (mut f32_cost, mut fixed_cost) = (None, None);
-        if let Some(view) = view {
+        if let Some(view) = view.filter(|_| ONLY.is_none()) {
             f32_cost = Some(clock.measure(|| {
                 baseline_f32(view, &mut Checksum::of_size(size));
             }));
