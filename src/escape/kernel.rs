@@ -345,27 +345,21 @@ impl Arithmetic for Standard {
             plus_shifted(ci, mul_i32_wide(x, y), 27),
         )
     }
-    /// |z|² > 4 from the high word first: below 4·2²⁴ there, it is not. The exact test
-    /// on both words runs only from there (out of line, so that LLVM does not merge the
-    /// two into one 64-bit comparison a step).
+    /// |z|² > 4 from the high word first: below 4·2²⁴ there, it is not. The exact test on
+    /// both words runs only from there. LLVM merges any test it can see through with the
+    /// first into one 64-bit comparison a step, so the sum reaches it through `black_box`
+    /// (a store and a load, at escape only): as a call out of line it cost 25 instructions
+    /// a pixel, 1.5 % of the Julia set at 320×240 on Cortex-M4F and 5.7 % of the full view.
     #[cfg(not(tinyfractal_no_long_multiply))]
     #[inline(always)]
     fn escapes(x2: i64, y2: i64) -> bool {
         let sum = x2 + y2;
-        (sum >> 32) as i32 >= 4 << 24 && exceeds_four(sum)
+        (sum >> 32) as i32 >= 4 << 24 && core::hint::black_box(sum) > Self::FOUR
     }
     #[inline(always)]
     fn q28(v: i32) -> i32 {
         v
     }
-}
-
-/// `sum > 4` in Q56: `Standard`'s exact escape test, taken once the high word reaches 4.
-#[cfg(not(tinyfractal_no_long_multiply))]
-#[cold]
-#[inline(never)]
-fn exceeds_four(sum: i64) -> bool {
-    sum > Standard::FOUR
 }
 
 /// `c + (p >> shift)` in an i32 (0 < shift < 32; the sum fits, as the orbit's invariant

@@ -139,6 +139,10 @@ mod firmware {
         hprintln!("measure calibration scale={}", clock.scale);
         // Every core's scenes, with the baselines where they apply.
         for entry in SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES) {
+            // The baseline's view (parsed from decimal text) only for a scene measured.
+            if !selected(entry.name, entry.size) {
+                continue;
+            }
             let view = BaselineView::of(&entry.scene);
             measure(&clock, (entry.name, entry.size), view, |target| {
                 entry.scene.draw(target, &GREY)
