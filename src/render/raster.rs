@@ -32,13 +32,16 @@ pub(crate) struct Runs<T = i64> {
 pub(crate) trait RunInt:
     Copy
     + Ord
+    + From<i32>
     + core::ops::Add<Output = Self>
     + core::ops::Sub<Output = Self>
+    + core::ops::Mul<Output = Self>
     + core::ops::AddAssign
     + core::ops::SubAssign
 {
     const ZERO: Self;
     const ONE: Self;
+    fn abs(self) -> Self;
     /// To i32 (a run's ends are inside the clip: always exact).
     fn to_i32(self) -> i32;
     /// A run's length as a rectangle's side.
@@ -48,6 +51,9 @@ pub(crate) trait RunInt:
 impl RunInt for i32 {
     const ZERO: Self = 0;
     const ONE: Self = 1;
+    fn abs(self) -> Self {
+        i32::abs(self)
+    }
     fn to_i32(self) -> i32 {
         self
     }
@@ -59,6 +65,9 @@ impl RunInt for i32 {
 impl RunInt for i64 {
     const ZERO: Self = 0;
     const ONE: Self = 1;
+    fn abs(self) -> Self {
+        i64::abs(self)
+    }
     fn to_i32(self) -> i32 {
         i32::try_from(self).unwrap_or(i32::MAX)
     }
@@ -71,44 +80,89 @@ impl RunInt for i64 {
 /// below 2³¹.
 const SHORT_CLIP: u32 = 1 << 29;
 
+/// A line seen along its major axis: where it starts on both axes, its directions, its
+/// length in major steps and twice its extents (the Bresenham quantities).
+struct Line<T> {
+    x_major: bool,
+    major0: T,
+    minor0: T,
+    major_dir: T,
+    minor_dir: T,
+    length: T,
+    twice_major: T,
+    twice_minor: T,
+}
+
+impl<T: RunInt> Line<T> {
+    fn of(from: Point, to: Point) -> Self {
+        let (x0, y0, x1, y1) = (
+            T::from(from.x),
+            T::from(from.y),
+            T::from(to.x),
+            T::from(to.y),
+        );
+        let (dx, dy) = (x1 - x0, y1 - y0);
+        let x_major = dx.abs() >= dy.abs();
+        let (major0, minor0, d_major, d_minor) = if x_major {
+            (x0, y0, dx, dy)
+        } else {
+            (y0, x0, dy, dx)
+        };
+        let direction = |d: T| T::from(if d < T::ZERO { -1 } else { 1 });
+        let length = d_major.abs();
+        Self {
+            x_major,
+            major0,
+            minor0,
+            major_dir: direction(d_major),
+            minor_dir: direction(d_minor),
+            length,
+            twice_major: T::from(2) * length.max(T::ONE),
+            twice_minor: T::from(2) * d_minor.abs(),
+        }
+    }
+
+    /// The runs from major step `first` to `last`, the minor axis `offset` steps in there
+    /// with Bresenham remainder `remainder`.
+    fn runs(self, (first, last): (T, T), (offset, remainder): (T, T)) -> Runs<T> {
+        Runs {
+            major: self.major0 + self.major_dir * first,
+            major_dir: self.major_dir,
+            minor: self.minor0 + self.minor_dir * offset,
+            minor_dir: self.minor_dir,
+            remaining: (last - first + T::ONE).max(T::ZERO),
+            twice_minor: self.twice_minor,
+            twice_major: self.twice_major,
+            remainder,
+            x_major: self.x_major,
+        }
+    }
+
+    /// The minor offset and remainder one step in: the quotient there is 0 or 1
+    /// (|d_minor| ≤ |d_major|), so no division.
+    fn one_step_in(&self) -> (T, T) {
+        let numerator = self.twice_minor + self.length;
+        if numerator >= self.twice_major {
+            (T::ONE, numerator - self.twice_major)
+        } else {
+            (T::ZERO, numerator)
+        }
+    }
+}
+
 impl Runs<i32> {
     /// The runs of a line whose ends both lie inside a clip of at most [`SHORT_CLIP`] a
     /// side: nothing to clip, and every quantity fits an i32. The same runs as
     /// [`Runs::new`] gives.
     fn inside(from: Point, to: Point, skip_first: bool) -> Self {
-        let (dx, dy) = (to.x - from.x, to.y - from.y);
-        let x_major = dx.abs() >= dy.abs();
-        let (major0, minor0, d_major, d_minor) = if x_major {
-            (from.x, from.y, dx, dy)
+        let line = Line::<i32>::of(from, to);
+        let last = line.length;
+        if skip_first {
+            let start = line.one_step_in();
+            line.runs((1, last), start)
         } else {
-            (from.y, from.x, dy, dx)
-        };
-        let length = d_major.abs();
-        let twice_major = 2 * length.max(1);
-        let twice_minor = 2 * d_minor.abs();
-        let major_dir = if d_major < 0 { -1 } else { 1 };
-        let minor_dir = if d_minor < 0 { -1 } else { 1 };
-        // As in `new`: at t = 1 the quotient is 0 or 1 (|d_minor| ≤ |d_major|).
-        let (first, offset, remainder) = if skip_first {
-            let numerator = twice_minor + length;
-            if numerator >= twice_major {
-                (1, 1, numerator - twice_major)
-            } else {
-                (1, 0, numerator)
-            }
-        } else {
-            (0, 0, length)
-        };
-        Self {
-            major: major0 + major_dir * first,
-            major_dir,
-            minor: minor0 + minor_dir * offset,
-            minor_dir,
-            remaining: (length - first + 1).max(0),
-            twice_minor,
-            twice_major,
-            remainder,
-            x_major,
+            let length = line.length;
+            line.runs((0, last), (0, length))
         }
     }
 }
@@ -116,47 +170,30 @@ impl Runs<i32> {
 impl Runs {
     /// The runs of the line `from`–`to` (both ends included, unless `skip_first`).
     pub(crate) fn new(from: Point, to: Point, skip_first: bool, clip: &Rectangle) -> Self {
-        let (dx, dy) = (
-            i64::from(to.x) - i64::from(from.x),
-            i64::from(to.y) - i64::from(from.y),
-        );
-        let x_major = dx.abs() >= dy.abs();
-        let (major0, minor0, d_major, d_minor) = if x_major {
-            (i64::from(from.x), i64::from(from.y), dx, dy)
-        } else {
-            (i64::from(from.y), i64::from(from.x), dy, dx)
-        };
-        let (low, high) = clip_range(clip, x_major);
-        let major_dir = if d_major < 0 { -1 } else { 1 };
-        let length = d_major.abs();
+        let line = Line::<i64>::of(from, to);
+        let (low, high) = clip_range(clip, line.x_major);
+        let (major0, length) = (line.major0, line.length);
         // Steps t in [first, last] keep the major coordinate inside the clip range.
-        let (first, last) = if major_dir > 0 {
+        let (first, last) = if line.major_dir > 0 {
             ((low - major0).max(0), (high - major0).min(length))
         } else {
             ((major0 - high).max(0), (major0 - low).min(length))
         };
         let first = if skip_first { first.max(1) } else { first };
-        let twice_major = 2 * length.max(1);
-        let twice_minor = 2 * d_minor.abs();
+        let (twice_major, twice_minor) = (line.twice_major, line.twice_minor);
         // Closed form at t = first: offset = floor((t·2|d_minor| + |d_major|) / 2|d_major|).
         // An unclipped line starts at t = 0 or 1 and needs no division at all; a clipped one
         // usually fits i64 (64-bit division is much cheaper than 128-bit on Cortex-M).
-        let (offset, remainder) = if first == 0 {
+        let start = if first == 0 {
             (0, length)
+        } else if first == 1 {
+            // A continuing line, which starts one step in.
+            line.one_step_in()
         } else {
             match first
                 .checked_mul(twice_minor)
                 .and_then(|n| n.checked_add(length))
             {
-                // Below twice the divisor the quotient is 0 or 1: so for a continuing line,
-                // which starts one step in (|d_minor| ≤ |d_major|), no division at all.
-                Some(numerator) if numerator < 2 * twice_major => {
-                    if numerator >= twice_major {
-                        (1, numerator - twice_major)
-                    } else {
-                        (0, numerator)
-                    }
-                }
                 Some(numerator) => (numerator / twice_major, numerator % twice_major),
                 None => {
                     let numerator =
@@ -169,18 +206,7 @@ impl Runs {
                 }
             }
         };
-        let minor_dir = if d_minor < 0 { -1 } else { 1 };
-        Self {
-            major: major0 + major_dir * first,
-            major_dir,
-            minor: minor0 + minor_dir * offset,
-            minor_dir,
-            remaining: (last - first + 1).max(0),
-            twice_minor,
-            twice_major,
-            remainder,
-            x_major,
-        }
+        line.runs((first, last), start)
     }
 }
 
