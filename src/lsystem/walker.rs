@@ -52,6 +52,59 @@ impl Frame {
     }
 }
 
+/// Largest chunk of a budget counted in 32 bits (a few symbols in unit tests, so that
+/// they cross chunks).
+const CHUNK: u64 = if cfg!(test) { 7 } else { 1 << 31 };
+
+/// Symbols read against a budget, counted down in 32 bits in chunks of at most 2³¹ (one
+/// load, test and store a symbol on Cortex-M, where a 64-bit count and comparison took
+/// nine).
+#[derive(Debug, Clone, Copy)]
+struct Spent {
+    /// Symbols read before the current chunk.
+    read_before: u64,
+    /// The current chunk's size, and what is left of it.
+    chunk: u32,
+    left: u32,
+    budget: u64,
+}
+
+impl Spent {
+    const fn new(budget: u64) -> Self {
+        Self {
+            read_before: 0,
+            chunk: 0,
+            left: 0,
+            budget,
+        }
+    }
+
+    /// Symbols read so far.
+    const fn read(&self) -> u64 {
+        self.read_before + (self.chunk - self.left) as u64
+    }
+
+    /// Counts one symbol read; `false` if the budget is spent (nothing counted).
+    #[inline(always)]
+    fn one_more(&mut self) -> bool {
+        if self.left == 0 && !self.next_chunk() {
+            return false;
+        }
+        self.left -= 1;
+        true
+    }
+
+    /// Starts the next chunk; `false` if the budget is spent.
+    #[cold]
+    fn next_chunk(&mut self) -> bool {
+        self.read_before += u64::from(self.chunk);
+        let left = self.budget.saturating_sub(self.read_before);
+        self.chunk = u32::try_from(left.min(CHUNK)).unwrap_or(0);
+        self.left = self.chunk;
+        left > 0
+    }
+}
+
 /// The error for an `order` that needs more than `depth` levels (the axiom's, and one an
 /// expansion).
 pub(crate) fn order_too_high(order: u32, depth: usize) -> Error {
@@ -104,10 +157,9 @@ pub struct Walker<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH> {
     grammar: &'g Grammar<'a>,
     order: u32,
     frames: Vec<Frame, DEPTH>,
-    read: u64,
+    spent: Spent,
     /// Symbols inside expansions the caller declined (measured, not read).
     declined: u64,
-    budget: u64,
     max_depth: usize,
 }
 
@@ -149,9 +201,8 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             grammar,
             order,
             frames,
-            read: 0,
+            spent: Spent::new(DEFAULT_BUDGET),
             declined: 0,
-            budget: DEFAULT_BUDGET,
             max_depth: 1,
         })
     }
@@ -160,13 +211,16 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
     /// (expanded or interpreted), so no order can hang a device.
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
-        self.budget = symbols;
+        self.spent = Spent {
+            read_before: self.spent.read(),
+            ..Spent::new(symbols)
+        };
         self
     }
 
     /// Symbols read so far (with those of declined expansions, as accounted).
     pub const fn symbols_read(&self) -> u64 {
-        self.read.saturating_add(self.declined)
+        self.spent.read().saturating_add(self.declined)
     }
 
     /// Accounts for a declined expansion: the symbols inside it and the frames it reaches.
@@ -219,17 +273,16 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                 }
                 continue;
             }
-            if self.read >= self.budget {
+            if !self.spent.one_more() {
                 self.frames.clear();
                 return Some(Err(Error::Walk(WalkError::BudgetExhausted {
-                    budget: self.budget,
+                    budget: self.spent.budget,
                 })));
             }
             let at = top.position;
             let parent = top.key;
             let op = self.grammar.op(at);
             top.position += 1;
-            self.read += 1;
             let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
             if level < self.order && op < NUMERIC {
                 if let Some(first) = self.grammar.first_rule(op) {
@@ -291,5 +344,58 @@ impl<const DEPTH: usize> Iterator for Walker<'_, '_, DEPTH> {
     fn next(&mut self) -> Option<Self::Item> {
         self.next_op()
             .map(|op| op.map(|op| char::from(self.grammar.symbol(op))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lsystem::alphabet::Dialect;
+    use crate::math::angle::Angle;
+
+    /// Over chunks of 7 (the unit tests' size): a budget of b stops the walk after exactly b
+    /// symbols, with the count right at every step; a budget past the walk's length never
+    /// stops it.
+    #[test]
+    fn budgets_hold_across_chunks() {
+        let mut grammar = Grammar::new(Dialect::Fractint, "F-F", Angle::Divisions(4)).unwrap();
+        grammar.add_rule('F', "F+F-F").unwrap();
+        let length = Walker::new(&grammar, 3).unwrap().count() as u64;
+        // Order 3 hands out 107 symbols (3, then 4 more for each of 2·3ⁿ F's a level) and
+        // reads 133 (3 + 2·5 + 6·5 + 18·5: each F expanded reads its body).
+        assert_eq!(length, 107);
+        assert_eq!(total_symbols(&grammar), 133);
+        for budget in 0..length + 10 {
+            let mut walk = Walker::new(&grammar, 3).unwrap().with_budget(budget);
+            let mut ok = 0;
+            while let Some(next) = walk.next() {
+                match next {
+                    Ok(_) => {
+                        ok += 1;
+                        assert_eq!(walk.symbols_read(), ok_symbols(&grammar, ok));
+                    }
+                    Err(error) => {
+                        assert_eq!(error, Error::Walk(WalkError::BudgetExhausted { budget }));
+                        assert_eq!(walk.symbols_read(), budget);
+                    }
+                }
+            }
+            assert_eq!(walk.symbols_read(), budget.min(total_symbols(&grammar)));
+        }
+    }
+
+    /// Symbols read (expanded and interpreted) by the time the `n`-th symbol is handed out.
+    fn ok_symbols(grammar: &Grammar<'_>, n: u64) -> u64 {
+        let mut walk = Walker::new(grammar, 3).unwrap().with_budget(u64::MAX);
+        for _ in 0..n {
+            walk.next();
+        }
+        walk.symbols_read()
+    }
+
+    fn total_symbols(grammar: &Grammar<'_>) -> u64 {
+        let mut walk = Walker::new(grammar, 3).unwrap().with_budget(u64::MAX);
+        while walk.next().is_some() {}
+        walk.symbols_read()
     }
 }
