@@ -131,7 +131,11 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         if in_pixels {
             walk = walk.in_pixels();
         }
-        let bounds = measure(walk.by_ref())?;
+        let mut bounds: Option<Bounds> = None;
+        walk.for_each_segment(|segment| {
+            widen(&mut bounds, segment);
+            Ok::<(), Error>(())
+        })?;
         let stats = walk.stats();
         Ok(Sizing {
             bounds,
@@ -347,16 +351,21 @@ pub(crate) fn measure(
 ) -> Result<Option<Bounds>, Error> {
     let mut bounds: Option<Bounds> = None;
     for segment in segments {
-        let segment = segment?;
-        for p in [segment.start, segment.end] {
-            let b = bounds.get_or_insert(Bounds { min: p, max: p });
-            b.min.x = b.min.x.min(p.x);
-            b.min.y = b.min.y.min(p.y);
-            b.max.x = b.max.x.max(p.x);
-            b.max.y = b.max.y.max(p.y);
-        }
+        widen(&mut bounds, segment?);
     }
     Ok(bounds)
+}
+
+/// `bounds` widened to the segment's ends.
+#[inline(always)]
+pub(crate) fn widen(bounds: &mut Option<Bounds>, segment: super::turtle::Segment) {
+    for p in [segment.start, segment.end] {
+        let b = bounds.get_or_insert(Bounds { min: p, max: p });
+        b.min.x = b.min.x.min(p.x);
+        b.min.y = b.min.y.min(p.y);
+        b.max.x = b.max.x.max(p.x);
+        b.max.y = b.max.y.max(p.y);
+    }
 }
 
 /// The pixel box of a drawing pass's `pixels` (turtle points in pixels); for a picture of
@@ -617,9 +626,10 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
                 }
             }
         } else {
-            for segment in segments.by_ref() {
-                last_end = self.draw_segment(target, segment?, last_end, &clip)?;
-            }
+            segments.for_each_segment(|segment| {
+                last_end = self.draw_segment(target, segment, last_end, &clip)?;
+                Ok::<(), DrawError<D::Error>>(())
+            })?;
         }
         Ok(segments.stats())
     }
