@@ -145,10 +145,16 @@ impl Real {
     }
 
     /// Rounds to the nearest integer, half away from zero (saturating at the i32 range).
+    /// In 64 bits on the magnitude (|bits| + 2³¹ fits a u64), not 128: this places every
+    /// point an L-system draws.
     #[inline]
     pub fn round_to_i32(self) -> i32 {
-        let rounded = shift_round(i128::from(self.to_bits()), 32);
-        rounded.clamp(i128::from(i32::MIN), i128::from(i32::MAX)) as i32
+        let bits = self.to_bits();
+        let magnitude = (bits.unsigned_abs() + (1 << 31)) >> 32;
+        // At most 2³¹: the negative end reaches i32::MIN exactly, the positive one saturates.
+        let magnitude = i64::try_from(magnitude).unwrap_or(i64::MAX);
+        let rounded = if bits < 0 { -magnitude } else { magnitude };
+        rounded.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
     }
 
     /// The value as `f64` (exact to 53 significant bits); for tests and host output.
@@ -183,6 +189,43 @@ impl fmt::Display for Real {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Rounding to i32 in 64 bits against the 128-bit half-away-from-zero shift, at the
+    /// halves, the ends of the range and over random values.
+    #[test]
+    fn rounds_to_i32_as_the_wide_shift_does() {
+        use proptest::prelude::*;
+        let wide = |bits: i64| {
+            shift_round(i128::from(bits), 32).clamp(i128::from(i32::MIN), i128::from(i32::MAX))
+                as i32
+        };
+        let half = 1i64 << 31;
+        for bits in [
+            0,
+            half,
+            -half,
+            half - 1,
+            -half + 1,
+            3 * half,
+            -3 * half,
+            i64::MAX,
+            i64::MIN,
+            i64::MIN + 1,
+            i64::from(i32::MAX) << 32,
+            (i64::from(i32::MAX) << 32) + half,
+            (i64::from(i32::MIN) << 32) + half,
+            (i64::from(i32::MIN) << 32) + half + 1,
+        ] {
+            assert_eq!(Real::from_bits(bits).round_to_i32(), wide(bits), "{bits}");
+        }
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        runner
+            .run(&any::<i64>(), |bits| {
+                prop_assert_eq!(Real::from_bits(bits).round_to_i32(), wide(bits));
+                Ok(())
+            })
+            .unwrap();
+    }
 
     #[test]
     fn parses_decimals_exactly_rounded() {
