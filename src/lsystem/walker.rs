@@ -52,20 +52,26 @@ impl Frame {
     }
 }
 
-/// Largest chunk of a budget counted in 32 bits (a few symbols in unit tests, so that
-/// they cross chunks).
-const CHUNK: u64 = if cfg!(test) { 7 } else { 1 << 31 };
+/// Largest chunk of a budget counted in a machine word: 2³¹ symbols on a 32-bit core, all
+/// of it on a 64-bit host (a few symbols in unit tests, so that they cross chunks).
+const CHUNK: u64 = if cfg!(test) {
+    7
+} else if usize::BITS >= 64 {
+    u64::MAX
+} else {
+    1 << 31
+};
 
-/// Symbols read against a budget, counted down in 32 bits in chunks of at most 2³¹ (one
-/// load, test and store a symbol on Cortex-M, where a 64-bit count and comparison took
-/// nine).
+/// Symbols read against a budget, counted down in a machine word, in chunks of at most
+/// [`CHUNK`] (one load, test and store a symbol on Cortex-M, where a 64-bit count and
+/// comparison took nine).
 #[derive(Debug, Clone, Copy)]
 struct Spent {
     /// Symbols read before the current chunk.
     read_before: u64,
     /// The current chunk's size, and what is left of it.
-    chunk: u32,
-    left: u32,
+    chunk: usize,
+    left: usize,
     budget: u64,
 }
 
@@ -97,9 +103,12 @@ impl Spent {
     /// Starts the next chunk; `false` if the budget is spent.
     #[cold]
     fn next_chunk(&mut self) -> bool {
-        self.read_before += u64::from(self.chunk);
+        self.read_before += self.chunk as u64;
         let left = self.budget.saturating_sub(self.read_before);
-        self.chunk = u32::try_from(left.min(CHUNK)).unwrap_or(0);
+        // On a 64-bit host CHUNK is u64::MAX, and the minimum only matters on 32 bits.
+        #[allow(clippy::unnecessary_min_or_max)]
+        let chunk = left.min(CHUNK);
+        self.chunk = usize::try_from(chunk).unwrap_or(0);
         self.left = self.chunk;
         left > 0
     }
