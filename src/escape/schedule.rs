@@ -21,7 +21,7 @@
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use heapless::Vec;
 
-use super::kernel::{Kernel, Orbit, Part, Periodicity};
+use super::kernel::{Kernel, Part, Periodicity};
 use super::perturbation::{Perturbation, Perturbed, ReferenceOrbit, ReferencePoint};
 use super::view::{Symmetry, Tier, View};
 use crate::error::Error;
@@ -363,11 +363,8 @@ impl<'r> Render<'r> {
     /// callers, which would instantiate the kernel again in the caller's crate.
     #[inline(always)]
     fn compute_in_line(&mut self, re: Part, im: Part) -> u16 {
-        match &self.pixels {
-            Pixels::Fixed(kernel) => {
-                let orbit = kernel.dwell(re, im);
-                self.counted(orbit)
-            }
+        let orbit = match &self.pixels {
+            Pixels::Fixed(kernel) => kernel.dwell(re, im),
             Pixels::Perturbed(pixels) => {
                 let Perturbed {
                     orbit,
@@ -376,14 +373,9 @@ impl<'r> Render<'r> {
                 } = perturbed_dwell(pixels, re, im);
                 self.stats.rebases += u64::from(rebases);
                 self.stats.skipped += u64::from(skipped);
-                self.counted(orbit)
+                orbit
             }
-        }
-    }
-
-    /// A pixel's orbit counted in the stats; its dwell.
-    #[inline(always)]
-    fn counted(&mut self, orbit: Orbit) -> u16 {
+        };
         self.stats.iterations += u64::from(orbit.iterations);
         self.stats.pixels += 1;
         // max_iterations <= u16::MAX is checked by the view.
