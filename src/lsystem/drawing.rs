@@ -181,10 +181,12 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 
     /// [`fit_with`](Self::fit_with), measuring and drawing through the expansion table held
     /// in `cells` ([`cells_needed`](crate::cells_needed) of them): the picture's box comes
-    /// from the table instead of a walk, and drawing skips what lies outside the target
-    /// and draws what lies within one pixel as that pixel, so its cost follows the picture,
-    /// not the segment count (the same pixels as a full draw). With too few cells, or a
-    /// system the table does not cover (free angles, `@`, `\`, `/`, `D`, `M`), it walks as
+    /// from the table instead of a sizing walk (the same box). Where the picture has more
+    /// segments than the area has pixels, drawing skips what lies outside the target and
+    /// draws what lies within one pixel as that pixel, so its cost follows the picture, not
+    /// the segment count (the same pixels as a full draw); below that it walks, which costs
+    /// less than consulting the table at every expansion. With too few cells, or a system
+    /// the table does not cover (free angles, `@`, `\`, `/`, `D`, `M`), it walks as
     /// `fit_with` does.
     pub fn fit_in<P: Palette>(
         &self,
@@ -204,31 +206,50 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
-        let measured = cells
-            .as_deref_mut()
-            .and_then(|cells| Table::build(self.grammar, self.order, Real::ONE, cells))
-            .and_then(|table| table.picture(self.grammar, 0));
-        let (bounds, walked, unit) = match measured {
-            Some(summary) => (
-                summary.drawn.map(|drawn| Bounds {
-                    min: point(drawn.min),
-                    max: point(drawn.max),
-                }),
-                None,
-                Real::ONE,
-            ),
-            None => {
-                let (sizing, unit) = self.sized_bounds()?;
-                (sizing.bounds, Some(sizing), unit)
-            }
+        let tabled = match cells.as_deref_mut() {
+            Some(cells) => self.table_sizing(cells)?,
+            None => None,
         };
+        let (sizing, unit) = match tabled {
+            Some(sizing) => (sizing, Real::ONE),
+            None => self.sized_bounds()?,
+        };
+        let bounds = sizing.bounds;
         let (start, scale) = fitted_placement(bounds, unit, self.orientation, &area, self.margin)?;
-        // Known from the sizing walk where the drawing pass is that walk scaled (see
+        // Known from the sizing where the drawing pass is that walk scaled (see
         // `predicted_box`): then the pass that would measure it is not walked.
-        let predicted = walked
-            .and_then(|sizing| sizing.margin(self.grammar, scale, start))
+        let predicted = sizing
+            .margin(self.grammar, scale, start)
             .and_then(|margin| predicted_box(self.orientation, bounds, scale, start, margin));
+        // Level of detail pays where segments outnumber the pixels they are drawn into; below
+        // that, consulting the table at every expansion costs more than it saves (the same
+        // pixels either way).
+        let pixels = u64::from(area.size.width) * u64::from(area.size.height);
+        let cells = cells.filter(|_| sizing.segments > pixels);
         self.prepared(start, palette, cells, predicted)
+    }
+
+    /// The sizing from the expansion table in `cells`, in turtle units, without a walk:
+    /// `None` where the table does not cover the system or the cells are too few.
+    fn table_sizing(&self, cells: &mut [Cell]) -> Result<Option<Sizing>, Error> {
+        let Some(summary) = Table::build(self.grammar, self.order, Real::ONE, 0, cells)
+            .map(|table| *table.picture())
+        else {
+            return Ok(None);
+        };
+        // What the sizing walk would have refused.
+        if usize::try_from(summary.nesting).map_or(true, |nesting| nesting > STACK) {
+            return Err(Error::Walk(WalkError::StackTooDeep { capacity: STACK }));
+        }
+        Ok(Some(Sizing {
+            bounds: summary.drawn.map(|drawn| Bounds {
+                min: point(drawn.min),
+                max: point(drawn.max),
+            }),
+            segments: summary.segments,
+            symbols: summary.symbols,
+            scalings: 0,
+        }))
     }
 
     /// Draws from an explicit placement, colours from `palette`. The drawing is walked once
@@ -274,8 +295,10 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         cells: Option<&'g mut [Cell]>,
         predicted: Option<Rectangle>,
     ) -> Result<LSystemDrawing<'g, 'a, P, DEPTH, STACK>, Error> {
-        let table =
-            cells.and_then(|cells| Table::build(self.grammar, self.order, start.step, cells));
+        let table = cells.and_then(|cells| {
+            let heading = start_heading(self.grammar, start.turns);
+            Table::build(self.grammar, self.order, start.step, heading, cells)
+        });
         let walked = |system: &Self| -> Result<Rectangle, Error> {
             if let Some(predicted) = predicted {
                 // What the pass would refuse before its first step (the order, the step).
@@ -309,13 +332,18 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         table: &Table<'_>,
         start: Start,
     ) -> Result<Option<Option<Bounds>>, Error> {
-        let Some(summary) = table.picture(self.grammar, start_heading(self.grammar, start.turns))
-        else {
-            return Ok(None);
-        };
+        let summary = table.picture();
         let origin = (start.position.x, start.position.y);
-        if summary.visited.offset(origin).is_none() {
-            return Err(Error::Walk(WalkError::Overflow));
+        // Every position within reach of the start stays in range; where the bound cannot
+        // say so, the walk checks each step.
+        let in_range = |o: Real| {
+            o.to_bits()
+                .unsigned_abs()
+                .checked_add(summary.reach)
+                .is_some_and(|far| far <= i64::MAX.unsigned_abs())
+        };
+        if !(in_range(origin.0) && in_range(origin.1)) {
+            return Ok(None);
         }
         if usize::try_from(summary.nesting).map_or(true, |nesting| nesting > STACK) {
             return Err(Error::Walk(WalkError::StackTooDeep { capacity: STACK }));
@@ -388,23 +416,44 @@ pub(crate) fn pixel_box(
     })
 }
 
-/// Draws one segment in pixels with `color`; returns its end pixel. A continuing line does
-/// not draw its first pixel twice.
-#[inline(always)]
-pub(crate) fn draw_segment<D: DrawTarget>(
-    target: &mut D,
-    orientation: Orientation,
-    segment: super::turtle::Segment,
-    color: D::Color,
-    last_end: Option<Point>,
-    clip: &Rectangle,
-) -> Result<Point, D::Error> {
-    let (from, to) = (
-        pixel_of(orientation, segment.start),
-        pixel_of(orientation, segment.end),
-    );
-    raster::draw_line(target, from, to, last_end == Some(from), color, clip)?;
-    Ok(to)
+/// A drawing pass's pen: where the last segment ended, in turtle space and in pixels, so
+/// that a line going on from there neither rounds its start again nor draws its first
+/// pixel twice, and a step that stays within that pixel (a picture finer than its pixels)
+/// draws nothing at no cost.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Pen {
+    point: Option<TurtlePoint>,
+    pixel: Option<Point>,
+}
+
+impl Pen {
+    /// Draws one segment in pixels with `color`.
+    #[inline(always)]
+    pub(crate) fn draw<D: DrawTarget>(
+        &mut self,
+        target: &mut D,
+        orientation: Orientation,
+        segment: super::turtle::Segment,
+        color: D::Color,
+        clip: &Rectangle,
+    ) -> Result<(), D::Error> {
+        let from = match (self.point, self.pixel) {
+            (Some(point), Some(pixel)) if point == segment.start => pixel,
+            _ => pixel_of(orientation, segment.start),
+        };
+        let to = pixel_of(orientation, segment.end);
+        let continuing = self.pixel == Some(from);
+        (self.point, self.pixel) = (Some(segment.end), Some(to));
+        if continuing && from == to {
+            return Ok(());
+        }
+        raster::draw_line(target, from, to, continuing, color, clip)
+    }
+
+    /// A dot was drawn at `pixel` (the turtle is elsewhere).
+    pub(crate) fn dotted(&mut self, pixel: Point) {
+        (self.point, self.pixel) = (None, Some(pixel));
+    }
 }
 
 /// Where the turtle starts, and its step in pixels, for a picture whose drawn box is
@@ -605,13 +654,13 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
     {
         let clip = target.bounding_box();
         let mut segments = self.system.segments(self.start)?.in_pixels();
-        let mut last_end = None;
+        let mut pen = Pen::default();
         if let Some(table) = &self.table {
             let decide = |cell: &Summary, start: TurtlePoint| self.decide(cell, start, &clip);
             while let Some(drawn) = segments.next_guided(table, decide) {
                 match drawn? {
                     Drawn::Segment(segment) => {
-                        last_end = self.draw_segment(target, segment, last_end, &clip)?;
+                        self.draw_segment(target, segment, &mut pen, &clip)?
                     }
                     Drawn::Dot(at, color) => {
                         let pixel = self.system.pixel_of(at);
@@ -621,42 +670,32 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
                                 .fill_solid(&Rectangle::new(pixel, Size::new(1, 1)), color)
                                 .map_err(DrawError::Target)?;
                         }
-                        last_end = Some(pixel);
+                        pen.dotted(pixel);
                     }
                 }
             }
         } else {
-            segments.for_each_segment(|segment| {
-                last_end = self.draw_segment(target, segment, last_end, &clip)?;
-                Ok::<(), DrawError<D::Error>>(())
-            })?;
+            segments
+                .for_each_segment(|segment| self.draw_segment(target, segment, &mut pen, &clip))?;
         }
         Ok(segments.stats())
     }
 
-    /// Draws one segment; returns its end pixel.
+    /// Draws one segment with `pen`.
     #[inline(always)]
     fn draw_segment<D>(
         &self,
         target: &mut D,
         segment: super::turtle::Segment,
-        last_end: Option<Point>,
+        pen: &mut Pen,
         clip: &Rectangle,
-    ) -> Result<Option<Point>, DrawError<D::Error>>
+    ) -> Result<(), DrawError<D::Error>>
     where
         D: DrawTarget<Color = P::Color>,
     {
         let color = self.palette.color(u16::from(segment.color), u16::MAX);
-        draw_segment(
-            target,
-            self.system.orientation,
-            segment,
-            color,
-            last_end,
-            clip,
-        )
-        .map(Some)
-        .map_err(DrawError::Target)
+        pen.draw(target, self.system.orientation, segment, color, clip)
+            .map_err(DrawError::Target)
     }
 
     /// What to do with an expansion starting at `start`: skip it if none of it is on the

@@ -5,10 +5,12 @@
 //! (the turtle rounds once per step), so a symbol expanded m times from heading h, reversed
 //! or not, always moves by the same sum and draws inside the same box, relative to where it
 //! starts; fixed-point sums are exact, so these compose exactly. The table holds, for every
-//! symbol with a rule, every m from 1 to the order, every heading and both senses of `!`:
-//! the displacement, the box of the drawn segments, the heading and sense after, what it
-//! does to the colour index, and the counts `--stats` reports. It is filled bottom-up, each
-//! cell from its rule bodies and the cells one level down.
+//! symbol with a rule, every m from 1 to the order, every heading and both senses of `!`
+//! (the plain one only, where nothing reverses): the displacement, the box of the drawn
+//! segments, how far any position visited lies from the start (a bound that rules out
+//! overflow), the heading and sense after, what it does to the colour index, and the
+//! counts `--stats` reports. It is filled bottom-up, each cell from its rule bodies and the
+//! cells one level down.
 //!
 //! Free angles qualify when their turns reach few headings exactly: 90°, 45°, 22.5°, 11.25°
 //! and 5.625° (a binary angle that divides the turn by a power of two, at most 64
@@ -16,8 +18,9 @@
 //! scaling, `\`, `/`, `D` and `M` (steps of other lengths or headings), nor to branches
 //! nested deeper than [`MAX_BODY_NESTING`] inside one body.
 //!
-//! Storage is the caller's: a slice of [`Cell`]s, `symbols with rules × order × n × 2` of
-//! them ([`cells_needed`]), about 100 bytes each; too few and the engine walks.
+//! Storage is the caller's: a slice of [`Cell`]s, `symbols with rules × order × n` of them,
+//! twice that where `!` reverses ([`cells_needed`]), 96 bytes each on a 64-bit host; too few
+//! and the engine walks.
 
 use heapless::Vec;
 
@@ -102,8 +105,10 @@ pub(crate) struct Summary {
     pub(crate) displacement: (Real, Real),
     /// The box of the drawn segments' ends, if any is drawn.
     pub(crate) drawn: Option<Extent>,
-    /// The box of every position visited (for overflow: moves count too).
-    pub(crate) visited: Extent,
+    /// How far any position visited (moves count too) lies from the start, at most, along
+    /// x or y: a bound that rules out overflow for the sums below it (a box costs eight
+    /// 64-bit operations an expansion; this bound two).
+    pub(crate) reach: u64,
     /// Heading and sense of `!` after.
     pub(crate) heading: u16,
     pub(crate) reversed: bool,
@@ -121,31 +126,36 @@ pub(crate) struct Summary {
 /// apply to it (see the module docs).
 pub fn cells_needed(grammar: &Grammar<'_>, order: u32) -> Option<usize> {
     let n = usize::from(grammar.headings().cycle()?.count);
-    // Stochastic choices differ from place to place: no two expansions are alike.
-    if !table_applies(grammar) || grammar.is_stochastic() {
-        return None;
-    }
     let symbols = (0..128u8)
         .filter(|&s| grammar.first_rule(s).is_some())
         .count();
     symbols
         .checked_mul(usize::try_from(order).ok()?)?
         .checked_mul(n)?
-        .checked_mul(2)
+        .checked_mul(usize::from(senses(grammar)?))
 }
 
-/// Whether every op has a fixed step and an `Angle n` heading.
-fn table_applies(grammar: &Grammar<'_>) -> bool {
-    grammar.all_ops().iter().all(|&op| {
-        !matches!(
-            grammar.command(op),
+/// Senses of `!` a walk can be in (2 if the grammar reverses anywhere, else only the plain
+/// one, and half the cells); `None` where the table does not apply: a step of another
+/// length or heading (`@`, `\`, `/`, `D`, `M`), or stochastic choices, which differ from
+/// place to place (no two expansions are alike).
+fn senses(grammar: &Grammar<'_>) -> Option<u8> {
+    if grammar.is_stochastic() {
+        return None;
+    }
+    let mut senses = 1;
+    for &op in grammar.all_ops() {
+        match grammar.command(op) {
             Command::Scale(_)
-                | Command::FreeLeft(_)
-                | Command::FreeRight(_)
-                | Command::DrawFree
-                | Command::MoveFree
-        )
-    })
+            | Command::FreeLeft(_)
+            | Command::FreeRight(_)
+            | Command::DrawFree
+            | Command::MoveFree => return None,
+            Command::Reverse => senses = 2,
+            _ => {}
+        }
+    }
+    Some(senses)
 }
 
 /// A filled table over borrowed cells, for one step length.
@@ -154,32 +164,46 @@ pub(crate) struct Table<'c> {
     cells: &'c [Cell],
     /// Dense index of each symbol with a rule.
     dense: [u8; 128],
-    order: u32,
-    divisions: u16,
-    /// What `+` adds to the heading.
-    turn: u16,
-    /// v[h]: one step along each heading.
-    vectors: Vec<(Real, Real), { crate::math::MAX_ANGLE_DIVISIONS as usize }>,
+    layout: Layout,
+    /// The whole picture: the axiom with every expansion left, from the heading built for.
+    picture: Summary,
 }
 
 /// Summaries of bodies, read from the cells filled so far.
 struct Run<'r, 'g, 'a> {
     cells: &'r [Cell],
+    context: Context<'r, 'g, 'a>,
+}
+
+/// What a table's summaries are made from, besides the cells.
+#[derive(Clone, Copy)]
+struct Context<'r, 'g, 'a> {
     dense: &'r [u8; 128],
-    order: u32,
-    divisions: u16,
+    layout: Layout,
     turn: u16,
     vectors: &'r [(Real, Real)],
     grammar: &'g Grammar<'a>,
 }
 
+impl<'r, 'g, 'a> Context<'r, 'g, 'a> {
+    /// Summaries read from `cells`.
+    const fn over(self, cells: &'r [Cell]) -> Run<'r, 'g, 'a> {
+        Run {
+            cells,
+            context: self,
+        }
+    }
+}
+
 impl<'c> Table<'c> {
-    /// Fills `cells` for `grammar` at `order` with steps of `step`; `None` if the table does
-    /// not apply, the cells are too few, or a sum overflows (the engine then walks).
+    /// Fills `cells` for `grammar` at `order` with steps of `step`, and sums up the
+    /// picture drawn from `heading`; `None` if the table does not apply, the cells are too
+    /// few, or a sum overflows (the engine then walks).
     pub(crate) fn build(
         grammar: &Grammar<'_>,
         order: u32,
         step: Real,
+        heading: u16,
         cells: &'c mut [Cell],
     ) -> Option<Self> {
         let needed = cells_needed(grammar, order)?;
@@ -187,7 +211,13 @@ impl<'c> Table<'c> {
         let headings = grammar.headings();
         let cycle = headings.cycle()?;
         let divisions = cycle.count;
-        let mut vectors = Vec::new();
+        let layout = Layout {
+            order,
+            divisions,
+            senses: senses(grammar)?,
+        };
+        let mut vectors: Vec<(Real, Real), { crate::math::MAX_ANGLE_DIVISIONS as usize }> =
+            Vec::new();
         for h in 0..divisions {
             // The turtle's own direction for the heading: the table, or the binary angle.
             let (cos, sin) = if headings.divisions() > 0 {
@@ -205,6 +235,13 @@ impl<'c> Table<'c> {
                 count += 1;
             }
         }
+        let context = Context {
+            dense: &dense,
+            layout,
+            turn: cycle.turn,
+            vectors: &vectors,
+            grammar,
+        };
         // Fill level by level: a cell at level m reads only cells at level m - 1.
         for m in 1..=order {
             for symbol in 0..128u8 {
@@ -215,30 +252,26 @@ impl<'c> Table<'c> {
                     continue;
                 }
                 for heading in 0..divisions {
-                    for reversed in [false, true] {
-                        let run = Run {
-                            cells: &*cells,
-                            dense: &dense,
-                            order,
-                            divisions,
-                            turn: cycle.turn,
-                            vectors: &vectors,
-                            grammar,
-                        };
-                        let summary = run.expansion(symbol, m, heading, reversed)?;
-                        let at = cell_index(index, m, heading, reversed, order, divisions)?;
+                    for reversed in [false, true].into_iter().take(usize::from(layout.senses)) {
+                        let summary = context
+                            .over(cells)
+                            .expansion(symbol, m, heading, reversed)?;
+                        let at = layout.index(index, m, heading, reversed)?;
                         cells.get_mut(at)?.summary = summary;
                     }
                 }
             }
         }
+        let mut picture = context
+            .over(cells)
+            .body(grammar.axiom_ops(), order, heading, false)?;
+        // The axiom's own frame.
+        picture.depth += 1;
         Some(Table {
             cells,
             dense,
-            order,
-            divisions,
-            turn: cycle.turn,
-            vectors,
+            layout,
+            picture,
         })
     }
 
@@ -255,8 +288,7 @@ impl<'c> Table<'c> {
         lookup(
             self.cells,
             &self.dense,
-            self.order,
-            self.divisions,
+            self.layout,
             symbol,
             m,
             heading,
@@ -264,32 +296,18 @@ impl<'c> Table<'c> {
         )
     }
 
-    /// The summary of the whole picture: the axiom with `order` expansions left, from
-    /// `heading`.
-    pub(crate) fn picture(&self, grammar: &Grammar<'_>, heading: u16) -> Option<Summary> {
-        let run = Run {
-            cells: self.cells,
-            dense: &self.dense,
-            order: self.order,
-            divisions: self.divisions,
-            turn: self.turn,
-            vectors: &self.vectors,
-            grammar,
-        };
-        let mut summary = run.body(grammar.axiom_ops(), self.order, heading, false)?;
-        // The axiom's own frame.
-        summary.depth += 1;
-        Some(summary)
+    /// The summary of the whole picture: the axiom with `order` expansions left, from the
+    /// heading the table was built for.
+    pub(crate) const fn picture(&self) -> &Summary {
+        &self.picture
     }
 }
 
-#[allow(clippy::too_many_arguments)]
 #[inline]
 fn lookup<'c>(
     cells: &'c [Cell],
     dense: &[u8; 128],
-    order: u32,
-    divisions: u16,
+    layout: Layout,
     symbol: u8,
     m: u32,
     heading: u16,
@@ -299,24 +317,38 @@ fn lookup<'c>(
     if index == NONE {
         return None;
     }
-    let at = cell_index(index, m, heading, reversed, order, divisions)?;
+    let at = layout.index(index, m, heading, reversed)?;
     cells.get(at).map(|cell| &cell.summary)
 }
 
-fn cell_index(
-    dense: u8,
-    m: u32,
-    heading: u16,
-    reversed: bool,
+/// How the cells are laid out: by symbol (dense index), level, heading and sense.
+#[derive(Debug, Clone, Copy)]
+struct Layout {
     order: u32,
     divisions: u16,
-) -> Option<usize> {
-    let level = usize::try_from(m.checked_sub(1)?).ok()?;
-    if m > order || heading >= divisions {
-        return None;
+    /// 1 where nothing reverses (only the plain sense is kept), else 2.
+    senses: u8,
+}
+
+impl Layout {
+    /// Where the cell of the symbol with dense index `dense`, expanded `m` times from
+    /// `heading` and `reversed`, is; `None` outside the table.
+    fn index(self, dense: u8, m: u32, heading: u16, reversed: bool) -> Option<usize> {
+        let level = usize::try_from(m.checked_sub(1)?).ok()?;
+        if m > self.order || heading >= self.divisions || u8::from(reversed) >= self.senses {
+            return None;
+        }
+        let row = usize::from(dense) * usize::try_from(self.order).ok()? + level;
+        let at = row * usize::from(self.divisions) + usize::from(heading);
+        Some(at * usize::from(self.senses) + usize::from(reversed))
     }
-    let row = usize::from(dense) * usize::try_from(order).ok()? + level;
-    Some((row * usize::from(divisions) + usize::from(heading)) * 2 + usize::from(reversed))
+}
+
+/// The larger of |x| and |y|.
+fn magnitude(p: (Real, Real)) -> u64 {
+    p.0.to_bits()
+        .unsigned_abs()
+        .max(p.1.to_bits().unsigned_abs())
 }
 
 /// A saved turtle inside one body.
@@ -332,9 +364,8 @@ impl Run<'_, '_, '_> {
     fn cell(&self, symbol: u8, m: u32, heading: u16, reversed: bool) -> Option<&Summary> {
         lookup(
             self.cells,
-            self.dense,
-            self.order,
-            self.divisions,
+            self.context.dense,
+            self.context.layout,
             symbol,
             m,
             heading,
@@ -344,24 +375,22 @@ impl Run<'_, '_, '_> {
 
     /// `symbol` expanded `m` ≥ 1 times: its rule lines, each op with `m - 1` left.
     fn expansion(&self, symbol: u8, m: u32, heading: u16, reversed: bool) -> Option<Summary> {
-        let mut total = Summary {
-            heading,
-            reversed,
-            colorless: true,
-            ..Summary::default()
-        };
-        let mut line = self.grammar.first_rule(symbol);
+        let mut line = self.context.grammar.first_rule(symbol);
+        let mut total: Option<Summary> = None;
         while let Some(index) = line {
-            let rule = self.grammar.rule(index)?;
-            let part = self.body(
-                self.grammar.ops(rule.body),
-                m - 1,
-                total.heading,
-                total.reversed,
-            )?;
-            total = then(total, part)?;
-            line = self.grammar.next_line(index);
+            let rule = self.context.grammar.rule(index)?;
+            let ops = self.context.grammar.ops(rule.body);
+            match &mut total {
+                // Fractint's repeated lines go on from where the last one ended.
+                Some(total) => {
+                    let part = self.body(ops, m - 1, total.heading, total.reversed)?;
+                    total.append(&part)?;
+                }
+                None => total = Some(self.body(ops, m - 1, heading, reversed)?),
+            }
+            line = self.context.grammar.next_line(index);
         }
+        let mut total = total?;
         // The expansion's own frame.
         total.depth += 1;
         Some(total)
@@ -369,48 +398,70 @@ impl Run<'_, '_, '_> {
 
     /// A body's ops, each with `left` expansions left, from `heading` and `reversed`.
     fn body(&self, ops: &[u8], left: u32, heading: u16, reversed: bool) -> Option<Summary> {
-        let n = self.divisions;
+        let n = self.context.layout.divisions;
         let mut s = Summary {
             heading,
             reversed,
             colorless: true,
+            // Every op is read once here; expansions add theirs.
+            symbols: u64::try_from(ops.len()).ok()?,
             ..Summary::default()
         };
         let mut stack: Vec<Saved, MAX_BODY_NESTING> = Vec::new();
+        // Whether the position is the end of a segment this body drew (already in the box).
+        let mut drawn_to = false;
         for &op in ops {
-            s.symbols += 1;
             if left > 0 && op < NUMERIC {
                 if let Some(child) = self.cell(op, left, s.heading, s.reversed) {
                     let nesting = u32::try_from(stack.len()).ok()?;
-                    s = then(s, *child)?;
+                    s.append(child)?;
                     // The child's branches sit inside the ones open here.
                     s.nesting = s.nesting.max(nesting + child.nesting);
+                    drawn_to = false;
                     continue;
                 }
             }
-            match self.grammar.command(op) {
+            let command = self.context.grammar.command(op);
+            match command {
                 Command::Draw | Command::Move => {
-                    let (vx, vy) = *self.vectors.get(usize::from(s.heading))?;
+                    let (vx, vy) = *self.context.vectors.get(usize::from(s.heading))?;
                     let start = s.displacement;
                     let end = (start.0.checked_add(vx)?, start.1.checked_add(vy)?);
-                    if matches!(self.grammar.command(op), Command::Draw) {
-                        let drawn = s.drawn.get_or_insert(Extent::point(start));
-                        drawn.include(start);
-                        drawn.include(end);
+                    let draws = command == Command::Draw;
+                    if draws {
+                        match &mut s.drawn {
+                            Some(drawn) if drawn_to => drawn.include(end),
+                            Some(drawn) => {
+                                drawn.include(start);
+                                drawn.include(end);
+                            }
+                            None => {
+                                let mut drawn = Extent::point(start);
+                                drawn.include(end);
+                                s.drawn = Some(drawn);
+                            }
+                        }
                         s.segments += 1;
                     }
-                    s.visited.include(end);
+                    drawn_to = draws;
+                    s.reach = s.reach.max(magnitude(end));
                     s.displacement = end;
                 }
                 Command::Left | Command::Right => {
-                    let left_turn = matches!(self.grammar.command(op), Command::Left) != s.reversed;
-                    s.heading = if left_turn {
-                        (s.heading + self.turn) % n
-                    } else {
-                        (s.heading + n - self.turn) % n
-                    };
+                    let left_turn = (command == Command::Left) != s.reversed;
+                    // Headings wrap by a comparison (`turn` < n): Cortex-M0 has no divide.
+                    let turned = s.heading
+                        + if left_turn {
+                            self.context.turn
+                        } else {
+                            n - self.context.turn
+                        };
+                    s.heading = if turned >= n { turned - n } else { turned };
                 }
-                Command::Around => s.heading = (s.heading + n - n / 2) % n,
+                Command::Around => {
+                    let turned = s.heading + (n - n / 2);
+                    s.heading = if turned >= n { turned - n } else { turned };
+                }
                 Command::Reverse => s.reversed = !s.reversed,
                 Command::SetColor(value) => {
                     s.color = s.color.then(ColorChange {
@@ -442,12 +493,13 @@ impl Run<'_, '_, '_> {
                     s.nesting = s.nesting.max(u32::try_from(stack.len()).ok()?);
                 }
                 Command::Pop => {
+                    drawn_to = false;
                     let saved = stack.pop()?;
                     s.displacement = saved.position;
                     s.heading = saved.heading;
                     s.reversed = saved.reversed;
                     // Fractint's `]` keeps the colour; ABOP's restores it.
-                    if self.grammar.dialect() == Dialect::Abop {
+                    if self.context.grammar.dialect() == Dialect::Abop {
                         s.color = saved.color;
                     }
                 }
@@ -465,28 +517,44 @@ impl Run<'_, '_, '_> {
     }
 }
 
-/// `first` followed by `next` (which starts where `first` ends, in its heading and sense).
-fn then(first: Summary, next: Summary) -> Option<Summary> {
-    let at = first.displacement;
-    let drawn = match (first.drawn, next.drawn) {
-        (a, None) => a,
-        (None, Some(b)) => Some(b.offset(at)?),
-        (Some(a), Some(b)) => Some(a.union(b.offset(at)?)),
-    };
-    Some(Summary {
-        displacement: (
-            at.0.checked_add(next.displacement.0)?,
-            at.1.checked_add(next.displacement.1)?,
-        ),
-        drawn,
-        visited: first.visited.union(next.visited.offset(at)?),
-        heading: next.heading,
-        reversed: next.reversed,
-        color: first.color.then(next.color),
-        colorless: first.colorless && next.colorless,
-        segments: first.segments.saturating_add(next.segments),
-        symbols: first.symbols.saturating_add(next.symbols),
-        depth: first.depth.max(next.depth),
-        nesting: first.nesting.max(next.nesting),
-    })
+impl Summary {
+    /// This run followed by `next` (which starts where this one ends, in its heading and
+    /// sense), in place: a summary is about 100 bytes, and the table appends one for every
+    /// op of every body it fills.
+    fn append(&mut self, next: &Summary) -> Option<()> {
+        let at = self.displacement;
+        // Every position inside `next`, moved by `at`, lies within `reach` of this run's
+        // start: none of the sums below overflows.
+        let reach = magnitude(at).checked_add(next.reach)?;
+        if reach > i64::MAX.unsigned_abs() {
+            return None;
+        }
+        let moved = |p: (Real, Real)| {
+            (
+                Real::from_bits(p.0.to_bits().wrapping_add(at.0.to_bits())),
+                Real::from_bits(p.1.to_bits().wrapping_add(at.1.to_bits())),
+            )
+        };
+        if let Some(b) = next.drawn {
+            let b = Extent {
+                min: moved(b.min),
+                max: moved(b.max),
+            };
+            self.drawn = Some(match self.drawn {
+                Some(a) => a.union(b),
+                None => b,
+            });
+        }
+        self.reach = self.reach.max(reach);
+        self.displacement = moved(next.displacement);
+        self.heading = next.heading;
+        self.reversed = next.reversed;
+        self.color = self.color.then(next.color);
+        self.colorless &= next.colorless;
+        self.segments = self.segments.saturating_add(next.segments);
+        self.symbols = self.symbols.saturating_add(next.symbols);
+        self.depth = self.depth.max(next.depth);
+        self.nesting = self.nesting.max(next.nesting);
+        Some(())
+    }
 }

@@ -88,11 +88,8 @@ pub(crate) struct Turtle<'g, const STACK: usize> {
     max_stack: usize,
     /// Steps below this (but 0) are [`WalkError::StepUnderflow`].
     min_step: Real,
-    /// One step along the main heading, `step × (cos, sin)`, while neither has changed:
-    /// a run of steps computes it once (two 64-bit products, in software on Cortex-M0).
-    /// Not in [`State`], so `[` saves no more; anything that changes the heading or the
-    /// step (a turn, `@`, `]`, an expansion passed over) forgets it.
-    main_step: Option<(Real, Real)>,
+    /// Step vectors of the last few headings, for the current step.
+    steps: StepCache,
     /// `@` commands carried out (for the fit's bound on rounding, see `LSystem::fit`).
     scalings: u64,
 }
@@ -120,7 +117,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             stack: Vec::new(),
             max_stack: 0,
             min_step: MIN_STEP,
-            main_step: None,
+            steps: StepCache::EMPTY,
             scalings: 0,
         };
         let left = start.turns >= 0;
@@ -134,7 +131,6 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     /// comparison, not `%`: Cortex-M0 has no divide instruction.
     #[inline(always)]
     fn turn(&mut self, left: bool) {
-        self.main_step = None;
         let n = self.headings.divisions();
         let state = &mut self.state;
         if n == 0 {
@@ -162,15 +158,53 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     /// Moves one step along the main heading and returns the segment it covered.
     #[inline(always)]
     fn advance_main(&mut self) -> Result<Segment, Error> {
-        let vector = match self.main_step {
+        let vector = self.main_vector();
+        self.advance_along(vector)
+    }
+
+    /// One step along the main heading: kept per heading while the step stays. For
+    /// `Angle n`, headings k and n - k share a slot (their vectors are mirror images
+    /// exactly: the table's directions are, and [`Real::mul_q30`] rounds the magnitude).
+    #[inline(always)]
+    fn main_vector(&mut self) -> (Real, Real) {
+        let n = self.headings.divisions();
+        let step = self.state.step;
+        if n == 0 {
+            let angle = self.state.free;
+            let shift = self.headings.cycle_shift();
+            // Keys are 16 bits: free headings keyed by their index among the multiples of
+            // 2^shift, when those are few enough; any others are computed each time.
+            let Ok(key) = u16::try_from(angle.0.checked_shr(shift).unwrap_or(0)) else {
+                return scaled(step, angle.cos_sin());
+            };
+            return match self.steps.get(key) {
+                Some(vector) => vector,
+                None => {
+                    let vector = scaled(step, angle.cos_sin());
+                    self.steps.put(key, vector);
+                    vector
+                }
+            };
+        }
+        let heading = self.state.heading;
+        let mirrored = heading > n / 2;
+        let k = if mirrored { n - heading } else { heading };
+        let (dx, dy) = match self.steps.get(k) {
             Some(vector) => vector,
             None => {
-                let vector = scaled(self.state.step, self.main_direction());
-                self.main_step = Some(vector);
+                let vector = scaled(step, self.headings.cos_sin(k));
+                self.steps.put(k, vector);
                 vector
             }
         };
-        self.advance_along(vector)
+        (
+            dx,
+            if mirrored {
+                Real::from_bits(dy.to_bits().wrapping_neg())
+            } else {
+                dy
+            },
+        )
     }
 
     /// Moves `step` along `direction` and returns the segment it covered.
@@ -243,7 +277,6 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 self.turn(left);
             }
             Command::Around => {
-                self.main_step = None;
                 let n = self.headings.divisions();
                 if n == 0 {
                     state.free.0 = state.free.0.wrapping_add(1 << 31);
@@ -255,7 +288,6 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             }
             Command::Reverse => state.reversed = !state.reversed,
             Command::FreeLeft(turn) | Command::FreeRight(turn) => {
-                self.main_step = None;
                 let delta = turn.0;
                 let left = matches!(command, Command::FreeLeft(_)) != state.reversed;
                 state.free.0 = if left {
@@ -265,7 +297,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 };
             }
             Command::Scale(factor) => {
-                self.main_step = None;
+                self.steps.clear();
                 self.scalings += 1;
                 state.step = state
                     .step
@@ -280,8 +312,10 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             Command::RaiseColor(by) => state.color = state.color.wrapping_add(by),
             Command::LowerColor(by) => state.color = state.color.wrapping_sub(by),
             Command::Push => {
+                // Field by field: copied whole, the state went through a library memmove.
+                let saved = State { ..*state };
                 self.stack
-                    .push(*state)
+                    .push(saved)
                     .map_err(|_| Error::Walk(WalkError::StackTooDeep { capacity: STACK }))?;
                 self.max_stack = self.max_stack.max(self.stack.len());
             }
@@ -294,8 +328,10 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                     }))?;
                 // Fractint's `]` restores everything but the colour; ABOP's restores all.
                 let color = state.color;
+                if saved.step != state.step {
+                    self.steps.clear();
+                }
                 *state = saved;
-                self.main_step = None;
                 if self.dialect == Dialect::Fractint {
                     state.color = color;
                 }
@@ -303,6 +339,52 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             Command::Nothing => {}
         }
         Ok(None)
+    }
+}
+
+/// Headings whose step vectors a turtle keeps (a few: the walk's state stays under 1 KiB).
+const STEP_SLOTS: usize = 4;
+
+/// Step vectors for the current step, direct-mapped by heading: a snowflake's turns between
+/// steps, or a plant's branches, come back to the same few headings, so most steps reuse
+/// a vector instead of computing two 64-bit products (in software on Cortex-M0).
+#[derive(Debug, Clone, Copy)]
+struct StepCache {
+    vectors: [(Real, Real); STEP_SLOTS],
+    /// The heading each slot holds: the division (of the half turn's mirror images, for
+    /// `Angle n`), or a free heading's index.
+    keys: [u16; STEP_SLOTS],
+    /// Which slots hold a vector, one bit each.
+    filled: u8,
+}
+
+impl StepCache {
+    const EMPTY: Self = Self {
+        vectors: [(Real::ZERO, Real::ZERO); STEP_SLOTS],
+        keys: [0; STEP_SLOTS],
+        filled: 0,
+    };
+
+    /// Forgets every vector (the step changed).
+    #[inline(always)]
+    fn clear(&mut self) {
+        self.filled = 0;
+    }
+
+    #[inline(always)]
+    fn get(&self, key: u16) -> Option<(Real, Real)> {
+        let slot = usize::from(key) % STEP_SLOTS;
+        let held = self.filled >> slot & 1 != 0 && self.keys.get(slot) == Some(&key);
+        held.then(|| self.vectors.get(slot).copied()).flatten()
+    }
+
+    #[inline(always)]
+    fn put(&mut self, key: u16, vector: (Real, Real)) {
+        let slot = usize::from(key) % STEP_SLOTS;
+        if let (Some(k), Some(v)) = (self.keys.get_mut(slot), self.vectors.get_mut(slot)) {
+            (*k, *v) = (key, vector);
+            self.filled |= 1 << slot;
+        }
     }
 }
 
@@ -344,7 +426,6 @@ pub(crate) enum Decision {
 impl<const STACK: usize> Turtle<'_, STACK> {
     /// The turtle moved past an expansion summarised by `cell`; `None` on overflow.
     fn pass(&mut self, cell: &Summary) -> Option<()> {
-        self.main_step = None;
         let state = &mut self.state;
         state.position = TurtlePoint {
             x: state.position.x.checked_add(cell.displacement.0)?,

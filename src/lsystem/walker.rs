@@ -170,6 +170,8 @@ pub struct Walker<'g, 'a, const DEPTH: usize = DEFAULT_DEPTH> {
     /// Symbols inside expansions the caller declined (measured, not read).
     declined: u64,
     max_depth: usize,
+    /// Whether any rule has alternatives: only then are expansions' keys hashed.
+    stochastic: bool,
 }
 
 /// What the walker hands out: a symbol to interpret, or an expansion the caller declined
@@ -213,6 +215,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             spent: Spent::new(DEFAULT_BUDGET),
             declined: 0,
             max_depth: 1,
+            stochastic: grammar.is_stochastic(),
         })
     }
 
@@ -299,7 +302,12 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                     if !expand(op, left) {
                         return Some(Ok(Next::Declined { op, left }));
                     }
-                    let key = child_key(parent, at);
+                    // Deterministic rules need no key: three multiplies an expansion saved.
+                    let key = if self.stochastic {
+                        child_key(parent, at)
+                    } else {
+                        0
+                    };
                     let rule = self.grammar.choose(first, key);
                     // Cannot fail: `new` checked that order + 1 <= DEPTH.
                     let frame = Frame::at(rule, self.grammar.rule_span(rule), kept(key));

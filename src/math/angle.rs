@@ -37,6 +37,9 @@ pub(crate) struct Headings {
     half_table: Vec<(i32, i32), { MAX_ANGLE_DIVISIONS as usize / 2 + 1 }>,
     divisions: u16,
     free_turn: trig::BinaryAngle,
+    /// Trailing zeros of the free turn: the free headings a turtle reaches are multiples
+    /// of 2^shift.
+    free_shift: u32,
 }
 
 impl Headings {
@@ -50,6 +53,7 @@ impl Headings {
             half_table,
             divisions: 4,
             free_turn: trig::BinaryAngle::default(),
+            free_shift: 31,
         }
     }
 
@@ -58,6 +62,7 @@ impl Headings {
             half_table: Vec::new(),
             divisions: 0,
             free_turn: trig::BinaryAngle::default(),
+            free_shift: 31,
         };
         match angle {
             Angle::Divisions(n) => {
@@ -77,6 +82,7 @@ impl Headings {
             }
             Angle::Degrees(degrees) => {
                 headings.free_turn = trig::BinaryAngle::from_degrees_bits(degrees.to_bits());
+                headings.free_shift = headings.free_turn.0.trailing_zeros().min(31);
             }
         }
         Ok(headings)
@@ -103,7 +109,7 @@ impl Headings {
         let delta = self.free_turn.0;
         // Headings k·δ mod 2³² are the multiples of 2^z, z = trailing zeros of δ: 2^(32-z)
         // of them (at least 2, so that `|`, half a turn, is one of them).
-        let zeros = delta.trailing_zeros().min(31);
+        let zeros = self.free_shift;
         let count = 1u64 << (32 - zeros);
         (count <= u64::from(MAX_ANGLE_DIVISIONS)).then(|| HeadingCycle {
             count: u16::try_from(count).unwrap_or(MAX_ANGLE_DIVISIONS),
@@ -124,6 +130,13 @@ pub(crate) struct HeadingCycle {
 }
 
 impl Headings {
+    /// Trailing zeros of the free turn (at most 31): free headings reached by turns are
+    /// multiples of 2 to this power.
+    #[inline]
+    pub(crate) const fn cycle_shift(&self) -> u32 {
+        self.free_shift
+    }
+
     /// The binary-angle turn of `+` for a free angle.
     #[inline]
     pub(crate) const fn free_turn(&self) -> trig::BinaryAngle {

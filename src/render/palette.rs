@@ -46,8 +46,17 @@ impl<C: PixelColor> Palette for Colors<'_, C> {
         if value >= max {
             return self.first;
         }
-        let index = usize::from(value) % self.colors.len().max(1);
-        self.colors.get(index).copied().unwrap_or(self.first)
+        // An index within the list needs no division (a library call on Cortex-M0, once a
+        // segment for an L-system).
+        let index = usize::from(value);
+        match self.colors.get(index) {
+            Some(&color) => color,
+            None => self
+                .colors
+                .get(index % self.colors.len().max(1))
+                .copied()
+                .unwrap_or(self.first),
+        }
     }
 }
 

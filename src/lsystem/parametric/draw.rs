@@ -13,7 +13,7 @@ use super::{DerivedModule, ParametricGrammar, ParametricWalker};
 use crate::error::{DrawError, Error, FitError};
 use crate::lsystem::alphabet::{Command, Dialect};
 use crate::lsystem::drawing::{
-    colors, draw_segment, fitted_start, measure, only_target_errors, pixel_box, Bounds,
+    colors, fitted_start, measure, only_target_errors, pixel_box, Bounds, Pen,
 };
 use crate::lsystem::turtle::{next_segment, Segment, Start, Turtle, WalkStats, DEFAULT_STACK};
 use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
@@ -373,20 +373,12 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     {
         let clip = target.bounding_box();
         let mut segments = self.system.segments(self.start)?;
-        let mut last_end = None;
+        let mut pen = Pen::default();
         for segment in segments.by_ref() {
             let segment = segment?;
             let color = self.palette.color(u16::from(segment.color), u16::MAX);
-            let end = draw_segment(
-                target,
-                self.system.orientation,
-                segment,
-                color,
-                last_end,
-                &clip,
-            )
-            .map_err(DrawError::Target)?;
-            last_end = Some(end);
+            pen.draw(target, self.system.orientation, segment, color, &clip)
+                .map_err(DrawError::Target)?;
         }
         Ok(WalkStats {
             segments: segments.segments(),
