@@ -7,13 +7,18 @@ use embedded_graphics::{
 };
 use tinyfractal::FitError;
 use tinyfractal::{
-    walk_pose, Carpet, Colors, Coord, DeepCoord, Displacement, DrawError, Error, EscapeTime,
+    walk_pose, Carpet, Cell, Colors, Coord, DeepCoord, Displacement, DrawError, Error, EscapeTime,
     Figure, Fractal, Gasket, Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile, Orientation,
     ParametricGrammar, ParametricLSystem, Real, ReferencePoint, Shading, SierpinskiCube, Terrain,
     TerrainMap, Tier, View, ZoomFrame, ZoomLine, BODY, DEFAULT_DEPTH, DEFAULT_STACK,
 };
 
 use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
+
+/// Expansion-table cells an L-system scene is measured with (about 100 bytes each, on the
+/// stack while it draws): the OLED plant's 160 and the snowflake's 24. On ARMv6-M, whose
+/// measuring board (the micro:bit) has 16 KiB of RAM, the snowflake's only: the plant walks.
+pub const LSYSTEM_CELLS: usize = if cfg!(scenes_small_ram) { 24 } else { 160 };
 
 /// Most heights of a landscape drawn on a board (33², 4.3 KiB on the stack while it draws).
 pub const MAX_BOARD_MAP_CELLS: usize = 33 * 33;
@@ -354,7 +359,9 @@ where
 }
 
 /// Fits and draws a built grammar, out of line: its walks' frames are not on the stack
-/// while the grammar is being built.
+/// while the grammar is being built. Measured from the expansion table where
+/// [`LSYSTEM_CELLS`] hold one (the same fit as a sizing walk, drawn by walking at these
+/// sizes: the same pixels in the same order), by a sizing walk otherwise.
 #[inline(never)]
 fn draw_grammar<D>(
     target: &mut D,
@@ -367,9 +374,11 @@ where
     D: DrawTarget,
 {
     let ink = [look.ink];
+    let colors = Colors::new(&ink).ok_or(Error::Fit(FitError::EmptyPalette))?;
+    let mut cells = [Cell::default(); LSYSTEM_CELLS];
     let drawing = LSystem::new(grammar, order)
         .with_orientation(orientation)
-        .fit(target.bounding_box(), &ink)?;
+        .fit_in(target.bounding_box(), colors, &mut cells)?;
     let stats = drawing.draw(target).map_err(DrawError::Target)?;
     Ok(Work::Segments(stats.segments))
 }
