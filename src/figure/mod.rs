@@ -92,7 +92,7 @@ const CIRCLE: [(i64, i64); 16] = {
     let mut points = [(0, 0); 16];
     let mut i = 0;
     while i < 16 {
-        let (c, s) = crate::math::trig::sin_cos(i as u64, 16);
+        let (c, s) = crate::math::trig::sin_cos(i as u32, 16);
         points[i] = ((c as i64) << 2, (s as i64) << 2);
         i += 1;
     }

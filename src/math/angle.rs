@@ -77,7 +77,7 @@ impl Headings {
                 for k in 0..=n / 2 {
                     let _ = headings
                         .half_table
-                        .push(trig::sin_cos(u64::from(k), u64::from(n)));
+                        .push(trig::sin_cos(u32::from(k), u32::from(n)));
                 }
             }
             Angle::Degrees(degrees) => {

@@ -12,15 +12,18 @@ pub(crate) const ONE_Q30: i32 = 1 << 30;
 const FRAC_PI_4_Q62: i128 = 3_622_009_729_038_561_421;
 
 /// Cosine and sine of `numerator / denominator` of a full turn, in Q30, rounded to nearest.
-/// `denominator` must be positive.
-pub(crate) const fn sin_cos(numerator: u64, denominator: u64) -> (i32, i32) {
-    let d = denominator as u128;
-    let eighths = (numerator as u128 % d) * 8;
+/// `denominator` must be positive. In 64 bits: 128-bit divisions are library calls on
+/// Cortex-M, four of them a heading.
+pub(crate) const fn sin_cos(numerator: u32, denominator: u32) -> (i32, i32) {
+    let d = denominator as u64;
+    let eighths = (numerator as u64 % d) * 8;
     let octant = eighths / d;
     let rest = eighths % d;
-    // The angle from the nearest multiple of π/2, in [0, π/4], as Q62 radians.
+    // The angle from the nearest multiple of π/2, in [0, π/4], as Q62 radians:
+    // ⌊π/4 · w / d⌋ = q·w + ⌊r·w / d⌋ for π/4 = q·d + r (r·w < d² and q·w ≤ π/4 fit 64 bits).
     let within = if octant & 1 == 0 { rest } else { d - rest };
-    let x = FRAC_PI_4_Q62 * within as i128 / d as i128;
+    let (q, r) = (FRAC_PI_4_Q62 as u64 / d, FRAC_PI_4_Q62 as u64 % d);
+    let x = (q * within + r * within / d) as i128;
     let (c, s) = octant_cos_sin(x);
     match octant {
         0 => (c, s),
@@ -80,7 +83,7 @@ static QUARTER_SINE: [i32; QUARTER_STEPS + 1] = {
     let mut table = [0; QUARTER_STEPS + 1];
     let mut i = 0;
     while i <= QUARTER_STEPS {
-        table[i] = sin_cos(i as u64, 4 * QUARTER_STEPS as u64).1;
+        table[i] = sin_cos(i as u32, 4 * QUARTER_STEPS as u32).1;
         i += 1;
     }
     table
@@ -180,7 +183,7 @@ mod tests {
     /// own error, far below 10⁻⁶ of a unit), for every heading of up to 360 divisions.
     #[test]
     fn exact_divisions_are_rounded_to_nearest() {
-        for n in 1..=360u64 {
+        for n in 1..=360u32 {
             for k in 0..n {
                 let (c, s) = sin_cos(k, n);
                 let angle = core::f64::consts::TAU * k as f64 / n as f64;
@@ -200,7 +203,7 @@ mod tests {
 
     #[test]
     fn mirrored_headings_are_exact_negatives() {
-        for n in [3u64, 5, 6, 7, 10, 12, 34, 49] {
+        for n in [3u32, 5, 6, 7, 10, 12, 34, 49] {
             for k in 0..n {
                 let (c, s) = sin_cos(k, n);
                 let (c2, s2) = sin_cos(n - k, n);
