@@ -75,9 +75,14 @@ impl Headings {
                 }
                 headings.divisions = n;
                 for k in 0..=n / 2 {
-                    let _ = headings
-                        .half_table
-                        .push(trig::sin_cos(u32::from(k), u32::from(n)));
+                    // Past a quarter turn (n even), heading k mirrors heading n/2 - k:
+                    // `sin_cos` sums the same series for both, so it is summed once.
+                    let mirrored = n % 2 == 0 && 4 * k > n;
+                    let value = match headings.half_table.get(usize::from(n / 2 - k)) {
+                        Some(&(c, s)) if mirrored => (-c, s),
+                        _ => trig::sin_cos(u32::from(k), u32::from(n)),
+                    };
+                    let _ = headings.half_table.push(value);
                 }
             }
             Angle::Degrees(degrees) => {
@@ -157,6 +162,27 @@ impl Headings {
             (c, -s)
         } else {
             (c, s)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every heading of `Angle n` is the exactly rounded direction, however the table got
+    /// it (summed, or mirrored from the heading short of half a turn).
+    #[test]
+    fn every_heading_is_its_exact_direction() {
+        for n in 1..=MAX_ANGLE_DIVISIONS {
+            let headings = Headings::new(Angle::Divisions(n), Location::default()).unwrap();
+            for k in 0..n {
+                assert_eq!(
+                    headings.cos_sin(k),
+                    trig::sin_cos(u32::from(k), u32::from(n)),
+                    "{k}/{n}"
+                );
+            }
         }
     }
 }

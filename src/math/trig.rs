@@ -201,6 +201,18 @@ mod tests {
         assert_eq!(sin_cos(1, 12).1, 1 << 29);
     }
 
+    /// Headings a half turn apart from each other's mirror (θ and π - θ) have the same sine
+    /// and opposite cosines, exactly: `Headings` computes one from the other.
+    #[test]
+    fn supplementary_headings_are_exact_mirrors() {
+        for n in (2..=64u32).step_by(2) {
+            for k in 0..=n / 2 {
+                let (c, s) = sin_cos(k, n);
+                assert_eq!(sin_cos(n / 2 - k, n), (-c, s), "{k}/{n}");
+            }
+        }
+    }
+
     #[test]
     fn mirrored_headings_are_exact_negatives() {
         for n in [3u32, 5, 6, 7, 10, 12, 34, 49] {
