@@ -444,10 +444,7 @@ impl Pen {
         let to = pixel_of(orientation, segment.end);
         let continuing = self.pixel == Some(from);
         (self.point, self.pixel) = (Some(segment.end), Some(to));
-        if continuing && from == to {
-            return Ok(());
-        }
-        raster::draw_line(target, from, to, continuing, color, clip)
+        raster::draw_line_on(target, from, to, continuing, color, clip)
     }
 
     /// A dot was drawn at `pixel` (the turtle is elsewhere).

@@ -278,12 +278,107 @@ pub(crate) fn draw_line<D: DrawTarget>(
     Ok(())
 }
 
+/// [`draw_line`], with a line that goes on from a neighbouring pixel (its first pixel
+/// skipped) drawn in line: only its end pixel is new, the one run `draw_line` would send.
+/// Pictures finer than their pixels are mostly such steps (the snowflake on the OLED: two
+/// in three of its segments), and each saved the line's set-up and a call.
+#[inline(always)]
+pub(crate) fn draw_line_on<D: DrawTarget>(
+    target: &mut D,
+    from: Point,
+    to: Point,
+    skip_first: bool,
+    color: D::Color,
+    clip: &Rectangle,
+) -> Result<(), D::Error> {
+    if skip_first && from.x.abs_diff(to.x) <= 1 && from.y.abs_diff(to.y) <= 1 {
+        if from != to && clip.contains(to) {
+            target.fill_solid(&Rectangle::new(to, Size::new(1, 1)), color)?;
+        }
+        return Ok(());
+    }
+    draw_line(target, from, to, skip_first, color, clip)
+}
+
 #[cfg(test)]
 mod tests {
     extern crate std;
     use std::vec::Vec;
 
     use super::*;
+
+    /// Records each `fill_solid` call.
+    #[derive(Default)]
+    struct Calls(Vec<Rectangle>);
+
+    impl OriginDimensions for Calls {
+        fn size(&self) -> Size {
+            Size::new(64, 64)
+        }
+    }
+
+    impl DrawTarget for Calls {
+        type Color = embedded_graphics::pixelcolor::BinaryColor;
+        type Error = core::convert::Infallible;
+
+        fn draw_iter<I: IntoIterator<Item = Pixel<Self::Color>>>(
+            &mut self,
+            pixels: I,
+        ) -> Result<(), Self::Error> {
+            for Pixel(p, _) in pixels {
+                self.0.push(Rectangle::new(p, Size::new(1, 1)));
+            }
+            Ok(())
+        }
+
+        fn fill_solid(&mut self, area: &Rectangle, _: Self::Color) -> Result<(), Self::Error> {
+            self.0.push(*area);
+            Ok(())
+        }
+    }
+
+    /// A step to any neighbouring pixel (or none) sends what `draw_line` sends inside the
+    /// clip, run for run, and nothing outside it (`draw_line` clips the major axis only and
+    /// leaves the minor one to the target), with its first pixel skipped or not, inside the
+    /// clip, across its edge and out.
+    #[test]
+    fn steps_to_neighbours_send_what_lines_send() {
+        use embedded_graphics::pixelcolor::BinaryColor;
+        let clips = [
+            Rectangle::new(Point::new(0, 0), Size::new(64, 64)),
+            Rectangle::new(Point::new(5, 5), Size::new(1, 1)),
+            Rectangle::new(Point::new(5, 5), Size::new(2, 3)),
+            Rectangle::new(Point::new(-3, 4), Size::new(9, 2)),
+        ];
+        for clip in &clips {
+            for x in 3..8 {
+                for y in 3..8 {
+                    let from = Point::new(x, y);
+                    for to in Rectangle::new(from - Point::new(2, 2), Size::new(5, 5)).points() {
+                        for skip_first in [false, true] {
+                            let (mut line, mut step) = (Calls::default(), Calls::default());
+                            let on = BinaryColor::On;
+                            let _ = draw_line(&mut line, from, to, skip_first, on, clip);
+                            let _ = draw_line_on(&mut step, from, to, skip_first, on, clip);
+                            let inside = |calls: &Calls| -> Vec<Rectangle> {
+                                calls
+                                    .0
+                                    .iter()
+                                    .map(|run| run.intersection(clip))
+                                    .filter(|run| !run.is_zero_sized())
+                                    .collect()
+                            };
+                            let label = std::format!("{from:?} to {to:?}, {skip_first}, {clip:?}");
+                            assert_eq!(inside(&line), inside(&step), "{label}");
+                            if skip_first && (to - from).x.abs() <= 1 && (to - from).y.abs() <= 1 {
+                                assert_eq!(inside(&step), step.0, "{label}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
 
     fn pixels(from: Point, to: Point, clip: &Rectangle) -> Vec<Point> {
         Runs::new(from, to, false, clip)
