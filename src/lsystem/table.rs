@@ -59,6 +59,15 @@ impl Extent {
         out
     }
 
+    /// The box turned a quarter turn counter-clockwise about the origin: (x, y) → (-y, x).
+    /// Callers keep coordinates within ±`i64::MAX` (the reach bound), so negating is exact.
+    fn quarter_turned(self) -> Self {
+        Self {
+            min: (neg(self.max.1), self.min.0),
+            max: (neg(self.min.1), self.max.0),
+        }
+    }
+
     /// The box moved by `by`; `None` on overflow.
     pub(crate) fn offset(self, by: (Real, Real)) -> Option<Self> {
         Some(Self {
@@ -242,6 +251,17 @@ impl<'c> Table<'c> {
             vectors: &vectors,
             grammar,
         };
+        // Where a quarter turn of headings turns every step vector exactly a quarter turn,
+        // an expansion from heading h + n/4 is the one from h turned: a quarter of the
+        // cells are summed, the rest turned (the plant's 22.5° and Fractint's 90°
+        // systems). Checked on the vectors, not assumed.
+        let quarter = divisions / 4;
+        let turns_exactly = divisions % 4 == 0
+            && (0..divisions).all(|h| {
+                let (x, y) = vectors.get(usize::from(h)).copied().unwrap_or_default();
+                let turned = vectors.get(usize::from((h + quarter) % divisions)).copied();
+                turned == Some((neg(y), x))
+            });
         // Fill level by level: a cell at level m reads only cells at level m - 1.
         for m in 1..=order {
             for symbol in 0..128u8 {
@@ -253,9 +273,14 @@ impl<'c> Table<'c> {
                 }
                 for heading in 0..divisions {
                     for reversed in [false, true].into_iter().take(usize::from(layout.senses)) {
-                        let summary = context
-                            .over(cells)
-                            .expansion(symbol, m, heading, reversed)?;
+                        let summary = if turns_exactly && heading >= quarter {
+                            let from = layout.index(index, m, heading - quarter, reversed)?;
+                            cells.get(from)?.summary.quarter_turned(quarter, divisions)
+                        } else {
+                            context
+                                .over(cells)
+                                .expansion(symbol, m, heading, reversed)?
+                        };
                         let at = layout.index(index, m, heading, reversed)?;
                         cells.get_mut(at)?.summary = summary;
                     }
@@ -342,6 +367,11 @@ impl Layout {
         let at = row * usize::from(self.divisions) + usize::from(heading);
         Some(at * usize::from(self.senses) + usize::from(reversed))
     }
+}
+
+/// -value (exact within the reach bound; saturating at the one value outside it).
+fn neg(value: Real) -> Real {
+    Real::from_bits(value.to_bits().saturating_neg())
 }
 
 /// The larger of |x| and |y|.
@@ -518,6 +548,23 @@ impl Run<'_, '_, '_> {
 }
 
 impl Summary {
+    /// This run as it is from a heading a quarter turn (`quarter` of `divisions`) further
+    /// counter-clockwise, where the step vectors turn exactly with it.
+    fn quarter_turned(&self, quarter: u16, divisions: u16) -> Self {
+        let (x, y) = self.displacement;
+        let heading = self.heading + quarter;
+        Self {
+            displacement: (neg(y), x),
+            drawn: self.drawn.map(Extent::quarter_turned),
+            heading: if heading >= divisions {
+                heading - divisions
+            } else {
+                heading
+            },
+            ..*self
+        }
+    }
+
     /// This run followed by `next` (which starts where this one ends, in its heading and
     /// sense), in place: a summary is about 100 bytes, and the table appends one for every
     /// op of every body it fills.
