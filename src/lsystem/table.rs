@@ -20,12 +20,15 @@
 //!
 //! Storage is the caller's: a slice of [`Cell`]s, `symbols with rules × order × n` of them,
 //! twice that where `!` reverses ([`cells_needed`]), 96 bytes each on a 64-bit host; too few
-//! and the engine walks.
+//! and the engine walks. Where a quarter turn of headings turns every direction exactly a
+//! quarter turn (`Angle 4k`, free angles of 90°/2ʲ), only the first n/4 headings are kept:
+//! an expansion from h + n/4 is the one from h turned, and is turned when read.
 
 use heapless::Vec;
 
 use super::alphabet::{Command, Dialect};
 use super::grammar::{Grammar, NUMERIC};
+use crate::math::angle::HeadingCycle;
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 
@@ -134,14 +137,41 @@ pub(crate) struct Summary {
 /// How many cells a table for `grammar` at `order` needs, or `None` if the table does not
 /// apply to it (see the module docs).
 pub fn cells_needed(grammar: &Grammar<'_>, order: u32) -> Option<usize> {
-    let n = usize::from(grammar.headings().cycle()?.count);
+    let stored = usize::from(stored_headings(grammar)?);
     let symbols = (0..128u8)
         .filter(|&s| grammar.first_rule(s).is_some())
         .count();
     symbols
         .checked_mul(usize::try_from(order).ok()?)?
-        .checked_mul(n)?
+        .checked_mul(stored)?
         .checked_mul(usize::from(senses(grammar)?))
+}
+
+/// The turtle's direction for heading `h` of `cycle` (Q30): the table for `Angle n`, or
+/// the binary angle.
+fn direction(grammar: &Grammar<'_>, cycle: HeadingCycle, h: u16) -> (i32, i32) {
+    let headings = grammar.headings();
+    if headings.divisions() > 0 {
+        headings.cos_sin(h)
+    } else {
+        BinaryAngle(u32::from(h) << cycle.shift).cos_sin()
+    }
+}
+
+/// Headings whose cells are kept: where a quarter turn of headings turns every direction
+/// exactly a quarter turn (`Angle 4k`, free angles of 90°/2ʲ; checked, not assumed), an
+/// expansion from h + n/4 is the one from h turned, so only the first quarter is kept and
+/// the others are turned when read; otherwise all n.
+fn stored_headings(grammar: &Grammar<'_>) -> Option<u16> {
+    let cycle = grammar.headings().cycle()?;
+    let n = cycle.count;
+    let quarter = n / 4;
+    let turns_exactly = n % 4 == 0
+        && (0..n).all(|h| {
+            let (c, s) = direction(grammar, cycle, h);
+            direction(grammar, cycle, (h + quarter) % n) == (s.saturating_neg(), c)
+        });
+    Some(if turns_exactly { quarter } else { n })
 }
 
 /// Senses of `!` a walk can be in (2 if the grammar reverses anywhere, else only the plain
@@ -223,17 +253,13 @@ impl<'c> Table<'c> {
         let layout = Layout {
             order,
             divisions,
+            stored: stored_headings(grammar)?,
             senses: senses(grammar)?,
         };
         let mut vectors: Vec<(Real, Real), { crate::math::MAX_ANGLE_DIVISIONS as usize }> =
             Vec::new();
         for h in 0..divisions {
-            // The turtle's own direction for the heading: the table, or the binary angle.
-            let (cos, sin) = if headings.divisions() > 0 {
-                headings.cos_sin(h)
-            } else {
-                BinaryAngle(u32::from(h) << cycle.shift).cos_sin()
-            };
+            let (cos, sin) = direction(grammar, cycle, h);
             vectors.push((step.mul_q30(cos), step.mul_q30(sin))).ok()?;
         }
         let mut dense = [NONE; 128];
@@ -251,17 +277,6 @@ impl<'c> Table<'c> {
             vectors: &vectors,
             grammar,
         };
-        // Where a quarter turn of headings turns every step vector exactly a quarter turn,
-        // an expansion from heading h + n/4 is the one from h turned: a quarter of the
-        // cells are summed, the rest turned (the plant's 22.5° and Fractint's 90°
-        // systems). Checked on the vectors, not assumed.
-        let quarter = divisions / 4;
-        let turns_exactly = divisions % 4 == 0
-            && (0..divisions).all(|h| {
-                let (x, y) = vectors.get(usize::from(h)).copied().unwrap_or_default();
-                let turned = vectors.get(usize::from((h + quarter) % divisions)).copied();
-                turned == Some((neg(y), x))
-            });
         // Fill level by level: a cell at level m reads only cells at level m - 1.
         for m in 1..=order {
             for symbol in 0..128u8 {
@@ -271,16 +286,11 @@ impl<'c> Table<'c> {
                 if index == NONE {
                     continue;
                 }
-                for heading in 0..divisions {
+                for heading in 0..layout.stored {
                     for reversed in [false, true].into_iter().take(usize::from(layout.senses)) {
-                        let summary = if turns_exactly && heading >= quarter {
-                            let from = layout.index(index, m, heading - quarter, reversed)?;
-                            cells.get(from)?.summary.quarter_turned(quarter, divisions)
-                        } else {
-                            context
-                                .over(cells)
-                                .expansion(symbol, m, heading, reversed)?
-                        };
+                        let summary = context
+                            .over(cells)
+                            .expansion(symbol, m, heading, reversed)?;
                         let at = layout.index(index, m, heading, reversed)?;
                         cells.get_mut(at)?.summary = summary;
                     }
@@ -303,13 +313,7 @@ impl<'c> Table<'c> {
     /// The cell of `symbol` expanded `m` times (1..=order) from `heading` and `reversed`;
     /// `None` for a symbol without a rule.
     #[inline]
-    pub(crate) fn cell(
-        &self,
-        symbol: u8,
-        m: u32,
-        heading: u16,
-        reversed: bool,
-    ) -> Option<&Summary> {
+    pub(crate) fn cell(&self, symbol: u8, m: u32, heading: u16, reversed: bool) -> Option<Summary> {
         lookup(
             self.cells,
             &self.dense,
@@ -319,6 +323,7 @@ impl<'c> Table<'c> {
             heading,
             reversed,
         )
+        .map(|kept| kept.with(|summary| *summary))
     }
 
     /// The summary of the whole picture: the axiom with `order` expansions left, from the
@@ -337,13 +342,40 @@ fn lookup<'c>(
     m: u32,
     heading: u16,
     reversed: bool,
-) -> Option<&'c Summary> {
+) -> Option<Kept<'c>> {
     let index = *dense.get(usize::from(symbol))?;
-    if index == NONE {
+    if index == NONE || heading >= layout.divisions {
         return None;
     }
-    let at = layout.index(index, m, heading, reversed)?;
-    cells.get(at).map(|cell| &cell.summary)
+    // Headings past the kept quarter are a kept one turned once, twice or three times.
+    let turns = heading / layout.stored;
+    let at = layout.index(index, m, heading - turns * layout.stored, reversed)?;
+    Some(Kept {
+        summary: &cells.get(at)?.summary,
+        turns,
+        layout,
+    })
+}
+
+/// A kept cell, and the quarter turns that make it the one asked for.
+struct Kept<'c> {
+    summary: &'c Summary,
+    turns: u16,
+    layout: Layout,
+}
+
+impl Kept<'_> {
+    /// The cell asked for: the kept one, turned (a copy) if it has to be.
+    fn with<R>(&self, f: impl FnOnce(&Summary) -> R) -> R {
+        if self.turns == 0 {
+            return f(self.summary);
+        }
+        let mut summary = *self.summary;
+        for _ in 0..self.turns {
+            summary = summary.quarter_turned(self.layout.stored, self.layout.divisions);
+        }
+        f(&summary)
+    }
 }
 
 /// How the cells are laid out: by symbol (dense index), level, heading and sense.
@@ -351,6 +383,8 @@ fn lookup<'c>(
 struct Layout {
     order: u32,
     divisions: u16,
+    /// Headings kept (see [`stored_headings`]): n, or n/4.
+    stored: u16,
     /// 1 where nothing reverses (only the plain sense is kept), else 2.
     senses: u8,
 }
@@ -360,11 +394,11 @@ impl Layout {
     /// `heading` and `reversed`, is; `None` outside the table.
     fn index(self, dense: u8, m: u32, heading: u16, reversed: bool) -> Option<usize> {
         let level = usize::try_from(m.checked_sub(1)?).ok()?;
-        if m > self.order || heading >= self.divisions || u8::from(reversed) >= self.senses {
+        if m > self.order || heading >= self.stored || u8::from(reversed) >= self.senses {
             return None;
         }
         let row = usize::from(dense) * usize::try_from(self.order).ok()? + level;
-        let at = row * usize::from(self.divisions) + usize::from(heading);
+        let at = row * usize::from(self.stored) + usize::from(heading);
         Some(at * usize::from(self.senses) + usize::from(reversed))
     }
 }
@@ -391,7 +425,7 @@ struct Saved {
 }
 
 impl Run<'_, '_, '_> {
-    fn cell(&self, symbol: u8, m: u32, heading: u16, reversed: bool) -> Option<&Summary> {
+    fn cell(&self, symbol: u8, m: u32, heading: u16, reversed: bool) -> Option<Kept<'_>> {
         lookup(
             self.cells,
             self.context.dense,
@@ -444,9 +478,12 @@ impl Run<'_, '_, '_> {
             if left > 0 && op < NUMERIC {
                 if let Some(child) = self.cell(op, left, s.heading, s.reversed) {
                     let nesting = u32::try_from(stack.len()).ok()?;
-                    s.append(child)?;
-                    // The child's branches sit inside the ones open here.
-                    s.nesting = s.nesting.max(nesting + child.nesting);
+                    child.with(|child| {
+                        s.append(child)?;
+                        // The child's branches sit inside the ones open here.
+                        s.nesting = s.nesting.max(nesting + child.nesting);
+                        Some(())
+                    })?;
                     drawn_to = false;
                     continue;
                 }

@@ -576,7 +576,7 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> 
             let next = self.walker.next_with(|op, left| {
                 decision = table
                     .cell(op, left, heading, reversed)
-                    .map_or(Decision::Expand, |cell| decide(cell, position));
+                    .map_or(Decision::Expand, |cell| decide(&cell, position));
                 decision == Decision::Expand
             })?;
             let step = next.and_then(|next| match next {
@@ -590,7 +590,7 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> 
                         .ok_or(Error::Walk(WalkError::Overflow))?;
                     let color = self.turtle.state.color;
                     self.turtle
-                        .pass(cell)
+                        .pass(&cell)
                         .ok_or(Error::Walk(WalkError::Overflow))?;
                     self.segments = self.segments.saturating_add(cell.segments);
                     self.walker.account(cell.symbols, cell.depth);
