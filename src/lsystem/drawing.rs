@@ -368,6 +368,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 pub(crate) use crate::error::only_target_errors;
 
 /// The pixel a point of a drawing pass (whose turtle works in pixels) lands on.
+#[inline(always)]
 pub(crate) fn pixel_of(orientation: Orientation, p: TurtlePoint) -> Point {
     let (x, y) = orientation.to_screen((p.x, p.y));
     Point::new(x.round_to_i32(), y.round_to_i32())
