@@ -262,12 +262,13 @@ impl<'c> Table<'c> {
             let (cos, sin) = direction(grammar, cycle, h);
             vectors.push((step.mul_q30(cos), step.mul_q30(sin))).ok()?;
         }
+        // The symbols with rules, in the order of their dense indices.
+        let mut ruled: Vec<u8, 128> = Vec::new();
         let mut dense = [NONE; 128];
-        let mut count = 0u8;
         for symbol in 0..128u8 {
             if grammar.first_rule(symbol).is_some() {
-                *dense.get_mut(usize::from(symbol))? = count;
-                count += 1;
+                *dense.get_mut(usize::from(symbol))? = u8::try_from(ruled.len()).ok()?;
+                ruled.push(symbol).ok()?;
             }
         }
         let context = Context {
@@ -279,13 +280,7 @@ impl<'c> Table<'c> {
         };
         // Fill level by level: a cell at level m reads only cells at level m - 1.
         for m in 1..=order {
-            for symbol in 0..128u8 {
-                let Some(&index) = dense.get(usize::from(symbol)) else {
-                    continue;
-                };
-                if index == NONE {
-                    continue;
-                }
+            for (index, &symbol) in (0u8..).zip(&ruled) {
                 for heading in 0..layout.stored {
                     for reversed in [false, true].into_iter().take(usize::from(layout.senses)) {
                         let summary = context
