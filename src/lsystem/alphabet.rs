@@ -132,7 +132,7 @@ impl Dialect {
         at: Location,
     ) -> Result<Command, Error> {
         if !self.takes_number(token.symbol) {
-            return Ok(self.plain_command(token.symbol, extra_draw));
+            return Ok(self.plain(token.symbol, extra_draw).command());
         }
         Ok(match token.symbol {
             b'\\' => Command::FreeLeft(degrees(token, at)?),
@@ -145,33 +145,79 @@ impl Dialect {
     }
 
     /// What a symbol that takes no number makes the turtle do.
-    #[inline(always)]
-    pub(crate) fn plain_command(self, symbol: u8, extra_draw: SymbolSet) -> Command {
+    pub(crate) fn plain(self, symbol: u8, extra_draw: SymbolSet) -> Plain {
+        let listed = self.commands().iter().find(|&&(s, _)| s == symbol);
+        match listed {
+            Some(&(_, plain)) => plain,
+            // Extra drawing symbols (ABOP's) draw, unless they are commands.
+            None if self == Self::Abop && extra_draw.contains(symbol) => Plain::Draw,
+            None => Plain::Nothing,
+        }
+    }
+
+    /// The symbols that take no number and do something, and what they do (any other
+    /// symbol does nothing, but for ABOP's extra drawing symbols).
+    pub(crate) const fn commands(self) -> &'static [(u8, Plain)] {
         match self {
-            Self::Fractint => match symbol {
-                b'f' => Command::Draw,
-                b'g' => Command::Move,
-                b'd' => Command::DrawFree,
-                b'm' => Command::MoveFree,
-                b'+' => Command::Left,
-                b'-' => Command::Right,
-                b'|' => Command::Around,
-                b'!' => Command::Reverse,
-                b'[' => Command::Push,
-                b']' => Command::Pop,
-                _ => Command::Nothing,
-            },
-            Self::Abop => match symbol {
-                b'F' => Command::Draw,
-                b'f' => Command::Move,
-                b'+' => Command::Left,
-                b'-' => Command::Right,
-                b'|' => Command::Around,
-                b'[' => Command::Push,
-                b']' => Command::Pop,
-                _ if extra_draw.contains(symbol) => Command::Draw,
-                _ => Command::Nothing,
-            },
+            Self::Fractint => &[
+                (b'f', Plain::Draw),
+                (b'g', Plain::Move),
+                (b'd', Plain::DrawFree),
+                (b'm', Plain::MoveFree),
+                (b'+', Plain::Left),
+                (b'-', Plain::Right),
+                (b'|', Plain::Around),
+                (b'!', Plain::Reverse),
+                (b'[', Plain::Push),
+                (b']', Plain::Pop),
+            ],
+            Self::Abop => &[
+                (b'F', Plain::Draw),
+                (b'f', Plain::Move),
+                (b'+', Plain::Left),
+                (b'-', Plain::Right),
+                (b'|', Plain::Around),
+                (b'[', Plain::Push),
+                (b']', Plain::Pop),
+            ],
+        }
+    }
+}
+
+/// A command that takes no number, in a byte: the grammar keeps one for every symbol, so
+/// reading what a symbol does is one load, whatever the dialect.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) enum Plain {
+    #[default]
+    Nothing,
+    Draw,
+    Move,
+    DrawFree,
+    MoveFree,
+    Left,
+    Right,
+    Around,
+    Reverse,
+    Push,
+    Pop,
+}
+
+impl Plain {
+    /// The command.
+    #[inline(always)]
+    pub(crate) const fn command(self) -> Command {
+        match self {
+            Self::Nothing => Command::Nothing,
+            Self::Draw => Command::Draw,
+            Self::Move => Command::Move,
+            Self::DrawFree => Command::DrawFree,
+            Self::MoveFree => Command::MoveFree,
+            Self::Left => Command::Left,
+            Self::Right => Command::Right,
+            Self::Around => Command::Around,
+            Self::Reverse => Command::Reverse,
+            Self::Push => Command::Push,
+            Self::Pop => Command::Pop,
         }
     }
 }

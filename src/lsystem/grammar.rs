@@ -8,7 +8,7 @@
 
 use heapless::Vec;
 
-use super::alphabet::{Command, Dialect, SymbolSet};
+use super::alphabet::{Command, Dialect, Plain, SymbolSet};
 use super::walker::{pick, DerivedSymbol};
 use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
@@ -53,8 +53,9 @@ pub(crate) struct Rule {
 ///
 /// Worst-case RAM: the ops ([`MAX_SYMBOLS`] bytes), the numeric commands
 /// ([`MAX_NUMERIC_COMMANDS`] × 16 bytes), [`MAX_RULES`] rule spans (5 bytes each), a
-/// 128-byte lookup table and the sine/cosine table for up to `MAX_ANGLE_DIVISIONS / 2 + 1`
-/// headings (264 bytes): about 1.7 KiB. On a small MCU, build it in place
+/// 128-byte rule lookup table, a 128-byte table of what each symbol does, and the
+/// sine/cosine table for up to `MAX_ANGLE_DIVISIONS / 2 + 1` headings (264 bytes): about
+/// 1.9 KiB. On a small MCU, build it in place
 /// ([`add_rule`](Self::add_rule), [`add_draw_symbols`](Self::add_draw_symbols)): each move
 /// of a grammar is a copy on the stack.
 #[derive(Debug, Clone)]
@@ -69,6 +70,8 @@ pub struct Grammar<'a> {
     /// First rule line for each ASCII symbol.
     first: [u8; 128],
     extra_draw: SymbolSet,
+    /// What each ASCII symbol does (for this dialect and extra drawing symbols).
+    plain: [Plain; 128],
     headings: Headings,
     /// Seeds the choices among stochastic productions.
     seed: u32,
@@ -100,9 +103,11 @@ impl<'a> Grammar<'a> {
             rules: Vec::new(),
             first: [NO_RULE; 128],
             extra_draw: SymbolSet::default(),
+            plain: [Plain::Nothing; 128],
             headings,
             seed: 0,
         };
+        grammar.decode_plain();
         grammar.axiom = grammar.compile(axiom.as_bytes(), at)?;
         Ok(grammar)
     }
@@ -263,8 +268,20 @@ impl<'a> Grammar<'a> {
                 .filter(u8::is_ascii)
                 .ok_or(Error::Read(ReadError::NonAsciiSymbol { at }))?;
             self.extra_draw.insert(byte);
+            if let Some(plain) = self.plain.get_mut(usize::from(byte)) {
+                *plain = self.dialect.plain(byte, self.extra_draw);
+            }
         }
         Ok(())
+    }
+
+    /// Fills the table of what each symbol does: the dialect's commands, nothing else.
+    fn decode_plain(&mut self) {
+        for &(symbol, plain) in self.dialect.commands() {
+            if let Some(entry) = self.plain.get_mut(usize::from(symbol)) {
+                *entry = plain;
+            }
+        }
     }
 
     /// The notation this grammar follows.
@@ -490,7 +507,11 @@ impl<'a> Grammar<'a> {
                 .copied()
                 .unwrap_or(Command::Nothing)
         } else {
-            self.dialect.plain_command(op, self.extra_draw)
+            self.plain
+                .get(usize::from(op))
+                .copied()
+                .unwrap_or_default()
+                .command()
         }
     }
 
