@@ -51,6 +51,51 @@ pub(crate) struct Rule {
 
 /// An L-system: axiom, rules and angle, compiled from text and checked.
 ///
+/// The compiled symbols: a whole array, so that reading one at a position a walk keeps in
+/// range needs no bounds check (a position is masked to the array, a power of two long).
+#[derive(Debug, Clone)]
+struct Ops {
+    bytes: [u8; MAX_SYMBOLS],
+    len: usize,
+}
+
+impl Ops {
+    const EMPTY: Self = Self {
+        bytes: [0; MAX_SYMBOLS],
+        len: 0,
+    };
+
+    const fn len(&self) -> usize {
+        self.len
+    }
+
+    fn as_slice(&self) -> &[u8] {
+        self.bytes.get(..self.len).unwrap_or_default()
+    }
+
+    /// The op at `index`, which the caller keeps below `len` (the walk's frames do: they
+    /// hold spans of compiled bodies).
+    #[inline(always)]
+    fn at(&self, index: u16) -> u8 {
+        const _: () = assert!(MAX_SYMBOLS.is_power_of_two());
+        self.bytes
+            .get(usize::from(index) % MAX_SYMBOLS)
+            .copied()
+            .unwrap_or(0)
+    }
+
+    fn push(&mut self, op: u8) -> Result<(), ()> {
+        let slot = self.bytes.get_mut(self.len).ok_or(())?;
+        *slot = op;
+        self.len += 1;
+        Ok(())
+    }
+
+    fn truncate(&mut self, len: usize) {
+        self.len = self.len.min(len);
+    }
+}
+
 /// Worst-case RAM: the ops ([`MAX_SYMBOLS`] bytes), the numeric commands
 /// ([`MAX_NUMERIC_COMMANDS`] × 16 bytes), [`MAX_RULES`] rule spans (5 bytes each), a
 /// 128-byte rule lookup table, a 128-byte table of what each symbol does, and the
@@ -63,7 +108,7 @@ pub struct Grammar<'a> {
     dialect: Dialect,
     axiom_text: &'a str,
     angle: Angle,
-    ops: Vec<u8, MAX_SYMBOLS>,
+    ops: Ops,
     numeric: Vec<Command, MAX_NUMERIC_COMMANDS>,
     axiom: Span,
     rules: Vec<Rule, MAX_RULES>,
@@ -97,7 +142,7 @@ impl<'a> Grammar<'a> {
             dialect,
             axiom_text: axiom,
             angle,
-            ops: Vec::new(),
+            ops: Ops::EMPTY,
             numeric: Vec::new(),
             axiom: Span::default(),
             rules: Vec::new(),
@@ -313,6 +358,7 @@ impl<'a> Grammar<'a> {
     #[inline]
     pub(crate) fn ops(&self, span: Span) -> &[u8] {
         self.ops
+            .as_slice()
             .get(usize::from(span.start)..usize::from(span.end))
             .unwrap_or_default()
     }
@@ -337,7 +383,7 @@ impl<'a> Grammar<'a> {
     /// The op at `index` of all the ops (a walk's frames keep in-range positions).
     #[inline(always)]
     pub(crate) fn op(&self, index: u16) -> u8 {
-        self.ops.get(usize::from(index)).copied().unwrap_or(0)
+        self.ops.at(index)
     }
 
     #[inline]
@@ -384,7 +430,7 @@ impl<'a> Grammar<'a> {
 
     /// Every op of the axiom and the rules.
     pub(crate) fn all_ops(&self) -> &[u8] {
-        &self.ops
+        self.ops.as_slice()
     }
 
     /// The first rule line for a (normalized) symbol.
