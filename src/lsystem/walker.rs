@@ -14,7 +14,7 @@ use core::fmt;
 
 use heapless::Vec;
 
-use super::grammar::{Grammar, Span, NUMERIC};
+use super::grammar::{Grammar, Span};
 use crate::error::{Error, WalkError};
 use crate::math::decimal::write_four_decimals;
 use crate::math::Real;
@@ -292,11 +292,11 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                 })));
             }
             let at = top.position;
-            let parent = top.key;
             let op = self.grammar.op(at);
             top.position += 1;
             let level = u32::try_from(depth - 1).unwrap_or(u32::MAX);
-            if level < self.order && op < NUMERIC {
+            // Numeric ops (128 and up) have no rule: `first_rule` says so.
+            if level < self.order {
                 if let Some(first) = self.grammar.first_rule(op) {
                     let left = self.order - level;
                     if !expand(op, left) {
@@ -304,7 +304,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
                     }
                     // Deterministic rules need no key: three multiplies an expansion saved.
                     let key = if self.stochastic {
-                        child_key(parent, at)
+                        child_key(top.key, at)
                     } else {
                         0
                     };
