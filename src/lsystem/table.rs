@@ -434,22 +434,17 @@ impl Run<'_, '_, '_> {
 
     /// `symbol` expanded `m` ≥ 1 times: its rule lines, each op with `m - 1` left.
     fn expansion(&self, symbol: u8, m: u32, heading: u16, reversed: bool) -> Option<Summary> {
-        let mut line = self.context.grammar.first_rule(symbol);
-        let mut total: Option<Summary> = None;
+        let grammar = self.context.grammar;
+        let first = grammar.first_rule(symbol)?;
+        let ops = |index: u8| grammar.rule(index).map(|rule| grammar.ops(rule.body));
+        let mut total = self.body(ops(first)?, m - 1, heading, reversed)?;
+        // Fractint's repeated lines go on from where the last one ended.
+        let mut line = grammar.next_line(first);
         while let Some(index) = line {
-            let rule = self.context.grammar.rule(index)?;
-            let ops = self.context.grammar.ops(rule.body);
-            match &mut total {
-                // Fractint's repeated lines go on from where the last one ended.
-                Some(total) => {
-                    let part = self.body(ops, m - 1, total.heading, total.reversed)?;
-                    total.append(&part)?;
-                }
-                None => total = Some(self.body(ops, m - 1, heading, reversed)?),
-            }
-            line = self.context.grammar.next_line(index);
+            let part = self.body(ops(index)?, m - 1, total.heading, total.reversed)?;
+            total.append(&part)?;
+            line = grammar.next_line(index);
         }
-        let mut total = total?;
         // The expansion's own frame.
         total.depth += 1;
         Some(total)
