@@ -137,14 +137,7 @@ pub(crate) struct Summary {
 /// How many cells a table for `grammar` at `order` needs, or `None` if the table does not
 /// apply to it (see the module docs).
 pub fn cells_needed(grammar: &Grammar<'_>, order: u32) -> Option<usize> {
-    let stored = usize::from(stored_headings(grammar)?);
-    let symbols = (0..128u8)
-        .filter(|&s| grammar.first_rule(s).is_some())
-        .count();
-    symbols
-        .checked_mul(usize::try_from(order).ok()?)?
-        .checked_mul(stored)?
-        .checked_mul(usize::from(senses(grammar)?))
+    Layout::of(grammar, order)?.cells(grammar)
 }
 
 /// The turtle's direction for heading `h` of `cycle` (Q30): the table for `Angle n`, or
@@ -245,17 +238,10 @@ impl<'c> Table<'c> {
         heading: u16,
         cells: &'c mut [Cell],
     ) -> Option<Self> {
-        let needed = cells_needed(grammar, order)?;
-        let cells = cells.get_mut(..needed)?;
-        let headings = grammar.headings();
-        let cycle = headings.cycle()?;
-        let divisions = cycle.count;
-        let layout = Layout {
-            order,
-            divisions,
-            stored: stored_headings(grammar)?,
-            senses: senses(grammar)?,
-        };
+        let layout = Layout::of(grammar, order)?;
+        let cells = cells.get_mut(..layout.cells(grammar)?)?;
+        let cycle = grammar.headings().cycle()?;
+        let divisions = layout.divisions;
         let mut vectors: Vec<(Real, Real), { crate::math::MAX_ANGLE_DIVISIONS as usize }> =
             Vec::new();
         for h in 0..divisions {
@@ -385,6 +371,27 @@ struct Layout {
 }
 
 impl Layout {
+    /// The layout of `grammar`'s table at `order`; `None` where the table does not apply.
+    fn of(grammar: &Grammar<'_>, order: u32) -> Option<Self> {
+        Some(Self {
+            order,
+            divisions: grammar.headings().cycle()?.count,
+            stored: stored_headings(grammar)?,
+            senses: senses(grammar)?,
+        })
+    }
+
+    /// How many cells it has.
+    fn cells(self, grammar: &Grammar<'_>) -> Option<usize> {
+        let symbols = (0..128u8)
+            .filter(|&s| grammar.first_rule(s).is_some())
+            .count();
+        symbols
+            .checked_mul(usize::try_from(self.order).ok()?)?
+            .checked_mul(usize::from(self.stored))?
+            .checked_mul(usize::from(self.senses))
+    }
+
     /// Where the cell of the symbol with dense index `dense`, expanded `m` times from
     /// `heading` and `reversed`, is; `None` outside the table.
     fn index(self, dense: u8, m: u32, heading: u16, reversed: bool) -> Option<usize> {
