@@ -22,9 +22,16 @@ pub(crate) const fn sin_cos(numerator: u32, denominator: u32) -> (i32, i32) {
     // The angle from the nearest multiple of π/2, in [0, π/4], as Q62 radians:
     // ⌊π/4 · w / d⌋ = q·w + ⌊r·w / d⌋ for π/4 = q·d + r (r·w < d² and q·w ≤ π/4 fit 64 bits).
     let within = if octant & 1 == 0 { rest } else { d - rest };
-    let (q, r) = (FRAC_PI_4_Q62 as u64 / d, FRAC_PI_4_Q62 as u64 % d);
-    let x = (q * within + r * within / d) as i128;
-    let (c, s) = octant_cos_sin(x);
+    // 30° and 45° from an axis (the headings of Angle 6, 8, 12, ...) are the constants the
+    // series sums to there (tested): no series.
+    let (c, s) = if 3 * within == 2 * d {
+        (COS_30_Q30, 1 << 29)
+    } else if within == d {
+        (SQRT_HALF_Q30, SQRT_HALF_Q30)
+    } else {
+        let (q, r) = (FRAC_PI_4_Q62 as u64 / d, FRAC_PI_4_Q62 as u64 % d);
+        octant_cos_sin((q * within + r * within / d) as i128)
+    };
     match octant {
         0 => (c, s),
         1 => (s, c),
@@ -36,6 +43,12 @@ pub(crate) const fn sin_cos(numerator: u32, denominator: u32) -> (i32, i32) {
         _ => (c, -s),
     }
 }
+
+/// cos 30° = √3/2 in Q30, rounded to nearest (929,887,696.69...).
+const COS_30_Q30: i32 = 929_887_697;
+
+/// √2/2 in Q30, rounded to nearest (759,250,124.994...).
+const SQRT_HALF_Q30: i32 = 759_250_125;
 
 /// Cosine and sine of `x` in [0, π/4] (Q62 radians), rounded to Q30.
 const fn octant_cos_sin(x: i128) -> (i32, i32) {
@@ -199,6 +212,15 @@ mod tests {
         // cos 60° and sin 30° are exactly ½.
         assert_eq!(sin_cos(1, 6), (1 << 29, sin_cos(1, 6).1));
         assert_eq!(sin_cos(1, 12).1, 1 << 29);
+    }
+
+    /// The constants `sin_cos` uses at 30° and 45° from an axis are what the series sums to
+    /// there.
+    #[test]
+    fn special_angles_are_the_series_sums() {
+        let x = |w: i128, d: i128| FRAC_PI_4_Q62 * w / d;
+        assert_eq!(octant_cos_sin(x(2, 3)), (COS_30_Q30, 1 << 29));
+        assert_eq!(octant_cos_sin(x(1, 1)), (SQRT_HALF_Q30, SQRT_HALF_Q30));
     }
 
     /// Headings a half turn apart from each other's mirror (θ and π - θ) have the same sine
