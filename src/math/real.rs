@@ -104,16 +104,40 @@ impl Real {
             .map(Self::from_bits)
     }
 
-    /// Checked division, rounded to nearest; `None` on division by zero or overflow.
+    /// Checked division, rounded to nearest (halves away from zero); `None` on division by
+    /// zero or overflow. In 64-bit arithmetic (a 128-bit division is a long library call on
+    /// Cortex-M): |a|·2³² = (|a| div d)·d·2³² + (|a| mod d)·2³², and the second part's 32
+    /// quotient bits come one at a time (the remainder stays below d ≤ 2⁶³, so doubling it
+    /// fits).
     pub fn checked_div(self, other: Self) -> Option<Self> {
-        if other.to_bits() == 0 {
+        let d = other.to_bits().unsigned_abs();
+        if d == 0 {
             return None;
         }
-        let quotient = div_round(
-            i128::from(self.to_bits()) << 32,
-            i128::from(other.to_bits()),
-        );
-        i64::try_from(quotient).ok().map(Self::from_bits)
+        let a = self.to_bits().unsigned_abs();
+        let (whole, mut rest) = (a / d, a % d);
+        if whole >> 32 != 0 {
+            return None;
+        }
+        let mut low = 0u64;
+        for _ in 0..32 {
+            rest <<= 1;
+            low <<= 1;
+            if rest >= d {
+                rest -= d;
+                low |= 1;
+            }
+        }
+        // Round: the remainder and half the divisor (both below d) reach d at most once.
+        let up = u64::from(rest >= d - d / 2);
+        let magnitude = ((whole << 32) | low).checked_add(up)?;
+        let negative = (self.to_bits() < 0) != (other.to_bits() < 0);
+        let bits = if negative {
+            0i64.checked_sub_unsigned(magnitude)?
+        } else {
+            i64::try_from(magnitude).ok()?
+        };
+        Some(Self::from_bits(bits))
     }
 
     /// The square root of a non-negative value (`None` for negatives), rounded down.
@@ -281,6 +305,51 @@ mod tests {
                 assert_eq!(Real::from_bits(v).mul_q30(f).to_bits(), wide, "{v} × {f}");
             }
         }
+    }
+
+    /// Division in 64 bits against the 128-bit rounded division, at the edges and over
+    /// random values.
+    #[test]
+    fn divides_as_the_wide_division_does() {
+        use proptest::prelude::*;
+        let wide = |a: i64, b: i64| {
+            (b != 0)
+                .then(|| div_round(i128::from(a) << 32, i128::from(b)))
+                .and_then(|q| i64::try_from(q).ok())
+        };
+        let edges = [
+            0,
+            1,
+            -1,
+            2,
+            3,
+            (1 << 31) - 1,
+            1 << 31,
+            1 << 32,
+            (1 << 32) + 1,
+            3 << 31,
+            i64::from(u32::MAX),
+            i64::MAX,
+            i64::MIN,
+            i64::MIN + 1,
+            i64::MAX / 3,
+            -(1 << 40),
+        ];
+        for a in edges {
+            for b in edges {
+                let got = Real::from_bits(a).checked_div(Real::from_bits(b));
+                assert_eq!(got.map(Real::to_bits), wide(a, b), "{a} / {b}");
+            }
+        }
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let value = prop_oneof![any::<i64>(), (-1i64 << 40..1i64 << 40), (-1000i64..1000)];
+        runner
+            .run(&(value.clone(), value), |(a, b)| {
+                let got = Real::from_bits(a).checked_div(Real::from_bits(b));
+                prop_assert_eq!(got.map(Real::to_bits), wide(a, b));
+                Ok(())
+            })
+            .unwrap();
     }
 
     #[test]
