@@ -421,21 +421,34 @@ pub(crate) fn pixel_box(
 /// that a line going on from there neither rounds its start again nor draws its first
 /// pixel twice, and a step that stays within that pixel (a picture finer than its pixels)
 /// draws nothing at no cost.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Pen {
+/// Single pixels it draws one after another along a row or column go out as one run
+/// (see [`raster::draw_line_on`]); [`finish`](Self::finish) sends the last.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Pen<C> {
     point: Option<TurtlePoint>,
     pixel: Option<Point>,
+    run: raster::PendingRun<C>,
 }
 
-impl Pen {
+impl<C> Default for Pen<C> {
+    fn default() -> Self {
+        Self {
+            point: None,
+            pixel: None,
+            run: raster::PendingRun::default(),
+        }
+    }
+}
+
+impl<C: PixelColor> Pen<C> {
     /// Draws one segment in pixels with `color`.
     #[inline(always)]
-    pub(crate) fn draw<D: DrawTarget>(
+    pub(crate) fn draw<D: DrawTarget<Color = C>>(
         &mut self,
         target: &mut D,
         orientation: Orientation,
         segment: super::turtle::Segment,
-        color: D::Color,
+        color: C,
         clip: &Rectangle,
     ) -> Result<(), D::Error> {
         let from = match (self.point, self.pixel) {
@@ -445,12 +458,30 @@ impl Pen {
         let to = pixel_of(orientation, segment.end);
         let continuing = self.pixel == Some(from);
         (self.point, self.pixel) = (Some(segment.end), Some(to));
-        raster::draw_line_on(target, from, to, continuing, color, clip)
+        raster::draw_line_on(target, &mut self.run, from, to, continuing, color, clip)
     }
 
-    /// A dot was drawn at `pixel` (the turtle is elsewhere).
-    pub(crate) fn dotted(&mut self, pixel: Point) {
+    /// Draws a dot at `pixel` (the turtle is elsewhere).
+    pub(crate) fn dot<D: DrawTarget<Color = C>>(
+        &mut self,
+        target: &mut D,
+        pixel: Point,
+        color: C,
+        clip: &Rectangle,
+    ) -> Result<(), D::Error> {
         (self.point, self.pixel) = (None, Some(pixel));
+        if clip.contains(pixel) {
+            self.run.add(target, pixel, color)?;
+        }
+        Ok(())
+    }
+
+    /// Sends what is still pending: call it once drawing is done.
+    pub(crate) fn finish<D: DrawTarget<Color = C>>(
+        &mut self,
+        target: &mut D,
+    ) -> Result<(), D::Error> {
+        self.run.send(target)
     }
 }
 
@@ -663,12 +694,8 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
                     Drawn::Dot(at, color) => {
                         let pixel = self.system.pixel_of(at);
                         let color = self.palette.color(u16::from(color), u16::MAX);
-                        if clip.contains(pixel) {
-                            target
-                                .fill_solid(&Rectangle::new(pixel, Size::new(1, 1)), color)
-                                .map_err(DrawError::Target)?;
-                        }
-                        pen.dotted(pixel);
+                        pen.dot(target, pixel, color, &clip)
+                            .map_err(DrawError::Target)?;
                     }
                 }
             }
@@ -676,6 +703,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
             segments
                 .for_each_segment(|segment| self.draw_segment(target, segment, &mut pen, &clip))?;
         }
+        pen.finish(target).map_err(DrawError::Target)?;
         Ok(segments.stats())
     }
 
@@ -685,7 +713,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
         &self,
         target: &mut D,
         segment: super::turtle::Segment,
-        pen: &mut Pen,
+        pen: &mut Pen<P::Color>,
         clip: &Rectangle,
     ) -> Result<(), DrawError<D::Error>>
     where

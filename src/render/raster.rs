@@ -279,12 +279,16 @@ pub(crate) fn draw_line<D: DrawTarget>(
 }
 
 /// [`draw_line`], with a line that goes on from a neighbouring pixel (its first pixel
-/// skipped) drawn in line: only its end pixel is new, the one run `draw_line` would send.
-/// Pictures finer than their pixels are mostly such steps (the snowflake on the OLED: two
-/// in three of its segments), and each saved the line's set-up and a call.
+/// skipped) drawn in line: only its end pixel is new, and it joins `run`, the pixels such
+/// steps drew before it, where it extends that run along its row or column in the same
+/// colour. Pictures finer than their pixels are mostly such steps (the snowflake on the
+/// OLED: two in three of its segments): each saves the line's set-up, and a joined pixel
+/// an address window on a display. A longer line sends the run first, so pixels only
+/// change order within a run of one colour: the picture is the same.
 #[inline(always)]
 pub(crate) fn draw_line_on<D: DrawTarget>(
     target: &mut D,
+    run: &mut PendingRun<D::Color>,
     from: Point,
     to: Point,
     skip_first: bool,
@@ -293,11 +297,84 @@ pub(crate) fn draw_line_on<D: DrawTarget>(
 ) -> Result<(), D::Error> {
     if skip_first && from.x.abs_diff(to.x) <= 1 && from.y.abs_diff(to.y) <= 1 {
         if from != to && clip.contains(to) {
-            target.fill_solid(&Rectangle::new(to, Size::new(1, 1)), color)?;
+            run.add(target, to, color)?;
         }
         return Ok(());
     }
+    run.send(target)?;
     draw_line(target, from, to, skip_first, color, clip)
+}
+
+/// Pixels drawn one after another, not yet sent: a run along a row or a column, in one
+/// colour. Whoever draws through it sends it ([`send`](Self::send)) before drawing
+/// anything else, and at the end.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PendingRun<C> {
+    pending: Option<(Rectangle, C)>,
+}
+
+impl<C> Default for PendingRun<C> {
+    fn default() -> Self {
+        Self { pending: None }
+    }
+}
+
+impl<C: PixelColor> PendingRun<C> {
+    /// Adds pixel `p`: at either end of the run, along its row or column, in its colour,
+    /// it extends the run; otherwise the run is sent and `p` starts the next.
+    #[inline(always)]
+    pub(crate) fn add<D: DrawTarget<Color = C>>(
+        &mut self,
+        target: &mut D,
+        p: Point,
+        color: C,
+    ) -> Result<(), D::Error> {
+        if let Some((run, run_color)) = &mut self.pending {
+            if *run_color == color {
+                if let Some(joined) = joined(*run, p) {
+                    *run = joined;
+                    return Ok(());
+                }
+            }
+        }
+        self.send(target)?;
+        self.pending = Some((Rectangle::new(p, Size::new(1, 1)), color));
+        Ok(())
+    }
+
+    /// Sends the pending run, if any.
+    #[inline(always)]
+    pub(crate) fn send<D: DrawTarget<Color = C>>(
+        &mut self,
+        target: &mut D,
+    ) -> Result<(), D::Error> {
+        match self.pending.take() {
+            Some((run, color)) => target.fill_solid(&run, color),
+            None => Ok(()),
+        }
+    }
+}
+
+/// `run` with `p` added at one of its ends, along its row or column (either, for a single
+/// pixel); `None` where `p` is not there.
+#[inline(always)]
+fn joined(run: Rectangle, p: Point) -> Option<Rectangle> {
+    let (top_left, size) = (run.top_left, run.size);
+    let along_row = size.height == 1 && p.y == top_left.y;
+    let along_column = size.width == 1 && p.x == top_left.x;
+    // Widths and heights are under 2^31 (a run stays inside a clip of i32 pixels).
+    let (width, height) = (size.width as i32, size.height as i32);
+    if along_row && p.x == top_left.x + width {
+        Some(Rectangle::new(top_left, Size::new(size.width + 1, 1)))
+    } else if along_row && p.x == top_left.x - 1 {
+        Some(Rectangle::new(p, Size::new(size.width + 1, 1)))
+    } else if along_column && p.y == top_left.y + height {
+        Some(Rectangle::new(top_left, Size::new(1, size.height + 1)))
+    } else if along_column && p.y == top_left.y - 1 {
+        Some(Rectangle::new(p, Size::new(1, size.height + 1)))
+    } else {
+        None
+    }
 }
 
 #[cfg(test)]
@@ -359,7 +436,10 @@ mod tests {
                             let (mut line, mut step) = (Calls::default(), Calls::default());
                             let on = BinaryColor::On;
                             let _ = draw_line(&mut line, from, to, skip_first, on, clip);
-                            let _ = draw_line_on(&mut step, from, to, skip_first, on, clip);
+                            let mut run = PendingRun::default();
+                            let _ =
+                                draw_line_on(&mut step, &mut run, from, to, skip_first, on, clip);
+                            let _ = run.send(&mut step);
                             let inside = |calls: &Calls| -> Vec<Rectangle> {
                                 calls
                                     .0
@@ -378,6 +458,84 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A 12×9 picture (the test's clip) that keeps the last colour sent to each pixel, and
+    /// every run sent.
+    struct Painted {
+        image: [[Option<embedded_graphics::pixelcolor::BinaryColor>; 16]; 16],
+        runs: Vec<Rectangle>,
+    }
+
+    impl OriginDimensions for Painted {
+        fn size(&self) -> Size {
+            Size::new(12, 9)
+        }
+    }
+
+    impl DrawTarget for Painted {
+        type Color = embedded_graphics::pixelcolor::BinaryColor;
+        type Error = core::convert::Infallible;
+
+        fn draw_iter<I: IntoIterator<Item = Pixel<Self::Color>>>(
+            &mut self,
+            pixels: I,
+        ) -> Result<(), Self::Error> {
+            for Pixel(p, c) in pixels {
+                self.fill_solid(&Rectangle::new(p, Size::new(1, 1)), c)?;
+            }
+            Ok(())
+        }
+
+        fn fill_solid(&mut self, area: &Rectangle, c: Self::Color) -> Result<(), Self::Error> {
+            self.runs.push(*area);
+            for p in area.intersection(&self.bounding_box()).points() {
+                self.image[p.y as usize][p.x as usize] = Some(c);
+            }
+            Ok(())
+        }
+    }
+
+    /// Steps joined into runs paint the same picture as each line sent alone (the last
+    /// colour sent to a pixel wins), over random walks of steps to neighbours and longer
+    /// lines in two colours, some of them leaving the clip; every run is one row or one
+    /// column, and there are no more of them than the lines alone send.
+    #[test]
+    fn joined_steps_paint_what_lines_paint() {
+        use embedded_graphics::pixelcolor::BinaryColor;
+        use proptest::prelude::*;
+        let clip = Rectangle::new(Point::new(0, 0), Size::new(12, 9));
+        let step = (-2i32..=2, -2i32..=2, any::<bool>(), any::<bool>());
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        runner
+            .run(&proptest::collection::vec(step, 1..80), |steps| {
+                let blank = || Painted {
+                    image: [[None; 16]; 16],
+                    runs: Vec::new(),
+                };
+                let (mut joined, mut single) = (blank(), blank());
+                let mut run = PendingRun::default();
+                let mut at = Point::new(5, 4);
+                for &(dx, dy, on, skip_first) in &steps {
+                    let to = at + Point::new(dx, dy);
+                    let color = if on {
+                        BinaryColor::On
+                    } else {
+                        BinaryColor::Off
+                    };
+                    let _ = draw_line(&mut single, at, to, skip_first, color, &clip);
+                    let _ = draw_line_on(&mut joined, &mut run, at, to, skip_first, color, &clip);
+                    at = to;
+                }
+                let _ = run.send(&mut joined);
+                prop_assert_eq!(joined.image, single.image);
+                prop_assert!(joined.runs.len() <= single.runs.len());
+                for r in &joined.runs {
+                    prop_assert!(r.size.width == 1 || r.size.height == 1, "{:?}", r);
+                }
+                Ok(())
+            })
+            .unwrap();
     }
 
     fn pixels(from: Point, to: Point, clip: &Rectangle) -> Vec<Point> {

@@ -380,6 +380,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
             pen.draw(target, self.system.orientation, segment, color, &clip)
                 .map_err(DrawError::Target)?;
         }
+        pen.finish(target).map_err(DrawError::Target)?;
         Ok(WalkStats {
             segments: segments.segments(),
             ..WalkStats::default()
