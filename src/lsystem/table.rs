@@ -291,11 +291,17 @@ impl<'c> Table<'c> {
         })
     }
 
-    /// The cell of `symbol` expanded `m` times (1..=order) from `heading` and `reversed`;
-    /// `None` for a symbol without a rule.
+    /// `f` of the cell of `symbol` expanded `m` times (1..=order) from `heading` and
+    /// `reversed`; `None` for a symbol without a rule. The kept cell itself where it is
+    /// the one asked for (no copy), else the kept one turned.
     #[inline]
-    pub(crate) fn cell(&self, symbol: u8, m: u32, heading: u16, reversed: bool) -> Option<Summary> {
-        lookup(
+    pub(crate) fn with_cell<R>(
+        &self,
+        (symbol, m): (u8, u32),
+        (heading, reversed): (u16, bool),
+        f: impl FnOnce(&Summary) -> R,
+    ) -> Option<R> {
+        let kept = lookup(
             self.cells,
             &self.dense,
             self.layout,
@@ -303,8 +309,8 @@ impl<'c> Table<'c> {
             m,
             heading,
             reversed,
-        )
-        .map(|kept| kept.with(|summary| *summary))
+        )?;
+        Some(kept.with(f))
     }
 
     /// The summary of the whole picture: the axiom with `order` expansions left, from the

@@ -546,6 +546,32 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
 }
 
 impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> {
+    /// Moves past an expansion the walk declined, summarised by `cell`, from `position`:
+    /// the dot to draw for it, if `decision` says so and it draws anything.
+    fn pass_declined(
+        &mut self,
+        cell: &Summary,
+        decision: Decision,
+        position: TurtlePoint,
+    ) -> Result<Option<Drawn>, Error> {
+        let color = self.turtle.state.color;
+        self.turtle
+            .pass(cell)
+            .ok_or(Error::Walk(WalkError::Overflow))?;
+        self.segments = self.segments.saturating_add(cell.segments);
+        self.walker.account(cell.symbols, cell.depth);
+        Ok(match (decision, cell.drawn) {
+            (Decision::Dot, Some(drawn)) => Some(Drawn::Dot(
+                TurtlePoint {
+                    x: position.x.checked_add(drawn.min.0).unwrap_or(position.x),
+                    y: position.y.checked_add(drawn.min.1).unwrap_or(position.y),
+                },
+                color,
+            )),
+            _ => None,
+        })
+    }
+
     /// The heading and sense of `!` the turtle has now (for table lookups): the division,
     /// or the free heading's index in its cycle.
     fn heading(&self) -> (u16, bool) {
@@ -575,8 +601,10 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> 
             let mut decision = Decision::Expand;
             let next = self.walker.next_with(|op, left| {
                 decision = table
-                    .cell(op, left, heading, reversed)
-                    .map_or(Decision::Expand, |cell| decide(&cell, position));
+                    .with_cell((op, left), (heading, reversed), |cell| {
+                        decide(cell, position)
+                    })
+                    .unwrap_or(Decision::Expand);
                 decision == Decision::Expand
             })?;
             let step = next.and_then(|next| match next {
@@ -584,27 +612,11 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> 
                     let command = self.walker.grammar().command(op);
                     Ok(self.turtle.execute(command)?.map(Drawn::Segment))
                 }
-                Next::Declined { op, left } => {
-                    let cell = table
-                        .cell(op, left, heading, reversed)
-                        .ok_or(Error::Walk(WalkError::Overflow))?;
-                    let color = self.turtle.state.color;
-                    self.turtle
-                        .pass(&cell)
-                        .ok_or(Error::Walk(WalkError::Overflow))?;
-                    self.segments = self.segments.saturating_add(cell.segments);
-                    self.walker.account(cell.symbols, cell.depth);
-                    Ok(match (decision, cell.drawn) {
-                        (Decision::Dot, Some(drawn)) => Some(Drawn::Dot(
-                            TurtlePoint {
-                                x: position.x.checked_add(drawn.min.0).unwrap_or(position.x),
-                                y: position.y.checked_add(drawn.min.1).unwrap_or(position.y),
-                            },
-                            color,
-                        )),
-                        _ => None,
+                Next::Declined { op, left } => table
+                    .with_cell((op, left), (heading, reversed), |cell| {
+                        self.pass_declined(cell, decision, position)
                     })
-                }
+                    .unwrap_or(Err(Error::Walk(WalkError::Overflow))),
             });
             match step {
                 Ok(None) => {}
