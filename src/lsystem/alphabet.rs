@@ -123,16 +123,12 @@ impl Dialect {
         Some((Token { symbol, argument }, end))
     }
 
-    /// What a token makes the turtle do. `extra_draw` is the set of extra drawing symbols
-    /// (ABOP only). Errors carry the column of the token within its body (`at`).
-    pub(crate) fn decode(
-        self,
-        token: Token<'_>,
-        extra_draw: SymbolSet,
-        at: Location,
-    ) -> Result<Command, Error> {
+    /// What a token makes the turtle do, extra drawing symbols aside (a grammar's table of
+    /// what each symbol does has those). Errors carry the column of the token within its
+    /// body (`at`).
+    pub(crate) fn decode(self, token: Token<'_>, at: Location) -> Result<Command, Error> {
         if !self.takes_number(token.symbol) {
-            return Ok(self.plain(token.symbol, extra_draw).command());
+            return Ok(self.plain(token.symbol).command());
         }
         Ok(match token.symbol {
             b'\\' => Command::FreeLeft(degrees(token, at)?),
@@ -144,14 +140,22 @@ impl Dialect {
         })
     }
 
-    /// What a symbol that takes no number makes the turtle do.
-    pub(crate) fn plain(self, symbol: u8, extra_draw: SymbolSet) -> Plain {
-        let listed = self.commands().iter().find(|&&(s, _)| s == symbol);
-        match listed {
-            Some(&(_, plain)) => plain,
-            // Extra drawing symbols (ABOP's) draw, unless they are commands.
-            None if self == Self::Abop && extra_draw.contains(symbol) => Plain::Draw,
-            None => Plain::Nothing,
+    /// What a symbol that takes no number makes the turtle do, unless it is an extra
+    /// drawing symbol (see [`extra_draw`](Self::extra_draw)).
+    pub(crate) fn plain(self, symbol: u8) -> Plain {
+        self.commands()
+            .iter()
+            .find(|&&(s, _)| s == symbol)
+            .map_or(Plain::Nothing, |&(_, plain)| plain)
+    }
+
+    /// What a symbol doing `plain` does once made an extra drawing symbol: ABOP's draw,
+    /// unless they are commands; Fractint ignores them (`F` and `D` draw there).
+    pub(crate) fn extra_draw(self, plain: Plain) -> Plain {
+        if self == Self::Abop && plain == Plain::Nothing {
+            Plain::Draw
+        } else {
+            plain
         }
     }
 
@@ -325,7 +329,7 @@ mod tests {
         let (token, _) = dialect
             .scan(text.as_bytes(), 0)
             .ok_or(Error::Read(ReadError::MissingAxiom))?;
-        dialect.decode(token, SymbolSet::default(), Location::column(1))
+        dialect.decode(token, Location::column(1))
     }
 
     #[test]

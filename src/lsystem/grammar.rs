@@ -8,7 +8,7 @@
 
 use heapless::Vec;
 
-use super::alphabet::{Command, Dialect, Plain, SymbolSet};
+use super::alphabet::{Command, Dialect, Plain};
 use super::walker::{pick, DerivedSymbol};
 use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
@@ -114,7 +114,6 @@ pub struct Grammar<'a> {
     rules: Vec<Rule, MAX_RULES>,
     /// First rule line for each ASCII symbol.
     first: [u8; 128],
-    extra_draw: SymbolSet,
     /// What each ASCII symbol does (for this dialect and extra drawing symbols).
     plain: [Plain; 128],
     headings: Headings,
@@ -147,7 +146,6 @@ impl<'a> Grammar<'a> {
             axiom: Span::default(),
             rules: Vec::new(),
             first: [NO_RULE; 128],
-            extra_draw: SymbolSet::default(),
             plain: [Plain::Nothing; 128],
             headings,
             seed: 0,
@@ -312,9 +310,8 @@ impl<'a> Grammar<'a> {
                 .ok()
                 .filter(u8::is_ascii)
                 .ok_or(Error::Read(ReadError::NonAsciiSymbol { at }))?;
-            self.extra_draw.insert(byte);
             if let Some(plain) = self.plain.get_mut(usize::from(byte)) {
-                *plain = self.dialect.plain(byte, self.extra_draw);
+                *plain = self.dialect.extra_draw(*plain);
             }
         }
         Ok(())
@@ -503,7 +500,7 @@ impl<'a> Grammar<'a> {
                 position = next;
                 continue;
             }
-            let command = self.dialect.decode(token, self.extra_draw, here)?;
+            let command = self.dialect.decode(token, here)?;
             let op = if self.dialect.takes_number(token.symbol) {
                 self.numeric_op(command, here)?
             } else {
