@@ -5,7 +5,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::alphabet::Command;
 use super::grammar::Grammar;
-use super::table::{Cell, Summary, Table};
+use super::table::{Cell, Extent, Summary, Table};
 use super::turtle::{Decision, Drawn, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
 use super::walker::{DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::error::{DrawError, Error, FitError, WalkError};
@@ -237,15 +237,9 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         else {
             return Ok(None);
         };
-        // What the sizing walk would have refused.
-        if usize::try_from(summary.nesting).map_or(true, |nesting| nesting > STACK) {
-            return Err(Error::Walk(WalkError::StackTooDeep { capacity: STACK }));
-        }
+        Self::check_nesting(&summary)?;
         Ok(Some(Sizing {
-            bounds: summary.drawn.map(|drawn| Bounds {
-                min: point(drawn.min),
-                max: point(drawn.max),
-            }),
+            bounds: summary.drawn.map(bounds),
             segments: summary.segments,
             symbols: summary.symbols,
             scalings: 0,
@@ -345,18 +339,22 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         if !(in_range(origin.0) && in_range(origin.1)) {
             return Ok(None);
         }
-        if usize::try_from(summary.nesting).map_or(true, |nesting| nesting > STACK) {
-            return Err(Error::Walk(WalkError::StackTooDeep { capacity: STACK }));
-        }
+        Self::check_nesting(summary)?;
         Ok(Some(
             summary
                 .drawn
                 .and_then(|drawn| drawn.offset(origin))
-                .map(|drawn| Bounds {
-                    min: point(drawn.min),
-                    max: point(drawn.max),
-                }),
+                .map(bounds),
         ))
+    }
+
+    /// What a walk of the picture `summary` sums up would refuse: branches nested deeper
+    /// than the turtle stack holds.
+    fn check_nesting(summary: &Summary) -> Result<(), Error> {
+        if usize::try_from(summary.nesting).map_or(true, |nesting| nesting > STACK) {
+            return Err(Error::Walk(WalkError::StackTooDeep { capacity: STACK }));
+        }
+        Ok(())
     }
 
     /// The pixel for a point of a drawing pass (whose turtle works in pixels).
@@ -421,6 +419,7 @@ pub(crate) fn pixel_box(
 /// that a line going on from there neither rounds its start again nor draws its first
 /// pixel twice, and a step that stays within that pixel (a picture finer than its pixels)
 /// draws nothing at no cost.
+///
 /// Single pixels it draws one after another along a row or column go out as one run
 /// (see [`raster::draw_line_on`]); [`finish`](Self::finish) sends the last.
 #[derive(Debug, Clone, Copy)]
@@ -629,6 +628,14 @@ fn predicted_box(
 /// A pair as a turtle point.
 fn point((x, y): (Real, Real)) -> TurtlePoint {
     TurtlePoint { x, y }
+}
+
+/// A table's box as turtle-space bounds.
+fn bounds(extent: Extent) -> Bounds {
+    Bounds {
+        min: point(extent.min),
+        max: point(extent.max),
+    }
 }
 
 /// The heading index the turtle starts with after `turns` turns (as `Turtle::new` turns).
