@@ -137,7 +137,10 @@ pub(crate) struct Summary {
 /// How many cells a table for `grammar` at `order` needs, or `None` if the table does not
 /// apply to it (see the module docs).
 pub fn cells_needed(grammar: &Grammar<'_>, order: u32) -> Option<usize> {
-    Layout::of(grammar, order)?.cells(grammar)
+    let ruled = (0..128u8)
+        .filter(|&s| grammar.first_rule(s).is_some())
+        .count();
+    Layout::of(grammar, order)?.cells(ruled)
 }
 
 /// The turtle's direction for heading `h` of `cycle` (Q30): the table for `Angle n`, or
@@ -239,15 +242,6 @@ impl<'c> Table<'c> {
         cells: &'c mut [Cell],
     ) -> Option<Self> {
         let layout = Layout::of(grammar, order)?;
-        let cells = cells.get_mut(..layout.cells(grammar)?)?;
-        let cycle = grammar.headings().cycle()?;
-        let divisions = layout.divisions;
-        let mut vectors: Vec<(Real, Real), { crate::math::MAX_ANGLE_DIVISIONS as usize }> =
-            Vec::new();
-        for h in 0..divisions {
-            let (cos, sin) = direction(grammar, cycle, h);
-            vectors.push((step.mul_q30(cos), step.mul_q30(sin))).ok()?;
-        }
         // The symbols with rules, in the order of their dense indices.
         let mut ruled: Vec<u8, 128> = Vec::new();
         let mut dense = [NONE; 128];
@@ -256,6 +250,14 @@ impl<'c> Table<'c> {
                 *dense.get_mut(usize::from(symbol))? = u8::try_from(ruled.len()).ok()?;
                 ruled.push(symbol).ok()?;
             }
+        }
+        let cells = cells.get_mut(..layout.cells(ruled.len())?)?;
+        let cycle = grammar.headings().cycle()?;
+        let mut vectors: Vec<(Real, Real), { crate::math::MAX_ANGLE_DIVISIONS as usize }> =
+            Vec::new();
+        for h in 0..layout.divisions {
+            let (cos, sin) = direction(grammar, cycle, h);
+            vectors.push((step.mul_q30(cos), step.mul_q30(sin))).ok()?;
         }
         let context = Context {
             dense: &dense,
@@ -387,11 +389,8 @@ impl Layout {
         })
     }
 
-    /// How many cells it has.
-    fn cells(self, grammar: &Grammar<'_>) -> Option<usize> {
-        let symbols = (0..128u8)
-            .filter(|&s| grammar.first_rule(s).is_some())
-            .count();
+    /// How many cells it has for `symbols` symbols with rules.
+    fn cells(self, symbols: usize) -> Option<usize> {
         symbols
             .checked_mul(usize::try_from(self.order).ok()?)?
             .checked_mul(usize::from(self.stored))?
