@@ -384,17 +384,21 @@ mod tests {
 
     use super::*;
 
-    /// Records each `fill_solid` call.
+    /// A 12×9 target that records every run sent (`fill_solid`, or a pixel drawn alone)
+    /// and keeps the last colour sent to each of its pixels.
     #[derive(Default)]
-    struct Calls(Vec<Rectangle>);
+    struct Recorded {
+        runs: Vec<Rectangle>,
+        image: [[Option<embedded_graphics::pixelcolor::BinaryColor>; 12]; 9],
+    }
 
-    impl OriginDimensions for Calls {
+    impl OriginDimensions for Recorded {
         fn size(&self) -> Size {
-            Size::new(64, 64)
+            Size::new(12, 9)
         }
     }
 
-    impl DrawTarget for Calls {
+    impl DrawTarget for Recorded {
         type Color = embedded_graphics::pixelcolor::BinaryColor;
         type Error = core::convert::Infallible;
 
@@ -402,14 +406,17 @@ mod tests {
             &mut self,
             pixels: I,
         ) -> Result<(), Self::Error> {
-            for Pixel(p, _) in pixels {
-                self.0.push(Rectangle::new(p, Size::new(1, 1)));
+            for Pixel(p, c) in pixels {
+                self.fill_solid(&Rectangle::new(p, Size::new(1, 1)), c)?;
             }
             Ok(())
         }
 
-        fn fill_solid(&mut self, area: &Rectangle, _: Self::Color) -> Result<(), Self::Error> {
-            self.0.push(*area);
+        fn fill_solid(&mut self, area: &Rectangle, c: Self::Color) -> Result<(), Self::Error> {
+            self.runs.push(*area);
+            for p in area.intersection(&self.bounding_box()).points() {
+                self.image[p.y as usize][p.x as usize] = Some(c);
+            }
             Ok(())
         }
     }
@@ -433,16 +440,16 @@ mod tests {
                     let from = Point::new(x, y);
                     for to in Rectangle::new(from - Point::new(2, 2), Size::new(5, 5)).points() {
                         for skip_first in [false, true] {
-                            let (mut line, mut step) = (Calls::default(), Calls::default());
+                            let (mut line, mut step) = (Recorded::default(), Recorded::default());
                             let on = BinaryColor::On;
                             let _ = draw_line(&mut line, from, to, skip_first, on, clip);
                             let mut run = PendingRun::default();
                             let _ =
                                 draw_line_on(&mut step, &mut run, from, to, skip_first, on, clip);
                             let _ = run.send(&mut step);
-                            let inside = |calls: &Calls| -> Vec<Rectangle> {
+                            let inside = |calls: &Recorded| -> Vec<Rectangle> {
                                 calls
-                                    .0
+                                    .runs
                                     .iter()
                                     .map(|run| run.intersection(clip))
                                     .filter(|run| !run.is_zero_sized())
@@ -451,48 +458,12 @@ mod tests {
                             let label = std::format!("{from:?} to {to:?}, {skip_first}, {clip:?}");
                             assert_eq!(inside(&line), inside(&step), "{label}");
                             if skip_first && (to - from).x.abs() <= 1 && (to - from).y.abs() <= 1 {
-                                assert_eq!(inside(&step), step.0, "{label}");
+                                assert_eq!(inside(&step), step.runs, "{label}");
                             }
                         }
                     }
                 }
             }
-        }
-    }
-
-    /// A 12×9 picture (the test's clip) that keeps the last colour sent to each pixel, and
-    /// every run sent.
-    struct Painted {
-        image: [[Option<embedded_graphics::pixelcolor::BinaryColor>; 16]; 16],
-        runs: Vec<Rectangle>,
-    }
-
-    impl OriginDimensions for Painted {
-        fn size(&self) -> Size {
-            Size::new(12, 9)
-        }
-    }
-
-    impl DrawTarget for Painted {
-        type Color = embedded_graphics::pixelcolor::BinaryColor;
-        type Error = core::convert::Infallible;
-
-        fn draw_iter<I: IntoIterator<Item = Pixel<Self::Color>>>(
-            &mut self,
-            pixels: I,
-        ) -> Result<(), Self::Error> {
-            for Pixel(p, c) in pixels {
-                self.fill_solid(&Rectangle::new(p, Size::new(1, 1)), c)?;
-            }
-            Ok(())
-        }
-
-        fn fill_solid(&mut self, area: &Rectangle, c: Self::Color) -> Result<(), Self::Error> {
-            self.runs.push(*area);
-            for p in area.intersection(&self.bounding_box()).points() {
-                self.image[p.y as usize][p.x as usize] = Some(c);
-            }
-            Ok(())
         }
     }
 
@@ -509,11 +480,7 @@ mod tests {
         let mut runner = proptest::test_runner::TestRunner::deterministic();
         runner
             .run(&proptest::collection::vec(step, 1..80), |steps| {
-                let blank = || Painted {
-                    image: [[None; 16]; 16],
-                    runs: Vec::new(),
-                };
-                let (mut joined, mut single) = (blank(), blank());
+                let (mut joined, mut single) = (Recorded::default(), Recorded::default());
                 let mut run = PendingRun::default();
                 let mut at = Point::new(5, 4);
                 for &(dx, dy, on, skip_first) in &steps {
