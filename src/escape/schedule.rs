@@ -501,19 +501,28 @@ impl<'r> Render<'r> {
         value
     }
 
-    /// Computes the border of `b`; its dwell if it has only one.
+    /// The border of `b`'s dwell if it has only one, computing it as far as it must: the
+    /// scan stops at the first other dwell, since the four blocks `b` is then split into
+    /// have its border as theirs (their scans, or a small block's whole computation,
+    /// compute the rest). The same cells are computed as by a whole scan.
     fn border(&mut self, b: Block) -> Option<u16> {
         let first = self.known(b.x0, b.y0);
-        let mut same = true;
-        for tx in b.x0..b.x1 + 1 {
-            same &= self.known(tx, b.y0) == first;
-            same &= self.known(tx, b.y1) == first;
+        for tx in b.x0 + 1..b.x1 + 1 {
+            if self.known(tx, b.y0) != first {
+                return None;
+            }
         }
-        for ty in b.y0 + 1..b.y1 {
-            same &= self.known(b.x0, ty) == first;
-            same &= self.known(b.x1, ty) == first;
+        for ty in b.y0 + 1..b.y1 + 1 {
+            if self.known(b.x1, ty) != first || self.known(b.x0, ty) != first {
+                return None;
+            }
         }
-        same.then_some(first)
+        for tx in b.x0 + 1..b.x1 {
+            if self.known(tx, b.y1) != first {
+                return None;
+            }
+        }
+        Some(first)
     }
 
     /// Mariani–Silver over the current tile, of size w×h: the tile's dwell if it is uniform.
@@ -541,8 +550,9 @@ impl<'r> Render<'r> {
                     }
                 }
             } else if bw < 4 || bh < 4 {
-                for ty in b.y0 + 1..b.y1 {
-                    for tx in b.x0 + 1..b.x1 {
+                // The whole block: its border's scan may have stopped early.
+                for ty in b.y0..b.y1 + 1 {
+                    for tx in b.x0..b.x1 + 1 {
                         self.known(tx, ty);
                     }
                 }
