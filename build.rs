@@ -2,7 +2,9 @@
 //! M0+, M1) and ARMv8-M Baseline (Cortex-M23). There a 64-bit product is a call to
 //! `__aeabi_lmul`, and `math::wide::mul_u32_wide` builds it from 16-bit halves instead. (Stable Rust
 //! has no `target_feature` cfg for this, so the target name decides.) The products are exact
-//! either way: results are bit-identical on every target.
+//! either way: results are bit-identical on every target. Likewise `tinyfractal_rounding_multiply`
+//! marks ARMv7E-M, whose `smmulr` and `smmlsr` round a product's high word in one
+//! instruction; elsewhere the same bits come from the low word's top bit.
 
 //!
 //! It also finds Fractint's corpus for the tests that read it (`TINYFRACTAL_CORPUS`, or
@@ -16,6 +18,7 @@ use std::path::PathBuf;
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_long_multiply)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_corpus)");
+    println!("cargo::rustc-check-cfg=cfg(tinyfractal_rounding_multiply)");
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-env-changed=TINYFRACTAL_CORPUS");
     println!("cargo:rerun-if-env-changed=CI");
@@ -38,5 +41,9 @@ fn main() {
     let target = env::var("TARGET").unwrap_or_default();
     if target.starts_with("thumbv6m") || target.starts_with("thumbv8m.base") {
         println!("cargo:rustc-cfg=tinyfractal_no_long_multiply");
+    }
+    // ARMv7E-M (Cortex-M4/M7) has the DSP extension's rounding high-word multiplies.
+    if target.starts_with("thumbv7em") {
+        println!("cargo:rustc-cfg=tinyfractal_rounding_multiply");
     }
 }

@@ -312,9 +312,10 @@ fn main() {
          Each view's dwells from every tier (`Algorithm::Exact`) and from a naive `f32` loop \
          (separate multiply and add), as the share identical to a double-double reference \
          (about 106 bits) at the same sample points. `zoom` is ⌈log₂(1/d)⌉ for the pixel \
-         spacing d, `iter` ⌈log₂(max-iter)⌉. The rule (`View::new`) must pick a tier with at \
-         least 99.9 % and no less than `f32`; *chosen* is what it picks; ✗ marks a view where \
-         it does not meet that.\n\n\
+         spacing d, `iter` ⌈log₂(max-iter)⌉. `Medium` rounds its products' high words for \
+         Julia sets and truncates them for the Mandelbrot set. The rule (`View::new`) must \
+         pick a tier with at least 99.9 % and no less than `f32`; *chosen* is what it picks; \
+         ✗ marks a view where it does not meet that.\n\n\
          | view | zoom | iter | Narrow | Medium | Standard | Deep | f32 | chosen |\n\
          |---|---|---|---|---|---|---|---|---|\n",
     );

@@ -798,7 +798,7 @@ fn the_chosen_tier_beats_f32_on_display_views() {
             "3.2",
             (320, 240),
             100,
-            Tier::Standard,
+            Tier::Medium,
         ),
         (
             "board julia",

@@ -49,15 +49,20 @@ pub enum Tier {
     /// on the full Mandelbrot view at 320×240 or 128×64).
     Narrow,
     /// Q28 in `i32` whose products keep their high 32 bits (Q24): one `smull` and no shifts
-    /// per product on cores with a long multiply, so about half the instructions of
-    /// `Standard` per step, with 24 bits of precision. Chosen for the Mandelbrot set while
-    /// log₂(1/d) + log₂(max-iter) ≤ 12: the full view at 128×64 and 64 iterations (the
-    /// calibrated rule: [`View::new`]).
+    /// per product on cores with a long multiply, so about three quarters of `Standard`'s
+    /// instructions per step, with 24 bits of precision. A Julia set's products are rounded
+    /// (`smmulr` on Cortex-M4, the same count), which keeps as many dwells as a naive `f32`
+    /// loop; the Mandelbrot views it is chosen for keep every dwell with products rounded
+    /// down, which costs Cortex-M3 and M0 an add fewer a product. Chosen for the Mandelbrot
+    /// set while log₂(1/d) + log₂(max-iter) ≤ 12 (the full view at 128×64 and 64
+    /// iterations), and for Julia sets at ⌈log₂(1/d)⌉ = 7 and 65–128 iterations (the whole
+    /// set at 320×240 and 100 iterations; the calibrated rule: [`View::new`]).
     Medium,
     /// Q28 in `i32` with 64-bit products (Fractint used Q29; Q28 leaves room for |c| ≤ 3.5).
     /// Chosen for the Mandelbrot set while log₂(1/d) + log₂(max-iter) ≤ 15: the full view
     /// at 320×240 and 256 iterations, or views 4× deeper at 64 iterations; for Julia sets
-    /// while log₂(1/d) + 7·log₂(max-iter) ≤ 56: 320×240 at 100 iterations.
+    /// while log₂(1/d) + 7·log₂(max-iter) ≤ 56 where `Medium` is not chosen: 128×64 at 100
+    /// iterations.
     Standard,
     /// Q60 in `i64` with 128-bit products, for zooms and long-running Julia sets.
     /// Deepest zoom: pixel spacing ≥ 2⁻⁵⁴ (a width of 1.8·10⁻¹⁴ on 320 pixels); with 12
@@ -150,14 +155,17 @@ impl View {
     ///
     /// The tier is the cheapest that keeps at least 99.9 % of dwells identical to a
     /// double-double reference, and no fewer than a naive `f32` loop, over the calibration
-    /// views with the same z and i below (162 views, pooled by pixels; `cargo bench --bench
+    /// views with the same z and i below (192 views, pooled by pixels; `cargo bench --bench
     /// tiers` re-derives the rule and writes the evidence to `docs/tiers.md`). Rounding near the
     /// boundary is magnified the longer an orbit runs, so the rule is in the pixel spacing
     /// d and the cap: with z = ⌈log₂(1/d)⌉ and i = ⌈log₂(max-iter)⌉, the Mandelbrot set
     /// takes `Medium` while z + i ≤ 12, `Standard` while z + i ≤ 15; a Julia set (all
-    /// boundary) takes `Standard` while z + 7·i ≤ 56 (up to 64 iterations at z ≤ 14, 128 at
-    /// z ≤ 7: a 320×240 view at 100 iterations); the rest `Deep`, while the spacing itself is
-    /// resolvable (≥ 2⁻⁵⁴).
+    /// boundary) takes `Medium` at z = 7, i = 7 (the whole set on a 320-pixel-wide display
+    /// at 65–128 iterations), `Standard` elsewhere while z + 7·i ≤ 56 (up to 64 iterations
+    /// at z ≤ 14, 128 at z ≤ 7); the rest `Deep`, while the spacing itself is resolvable
+    /// (≥ 2⁻⁵⁴). `Medium` for that one cell is measured, not derived: pooled, it keeps 44
+    /// more of 921,600 dwells than `f32` there, and a few fewer at z = 6 and 10; per view it
+    /// is within 0.04 points of `f32`, either side (docs/tiers.md).
     pub fn new(
         fractal: Fractal,
         centre: (Coord, Coord),
@@ -285,6 +293,10 @@ impl View {
         Ok(match fractal {
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 15 => Tier::Standard,
+            // Rounded 24 bits keep more dwells than f32 on the pool at z = 7, i = 7 (the
+            // whole set on a 320-pixel display at 65–128 iterations); elsewhere they lose a
+            // few pixels to it, or gain too few to matter.
+            Fractal::Julia { .. } if zoom_bits == 7 && iteration_bits == 7 => Tier::Medium,
             Fractal::Julia { .. } if zoom_bits + 7 * iteration_bits <= 56 => Tier::Standard,
             _ => Tier::Deep,
         })
