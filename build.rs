@@ -2,9 +2,9 @@
 //! M0+, M1) and ARMv8-M Baseline (Cortex-M23). There a 64-bit product is a call to
 //! `__aeabi_lmul`, and `math::wide::mul_u32_wide` builds it from 16-bit halves instead. (Stable Rust
 //! has no `target_feature` cfg for this, so the target name decides.) The products are exact
-//! either way: results are bit-identical on every target. Likewise `tinyfractal_rounding_multiply`
-//! marks ARMv7E-M, whose `smmulr` and `smmlsr` round a product's high word in one
-//! instruction; elsewhere the same bits come from the low word's top bit.
+//! either way: results are bit-identical on every target. Likewise
+//! `tinyfractal_rounding_multiply` marks ARMv7E-M, whose `smmulr` rounds a product's high
+//! word in one instruction; elsewhere the same bits come from the low word's top bit.
 
 //!
 //! It also finds Fractint's corpus for the tests that read it (`TINYFRACTAL_CORPUS`, or

@@ -53,7 +53,7 @@ pub enum Tier {
     /// instructions per step, with 24 bits of precision. A Julia set's products are rounded
     /// (`smmulr` on Cortex-M4, the same count), which keeps as many dwells as a naive `f32`
     /// loop; the Mandelbrot views it is chosen for keep every dwell with products rounded
-    /// down, which costs Cortex-M3 and M0 an add fewer a product. Chosen for the Mandelbrot
+    /// down, an add a product fewer on Cortex-M3 and M0. Chosen for the Mandelbrot
     /// set while log₂(1/d) + log₂(max-iter) ≤ 12 (the full view at 128×64 and 64
     /// iterations), and for Julia sets at ⌈log₂(1/d)⌉ = 7 and 65–128 iterations (the whole
     /// set at 320×240 and 100 iterations; the calibrated rule: [`View::new`]).
@@ -294,8 +294,8 @@ impl View {
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 15 => Tier::Standard,
             // Rounded 24 bits keep more dwells than f32 on the pool at z = 7, i = 7 (the
-            // whole set on a 320-pixel display at 65–128 iterations); elsewhere they lose a
-            // few pixels to it, or gain too few to matter.
+            // whole set on a 320-pixel display at 65–128 iterations); elsewhere the pools
+            // need `Standard`, or single views at caps up to 64 lose a pixel or a few.
             Fractal::Julia { .. } if zoom_bits == 7 && iteration_bits == 7 => Tier::Medium,
             Fractal::Julia { .. } if zoom_bits + 7 * iteration_bits <= 56 => Tier::Standard,
             _ => Tier::Deep,
