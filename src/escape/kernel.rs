@@ -291,7 +291,7 @@ type Medium = HighWord<false>;
 /// `Medium` for Julia sets: each product's high word rounded half up, and 2xy as the
 /// high word of x·2y (one bit more). Truncated products bias a long orbit; rounded, the
 /// 320×240 Julia views at 100 iterations keep as many dwells as a naive `f32` loop
-/// (docs/tiers.md), at the same three instructions a product on Cortex-M4 (`smmulr`, and
+/// (docs/tiers.md), at one instruction a product on Cortex-M4 as truncated (`smmulr`, and
 /// `smmlar` for the escape test's sum). Elsewhere rounding costs an add a product, which
 /// the Mandelbrot set's `Medium` views (already exact) are spared: rounded, the full view
 /// at 128×64 took 10 % more instructions on Cortex-M3.
