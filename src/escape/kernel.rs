@@ -33,7 +33,7 @@ use crate::math::wide::twice_product_by_squares;
 use crate::math::wide::{mul_i32_wide, mul_wide, shift_round_i64};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
-/// iterations 16, 32, 64, ...; see `FIRST_SAVE`).
+/// iterations 64, 128, 256, ...; see `FIRST_SAVE`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Periodicity {
     /// Only an exact repeat of the fixed-point orbit: it can never change a dwell.
@@ -849,8 +849,11 @@ pub(crate) fn smooth_value(n: u32, z: (i32, i32), c: (i32, i32), max: u32, insid
 /// Most steps a smooth value takes past the escape.
 const SMOOTH_STEPS: u32 = 32;
 
-/// Steps before the first point is saved for the repeat test.
-const FIRST_SAVE: u32 = 16;
+/// Steps before the first point is saved for the repeat test: most points escape before,
+/// and a plain step costs 12 instructions on Cortex-M4F against 14.5 in Brent's stretches
+/// (the full view at 320×240 1.8 % fewer instructions than from 16 on, the 128×64 view
+/// 2.7 %; the zoom scene 0.6 % more, its interior pixels found later).
+const FIRST_SAVE: u32 = 64;
 
 /// Steps of a Julia parameter's critical orbit that decide whether the set is dust (see
 /// [`Kernel::new`]): once per render, a few thousand instructions at most where it escapes.
