@@ -24,6 +24,7 @@
 //! in the repeat-testing loop. Taking one step a turn there instead of two costs 10 % more
 //! on M3 and M4F; the loops take two or four (see `orbit`).
 
+use core::marker::PhantomData;
 use core::ops::{Add, Sub};
 
 use super::view::{Fractal, Shading, Tier, View, SMOOTH_FRACTION_BITS};
@@ -185,22 +186,50 @@ impl Kernel {
         }
     }
 
-    /// [`dwell`](Self::dwell) with the 32-bit tiers' orbit in line: for a render's tile
-    /// cells, where most pixels are computed (at 320×240, 2.3 % fewer instructions for the
-    /// full view on Cortex-M4F, 1.8 % for the Julia set; 2.5 % and 1.6 % on M3). `Deep`
-    /// stays a call: in line, the deep zoom took 10 % more.
+    /// Calls `visitor` with this kernel's tier as a type, so a caller is compiled once per
+    /// tier with the orbit in line (see [`TierVisitor`]): a render's tile subdivision, where
+    /// most pixels are computed, tests no tier per pixel.
     #[inline(always)]
-    pub(crate) fn dwell_in_line(&self, re: Part, im: Part) -> Orbit {
-        // On Cortex-M0 the extra copy cost the full view 2 %: a call there.
-        #[cfg(tinyfractal_no_long_multiply)]
-        return self.dwell(re, im);
-        #[cfg(not(tinyfractal_no_long_multiply))]
+    pub(crate) fn visit<V: TierVisitor>(&self, visitor: V) -> V::Output {
         match self.arithmetic {
-            Kind::Narrow => orbit_in_line::<Narrow>(self, re.0, im.0),
-            Kind::Medium => orbit_in_line::<Medium>(self, re.0, im.0),
-            Kind::RoundedMedium => orbit_in_line::<RoundedMedium>(self, re.0, im.0),
-            Kind::Standard => orbit_in_line::<Standard>(self, re.0, im.0),
-            Kind::Deep => orbit::<Deep>(self, re.0, im.0),
+            Kind::Narrow => visitor.visit(InTier::<Narrow>(self, PhantomData)),
+            Kind::Medium => visitor.visit(InTier::<Medium>(self, PhantomData)),
+            Kind::RoundedMedium => visitor.visit(InTier::<RoundedMedium>(self, PhantomData)),
+            Kind::Standard => visitor.visit(InTier::<Standard>(self, PhantomData)),
+            Kind::Deep => visitor.visit(InTier::<Deep>(self, PhantomData)),
+        }
+    }
+}
+
+/// A pixel's dwell in one tier, known at compile time.
+pub(crate) trait TierOrbit {
+    /// The dwell of the point (`re`, `im`).
+    fn dwell(&self, re: Part, im: Part) -> Orbit;
+}
+
+/// Code compiled once per tier: [`Kernel::visit`] calls it with the kernel's.
+pub(crate) trait TierVisitor {
+    /// What the code returns.
+    type Output;
+    /// Runs with the tier `orbit`.
+    fn visit<T: TierOrbit>(self, orbit: T) -> Self::Output;
+}
+
+/// A kernel in tier `A`.
+struct InTier<'k, A>(&'k Kernel, PhantomData<A>);
+
+impl<A: Arithmetic> TierOrbit for InTier<'_, A> {
+    /// The 32-bit tiers' orbit in line where there is a long multiply (with four steps a
+    /// turn in Brent's stretches: the full view at 320×240 took 2.3 % fewer instructions on
+    /// Cortex-M4F than with a call, the Julia set 1.8 %). `Deep` stays a call: in line, the
+    /// deep zoom took 10 % more; so does every tier on Cortex-M0, whose full view took 0.9 %
+    /// more in line.
+    #[inline(always)]
+    fn dwell(&self, re: Part, im: Part) -> Orbit {
+        if A::WORD_STEPS && cfg!(not(tinyfractal_no_long_multiply)) {
+            orbit_in_line::<A>(self.0, re.0, im.0)
+        } else {
+            orbit::<A>(self.0, re.0, im.0)
         }
     }
 }
@@ -904,6 +933,8 @@ fn standard_twice_xy(x: i32, y: i32, x2: i64, y2: i64) -> i32 {
 /// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
 /// or next to the boundary is iterated instead. |x|, |y| ≤ 3.5 (the view's limit), so every
 /// value below fits its type.
+// In line: a call from each tier's subdivision cost the full view 4 % on Cortex-M4F.
+#[inline(always)]
 pub(crate) fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
     const ONE: i32 = 1 << 28;
     // 2^-20 in Q56.

@@ -183,11 +183,11 @@ fn reference_caps(stacks: &BTreeMap<(&str, &str), (u64, u64)>) {
     );
     assert!(
         lm3s >= 2000,
-        "the README says a cap of about 2,060 fits: {lm3s}"
+        "the README says a cap of about 2,000 fits: {lm3s}"
     );
     assert!(
         microbit >= 100,
-        "the README says a cap of about 170 (at least 100) fits the micro:bit: {microbit}"
+        "the README says a cap of about 120 (at least 100) fits the micro:bit: {microbit}"
     );
 }
 
