@@ -686,7 +686,7 @@ fn orbit_in_line<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
     {
         fours_until!(plain, |_done| {});
         // At most three more, each tested and unrolled: a counted loop here cost the
-        // Mandelbrot set's first stretch (15 steps) more than the fours saved.
+        // Mandelbrot set's first stretch (then 15 steps) more than the fours saved.
         for _ in 0..3 {
             if n < plain {
                 n += 1;

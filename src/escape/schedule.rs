@@ -29,6 +29,7 @@ use crate::render::sink::DwellSink;
 
 /// Side of a fast-mode tile, in pixels.
 pub const TILE: u32 = 32;
+const CELLS: usize = (TILE * TILE) as usize;
 
 /// A block whose border is not one dwell and which spans fewer than this many cells past
 /// its first, across or down (at most 5 cells), is computed whole rather than split: its
@@ -38,7 +39,6 @@ pub const TILE: u32 = 32;
 /// agree with the exact render in 2 and 1 pixels more (0 and 3 differ); the deep zoom
 /// took 1.3 % more, and on Cortex-M0 the 320×240 frames 0.6–0.9 % more.
 const WHOLE_BELOW: u32 = 5;
-const CELLS: usize = (TILE * TILE) as usize;
 
 /// How the pixels are scheduled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -608,11 +608,11 @@ impl<'r> Render<'r> {
             if let Some(value) = border {
                 for ty in b.y0 + 1..b.y1 {
                     let row = self.cell_index(0, ty);
-                    if let Some(cells) = self
+                    if let Some(inside) = self
                         .tile
                         .get_mut(row + b.x0 as usize + 1..row + b.x1 as usize)
                     {
-                        cells.fill(value);
+                        inside.fill(value);
                     }
                 }
             } else if bw < WHOLE_BELOW || bh < WHOLE_BELOW {
