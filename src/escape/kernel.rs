@@ -163,6 +163,18 @@ impl Kernel {
         critical.dwell(Part(0), Part(0)).dwell != u32::MAX
     }
 
+    /// Whether a tile of this kernel's values may be drawn by tracing the outlines of its
+    /// regions (see `schedule`): a Mandelbrot view's dwells. Every set of points with
+    /// dwell above k is connected there, so a region lies inside another only where a
+    /// pixel grid breaks a connection narrower than a pixel. A Julia set's filaments break
+    /// often at display sizes (the boards' Julia set at 320×240 lost 50 pixels, and with
+    /// them more agreement with an f64 model than the f32 loop loses), and smooth values
+    /// change every few cells, where following outlines cost more than subdivision's
+    /// scans (the boards' smooth view at 128×64: 25 % more on Cortex-M4F).
+    pub(crate) const fn traceable(&self) -> bool {
+        self.julia.is_none() && !self.smooth
+    }
+
     /// The tier the kernel computes in.
     pub(crate) const fn tier(&self) -> Tier {
         self.tier
