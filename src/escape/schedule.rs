@@ -649,7 +649,8 @@ impl<'r> Render<'r> {
     /// Boundary tracing over the current tile, of size w×h: the tile's dwell if it is
     /// uniform.
     ///
-    /// The outline of the first cell's region is followed ([`follow`](Self::follow)),
+    /// A tile whose edge is one dwell is that dwell, as in subdivision. Otherwise the
+    /// outline of the first cell's region is followed ([`follow`](Self::follow)),
     /// computing the cells on both sides of each crack between it and another dwell (or the
     /// tile's edge). Then, row by row, each computed cell not on a followed outline whose
     /// neighbour above or before has another dwell is the first met of a new region: its
@@ -669,13 +670,19 @@ impl<'r> Render<'r> {
             followed: [0; TILE as usize],
             across: [0; TILE as usize],
         };
+        let whole = Block {
+            x0: 0,
+            y0: 0,
+            x1: w - 1,
+            y1: h - 1,
+        };
+        if let Some(value) = self.border(cells, whole) {
+            // The tile's edge is one region's outline, and the region fills the tile: found
+            // by one scan that stops at the first other dwell, cheaper than a walk round.
+            return Some(value);
+        }
         let first = self.known(cells, 0, 0);
         self.follow(cells, (0, 0, RIGHT), (w, h), &mut outlines);
-        if outlines.across.iter().fold(0, |any, &row| any | row) == 0 {
-            // The first region's outline met no other dwell: it is the tile's edge, and the
-            // region fills the tile.
-            return Some(first);
-        }
         let width = self.width as usize;
         for ty in 0..h {
             let row = ty as usize & (TILE as usize - 1);
