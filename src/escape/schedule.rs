@@ -6,12 +6,13 @@
 //! both sides of an outline are computed, and the rest take the dwell of the cell before
 //! them (see `Render::trace`). Julia sets, smooth values and perturbed renders run
 //! Mariani–Silver subdivision instead (see `Kernel::traceable`): compute a rectangle's
-//! border; if it is one value, fill the rectangle; otherwise split it in four. A tile that comes out uniform leaves as one
-//! `uniform` block (`fill_solid`), any other as one `dwells` block (`fill_contiguous`): one
-//! address window per tile on an SPI display, each pixel sent once. When the view is
-//! symmetric, only the top half is computed and each tile is also sent, upside down, to
-//! the bottom half: mirrored for a Mandelbrot view centred on the real axis, turned half
-//! round for a Julia view centred on the origin (the kernel keeps both symmetries exactly).
+//! border; if it is one value, fill the rectangle; otherwise split it in four. A tile that
+//! comes out uniform leaves as one `uniform` block (`fill_solid`), any other as one
+//! `dwells` block (`fill_contiguous`): one address window per tile on an SPI display, each
+//! pixel sent once. When the view is symmetric, only the top half is computed and each
+//! tile is also sent, upside down, to the bottom half: mirrored for a Mandelbrot view
+//! centred on the real axis, turned half round for a Julia view centred on the origin (the
+//! kernel keeps both symmetries exactly).
 //!
 //! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB), the tile's 32 column and 32
 //! row coordinates (512 bytes: points are separable, so they are computed once per tile,
@@ -50,13 +51,13 @@ pub enum Algorithm {
     /// dwell).
     Exact,
     /// Boundary tracing for Mandelbrot dwells, Mariani–Silver subdivision for the rest,
-    /// mirror symmetry and periodicity within 1/16 of a pixel, at most [`MAX_FAST_TOLERANCE`]. The
-    /// repeat test agrees with the exact orbit (tested over random views). Tracing and
-    /// subdivision can miss a speck: an escaping pixel inside the region that does not
-    /// escape, joined to the outside by a channel narrower than a pixel. Over 150 random
-    /// Mandelbrot views near the boundary (128×96, widths 10⁻⁵ to 0.3), tracing missed 310
-    /// of 1.84 million pixels, subdivision 26; tracing computed 36 % fewer pixels of the
-    /// full view at 320×240.
+    /// mirror symmetry and periodicity within 1/16 of a pixel, at most
+    /// [`MAX_FAST_TOLERANCE`]. The repeat test agrees with the exact orbit (tested over
+    /// random views). Tracing and subdivision can miss a speck: an escaping pixel inside
+    /// the region that does not escape, joined to the outside by a channel narrower than
+    /// a pixel. Over 150 random Mandelbrot views near the boundary (128×96, widths 10⁻⁵ to
+    /// 0.3), tracing missed 310 of 1.84 million pixels, subdivision 26; tracing computed
+    /// 36 % fewer pixels of the full view at 320×240.
     #[default]
     Fast,
 }
@@ -711,7 +712,7 @@ impl<'r> Render<'r> {
                 } else if tx == 0 || differs(index.checked_sub(1)) {
                     Some(UP)
                 } else {
-                    // Inside its region: computed where an outline turned.
+                    // Not the first cell of its region met: that one starts its outline.
                     None
                 };
                 if let Some(direction) = start {
@@ -737,8 +738,9 @@ impl<'r> Render<'r> {
     /// Follows the outline of the region of the cell in `start` (a cell and a direction
     /// along one of its cracks with another dwell or the tile's edge on its left, the
     /// region on its right) around, back to `start`: computes the cells on both sides of
-    /// each crack, marks the region's as followed and the others as across. Each crack is
-    /// passed once, so the walk ends within 4·w·h steps; the bound is only a guard.
+    /// each crack, marks the region's as followed and the others as across. The walk is
+    /// reversible (each state, a cell and a crack, has one successor and one predecessor)
+    /// and starts on the outline, so it comes back to `start`, within 4·w·h steps.
     fn follow<C: Cells>(
         &mut self,
         cells: &C,
