@@ -279,16 +279,21 @@ struct Outlines {
 impl Outlines {
     #[inline(always)]
     fn mark_followed(&mut self, x: u32, y: u32) {
-        if let Some(row) = self.followed.get_mut(y as usize & (TILE as usize - 1)) {
-            *row |= 1 << (x & (TILE - 1));
-        }
+        set_bit(&mut self.followed, x, y);
     }
 
     #[inline(always)]
     fn mark_across(&mut self, x: u32, y: u32) {
-        if let Some(row) = self.across.get_mut(y as usize & (TILE as usize - 1)) {
-            *row |= 1 << (x & (TILE - 1));
-        }
+        set_bit(&mut self.across, x, y);
+    }
+}
+
+/// Sets cell (x, y)'s bit in a tile's bits, a word a row (indexed by masking: no bounds
+/// checks).
+#[inline(always)]
+fn set_bit(bits: &mut [u32; TILE as usize], x: u32, y: u32) {
+    if let Some(row) = bits.get_mut(y as usize & (TILE as usize - 1)) {
+        *row |= 1 << (x & (TILE - 1));
     }
 }
 
@@ -665,8 +670,6 @@ impl<'r> Render<'r> {
     /// none except where a pixel grid breaks a connection narrower than a pixel (see
     /// `Kernel::traceable`).
     fn trace<C: Cells>(&mut self, cells: &C, w: u32, h: u32) -> Option<u16> {
-        // A bit a cell, a row a word: cells on a followed outline, and cells computed
-        // across one (where new regions start).
         let mut outlines = Outlines {
             followed: [0; TILE as usize],
             across: [0; TILE as usize],
