@@ -1,6 +1,6 @@
 //! Numbers as people write them and as messages show them.
 
-use tinyfractal::Coord;
+use tinyfractal::{Coord, DeepCoord};
 
 /// `Coord`'s display: six significant digits, rounded half up, trailing zeros dropped,
 /// scientific below 10⁻⁴. Expected texts are worked out by hand from the exact values.
@@ -117,4 +117,47 @@ fn reals_round_half_away_from_zero_over_every_bit_pattern() {
             "{value}"
         );
     }
+}
+
+/// `DeepCoord`'s scientific notation, written without core's float formatting, matches
+/// `f64`'s at four decimals for values from 10⁻⁴⁵ to 10³ (mantissas whose fifth decimal
+/// onwards is within 10⁻⁹ of a tie are left out: there the two may round apart), and
+/// without a precision writes at most six decimals, trailing zeros dropped.
+#[test]
+fn deep_coordinates_write_scientific_notation_as_f64_does() {
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut compared = 0;
+    for _ in 0..20_000 {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        let mantissa = state % 9_000_000_000 + 1_000_000_000;
+        let exponent = (state >> 40) % 49;
+        let (whole, fraction) = (mantissa / 1_000_000_000, mantissa % 1_000_000_000);
+        let text = format!("{whole}.{fraction:09}e-{exponent}");
+        let beyond = mantissa % 100_000;
+        if (49_999..=50_001).contains(&beyond) {
+            continue;
+        }
+        let sign = if state & 1 == 0 { "" } else { "-" };
+        let Ok(deep) = DeepCoord::parse(&format!("{sign}{text}")) else {
+            continue;
+        };
+        if deep.is_zero() {
+            continue;
+        }
+        assert_eq!(
+            format!("{deep:.4e}"),
+            format!("{:.4e}", deep.to_f64()),
+            "{sign}{text}"
+        );
+        compared += 1;
+    }
+    assert!(compared > 15_000, "{compared}");
+    let deep = |text: &str| DeepCoord::parse(text).unwrap();
+    assert_eq!(format!("{:e}", deep("0.000125")), "1.25e-4");
+    assert_eq!(format!("{:e}", deep("-1.5")), "-1.5e0");
+    assert_eq!(format!("{:e}", deep("0")), "0e0");
+    assert_eq!(format!("{:?}", deep("0.5")), "DeepCoord(5e-1)");
+    assert_eq!(format!("{:.2e}", deep("0.9999")), "1.00e0");
 }
