@@ -17,6 +17,8 @@ struct Dwells {
     width: u32,
     values: Vec<u16>,
     writes: Vec<u32>,
+    /// Whether it reads only the first half of each run (a target that stops early).
+    stops_halfway: bool,
 }
 
 impl Dwells {
@@ -26,6 +28,7 @@ impl Dwells {
             width: size.width,
             values: vec![0; n],
             writes: vec![0; n],
+            stops_halfway: false,
         }
     }
 }
@@ -38,10 +41,16 @@ impl DwellSink for Dwells {
         area: &Rectangle,
         dwells: I,
     ) -> Result<(), Self::Error> {
-        for p in area.points() {
+        let pixels = (area.size.width * area.size.height) as usize;
+        let read = if self.stops_halfway {
+            pixels / 2
+        } else {
+            pixels
+        };
+        for p in area.points().take(read) {
             self.writes[(p.y as u32 * self.width + p.x as u32) as usize] += 1;
         }
-        DwellBuffer::new(&mut self.values, self.width).dwells(area, dwells)
+        DwellBuffer::new(&mut self.values, self.width).dwells(area, dwells.take(read))
     }
 }
 
@@ -676,18 +685,23 @@ proptest! {
     }
 }
 
+/// The whole Mandelbrot set, 3.5 wide about −0.75.
+fn full_view(size: Size, max: u32) -> View {
+    View::new(
+        Fractal::Mandelbrot,
+        (Coord::parse("-0.75").unwrap(), Coord::default()),
+        Coord::parse("3.5").unwrap(),
+        size,
+        max,
+    )
+    .unwrap()
+}
+
 /// The full view at 32×24 and 1000 iterations: a pixel is 0.11 wide, and a tolerance of
 /// 1/16 of it flipped two pixels to "inside".
 #[test]
 fn fast_full_view_at_a_coarse_size_equals_exact() {
-    let view = View::new(
-        Fractal::Mandelbrot,
-        (Coord::parse("-0.75").unwrap(), Coord::default()),
-        Coord::parse("3.5").unwrap(),
-        Size::new(32, 24),
-        1000,
-    )
-    .unwrap();
+    let view = full_view(Size::new(32, 24), 1000);
     assert_eq!(
         render(view, Algorithm::Fast).0.values,
         render(view, Algorithm::Exact).0.values
@@ -720,14 +734,7 @@ fn palettes_for_every_colour_type() {
         pixelcolor::{BinaryColor, Gray4, Rgb565, Rgb888},
     };
     use tinyfractal::{Bands, Gradient};
-    let view = View::new(
-        Fractal::Mandelbrot,
-        (Coord::parse("-0.75").unwrap(), Coord::default()),
-        Coord::parse("3.5").unwrap(),
-        Size::new(64, 48),
-        60,
-    )
-    .unwrap();
+    let view = full_view(Size::new(64, 48), 60);
     let keys = [Rgb888::BLUE, Rgb888::WHITE, Rgb888::new(255, 160, 0)];
 
     let mut binary = MockDisplay::<BinaryColor>::new();
@@ -970,5 +977,73 @@ fn a_preview_shows_everything_at_once_and_ends_in_the_same_picture() {
             );
             assert!(extra <= 0.10, "{width} {algorithm:?}: {extra}");
         }
+    }
+}
+
+/// A traced tile's cells not computed are filled as it is first sent: a sink that stops
+/// reading early still gets the right dwells in the mirror image and the tiles below
+/// (the full view, mirrored, its tiles sharing rows).
+#[test]
+fn a_sink_that_stops_reading_early_still_gets_right_dwells() {
+    let view = full_view(Size::new(96, 160), 200);
+    let (whole, _) = render(view, Algorithm::Fast);
+    let mut sink = Dwells::new(view.size());
+    sink.stops_halfway = true;
+    Render::new(view, Algorithm::Fast).run(&mut sink).unwrap();
+    let mut read = 0;
+    for (at, &writes) in sink.writes.iter().enumerate() {
+        if writes > 0 {
+            assert_eq!(sink.values[at], whole.values[at], "pixel {at}");
+            read += 1;
+        }
+    }
+    assert!(read > 96 * 160 / 3, "{read}");
+}
+
+/// A sink that fails on its `fail_at`-th run, once.
+struct FailsOnce {
+    dwells: Dwells,
+    calls: u32,
+    fail_at: u32,
+}
+
+impl DwellSink for FailsOnce {
+    type Error = ();
+
+    fn dwells<I: Iterator<Item = u16>>(&mut self, area: &Rectangle, dwells: I) -> Result<(), ()> {
+        self.calls += 1;
+        if self.calls == self.fail_at {
+            return Err(());
+        }
+        let Ok(()) =
+            DwellBuffer::new(&mut self.dwells.values, self.dwells.width).dwells(area, dwells);
+        Ok(())
+    }
+}
+
+/// After a sink's error, stepping again finishes the same picture: the tile that failed is
+/// computed again, without taking its own last row for the row it shares with the tile
+/// above.
+#[test]
+fn a_render_goes_on_after_a_sink_error() {
+    let view = View::new(
+        Fractal::Mandelbrot,
+        (Coord::parse("-0.7").unwrap(), Coord::parse("0.35").unwrap()),
+        Coord::parse("0.4").unwrap(),
+        Size::new(64, 100),
+        200,
+    )
+    .unwrap();
+    let (whole, _) = render(view, Algorithm::Fast);
+    for fail_at in 1..=8 {
+        let mut sink = FailsOnce {
+            dwells: Dwells::new(view.size()),
+            calls: 0,
+            fail_at,
+        };
+        let mut render = Render::new(view, Algorithm::Fast);
+        assert!(render.run(&mut sink).is_err());
+        render.run(&mut sink).unwrap();
+        assert_eq!(sink.dwells.values, whole.values, "failing at run {fail_at}");
     }
 }

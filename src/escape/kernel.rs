@@ -27,11 +27,11 @@
 use core::marker::PhantomData;
 use core::ops::{Add, Sub};
 
-use super::view::{Fractal, Shading, Tier, View, SMOOTH_FRACTION_BITS};
+use super::view::{Fractal, Parts, Shading, Tier, View, SMOOTH_FRACTION_BITS};
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 #[cfg(tinyfractal_no_long_multiply)]
 use crate::math::wide::twice_product_by_squares;
-use crate::math::wide::{mul_i32_wide, mul_wide, shift_round_i64};
+use crate::math::wide::{mul_i32_wide, mul_wide_in_line, shift_round_i64};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
 /// iterations 64, 128, 256, ...; see `FIRST_SAVE`).
@@ -186,15 +186,32 @@ impl Kernel {
         Part(from_q60(q60, self.tier.frac_bits()))
     }
 
+    /// [`part`](Self::part) of each coordinate of `q60s`, into `parts`: the rounding's
+    /// shift and half found once, not once a coordinate (a tile's 32 rows took half the
+    /// instructions on Cortex-M4F).
+    pub(crate) fn fill_parts(&self, q60s: Parts, parts: &mut [Part]) {
+        // As `shift_round_i64`, half away from zero (`Deep`: no shift, half 0). Nothing
+        // wraps in the view (|q60| ≤ 3.5·2⁶⁰); past its edge the parts are not used.
+        let shift = 60u32.saturating_sub(self.tier.frac_bits());
+        let half = (1i64 << shift) >> 1;
+        for (slot, q60) in parts.iter_mut().zip(q60s) {
+            *slot = Part(if q60 >= 0 {
+                q60.wrapping_add(half) >> shift
+            } else {
+                (half.wrapping_sub(q60) >> shift).wrapping_neg()
+            });
+        }
+    }
+
     /// The dwell of the point (`re`, `im`).
     #[inline(always)]
     pub(crate) fn dwell(&self, re: Part, im: Part) -> Orbit {
         match self.arithmetic {
-            Kind::Narrow => orbit::<Narrow>(self, re.0, im.0),
-            Kind::Medium => orbit::<Medium>(self, re.0, im.0),
-            Kind::RoundedMedium => orbit::<RoundedMedium>(self, re.0, im.0),
-            Kind::Standard => orbit::<Standard>(self, re.0, im.0),
-            Kind::Deep => orbit::<Deep>(self, re.0, im.0),
+            Kind::Narrow => orbit::<Narrow, false>(self, re.0, im.0),
+            Kind::Medium => orbit::<Medium, false>(self, re.0, im.0),
+            Kind::RoundedMedium => orbit::<RoundedMedium, false>(self, re.0, im.0),
+            Kind::Standard => orbit::<Standard, false>(self, re.0, im.0),
+            Kind::Deep => orbit::<Deep, false>(self, re.0, im.0),
         }
     }
 
@@ -217,6 +234,11 @@ impl Kernel {
 pub(crate) trait TierOrbit {
     /// The dwell of the point (`re`, `im`).
     fn dwell(&self, re: Part, im: Part) -> Orbit;
+
+    /// [`dwell`](Self::dwell) for a kernel that is [`traceable`](Kernel::traceable): a
+    /// Mandelbrot view's dwells, compiled without the tests for a Julia set's start or
+    /// a smooth value's finish (both known false).
+    fn traced_dwell(&self, re: Part, im: Part) -> Orbit;
 }
 
 /// Code compiled once per tier: [`Kernel::visit`] calls it with the kernel's.
@@ -238,10 +260,15 @@ impl<A: Arithmetic> TierOrbit for InTier<'_, A> {
     /// more in line.
     #[inline(always)]
     fn dwell(&self, re: Part, im: Part) -> Orbit {
+        orbit::<A, false>(self.0, re.0, im.0)
+    }
+
+    #[inline(always)]
+    fn traced_dwell(&self, re: Part, im: Part) -> Orbit {
         if A::WORD_STEPS && cfg!(not(tinyfractal_no_long_multiply)) {
-            orbit_in_line::<A>(self.0, re.0, im.0)
+            orbit_in_line::<A, true>(self.0, re.0, im.0)
         } else {
-            orbit::<A>(self.0, re.0, im.0)
+            orbit::<A, true>(self.0, re.0, im.0)
         }
     }
 }
@@ -489,7 +516,7 @@ impl Arithmetic for Deep {
     const FOUR: i128 = 4 << 120;
     #[inline(always)]
     fn mul(a: i64, b: i64) -> i128 {
-        mul_wide(a, b)
+        mul_wide_in_line(a, b)
     }
     #[inline(always)]
     fn to_value(d: i128) -> i64 {
@@ -497,7 +524,7 @@ impl Arithmetic for Deep {
     }
     #[inline(always)]
     fn twice_xy(x: i64, y: i64, _: i128, _: i128) -> i64 {
-        (mul_wide(x, y) >> 59) as i64
+        (mul_wide_in_line(x, y) >> 59) as i64
     }
     #[inline(always)]
     fn q28(v: i64) -> i32 {
@@ -630,16 +657,19 @@ impl Kernel {
 /// `Arithmetic::WORD_STEPS`). Each stretch between saves is a loop of its own, so the
 /// step itself tests nothing but escape and repeat.
 #[inline(never)]
-fn orbit<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
-    orbit_in_line::<A>(kernel, re, im)
+fn orbit<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
+    orbit_in_line::<A, TRACEABLE>(kernel, re, im)
 }
 
-/// [`orbit`]'s body, for callers that take it in line.
+/// [`orbit`]'s body, for callers that take it in line. `TRACEABLE`: the kernel is
+/// [`traceable`](Kernel::traceable), so its tests for a Julia set and a smooth value
+/// compile away.
 #[inline(always)]
-fn orbit_in_line<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
+fn orbit_in_line<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
     let max = kernel.max;
     let (re, im) = (A::Value::from_units(re), A::Value::from_units(im));
-    let ((cr, ci), (x, y), steps) = match kernel.julia {
+    let julia = if TRACEABLE { None } else { kernel.julia };
+    let ((cr, ci), (x, y), steps) = match julia {
         None => {
             if in_cardioid_or_bulb(A::q28(re), A::q28(im)) {
                 return Orbit::inside_after(kernel, 0);
@@ -658,7 +688,7 @@ fn orbit_in_line<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
     let mut z = Z::<A>::new(x, y);
     // The value of an orbit that escaped at step n (c passed by value: a closure that
     // captured it kept it in memory, stored on every pixel's way in).
-    let escaped_at = |n: u32, z: &Z<A>| escaped::<A>(kernel, n, (z.x, z.y), (cr, ci));
+    let escaped_at = |n: u32, z: &Z<A>| escaped::<A, TRACEABLE>(kernel, n, (z.x, z.y), (cr, ci));
     if z.escaped() {
         return escaped_at(steps, &z);
     }
@@ -820,14 +850,14 @@ fn orbit_in_line<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
 
 /// The value of an orbit of c that escaped at step `n` at z.
 #[inline(always)]
-fn escaped<A: Arithmetic>(
+fn escaped<A: Arithmetic, const TRACEABLE: bool>(
     kernel: &Kernel,
     n: u32,
     (x, y): (A::Value, A::Value),
     (cr, ci): (A::Value, A::Value),
 ) -> Orbit {
     Orbit {
-        dwell: if kernel.smooth {
+        dwell: if !TRACEABLE && kernel.smooth {
             smooth_value(
                 n,
                 (A::q28(x), A::q28(y)),

@@ -416,6 +416,22 @@ impl View {
         i128::from(self.centre.1.to_bits()) + self.offset(self.row_steps(j))
     }
 
+    /// [`column`](Self::column) of columns i, i + 1, … while in the view, as i64: one
+    /// wide product for the first, an addition for each after it.
+    pub(crate) fn columns_from(&self, i: i64) -> Parts {
+        Parts::new(
+            self.centre.0.to_bits(),
+            self.spacing,
+            self.column_steps(i),
+            2,
+        )
+    }
+
+    /// [`row`](Self::row) of rows j, j + 1, … (downwards) while in the view, as i64.
+    pub(crate) fn rows_from(&self, j: i64) -> Parts {
+        Parts::new(self.centre.1.to_bits(), self.spacing, self.row_steps(j), -2)
+    }
+
     /// Column i's real offset from the centre in half spacings: 2i + 1 − W.
     pub(crate) const fn column_steps(&self, i: i64) -> i64 {
         2 * i + 1 - self.size.width as i64
@@ -460,6 +476,60 @@ pub(crate) fn half_spacings(spacing: i64, k: i64) -> i128 {
     shift_round(mul_wide(spacing, k), 1)
 }
 
+/// The Q60 parts of consecutive columns or rows. Offsets are half spacings rounded half
+/// away from zero, so two steps further on one side of the centre is exactly one spacing
+/// further; across the centre (1 to −1 half spacings) the offset is negated. Exact while
+/// in the view (parts within ±3.5, offsets within ±7); past it the values wrap and are
+/// not used.
+#[derive(Debug, Clone)]
+pub(crate) struct Parts {
+    centre: i64,
+    /// The next part's offset from the centre, and that offset in half spacings.
+    offset: i64,
+    steps: i64,
+    /// Half spacings from one part to the next (±2), and the offset that adds on one side.
+    stride: i64,
+    spacing: i64,
+}
+
+impl Parts {
+    /// The next part's offset in half spacings, and what each part after adds to it.
+    pub(crate) const fn steps(&self) -> (i64, i64) {
+        (self.steps, self.stride)
+    }
+
+    fn new(centre: i64, spacing: i64, steps: i64, stride: i64) -> Self {
+        Self {
+            centre,
+            offset: i64::try_from(half_spacings(spacing, steps)).unwrap_or(0),
+            steps,
+            stride,
+            spacing: if stride < 0 {
+                spacing.wrapping_neg()
+            } else {
+                spacing
+            },
+        }
+    }
+}
+
+impl Iterator for Parts {
+    type Item = i64;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<i64> {
+        let part = self.centre.wrapping_add(self.offset);
+        let next = self.steps.wrapping_add(self.stride);
+        self.offset = if next == self.steps.wrapping_neg() {
+            self.offset.wrapping_neg()
+        } else {
+            self.offset.wrapping_add(self.spacing)
+        };
+        self.steps = next;
+        Some(part)
+    }
+}
+
 /// A symmetry of a view's pixels.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Symmetry {
@@ -469,4 +539,41 @@ pub(crate) enum Symmetry {
     MirrorRows,
     /// Pixel (i, j) equals (W−1−i, H−1−j): a Julia view centred on the origin.
     HalfTurn,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Parts found by additions equal the product for each, on both sides of the centre
+    /// and across it, for odd spacings (where rounding half away from zero makes the
+    /// step across the centre one unit longer) and even ones, both directions, as long
+    /// as the offsets and parts fit an i64 (a view's are within ±7 and ±3.5 in Q60).
+    #[test]
+    fn parts_by_addition_equal_parts_by_product() {
+        let spacings = [1, 3, 2, 7, 1 << 20, (1 << 53) + 1, 3 << 58, (1 << 60) + 1];
+        let centres = [0, 1, -1, 5 << 58, -(3 << 59) + 7];
+        let mut compared = 0;
+        for spacing in spacings {
+            for centre in centres {
+                for first in -41..=40i64 {
+                    for stride in [2, -2] {
+                        let parts = Parts::new(centre, spacing, first, stride);
+                        for (k, part) in (0..80).zip(parts) {
+                            let offset = half_spacings(spacing, first + stride * k);
+                            if i64::try_from(offset).is_err() {
+                                break;
+                            }
+                            let Ok(expected) = i64::try_from(i128::from(centre) + offset) else {
+                                continue;
+                            };
+                            assert_eq!(part, expected, "{spacing} {centre} {first} {stride} {k}");
+                            compared += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(compared > 250_000, "{compared}");
+    }
 }
