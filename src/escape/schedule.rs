@@ -292,13 +292,12 @@ impl TierVisitor for TileCells<'_, '_> {
     }
 }
 
-/// Directions along a crack between cells as steps (dx, dy), −1 wrapping (one compare
-/// then finds either edge of the tile): rightward and upward.
-const RIGHT: (u32, u32) = (1, 0);
-const UP: (u32, u32) = (0, u32::MAX);
-
-/// What [`Render::probe`] finds past a tile's edge: no dwell (dwells are u16).
-const OUTSIDE: u32 = u32::MAX;
+/// Directions along a crack between cells, in quarter turns clockwise from rightward (y
+/// grows downward).
+const RIGHT: u32 = 0;
+const DOWN: u32 = 1;
+const LEFT: u32 = 2;
+const UP: u32 = 3;
 
 // A row of a tile is a word of `Outlines`.
 const _: () = assert!(TILE <= u32::BITS);
@@ -866,56 +865,85 @@ impl<'r> Render<'r> {
     fn follow<C: Cells>(
         &mut self,
         cells: &C,
-        (sx, sy, direction): (u32, u32, (u32, u32)),
+        (sx, sy, direction): (u32, u32, u32),
         (w, h): (u32, u32),
         outlines: &mut Outlines,
     ) {
         let value = u32::from(self.known(cells, sx, sy));
-        let (mut x, mut y) = (sx, sy);
-        // The direction as a step (−1 wraps): turning right takes (dx, dy) to (−dy, dx),
-        // turning left to (dy, −dx).
-        let (mut dx, mut dy) = direction;
-        outlines.mark_followed(x, y);
+        let start = sy * w + sx;
+        let mut at = (sx, sy, start);
+        let mut k = direction;
+        outlines.mark_followed(sx, sy);
         loop {
-            let (ax, ay) = (x.wrapping_add(dx), y.wrapping_add(dy));
-            let ahead = self.probe(cells, ax, ay, (w, h));
-            if ahead == value {
-                let (lx, ly) = (ax.wrapping_add(dy), ay.wrapping_sub(dx));
-                let left = self.probe(cells, lx, ly, (w, h));
-                if left == value {
-                    (x, y, dx, dy) = (lx, ly, dy, dx.wrapping_neg());
-                } else {
-                    if left != OUTSIDE {
-                        outlines.mark_across(lx, ly);
-                    }
-                    (x, y) = (ax, ay);
-                }
-                outlines.mark_followed(x, y);
-            } else {
-                if ahead != OUTSIDE {
-                    outlines.mark_across(ax, ay);
-                }
-                (dx, dy) = (dy.wrapping_neg(), dx);
-            }
-            if x == sx && y == sy && (dx, dy) == direction {
+            // Each direction's step compiled apart: its tests of the tile's edges are one
+            // comparison each, its neighbours one addition away.
+            let turn = match k {
+                RIGHT => self.crack::<C, 1, 0>(cells, &mut at, value, (w, h), outlines),
+                DOWN => self.crack::<C, 0, 1>(cells, &mut at, value, (w, h), outlines),
+                LEFT => self.crack::<C, -1, 0>(cells, &mut at, value, (w, h), outlines),
+                _ => self.crack::<C, 0, -1>(cells, &mut at, value, (w, h), outlines),
+            };
+            k = (k + turn) & 3;
+            if at.2 == start && k == direction {
                 break;
             }
         }
     }
 
-    /// The dwell of tile cell (x, y), computed on first use, or [`OUTSIDE`] past the
-    /// tile's edges (at w or h, or −1 wrapped).
+    /// One step of [`follow`](Self::follow) from the cell `at` (x, y and its index) in
+    /// direction (DX, DY): to the cell ahead if it is in the region and the one left of
+    /// it is not, to the left one if it is (a left turn), or none if the cell ahead is not
+    /// (a right turn). Returns the turn in quarters clockwise (0, 1 or 3).
     #[inline(always)]
-    fn probe<C: Cells>(&mut self, cells: &C, x: u32, y: u32, (w, h): (u32, u32)) -> u32 {
-        if x < w && y < h {
-            // w is the tile's width: the index as `cell_index` finds it, kept in a register.
-            let index = (y * w + x) as usize & (CELLS - 1);
-            match self.tile.get(index).copied() {
-                Some(0) | None => self.compute_cell(cells, x, y, index),
-                Some(value) => u32::from(value),
+    fn crack<C: Cells, const DX: i32, const DY: i32>(
+        &mut self,
+        cells: &C,
+        at: &mut (u32, u32, u32),
+        value: u32,
+        (w, h): (u32, u32),
+        outlines: &mut Outlines,
+    ) -> u32 {
+        let (x, y, index) = *at;
+        // Whether a step from (x, y) by (dx, dy) stays in the tile: one test each.
+        let stays = |dx: i32, dy: i32| match (dx, dy) {
+            (1, _) => x + 1 < w,
+            (-1, _) => x > 0,
+            (_, 1) => y + 1 < h,
+            _ => y > 0,
+        };
+        let offset = |dx: i32, dy: i32| (dx + dy * w as i32) as u32;
+        if !stays(DX, DY) {
+            return 1;
+        }
+        let (ax, ay) = (x.wrapping_add_signed(DX), y.wrapping_add_signed(DY));
+        let ahead_index = index.wrapping_add(offset(DX, DY));
+        if self.cell_at(cells, ax, ay, ahead_index) != value {
+            outlines.mark_across(ax, ay);
+            return 1;
+        }
+        // Left of the cell ahead: (DY, −DX) from it, one step from (x, y) across.
+        if stays(DY, -DX) {
+            let (lx, ly) = (ax.wrapping_add_signed(DY), ay.wrapping_add_signed(-DX));
+            let left_index = ahead_index.wrapping_add(offset(DY, -DX));
+            if self.cell_at(cells, lx, ly, left_index) == value {
+                *at = (lx, ly, left_index);
+                outlines.mark_followed(lx, ly);
+                return 3;
             }
-        } else {
-            OUTSIDE
+            outlines.mark_across(lx, ly);
+        }
+        *at = (ax, ay, ahead_index);
+        outlines.mark_followed(ax, ay);
+        0
+    }
+
+    /// The dwell of tile cell (x, y) at `index`, computed on first use.
+    #[inline(always)]
+    fn cell_at<C: Cells>(&mut self, cells: &C, x: u32, y: u32, index: u32) -> u32 {
+        let index = index as usize & (CELLS - 1);
+        match self.tile.get(index).copied() {
+            Some(0) | None => self.compute_cell(cells, x, y, index),
+            Some(value) => u32::from(value),
         }
     }
 
