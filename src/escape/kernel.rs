@@ -194,12 +194,22 @@ impl Kernel {
         // wraps in the view (|q60| ≤ 3.5·2⁶⁰); past its edge the parts are not used.
         let shift = 60u32.saturating_sub(self.tier.frac_bits());
         let half = (1i64 << shift) >> 1;
-        for (slot, q60) in parts.iter_mut().zip(q60s) {
-            *slot = Part(if q60 >= 0 {
+        let round = |q60: i64, shift: u32| {
+            Part(if q60 >= 0 {
                 q60.wrapping_add(half) >> shift
             } else {
                 (half.wrapping_sub(q60) >> shift).wrapping_neg()
-            });
+            })
+        };
+        // Q28's shift by a constant 32: a word, not a double-word shift.
+        if shift == 32 {
+            for (slot, q60) in parts.iter_mut().zip(q60s) {
+                *slot = round(q60, 32);
+            }
+        } else {
+            for (slot, q60) in parts.iter_mut().zip(q60s) {
+                *slot = round(q60, shift);
+            }
         }
     }
 
