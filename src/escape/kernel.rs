@@ -270,7 +270,11 @@ impl<A: Arithmetic> TierOrbit for InTier<'_, A> {
     /// more in line.
     #[inline(always)]
     fn dwell(&self, re: Part, im: Part) -> Orbit {
-        orbit::<A, false>(self.0, re.0, im.0)
+        if A::WORD_STEPS && cfg!(not(tinyfractal_no_long_multiply)) {
+            orbit_in_line::<A, false>(self.0, re.0, im.0)
+        } else {
+            orbit::<A, false>(self.0, re.0, im.0)
+        }
     }
 
     #[inline(always)]
