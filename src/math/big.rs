@@ -8,7 +8,7 @@
 use core::fmt;
 
 use super::coord::Coord;
-use super::decimal::{split_decimal, DecimalText};
+use super::decimal::{split_decimal, write_scientific_digits, DecimalText};
 use super::wide::mul_u32_wide;
 
 /// Limbs of a [`DeepCoord`].
@@ -387,9 +387,7 @@ fn write_scientific(
     precision: Option<usize>,
 ) -> fmt::Result {
     let decimals = precision.map_or(6, |p| p.min(15));
-    if value < 0.0 {
-        f.write_str("-")?;
-    }
+    let sign = if value < 0.0 { "-" } else { "" };
     let mut magnitude = if value < 0.0 { -value } else { value };
     let mut exponent = 0i32;
     if magnitude > 0.0 {
@@ -417,11 +415,7 @@ fn write_scientific(
             width -= 1;
         }
     }
-    if width == 0 {
-        write!(f, "{whole}e{exponent}")
-    } else {
-        write!(f, "{whole}.{fraction:0width$}e{exponent}")
-    }
+    write_scientific_digits(f, sign, (whole, fraction, width), exponent)
 }
 
 /// 2^`power` as f64, for the `to_f64`s of wide numbers (no `powi` in `core`).

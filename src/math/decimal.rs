@@ -210,11 +210,7 @@ pub(crate) fn write_fixed(
     };
     if exponent < -4 {
         let (first, rest, width) = split(1);
-        return if width == 0 {
-            write!(f, "{sign}{first}e{exponent}")
-        } else {
-            write!(f, "{sign}{first}.{rest:0width$}e{exponent}")
-        };
+        return write_scientific_digits(f, sign, (first, rest, width), exponent);
     }
     if exponent < 0 {
         let zeros = exponent.unsigned_abs() as usize - 1;
@@ -227,6 +223,21 @@ pub(crate) fn write_fixed(
     }
     let (int, rest, width) = split(whole);
     write!(f, "{sign}{int}.{rest:0width$}")
+}
+
+/// `first.rest`·10^`exponent`, `rest` written in `width` digits (none, and no point, if
+/// 0): `1.38778e-17`, `5e-1`.
+pub(crate) fn write_scientific_digits(
+    f: &mut core::fmt::Formatter<'_>,
+    sign: &str,
+    (first, rest, width): (u64, u64, usize),
+    exponent: i32,
+) -> core::fmt::Result {
+    if width == 0 {
+        write!(f, "{sign}{first}e{exponent}")
+    } else {
+        write!(f, "{sign}{first}.{rest:0width$}e{exponent}")
+    }
 }
 
 /// `value` rounded half away from zero to 4 decimals, trailing zeros dropped: how derived
