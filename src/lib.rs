@@ -122,7 +122,9 @@ pub use error::{
 };
 pub use escape::drawing::{EscapeTime, Painter};
 pub use escape::perturbation::{ReferenceOrbit, ReferencePoint, REFERENCE_POINT_BYTES};
-pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE};
+pub use escape::schedule::{
+    Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE, TILE_CELLS, TILE_ROWS,
+};
 pub use escape::view::{
     Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
 };

@@ -125,7 +125,7 @@ fn an_input_cancels_the_stale_render() {
     let moved = state(&explorer);
     assert!((moved.centre.0 - (-0.743_643_887 - 8.0 * 1e-6 / 64.0)).abs() < 1e-15);
     let ticks = finish(&mut explorer, &mut display, 100_000);
-    assert!(ticks > 2, "rendered progressively ({ticks} ticks)");
+    assert!(ticks >= 2, "rendered progressively ({ticks} ticks)");
     assert_picture(&display, &headless(&moved));
 }
 

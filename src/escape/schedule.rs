@@ -1,28 +1,32 @@
 //! Which pixels to compute, in what order, and how they leave: rows, tiles and uniform
 //! blocks handed to a [`DwellSink`], in steps with a work budget.
 //!
-//! `Exact` computes every pixel, a row at a time. `Fast` splits the picture into 32×32
-//! tiles, taken a column of tiles at a time, each tile's first row the last of the tile
+//! `Exact` computes every pixel, a row at a time. `Fast` splits the picture into tiles 32
+//! wide, taken a column of tiles at a time, each tile's first row the last of the tile
 //! above where that adds no tile (see `Render::tile_stride`), and traces the outlines of
-//! each tile's regions of one dwell: only the cells on both sides of an outline are
-//! computed, and the rest take the dwell of the cell before them as the tile is sent (see
-//! `Render::trace`). Julia sets, smooth values and perturbed renders run
-//! Mariani–Silver subdivision instead (see `Kernel::traceable`): compute a rectangle's
-//! border; if it is one value, fill the rectangle; otherwise split it in four. A tile that
-//! comes out uniform leaves as one `uniform` block (`fill_solid`), any other as one
-//! `dwells` block (`fill_contiguous`): one address window per tile on an SPI display, each
-//! pixel sent once. When the view is symmetric, only the top half is computed and each
-//! tile is also sent, upside down, to the bottom half: mirrored for a Mandelbrot view
-//! centred on the real axis, turned half round for a Julia view centred on the origin (the
-//! kernel keeps both symmetries exactly).
+//! each tile's regions of one dwell in tiles 64 rows high: only the cells on both sides of
+//! an outline are computed, and the rest take the dwell of the cell before them as the
+//! tile is sent (see `Render::trace`). Julia sets, smooth values and perturbed renders run
+//! Mariani–Silver subdivision instead, in 32×32 tiles (see `Kernel::traceable`): compute a
+//! rectangle's border; if it is one value, fill the rectangle; otherwise split it in four.
+//! A tile that comes out uniform leaves as one `uniform` block (`fill_solid`); a traced
+//! tile leaves in bands of rows, each band of one-dwell rows as a `uniform` block and the
+//! rest as `dwells` blocks (`fill_contiguous`); a subdivided one as one `dwells` block:
+//! an address window per block on an SPI display, each pixel sent once. When the view is
+//! symmetric, only the top half is computed and each tile is also sent, upside down, to
+//! the bottom half: mirrored for a Mandelbrot view centred on the real axis, turned half
+//! round for a Julia view centred on the origin (the kernel keeps both symmetries
+//! exactly).
 //!
-//! RAM: a [`Render`] holds the tile's dwells (32×32×2 = 2 KiB), the tile's 32 column and 32
-//! row coordinates (512 bytes: points are separable, so they are computed once per tile,
-//! not once per pixel), the view and its kernel constants, about 3.2 KiB with a perturbed
-//! render's series (and it adds the reference orbit, in storage the caller gives: 24 bytes
-//! an iteration); while a tile is computed, the tracing's two bits a cell (256 bytes) or a
-//! subdivision stack of 32 rectangles (512 bytes) is on the stack. That is the worst case
-//! for a 320×240 view or any other: nothing is read back from the target.
+//! RAM: a [`Render`] holds the tile's dwells (32×64×2 = 4 KiB), the tile's 32 column and
+//! 64 row coordinates (768 bytes: points are separable, so they are computed once per
+//! tile, not once per pixel), the view and its kernel constants, about 5.4 KiB with a
+//! perturbed render's series (and it adds the reference orbit, in storage the caller
+//! gives: 24 bytes an iteration); while a tile is computed, the tracing's two bits a cell
+//! (512 bytes) or a subdivision stack of 32 rectangles (512 bytes) is on the stack. That
+//! is the worst case for a 320×240 view or any other: nothing is read back from the
+//! target. The tile's cells are a const generic (`Render::<'_, 1024>` traces 32×32 tiles
+//! and holds 2 KiB less; see [`Render::with_capacity`]).
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use heapless::Vec;
@@ -33,10 +37,15 @@ use super::view::{Parts, Symmetry, Tier, View};
 use crate::error::Error;
 use crate::render::sink::DwellSink;
 
-/// Side of a fast-mode tile, in pixels.
+/// Width of a fast-mode tile, in pixels, and the most rows of a subdivided one.
 pub const TILE: u32 = 32;
 
-const CELLS: usize = (TILE * TILE) as usize;
+/// The most rows of a fast-mode tile: a [`Render`] of [`TILE_CELLS`] traces tiles this
+/// tall (see `Render::tile_rows`).
+pub const TILE_ROWS: usize = 64;
+
+/// A [`Render`]'s tile cells unless its type says otherwise (`CELLS`): 32×64.
+pub const TILE_CELLS: usize = TILE as usize * TILE_ROWS;
 
 /// A block whose border is not one dwell and which spans fewer than this many cells past
 /// its first, across or down (at most 5 cells), is computed whole rather than split: its
@@ -190,7 +199,8 @@ impl Pixels<'_> {
 /// [`run`](Self::run) to finish in one go. A perturbed render borrows its reference
 /// orbit's storage for `'r`; any other is a `Render<'static>`.
 #[derive(Debug, Clone)]
-pub struct Render<'r> {
+#[repr(C)]
+pub struct Render<'r, const CELLS: usize = TILE_CELLS> {
     view: View,
     algorithm: Algorithm,
     next: u32,
@@ -199,14 +209,11 @@ pub struct Render<'r> {
     previewed: u32,
     stats: RenderStats,
     pixels: Pixels<'r>,
-    /// The current tile's dwells, row by row with no gaps (w×h of them): a tile leaves as
-    /// one slice.
-    tile: [u16; CELLS],
     /// The current tile's width: the row stride in `tile`.
     width: u32,
     /// The current tile's column and row parts of its points.
     columns: [Part; TILE as usize],
-    rows: [Part; TILE as usize],
+    rows: [Part; TILE_ROWS],
     /// The first column `columns` are for (`u32::MAX`: none yet).
     columns_from: u32,
     /// The tile (`next` then) whose dwells are in `tile` (`u32::MAX`: none).
@@ -214,6 +221,9 @@ pub struct Render<'r> {
     /// Steps and pixels computed in the current tile, not yet in `stats`.
     tile_steps: u32,
     tile_pixels: u32,
+    /// The current tile's dwells, row by row with no gaps (w×h of them): a tile leaves as
+    /// one slice. Last, so that the other fields are a short offset away.
+    tile: [u16; CELLS],
 }
 
 /// A perturbed pixel's dwell, out of line wherever a render is (in line, perturbation's
@@ -272,14 +282,14 @@ impl Cells for AnyCells {
 }
 
 /// A tile's tracing or subdivision, run by [`Kernel::visit`] in the kernel's tier.
-struct TileCells<'a, 'r> {
-    render: &'a mut Render<'r>,
+struct TileCells<'a, 'r, const CELLS: usize> {
+    render: &'a mut Render<'r, CELLS>,
     size: (u32, u32),
     /// Whether the tile's regions are traced (see [`Render::trace`]), not subdivided.
     traced: bool,
 }
 
-impl TierVisitor for TileCells<'_, '_> {
+impl<const CELLS: usize> TierVisitor for TileCells<'_, '_, CELLS> {
     type Output = TileDwells;
 
     fn visit<T: TierOrbit>(self, orbit: T) -> TileDwells {
@@ -305,9 +315,9 @@ const _: () = assert!(TILE <= u32::BITS);
 /// What a tile's boundary tracing knows of its cells, a bit a cell and a word a row.
 struct Outlines {
     /// Cells on a followed outline.
-    followed: [u32; TILE as usize],
+    followed: [u32; TILE_ROWS],
     /// Cells computed across a followed outline: where new regions start.
-    across: [u32; TILE as usize],
+    across: [u32; TILE_ROWS],
 }
 
 impl Outlines {
@@ -320,13 +330,52 @@ impl Outlines {
     fn mark_across(&mut self, x: u32, y: u32) {
         set_bit(&mut self.across, x, y);
     }
+
+    /// The rows, a bit each, of a traced tile `w` cells wide and `h` high that are sent as
+    /// blocks of one dwell: rows all one dwell once gaps are filled, and the same dwell as
+    /// the row above if that is one too. A cell is computed only on a followed outline or
+    /// across one (and marked), or by the first scan of the tile's edge: a row with no
+    /// marked cell between its first and last has only gaps between them, and is one
+    /// dwell if its last cell is a gap or the first's dwell. The first and last rows, on
+    /// the tile's edge, are checked cell by cell.
+    fn quiet_rows(&self, tile: &[u16], w: u32, h: u32) -> u64 {
+        let between = low_bits(w.saturating_sub(1)) & !1;
+        let marked = self.followed.iter().zip(&self.across);
+        let mut quiet = 0;
+        // The dwell of the row above if it is sent as a block.
+        let mut above = None;
+        for (y, (followed, across)) in (0..h).zip(marked) {
+            let dwell = above.take();
+            if (followed | across) & between != 0 {
+                continue;
+            }
+            let start = (y * w) as usize;
+            let Some(row) = tile.get(start..start + w as usize) else {
+                break;
+            };
+            let (Some(&first), Some(&last)) = (row.first(), row.last()) else {
+                break;
+            };
+            let one_dwell = |cell: u16| cell == 0 || cell == first;
+            let uniform = if y == 0 || y + 1 == h {
+                row.iter().all(|&cell| one_dwell(cell))
+            } else {
+                one_dwell(last)
+            };
+            if uniform && dwell.is_none_or(|above| above == first) {
+                quiet |= 1 << y;
+                above = Some(first);
+            }
+        }
+        quiet
+    }
 }
 
 /// Sets cell (x, y)'s bit in a tile's bits, a word a row (indexed by masking: no bounds
 /// checks).
 #[inline(always)]
-fn set_bit(bits: &mut [u32; TILE as usize], x: u32, y: u32) {
-    if let Some(row) = bits.get_mut(y as usize & (TILE as usize - 1)) {
+fn set_bit(bits: &mut [u32; TILE_ROWS], x: u32, y: u32) {
+    if let Some(row) = bits.get_mut(y as usize & (TILE_ROWS - 1)) {
         *row |= 1 << (x & (TILE - 1));
     }
 }
@@ -341,12 +390,54 @@ struct Block {
 }
 
 impl Render<'static> {
-    /// A render of `view`, nothing computed yet, in the view's fixed-point tier. A
-    /// [`Tier::Perturbation`] view needs storage for its reference orbit, so it is made
-    /// with [`Render::perturbed`]; given here, it is computed in `Deep`, whose stats say
-    /// so, and which does not resolve pixels finer than 2⁻⁵⁴.
+    /// A render of `view`, nothing computed yet, in the view's fixed-point tier, with
+    /// tiles of [`TILE_ROWS`] rows. A [`Tier::Perturbation`] view needs storage for its
+    /// reference orbit, so it is made with [`Render::perturbed`]; given here, it is
+    /// computed in `Deep`, whose stats say so, and which does not resolve pixels finer
+    /// than 2⁻⁵⁴.
     pub fn new(view: View, algorithm: Algorithm) -> Self {
-        Render::with_pixels(
+        Self::with_capacity(view, algorithm)
+    }
+}
+
+impl<const CELLS: usize> Render<'static, CELLS> {
+    /// As [`new`](Render::new), with the tile's cells in the type (32 times a power of
+    /// two from 2 to 64): `Render::<'_, 1024>::with_capacity(view, algorithm)` holds
+    /// 2,048 bytes fewer and traces 32×32 tiles (on Cortex-M4F, the full view at 320×240
+    /// took 2.1 % more instructions, the boards' deep zoom 8.9 % more).
+    ///
+    /// ```
+    /// use embedded_graphics::prelude::Size;
+    /// use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Render, View};
+    ///
+    /// let centre = (Coord::parse("-0.75").unwrap(), Coord::default());
+    /// let size = Size::new(128, 64);
+    /// let width = Coord::parse("3.5").unwrap();
+    /// let view = View::new(Fractal::Mandelbrot, centre, width, size, 64)?;
+    /// let mut dwells = [0u16; 128 * 64];
+    /// let mut small = Render::<'_, 1024>::with_capacity(view, Algorithm::Fast);
+    /// let Ok(_) = small.run(&mut DwellBuffer::new(&mut dwells, 128));
+    /// let mut again = [0u16; 128 * 64];
+    /// let Ok(_) = Render::new(view, Algorithm::Fast).run(&mut DwellBuffer::new(&mut again, 128));
+    /// assert_eq!(dwells, again);
+    /// # Ok::<(), tinyfractal::Error>(())
+    /// ```
+    ///
+    /// Other sizes do not build:
+    ///
+    /// ```compile_fail
+    /// use embedded_graphics::prelude::Size;
+    /// use tinyfractal::{Algorithm, Coord, Fractal, Render, View};
+    ///
+    /// let centre = (Coord::parse("-0.75").unwrap(), Coord::default());
+    /// let size = Size::new(128, 64);
+    /// let width = Coord::parse("3.5").unwrap();
+    /// let view = View::new(Fractal::Mandelbrot, centre, width, size, 64)?;
+    /// let _render = Render::<'_, 1000>::with_capacity(view, Algorithm::Fast);
+    /// # Ok::<(), tinyfractal::Error>(())
+    /// ```
+    pub fn with_capacity(view: View, algorithm: Algorithm) -> Self {
+        Self::with_pixels(
             view,
             algorithm,
             Pixels::Fixed(Kernel::new(&view, algorithm.periodicity(&view))),
@@ -364,6 +455,20 @@ impl<'r> Render<'r> {
         algorithm: Algorithm,
         storage: &'r mut [ReferencePoint],
     ) -> Result<Self, Error> {
+        Self::perturbed_with_capacity(view, algorithm, storage)
+    }
+}
+
+impl<'r, const CELLS: usize> Render<'r, CELLS> {
+    /// As [`perturbed`](Render::perturbed), with the tile's cells in the type (see
+    /// [`with_capacity`](Render::with_capacity)). A perturbed render subdivides tiles of
+    /// 32 rows, never traces, so `Render::<'_, 1024>` draws it as fast and leaves 2,048
+    /// bytes more for the reference.
+    pub fn perturbed_with_capacity(
+        view: View,
+        algorithm: Algorithm,
+        storage: &'r mut [ReferencePoint],
+    ) -> Result<Self, Error> {
         let reference = ReferenceOrbit::compute(&view, storage)?;
         Ok(Self::with_pixels(
             view,
@@ -375,8 +480,24 @@ impl<'r> Render<'r> {
             )),
         ))
     }
+}
+
+impl<'r, const CELLS: usize> Render<'r, CELLS> {
+    /// Tile rows are masked and are bits of a word, so they are a power of two up to 64
+    /// (and at least 2: a tile shares its first row with the tile above).
+    const ROWS_FIT: () = assert!(
+        Self::ROWS.is_power_of_two()
+            && Self::ROWS >= 2
+            && Self::ROWS <= TILE_ROWS
+            && CELLS.is_multiple_of(TILE as usize),
+        "a Render's CELLS is 32 times a power of two from 2 to 64"
+    );
+
+    /// Rows in the tile.
+    const ROWS: usize = CELLS / TILE as usize;
 
     fn with_pixels(view: View, algorithm: Algorithm, pixels: Pixels<'r>) -> Self {
+        let () = Self::ROWS_FIT;
         Self {
             pixels,
             view,
@@ -395,7 +516,7 @@ impl<'r> Render<'r> {
             tile: [0; CELLS],
             width: TILE,
             columns: [Part::default(); TILE as usize],
-            rows: [Part::default(); TILE as usize],
+            rows: [Part::default(); TILE_ROWS],
             columns_from: u32::MAX,
             in_tile: u32::MAX,
             tile_steps: 0,
@@ -510,10 +631,23 @@ impl<'r> Render<'r> {
     /// zoom took 0.15 % more instructions.
     fn tile_stride(&self) -> u32 {
         let rows = self.computed_rows();
-        if rows.saturating_sub(1).div_ceil(TILE - 1) > rows.div_ceil(TILE) {
-            TILE
+        let tile_rows = self.tile_rows();
+        if rows.saturating_sub(1).div_ceil(tile_rows - 1) > rows.div_ceil(tile_rows) {
+            tile_rows
         } else {
-            TILE - 1
+            tile_rows - 1
+        }
+    }
+
+    /// A tile's height: traced tiles as tall as the render holds (on the full view at
+    /// 320×240, 32×64 tiles computed 11,245 pixels where 32×32 computed 11,694, and the
+    /// frame took 2.0 % fewer instructions on Cortex-M4F, the boards' deep zoom 8.2 %
+    /// fewer); subdivided ones at most 32 (at 32×64, the boards' Julia set at 320×240
+    /// took 2 % more).
+    fn tile_rows(&self) -> u32 {
+        match self.pixels {
+            Pixels::Fixed(kernel) if kernel.traceable() => Self::ROWS as u32,
+            _ => TILE.min(Self::ROWS as u32),
         }
     }
 
@@ -522,7 +656,7 @@ impl<'r> Render<'r> {
         let stride = self.tile_stride();
         // A tile covers rows y0..y0 + TILE; the next starts at y0 + stride.
         (self.computed_rows() + stride)
-            .saturating_sub(TILE)
+            .saturating_sub(self.tile_rows())
             .div_ceil(stride)
             .max(1)
     }
@@ -568,11 +702,12 @@ impl<'r> Render<'r> {
         let (column, row) = (self.next / down, self.next % down);
         let (x0, y0) = (column * TILE, row * stride);
         let w = TILE.min(self.view.size.width - x0);
-        let h = TILE.min(self.computed_rows() - y0);
+        let tile_rows = self.tile_rows();
+        let h = tile_rows.min(self.computed_rows() - y0);
         // The tile above was the last one computed, as wide and TILE rows high: where the
         // stride shares it, its last row is this tile's first, known (unless sending this
         // tile failed before, and `tile` holds it).
-        let shared = u32::from(row > 0 && stride < TILE);
+        let shared = u32::from(row > 0 && stride < tile_rows);
         let known = if shared == 1 && self.in_tile.wrapping_add(1) == self.next {
             w as usize
         } else {
@@ -580,7 +715,7 @@ impl<'r> Render<'r> {
         };
         // Copied out and back round the tile's clearing: moved within the tile and the rest
         // cleared by a fill, the full view took 25 K more instructions on the M4F.
-        let last_row = self.cell_index(0, TILE - 1);
+        let last_row = self.cell_index(0, tile_rows - 1);
         let mut kept = [0u16; TILE as usize];
         if let (Some(to), Some(from)) = (
             kept.get_mut(..known),
@@ -588,15 +723,17 @@ impl<'r> Render<'r> {
         ) {
             to.copy_from_slice(from);
         }
-        self.tile = [0; CELLS];
+        if let Some(used) = self.tile.get_mut(..(w * h) as usize) {
+            used.fill(0);
+        }
         if let (Some(to), Some(from)) = (self.tile.get_mut(..known), kept.get(..known)) {
             to.copy_from_slice(from);
         }
         self.width = w;
         // Rows and columns past the view's edge are not used. The columns are the same
         // for a whole column of tiles.
-        self.pixels
-            .fill(self.view.rows_from(i64::from(y0)), &mut self.rows);
+        let rows = self.rows.get_mut(..h as usize).unwrap_or_default();
+        self.pixels.fill(self.view.rows_from(i64::from(y0)), rows);
         if self.columns_from != x0 {
             self.columns_from = x0;
             self.pixels
@@ -637,8 +774,11 @@ impl<'r> Render<'r> {
         Ok(())
     }
 
-    /// Sends `area.size.height` of the tile's rows from row `first` to `area` in `order`,
-    /// or one dwell if uniform.
+    /// Sends `area.size.height` of the tile's rows from row `first` to `area` in `order`:
+    /// one dwell if uniform, else in bands of rows, each band of one-dwell rows as a block
+    /// (see `Outlines::quiet_rows`). A display takes a block as one colour repeated: with
+    /// 32×32 tiles, the full view at 320×240 took 3.1 % fewer instructions on Cortex-M4F
+    /// than with one `fill_contiguous` a tile.
     fn emit<S: DwellSink>(
         &mut self,
         sink: &mut S,
@@ -647,20 +787,80 @@ impl<'r> Render<'r> {
         order: Order,
         dwells: TileDwells,
     ) -> Result<(), S::Error> {
-        self.stats.draw_calls += 1;
-        if let (TileDwells::Gaps, Order::HalfTurn) = (dwells, order) {
-            // Read backwards, a row's gaps come before the cell they take their dwell from.
-            self.fill_gaps();
+        let quiet = match dwells {
+            TileDwells::Uniform(value) => {
+                self.stats.draw_calls += 1;
+                return sink.uniform(&area, value);
+            }
+            TileDwells::Cells => 0,
+            TileDwells::Gaps(quiet) => {
+                if let Order::HalfTurn = order {
+                    // Read backwards, a row's gaps come before the cell they take their
+                    // dwell from.
+                    self.fill_gaps();
+                }
+                quiet
+            }
+        };
+        let rows = area.size.height;
+        let forward = matches!(order, Order::Forward);
+        // Bit k: whether the row sent kth is one dwell.
+        let bits =
+            quiet.checked_shr(first).unwrap_or(0) & u64::MAX.checked_shr(64 - rows).unwrap_or(0);
+        let bits = if forward {
+            bits
+        } else {
+            bits.reverse_bits().checked_shr(64 - rows).unwrap_or(0)
+        };
+        let mut sent = 0;
+        while sent < rows {
+            let ahead = bits.checked_shr(sent).unwrap_or(0);
+            let one_dwell = ahead & 1 == 1;
+            let band_rows = if one_dwell {
+                ahead.trailing_ones()
+            } else {
+                ahead.trailing_zeros()
+            };
+            let end = rows.min(sent + band_rows);
+            let band = Rectangle::new(
+                area.top_left + Point::new(0, coordinate(sent)),
+                Size::new(area.size.width, end - sent),
+            );
+            // The band's first row in the tile.
+            let top = if forward {
+                first + sent
+            } else {
+                first + rows - end
+            };
+            self.send(sink, band, top, (order, dwells), one_dwell)?;
+            sent = end;
         }
+        Ok(())
+    }
+
+    /// Sends the tile's rows from row `first` to `area` in `order`, as one dwell (the
+    /// first cell's) if they are `one_dwell`.
+    fn send<S: DwellSink>(
+        &mut self,
+        sink: &mut S,
+        area: Rectangle,
+        first: u32,
+        (order, dwells): (Order, TileDwells),
+        one_dwell: bool,
+    ) -> Result<(), S::Error> {
+        self.stats.draw_calls += 1;
         let w = self.width as usize;
         let start = w * first as usize;
+        if one_dwell {
+            let value = self.tile.get(start).copied().unwrap_or(0);
+            return sink.uniform(&area, value);
+        }
         let cells = self
             .tile
             .get_mut(start..start + w * area.size.height as usize)
             .unwrap_or(&mut []);
         match (dwells, order) {
-            (TileDwells::Uniform(value), _) => sink.uniform(&area, value),
-            (TileDwells::Gaps, Order::Forward) => {
+            (TileDwells::Gaps(_), Order::Forward) => {
                 // Filled in place as they are read, for the tile below and the mirror image.
                 let last_gap = cells.iter().rposition(|&cell| cell == 0);
                 let mut before = 0;
@@ -731,7 +931,7 @@ impl<'r> Render<'r> {
             .unwrap_or_default();
         let im = self
             .rows
-            .get(ty as usize & mask)
+            .get(ty as usize & (TILE_ROWS - 1))
             .copied()
             .unwrap_or_default();
         let orbit = cells.orbit(&self.pixels, re, im, &mut self.stats);
@@ -793,8 +993,8 @@ impl<'r> Render<'r> {
     /// `Kernel::traceable`).
     fn trace<C: Cells>(&mut self, cells: &C, w: u32, h: u32) -> TileDwells {
         let mut outlines = Outlines {
-            followed: [0; TILE as usize],
-            across: [0; TILE as usize],
+            followed: [0; TILE_ROWS],
+            across: [0; TILE_ROWS],
         };
         let whole = Block {
             x0: 0,
@@ -810,7 +1010,7 @@ impl<'r> Render<'r> {
         self.follow(cells, (0, 0, RIGHT), (w, h), &mut outlines);
         let width = self.width as usize;
         for ty in 0..h {
-            let row = ty as usize & (TILE as usize - 1);
+            let row = ty as usize & (TILE_ROWS - 1);
             // Bits from here on are still to be looked at.
             let mut from = 0u32;
             loop {
@@ -845,7 +1045,7 @@ impl<'r> Render<'r> {
             }
         }
         // Cells not computed take the dwell before them as the tile is sent.
-        TileDwells::Gaps
+        TileDwells::Gaps(outlines.quiet_rows(&self.tile, self.width, h))
     }
 
     /// Follows the outline of the region of the cell in `start` (a cell and a direction
@@ -1045,6 +1245,11 @@ impl Iterator for RowsBackward<'_> {
     }
 }
 
+/// A word with its `n` lowest bits set.
+fn low_bits(n: u32) -> u32 {
+    1u32.checked_shl(n).map_or(u32::MAX, |bit| bit - 1)
+}
+
 /// A cell read in order with the dwell `before` it: a gap (0) takes that dwell, written in
 /// place (unconditionally, no branch); the cell's dwell, now `before` the next.
 #[inline(always)]
@@ -1063,8 +1268,9 @@ enum TileDwells {
     Cells,
     /// Cells not computed are 0, and take the dwell of the cell before them (the first of
     /// each row is computed): filled as the tile is sent, not in a pass of their own (see
-    /// `Render::trace`).
-    Gaps,
+    /// `Render::trace`). Rows whose bit is set are one dwell, their first cell's (see
+    /// `Outlines::quiet_rows`), sent as blocks and not filled.
+    Gaps(u64),
 }
 
 /// The order a tile's rows and columns are sent in.
