@@ -222,7 +222,9 @@ pub struct Render<'r, const CELLS: usize = TILE_CELLS> {
     tile_steps: u32,
     tile_pixels: u32,
     /// The current tile's dwells, row by row with no gaps (w×h of them): a tile leaves as
-    /// one slice. Last, so that the other fields are a short offset away.
+    /// one slice. Last (`repr(C)`), so that the other fields are a load's short offset
+    /// away: laid out by the compiler, the full view at 320×240 took 0.5 % more on the
+    /// M4F.
     tile: [u16; CELLS],
 }
 
