@@ -197,7 +197,8 @@ impl Pixels<'_> {
 
 /// A render in progress: call [`step`](Self::step) from a main loop with a budget, or
 /// [`run`](Self::run) to finish in one go. A perturbed render borrows its reference
-/// orbit's storage for `'r`; any other is a `Render<'static>`.
+/// orbit's storage for `'r`; any other is a `Render<'static>`. `CELLS` is the tile's
+/// cells (see [`with_capacity`](Render::with_capacity)).
 #[derive(Debug, Clone)]
 #[repr(C)]
 pub struct Render<'r, const CELLS: usize = TILE_CELLS> {
@@ -364,7 +365,9 @@ impl Outlines {
             } else {
                 one_dwell(last)
             };
-            if uniform && dwell.is_none_or(|above| above == first) {
+            // The first cell is on the tile's edge, so computed; were it not (0), the row
+            // would go as cells.
+            if uniform && first != 0 && dwell.is_none_or(|above| above == first) {
                 quiet |= 1 << y;
                 above = Some(first);
             }
@@ -482,9 +485,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
             )),
         ))
     }
-}
 
-impl<'r, const CELLS: usize> Render<'r, CELLS> {
     /// Tile rows are masked and are bits of a word, so they are a power of two up to 64
     /// (and at least 2: a tile shares its first row with the tile above).
     const ROWS_FIT: () = assert!(
@@ -656,7 +657,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     /// Tiles in a column.
     fn tiles_down(&self) -> u32 {
         let stride = self.tile_stride();
-        // A tile covers rows y0..y0 + TILE; the next starts at y0 + stride.
+        // A tile covers rows y0..y0 + tile_rows; the next starts at y0 + stride.
         (self.computed_rows() + stride)
             .saturating_sub(self.tile_rows())
             .div_ceil(stride)
@@ -706,7 +707,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         let w = TILE.min(self.view.size.width - x0);
         let tile_rows = self.tile_rows();
         let h = tile_rows.min(self.computed_rows() - y0);
-        // The tile above was the last one computed, as wide and TILE rows high: where the
+        // The tile above was the last one computed, as wide and tile_rows high: where the
         // stride shares it, its last row is this tile's first, known (unless sending this
         // tile failed before, and `tile` holds it).
         let shared = u32::from(row > 0 && stride < tile_rows);
