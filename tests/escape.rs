@@ -1049,14 +1049,13 @@ fn goes_on_after_a_sink_error<const CELLS: usize>((re, im): (&str, &str), width:
         200,
     )
     .unwrap();
-    let whole =
-        |sink: &mut FailsOnce| Render::<'_, CELLS>::with_capacity(view, Algorithm::Fast).run(sink);
+    let fresh = || Render::<'_, CELLS>::with_capacity(view, Algorithm::Fast);
     let mut counted = FailsOnce {
         dwells: Dwells::new(view.size()),
         calls: 0,
         fail_at: 0,
     };
-    whole(&mut counted).unwrap();
+    fresh().run(&mut counted).unwrap();
     // Every run, including those of tiles that share a row.
     assert!(counted.calls >= 8, "{}", counted.calls);
     for fail_at in 1..=counted.calls {
@@ -1065,7 +1064,7 @@ fn goes_on_after_a_sink_error<const CELLS: usize>((re, im): (&str, &str), width:
             calls: 0,
             fail_at,
         };
-        let mut render = Render::<'_, CELLS>::with_capacity(view, Algorithm::Fast);
+        let mut render = fresh();
         assert!(render.run(&mut sink).is_err());
         render.run(&mut sink).unwrap();
         assert!(

@@ -349,7 +349,7 @@ impl Outlines {
         let mut above = None;
         for (y, (followed, across)) in (0..h).zip(marked) {
             let dwell = above.take();
-            if (followed | across) & between != 0 {
+            if u64::from(followed | across) & between != 0 {
                 continue;
             }
             let start = (y * w) as usize;
@@ -808,8 +808,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         let rows = area.size.height;
         let forward = matches!(order, Order::Forward);
         // Bit k: whether the row sent kth is one dwell.
-        let bits =
-            quiet.checked_shr(first).unwrap_or(0) & u64::MAX.checked_shr(64 - rows).unwrap_or(0);
+        let bits = quiet.checked_shr(first).unwrap_or(0) & low_bits(rows);
         let bits = if forward {
             bits
         } else {
@@ -938,7 +937,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
             .copied()
             .unwrap_or_default();
         let orbit = cells.orbit(&self.pixels, re, im, &mut self.stats);
-        // Counted in 32 bits (a tile's cells take at most 1024 × 65,535 steps) and added
+        // Counted in 32 bits (a tile's cells take at most 2,048 × 65,535 steps) and added
         // to the stats once a tile.
         self.tile_steps += orbit.iterations;
         self.tile_pixels += 1;
@@ -1248,9 +1247,9 @@ impl Iterator for RowsBackward<'_> {
     }
 }
 
-/// A word with its `n` lowest bits set.
-fn low_bits(n: u32) -> u32 {
-    1u32.checked_shl(n).map_or(u32::MAX, |bit| bit - 1)
+/// A word with its `n` lowest bits set (a tile's cells in a row, or its rows).
+fn low_bits(n: u32) -> u64 {
+    1u64.checked_shl(n).map_or(u64::MAX, |bit| bit - 1)
 }
 
 /// A cell read in order with the dwell `before` it: a gap (0) takes that dwell, written in
