@@ -167,6 +167,31 @@ fn views_past_deep_take_perturbation_and_shallower_ones_a_fixed_tier() {
     );
 }
 
+/// A deep view with a long orbit (10⁻¹² over 64 pixels at 4000 iterations, here the same
+/// spacing on 32×24): the automatic tier counts the cap and takes perturbation, which
+/// keeps 99.9 % of the model's dwells where `Deep` keeps under 90 % (docs/tiers.md).
+#[test]
+fn the_automatic_tier_of_a_deep_view_with_a_long_orbit_keeps_its_dwells() {
+    let (width, size, max) = ("0.5e-12", (32, 24), 4000);
+    let view = deep_view(SPIRAL, width, size, max);
+    assert_eq!(view.tier(), Tier::Perturbation);
+    assert!(view.assured());
+    let (ours, _) = perturbed(view, Algorithm::Exact);
+    let expected = model(SPIRAL, width, size, max);
+    let same = ours.iter().zip(&expected).filter(|(a, b)| a == b).count();
+    assert!(
+        same * 1000 >= expected.len() * 999,
+        "{same} of {} dwells identical",
+        expected.len()
+    );
+    // `Deep` forced on it loses dwells: the choice matters here.
+    let (deep, _) = in_deep(view.with_tier(Tier::Deep));
+    let deep_same = deep.iter().zip(&expected).filter(|(a, b)| a == b).count();
+    assert!(deep_same < same, "Deep {deep_same}, perturbation {same}");
+    // With a short orbit (z + i = 46 + 4) the same view stays in `Deep`.
+    assert_eq!(deep_view(SPIRAL, width, size, 16).tier(), Tier::Deep);
+}
+
 #[test]
 fn bad_input_is_a_typed_error_naming_the_limit() {
     let parse = |text: &str| DeepCoord::parse(text).unwrap();

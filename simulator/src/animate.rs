@@ -12,7 +12,7 @@ use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
 use indicatif::{ProgressBar, ProgressStyle};
-use tinyfractal::{Algorithm, Coord, View, ZoomFrame, ZoomLine};
+use tinyfractal::{Algorithm, Coord, Tier, View, ZoomFrame, ZoomLine};
 
 use crate::args::{AnimateArgs, Animation};
 use crate::escape_scene::{self, Request};
@@ -65,15 +65,16 @@ pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
         }
     };
     bar.finish_and_clear();
-    write(&frames, &arguments.out, arguments.delay_ms)?;
-    if arguments.stats {
-        println!(
-            "frames={}{detail} elapsed_ms={:.3}",
+    let stats = if arguments.stats {
+        format!(
+            "frames={}{detail} elapsed_ms={:.3}\n",
             frames.len(),
             started.elapsed().as_secs_f64() * 1e3
-        );
-    }
-    Ok(())
+        )
+    } else {
+        String::new()
+    };
+    write(&frames, &arguments.out, arguments.delay_ms, stats)
 }
 
 /// The widths of a zoom's frames, as text: the first is `--width`, the last `end_width`
@@ -133,17 +134,44 @@ fn zoom(
     let Some(palette) = palette else {
         return Ok((Vec::new(), String::new()));
     };
+    // A frame that is not exact by the tier rule says so, once, before any is computed.
+    if let Some((index, warning)) = views
+        .iter()
+        .enumerate()
+        .find_map(|(index, view)| escape_scene::TierWarning::of(view).map(|w| (index, w)))
+    {
+        crate::warn(&format!(
+            "the frame at width {} and those like it: {}",
+            widths[index],
+            warning.message(&views[index])
+        ));
+    }
     let pixels = (request.size.width * request.size.height) as usize;
     let mut values = vec![0u16; pixels];
     let mut columns = vec![ZoomLine::default(); request.size.width as usize];
     let mut rows = vec![ZoomLine::default(); request.size.height as usize];
     let (mut computed, mut total) = (0u64, 0u64);
     let mut pictures = Vec::with_capacity(views.len());
-    // One frame, moved in place from view to view.
-    let mut frame = ZoomFrame::new(views[0], &mut values, &mut columns, &mut rows)
+    // One frame, moved in place from view to view. A frame computes in a fixed tier, so a
+    // view whose tier is perturbation (past `Deep`'s spacing, or deep with a long orbit)
+    // is rendered whole by perturbation, as `render` renders it; the frame's storage is
+    // checked against a fixed tier's view of the same size.
+    let fixed = |view: &View| match view.tier() {
+        Tier::Perturbation => view.with_tier(Tier::Deep),
+        _ => *view,
+    };
+    let mut frame = ZoomFrame::new(fixed(&views[0]), &mut values, &mut columns, &mut rows)
         .map_err(|e| e.to_string())?;
     for (index, view) in views.iter().enumerate() {
         let last = index + 1 == views.len();
+        if view.tier() == Tier::Perturbation {
+            let (perturbed, _) = escape_scene::compute(*view, Algorithm::Exact)?;
+            computed += pixels as u64;
+            total += pixels as u64;
+            pictures.push(escape_scene::paint(view, &perturbed, &palette));
+            bar.inc(1);
+            continue;
+        }
         // The last frame takes only lines at exactly its own points: it is exact.
         let tolerance = tolerance.map(|percent| if last { 0 } else { percent });
         let stats = frame.advance(*view, tolerance).map_err(|e| e.to_string())?;
@@ -216,8 +244,17 @@ fn growth(
 
 /// Writes the frames: `NAME.gif`, `NAME.png` (APNG), or a folder of `frame-NNNN.png`
 /// (created if missing), all or nothing.
-fn write(frames: &[SimulatorDisplay<Rgb888>], out: &Path, delay_ms: u32) -> Result<(), String> {
+/// Writes the frames to `out` (a GIF, an APNG or a folder of numbered PNGs) and prints
+/// `stats`, all or nothing; in a folder, numbered frames past these (an earlier, longer
+/// run's) are removed once these are in place.
+fn write(
+    frames: &[SimulatorDisplay<Rgb888>],
+    out: &Path,
+    delay_ms: u32,
+    stats: String,
+) -> Result<(), String> {
     let mut plan = crate::output::Plan::new();
+    plan.print(stats);
     let extension = out
         .extension()
         .and_then(|e| e.to_str())
@@ -234,9 +271,35 @@ fn write(frames: &[SimulatorDisplay<Rgb888>], out: &Path, delay_ms: u32) -> Resu
             for (frame, path) in frames.iter().zip(&paths) {
                 plan.add("--out", path, move |w| crate::output::png(frame, w));
             }
+            plan.write()?;
+            return remove_stale_frames(out, frames.len());
         }
     }
     plan.write()
+}
+
+/// Removes `frame-NNNN.png` files numbered `count` and on from `folder`: what an earlier
+/// run with more frames left there.
+fn remove_stale_frames(folder: &Path, count: usize) -> Result<(), String> {
+    let entries =
+        std::fs::read_dir(folder).map_err(|e| format!("--out {}: {e}", folder.display()))?;
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(number) = name
+            .to_str()
+            .and_then(|name| name.strip_prefix("frame-"))
+            .and_then(|rest| rest.strip_suffix(".png"))
+            .filter(|digits| digits.len() >= 4 && digits.bytes().all(|b| b.is_ascii_digit()))
+            .and_then(|digits| digits.parse::<usize>().ok())
+        else {
+            continue;
+        };
+        if number >= count && entry.file_type().is_ok_and(|kind| kind.is_file()) {
+            std::fs::remove_file(entry.path())
+                .map_err(|e| format!("--out {}: {e}", entry.path().display()))?;
+        }
+    }
+    Ok(())
 }
 
 /// RGB bytes of a frame, row by row.

@@ -483,7 +483,8 @@ pub fn parse_projection(text: &str) -> Result<tinyfractal::Projection, String> {
 struct DeriveOptions {
     #[command(flatten)]
     system: SystemOptions,
-    /// The longest string printed, in symbols (a typed error past it)
+    /// The longest string printed, in symbols: an error past it (up to 10000000 checked
+    /// before anything is printed; above, the string streams and stops at the limit)
     #[arg(long = "max-length", value_name = "N", default_value_t = DEFAULT_MAX_LENGTH)]
     max_length: u64,
 }
@@ -721,14 +722,12 @@ where
     })
 }
 
-/// Writes a shell completion script for `shell` to stdout.
-pub fn completions(shell: clap_complete::Shell) {
-    clap_complete::generate(
-        shell,
-        &mut Cli::command(),
-        "tinyfractal",
-        &mut std::io::stdout(),
-    );
+/// Writes a shell completion script for `shell` to stdout (made whole first: the
+/// generator panics on a failed write).
+pub fn completions(shell: clap_complete::Shell) -> Result<(), String> {
+    let mut script = Vec::new();
+    clap_complete::generate(shell, &mut Cli::command(), "tinyfractal", &mut script);
+    crate::console::print(&String::from_utf8_lossy(&script))
 }
 
 fn usage(kind: ErrorKind, message: &str) -> clap::Error {

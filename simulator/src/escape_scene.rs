@@ -197,19 +197,13 @@ pub fn write_dwells(rendered: &Rendered, out: &mut dyn Write) -> io::Result<()> 
     Ok(())
 }
 
-/// The one-line `--stats` report; with `warning=tier_cannot_resolve automatic_tier=NAME`
-/// at the end when a forced tier cannot tell the pixels apart.
+/// The one-line `--stats` report; with ` warning=KIND` at the end (and the automatic
+/// tier, where a forced one is the cause) when the picture is not exact by the tier rule:
+/// see [`TierWarning`].
 pub fn stats_line(rendered: &Rendered) -> String {
     let s = rendered.stats;
     let view = rendered.view;
-    let warning = if view.resolves_pixels() {
-        String::new()
-    } else {
-        format!(
-            " warning=tier_cannot_resolve automatic_tier={}",
-            view.automatic_tier().name()
-        )
-    };
+    let warning = TierWarning::of(&view).map_or(String::new(), |warning| warning.stats(&view));
     // Perturbation also says how many iterations its series skipped and how many
     // times pixels rebased.
     let perturbed = if s.tier == Tier::Perturbation {
@@ -227,23 +221,77 @@ pub fn stats_line(rendered: &Rendered) -> String {
     )
 }
 
-/// The warning for a forced tier whose unit is larger than the pixel spacing (the render
-/// still runs: it is what was asked for, and shows why it is flat).
-pub fn tier_warning(view: &View) -> Option<String> {
-    if view.resolves_pixels() {
-        return None;
+/// Why a view's picture is not exact by the tier rule (the render still runs: it is what
+/// was asked for, and the warning says what it shows).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TierWarning {
+    /// A forced tier's finest spacing is coarser than the pixels: flat or in blocks.
+    CannotResolve,
+    /// A forced fixed tier where the rule picks perturbation: its 60 bits lose dwells
+    /// perturbation keeps.
+    CannotCarry,
+    /// No tier was found to keep 99.9 % of dwells at this width and cap
+    /// ([`View::assured`]).
+    BeyondCalibration,
+}
+
+impl TierWarning {
+    /// The warning for `view`, if any (the first that applies).
+    pub fn of(view: &View) -> Option<Self> {
+        let forced = view.tier() != view.automatic_tier();
+        if !view.resolves_pixels() {
+            Some(Self::CannotResolve)
+        } else if forced && view.automatic_tier() == Tier::Perturbation {
+            Some(Self::CannotCarry)
+        } else if !view.assured() {
+            Some(Self::BeyondCalibration)
+        } else {
+            None
+        }
     }
-    let tier = view.tier();
-    let bits = Coord::FRAC_BITS.saturating_sub(tier.precision_bits());
-    let unit = Coord::from_bits(1 << bits);
-    Some(format!(
-        "--precision {} cannot tell this view's pixels apart (pixel spacing {} is below its \
-         unit {unit}): the picture comes out flat or in blocks; the automatic tier for this \
-         view is {} (leave out --precision)",
-        tier.name(),
-        view.spacing(),
-        view.automatic_tier().name()
-    ))
+
+    /// The `--stats` words: ` warning=KIND`, and the automatic tier where a forced one is
+    /// the cause.
+    pub fn stats(self, view: &View) -> String {
+        let automatic = view.automatic_tier().name();
+        match self {
+            Self::CannotResolve => {
+                format!(" warning=tier_cannot_resolve automatic_tier={automatic}")
+            }
+            Self::CannotCarry => format!(" warning=tier_cannot_carry automatic_tier={automatic}"),
+            Self::BeyondCalibration => " warning=beyond_calibration".to_string(),
+        }
+    }
+
+    /// The message for stderr.
+    pub fn message(self, view: &View) -> String {
+        let tier = view.tier().name();
+        let automatic = view.automatic_tier().name();
+        let max = view.max_iterations();
+        match self {
+            Self::CannotResolve => format!(
+                "--precision {tier} cannot tell this view's pixels apart (pixel spacing {} is \
+                 below its finest, {}): the picture comes out flat or in blocks; the automatic \
+                 tier for this view is {automatic} (leave out --precision)",
+                view.spacing(),
+                view.tier().finest_spacing()
+            ),
+            Self::CannotCarry => format!(
+                "--precision {tier} cannot carry this view's rounding: at this pixel spacing \
+                 ({}) and --max-iter {max} its 60 bits lose dwells that perturbation keeps, \
+                 so some pixels differ from an exact orbit; the automatic tier for this view \
+                 is {automatic} (leave out --precision)",
+                view.spacing()
+            ),
+            Self::BeyondCalibration => format!(
+                "at this pixel spacing ({}) and --max-iter {max}, no tier is known to keep \
+                 99.9 % of dwells identical to an exact orbit (long orbits near the boundary \
+                 carry more rounding than 60 bits hold): some pixels may differ; a lower \
+                 --max-iter or a wider view is exact",
+                view.spacing()
+            ),
+        }
+    }
 }
 
 /// The palettes by name.

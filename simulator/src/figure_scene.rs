@@ -120,17 +120,22 @@ pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
             .unwrap_or_else(|| PathBuf::from("figure.png"));
         let stem = out.with_extension("");
         let size = Size::new(options.common.width(), options.common.height());
-        for (index, display) in cycle(options.pose, frames, size)?.iter().enumerate() {
-            let path = PathBuf::from(format!("{}-{index:03}.png", stem.display()));
-            crate::output::save_png(display, "--frames", &path)?;
+        // Every frame and the stats line, all or nothing.
+        let pictures = cycle(options.pose, frames, size)?;
+        let paths: Vec<PathBuf> = (0..pictures.len())
+            .map(|index| PathBuf::from(format!("{}-{index:03}.png", stem.display())))
+            .collect();
+        let mut plan = crate::output::Plan::new();
+        for (display, path) in pictures.iter().zip(&paths) {
+            plan.add("--frames", path, move |w| crate::output::png(display, w));
         }
         if options.common.stats {
-            println!(
-                "frames={frames} elapsed_ms={:.3}",
+            plan.print(format!(
+                "frames={frames} elapsed_ms={:.3}\n",
                 started.elapsed().as_secs_f64() * 1e3
-            );
+            ));
         }
-        return Ok(());
+        return plan.write();
     }
     let figure = Figure::new(&BODY, pose(options.pose, options.time)?);
     let size = Size::new(options.common.width(), options.common.height());

@@ -6,65 +6,56 @@ use std::time::Duration;
 
 use tinyfractal_scenes::{Entry, Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY};
 
-fn row(scene: &str, detail: &str, work: &str, elapsed: std::time::Duration, file: &Path) {
-    println!(
-        "| {:<22} | {:<14} | {:>18} | {:>9.3} | {}",
+fn row(scene: &str, detail: &str, work: &str, elapsed: Duration, file: &Path) -> String {
+    format!(
+        "| {:<22} | {:<14} | {:>18} | {:>9.3} | {}\n",
         scene,
         detail,
         work,
         elapsed.as_secs_f64() * 1e3,
         file.display()
-    );
+    )
 }
 
-/// The gallery's folder, made if it is missing; one message if it cannot be.
-fn folder(out: &Path) -> Result<(), String> {
+/// Whether the gallery's folder must be made; one message if it is a file.
+fn folder_missing(out: &Path) -> Result<bool, String> {
     if out.exists() && !out.is_dir() {
         return Err(format!(
             "gallery --out {}: is a file, not a folder",
             out.display()
         ));
     }
-    std::fs::create_dir_all(out).map_err(|e| {
-        format!(
-            "gallery --out {}: cannot make the folder: {e}",
-            out.display()
-        )
-    })
+    Ok(!out.exists())
 }
 
-/// Renders every scene into `out` and prints a table.
+/// A scene's picture and what the table says of it: detail, work, time.
+type Rendered = (Picture, String, String, Duration);
+
+/// Renders every scene, then writes them all into `out` with the table on standard
+/// output, or nothing: a scene that fails, a full disk or a closed standard output leaves
+/// the folder as it was (a folder made for the gallery is removed again).
 pub fn run(out: &Path) -> Result<(), String> {
-    folder(out)?;
-    println!(
-        "| {:<22} | {:<14} | {:>18} | {:>9} | file",
-        "scene", "detail", "work", "ms"
-    );
-    println!("|{:-<24}|{:-<16}|{:->20}|{:->11}|-----", "", "", "", "");
-    let mut ok = true;
+    let make_folder = folder_missing(out)?;
     let scenes = GALLERY.len() + GENERAL_GALLERY.len() + IFS_GALLERY.len();
     let bar = crate::animate::progress(scenes as u64, "gallery");
-    let mut report =
-        |name: &str, result: Result<(String, String, std::time::Duration), String>, path: &Path| {
-            bar.suspend(|| match result {
-                Ok((detail, work, elapsed)) => row(name, &detail, &work, elapsed, path),
-                Err(error) => {
-                    eprintln!("tinyfractal: error: {name}: {error}");
-                    ok = false;
-                }
-            });
-            bar.inc(1);
-        };
+    let mut rendered: Vec<(&str, Rendered)> = Vec::with_capacity(scenes);
+    let mut failed = 0;
+    let mut report = |name: &'static str, result: Result<Rendered, String>| {
+        match result {
+            Ok(scene) => rendered.push((name, scene)),
+            Err(error) => {
+                bar.suspend(|| {
+                    crate::console::complain(&format!("tinyfractal: error: {name}: {error}\n"));
+                });
+                failed += 1;
+            }
+        }
+        bar.inc(1);
+    };
     for entry in &GALLERY {
-        let path = out.join(format!("{}.png", entry.name));
-        let result = picture(entry).and_then(|(display, detail, work, elapsed)| {
-            save(&display, &path)?;
-            Ok((detail, work, elapsed))
-        });
-        report(entry.name, result, &path);
+        report(entry.name, picture(entry));
     }
     for entry in &GENERAL_GALLERY {
-        let path = out.join(format!("{}.png", entry.name));
         let result = tinyfractal::LsysFile::new(entry.source)
             .entry(entry.system)
             .and_then(|system| system.parametric())
@@ -78,43 +69,61 @@ pub fn run(out: &Path) -> Result<(), String> {
                 )
             })
             .map_err(|e| e.to_string())
-            .and_then(|rendered| {
-                save(&rendered.display, &path)?;
-                Ok((
+            .map(|rendered| {
+                (
+                    rendered.display,
                     format!("order {}", entry.order),
                     format!("{} segments", rendered.stats.segments),
                     rendered.elapsed,
-                ))
+                )
             });
-        report(entry.name, result, &path);
+        report(entry.name, result);
     }
     for entry in &IFS_GALLERY {
-        let path = out.join(format!("{}.png", entry.name));
         let result =
             crate::ifs_scene::render_entry(entry.source, entry.system, entry.points, entry.size)
-                .and_then(|(display, plotted, elapsed)| {
-                    save(&display, &path)?;
-                    Ok((
-                        "chaos game".to_string(),
-                        format!("{plotted} points"),
-                        elapsed,
-                    ))
+                .map(|(display, plotted, elapsed)| {
+                    let work = format!("{plotted} points");
+                    (display, "chaos game".to_string(), work, elapsed)
                 });
-        report(entry.name, result, &path);
+        report(entry.name, result);
     }
     bar.finish_and_clear();
-    if ok {
-        Ok(())
-    } else {
-        Err("the gallery is incomplete".to_string())
+    if failed > 0 {
+        return Err(format!(
+            "the gallery is incomplete ({failed} scenes failed, above): nothing was written"
+        ));
     }
-}
-
-fn save(
-    display: &embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888>,
-    path: &Path,
-) -> Result<(), String> {
-    crate::output::save_png(display, "gallery --out", path)
+    let mut table = format!(
+        "| {:<22} | {:<14} | {:>18} | {:>9} | file\n|{:-<24}|{:-<16}|{:->20}|{:->11}|-----\n",
+        "scene", "detail", "work", "ms", "", "", "", ""
+    );
+    let paths: Vec<_> = rendered
+        .iter()
+        .map(|(name, _)| out.join(format!("{name}.png")))
+        .collect();
+    let mut plan = crate::output::Plan::new();
+    for ((name, (picture, detail, work, elapsed)), path) in rendered.iter().zip(&paths) {
+        table.push_str(&row(name, detail, work, *elapsed, path));
+        plan.add("gallery --out", path, move |w| {
+            crate::output::png(picture, w)
+        });
+    }
+    plan.print(table);
+    if make_folder {
+        std::fs::create_dir_all(out).map_err(|e| {
+            format!(
+                "gallery --out {}: cannot make the folder: {e}",
+                out.display()
+            )
+        })?;
+    }
+    plan.write().inspect_err(|_| {
+        if make_folder {
+            // Only if empty: nothing of anyone else's is removed.
+            let _ = std::fs::remove_dir(out);
+        }
+    })
 }
 
 /// A catalogue entry's picture at its size, with what the gallery reports: a detail (order,
@@ -184,9 +193,17 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                         entry.palette
                     ));
                 }
+                // A view no tier is known to keep exact says so in its row.
+                let caveat = match crate::escape_scene::TierWarning::of(&rendered.view) {
+                    Some(crate::escape_scene::TierWarning::BeyondCalibration) => {
+                        ", some dwells may differ (docs/tiers.md)"
+                    }
+                    Some(_) => ", not exact (a forced tier)",
+                    None => "",
+                };
                 Ok((
                     rendered.display,
-                    format!("{} tier", rendered.stats.tier.name()),
+                    format!("{} tier{caveat}", rendered.stats.tier.name()),
                     format!("{} iterations", rendered.stats.iterations),
                     rendered.elapsed,
                 ))

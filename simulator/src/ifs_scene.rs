@@ -20,6 +20,10 @@ const GREENS: [Rgb888; 4] = [
     Rgb888::new(0x9A, 0xCD, 0x32),
 ];
 
+/// Most points `--points-count` and `--iterations` take: a bound on a run's time (about
+/// half a minute for the chaos game and its fit on a host), refused with it beyond.
+pub const MAX_POINTS: u64 = 1_000_000_000;
+
 #[derive(Debug, Clone, PartialEq, Args)]
 pub struct IfsOptions {
     /// A Fractint .ifs file (with --name)
@@ -42,8 +46,9 @@ pub struct IfsOptions {
         required_unless_present = "file"
     )]
     map: Vec<String>,
-    /// Points plotted (after 100 skipped)
-    #[arg(long = "points-count", value_name = "N", default_value_t = 50_000)]
+    /// Points plotted (after 100 skipped), at most 1000000000
+    #[arg(long = "points-count", value_name = "N", default_value_t = 50_000,
+          value_parser = clap::value_parser!(u64).range(0..=MAX_POINTS))]
     points_count: u64,
     /// Write every plotted point, `x y` (`x y z` in 3D) a line, in IFS coordinates
     #[arg(long, value_name = "TXT")]
@@ -72,8 +77,9 @@ pub struct GingerbreadOptions {
     /// The first point X,Y
     #[arg(long, value_name = "X,Y", default_value = "115,121", value_parser = parse_point, allow_hyphen_values = true)]
     start: (i64, i64),
-    /// Points plotted
-    #[arg(long, value_name = "N", default_value_t = 10_000)]
+    /// Points plotted, at most 1000000000
+    #[arg(long, value_name = "N", default_value_t = 10_000,
+          value_parser = clap::value_parser!(u64).range(0..=MAX_POINTS))]
     iterations: u64,
     /// Write every point, `x y` a line, in map coordinates
     #[arg(long, value_name = "TXT")]

@@ -4,6 +4,7 @@
 
 pub mod animate;
 pub mod args;
+pub mod console;
 pub mod environment;
 pub mod escape_scene;
 pub mod explore;
@@ -29,6 +30,7 @@ use tinyfractal::{
 
 /// The `tinyfractal` command: parses the process's arguments and runs them.
 pub fn run() -> ExitCode {
+    output::remove_temporaries_on_interrupt();
     let command = match args::parse(std::env::args_os().skip(1)) {
         Ok(command) => command,
         Err(error) if !error.use_stderr() => {
@@ -37,16 +39,15 @@ pub fn run() -> ExitCode {
             return ExitCode::SUCCESS;
         }
         Err(error) => {
-            eprint!("tinyfractal: {}", error.render());
-            eprintln!("(see `tinyfractal help`, or `tinyfractal help COMMAND`)");
+            console::complain(&format!(
+                "tinyfractal: {}(see `tinyfractal help`, or `tinyfractal help COMMAND`)\n",
+                error.render()
+            ));
             return ExitCode::from(2);
         }
     };
     let result = match command {
-        Command::Completions(shell) => {
-            args::completions(shell);
-            Ok(())
-        }
+        Command::Completions(shell) => args::completions(shell),
         Command::List(path) => list(&path),
         Command::Animate(arguments) => animate::animate(&arguments),
         Command::Explore(arguments) => explore_window(&arguments),
@@ -66,8 +67,10 @@ pub fn run() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        // Standard output was closed (`| head`): a quiet stop.
+        Err(message) if message == console::QUIET => ExitCode::FAILURE,
         Err(message) => {
-            eprintln!("tinyfractal: error: {message}");
+            console::complain(&format!("tinyfractal: error: {message}\n"));
             ExitCode::FAILURE
         }
     }
@@ -131,10 +134,12 @@ fn list(path: &Path) -> Result<(), String> {
         .into_iter()
         .collect::<Result<_, _>>()
         .map_err(failed)?;
+    let mut text = String::new();
     for name in names {
-        println!("{name}");
+        text.push_str(name);
+        text.push('\n');
     }
-    Ok(())
+    console::print(&text)
 }
 
 /// A system as a source names it: plain (Fractint, ABOP, stochastic) or parametric.
@@ -230,9 +235,15 @@ fn derive_budget(arguments: &DeriveArgs) -> u64 {
     arguments.max_length.saturating_mul(64).max(DEFAULT_BUDGET)
 }
 
-/// Prints a derivation on one line if it has at most `--max-length` symbols: `walk` is
-/// walked once to count them, then again to print, so nothing is printed past the limit
-/// and nothing is kept in memory.
+/// Longest `--max-length` that is checked before anything is printed: counting this many
+/// symbols takes well under a second.
+const COUNTED_FIRST: u64 = 10_000_000;
+
+/// Prints a derivation on one line if it has at most `--max-length` symbols. Up to
+/// [`COUNTED_FIRST`], `walk` is walked once to count them, then again to print, so nothing
+/// is printed past the limit and nothing is kept in memory; past it the string streams as
+/// it is derived (`derive ... | head` ends at once) and the run stops with the error at
+/// the limit.
 fn print_derivation<W, I, T>(walk: W, arguments: &DeriveArgs, name: &str) -> Result<(), String>
 where
     W: Fn() -> Result<I, tinyfractal::Error>,
@@ -241,27 +252,54 @@ where
 {
     let order = arguments.order;
     let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
-    let mut length = 0u64;
-    for symbol in walk().map_err(failed)? {
-        symbol.map_err(failed)?;
-        length += 1;
-        if length > arguments.max_length {
-            return Err(format!(
-                "{name} at order {order}: the derived string is longer than {} symbols: \
-                 lower the order or raise --max-length",
-                arguments.max_length
-            ));
+    let too_long = || {
+        format!(
+            "{name} at order {order}: the derived string is longer than {} symbols: \
+             lower the order or raise --max-length",
+            arguments.max_length
+        )
+    };
+    let counted_first = arguments.max_length <= COUNTED_FIRST;
+    if counted_first {
+        let mut length = 0u64;
+        for symbol in walk().map_err(failed)? {
+            symbol.map_err(failed)?;
+            length += 1;
+            if length > arguments.max_length {
+                return Err(too_long());
+            }
         }
     }
+    /// Why printing stopped.
+    enum Stop {
+        Walk(tinyfractal::Error),
+        TooLong,
+        Output(io::Error),
+    }
     let mut out = io::BufWriter::new(io::stdout().lock());
-    let written = (|| -> io::Result<()> {
-        for symbol in walk().map_err(io::Error::other)? {
-            write!(out, "{}", symbol.map_err(io::Error::other)?)?;
+    let written = (|| -> Result<(), Stop> {
+        let mut length = 0u64;
+        for symbol in walk().map_err(Stop::Walk)? {
+            length += 1;
+            if length > arguments.max_length {
+                return Err(Stop::TooLong);
+            }
+            write!(out, "{}", symbol.map_err(Stop::Walk)?).map_err(Stop::Output)?;
         }
-        writeln!(out)?;
-        out.flush()
+        writeln!(out)
+            .and_then(|()| out.flush())
+            .map_err(Stop::Output)
     })();
-    written.map_err(|e| format!("cannot write the derivation: {e}"))
+    match written {
+        Ok(()) => Ok(()),
+        Err(Stop::Walk(e)) => Err(failed(e)),
+        Err(Stop::TooLong) => {
+            // What was printed ends its line, so the message is not glued to it.
+            let _ = writeln!(out).and_then(|()| out.flush());
+            Err(too_long())
+        }
+        Err(Stop::Output(e)) => Err(console::failed(&e)),
+    }
 }
 
 /// `render lsystem` of a parametric `.lsys` system. `--view` fits the whole picture to the
@@ -341,10 +379,10 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
     )
     .map_err(failed)?;
     if rendered.stats.segments == 0 {
-        eprintln!(
-            "tinyfractal: note: {name} draws nothing at order {}: the picture is empty",
+        console::complain(&format!(
+            "tinyfractal: note: {name} draws nothing at order {}: the picture is empty\n",
             arguments.order
-        );
+        ));
     }
     let (grammar, order) = (&grammar, arguments.order);
     deliver(
@@ -375,8 +413,8 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
     window_available(common.window)?;
     // Everything is computed and every output checked before anything is written.
     let rendered = escape_scene::render(&request).map_err(|e| format!("{name}: {e}"))?;
-    if let Some(message) = escape_scene::tier_warning(&rendered.view) {
-        warn(&message);
+    if let Some(warning) = escape_scene::TierWarning::of(&rendered.view) {
+        warn(&warning.message(&rendered.view));
     }
     deliver(
         common,
@@ -395,7 +433,7 @@ fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
 
 /// Says something the user should know on stderr; the run goes on.
 fn warn(message: &str) {
-    eprintln!("tinyfractal: warning: {message}");
+    console::complain(&format!("tinyfractal: warning: {message}\n"));
 }
 
 /// The end of every render: the picture to `--out` (default `NAME.png`) and the outputs
@@ -414,13 +452,20 @@ fn deliver<'a>(
     let mut plan = output::Plan::new();
     plan.add("--out", &out, |w| output::png(display, w));
     more(&mut plan);
-    plan.write()?;
+    // The lines for standard output are made first and printed before any file is put
+    // in place: a `--dimension` that fails, or an output that cannot be printed, leaves
+    // the folder as it was.
+    let mut printed = String::new();
     if common.stats {
-        println!("{stats}");
+        printed.push_str(stats);
+        printed.push('\n');
     }
     if common.dimension {
-        println!("{}", dimension_line(display, Rgb888::new(0, 0, 0))?);
+        printed.push_str(&dimension_line(display, Rgb888::new(0, 0, 0))?);
+        printed.push('\n');
     }
+    plan.print(printed);
+    plan.write()?;
     if common.window {
         show(display)?;
     }
@@ -466,8 +511,10 @@ fn dimension(path: &Path, background: u32) -> Result<(), String> {
         let _ = Pixel(Point::new(x as i32, y as i32), Rgb888::new(r, g, b)).draw(&mut display);
     }
     let [_, r, g, b] = background.to_be_bytes();
-    println!("{}", dimension_line(&display, Rgb888::new(r, g, b))?);
-    Ok(())
+    console::print(&format!(
+        "{}\n",
+        dimension_line(&display, Rgb888::new(r, g, b))?
+    ))
 }
 
 /// `--window` in a build without the window: refused before anything is computed.

@@ -7,16 +7,59 @@
 //! is not a regular file (a FIFO, a device such as `/dev/null`) is written directly, after
 //! every temporary file is complete, and never replaced; a symlink is followed, and its
 //! target written (atomically, when that is a regular file). Nothing the program did not
-//! create is ever removed, and a failure removes the temporary files it made.
+//! create is ever removed, and a failure removes the temporary files it made; so does an
+//! interrupt (Ctrl-C, SIGTERM: [`remove_temporaries_on_interrupt`]).
 
 use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use image::codecs::png::{CompressionType, FilterType, PngEncoder};
 use image::ImageEncoder;
+
+/// The temporary files being written now: what an interrupt removes.
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Makes Ctrl-C (SIGINT), SIGTERM and SIGHUP remove the temporary files of the outputs
+/// being written, then end the run with status 130: a run stopped half way leaves the
+/// folder as it was. Called once, as the run starts.
+pub fn remove_temporaries_on_interrupt() {
+    // A second handler cannot be set (tests call `run` once a process): nothing to do.
+    let _ = ctrlc::set_handler(|| {
+        let paths = TEMPORARIES
+            .lock()
+            .map(|paths| paths.clone())
+            .unwrap_or_default();
+        for path in paths {
+            let _ = fs::remove_file(path);
+        }
+        crate::console::complain("tinyfractal: interrupted: nothing was written\n");
+        std::process::exit(130);
+    });
+}
+
+/// A temporary file's place in [`TEMPORARIES`] while it lives.
+struct Registered(PathBuf);
+
+impl Registered {
+    fn new(path: &Path) -> Self {
+        if let Ok(mut paths) = TEMPORARIES.lock() {
+            paths.push(path.to_path_buf());
+        }
+        Self(path.to_path_buf())
+    }
+}
+
+impl Drop for Registered {
+    fn drop(&mut self) {
+        if let Ok(mut paths) = TEMPORARIES.lock() {
+            paths.retain(|path| path != &self.0);
+        }
+    }
+}
 
 /// Produces an output's bytes into a writer (it may be called once).
 type Producer<'a> = Box<dyn FnOnce(&mut dyn Write) -> io::Result<()> + 'a>;
@@ -32,6 +75,8 @@ struct Output<'a> {
 #[derive(Default)]
 pub struct Plan<'a> {
     outputs: Vec<Output<'a>>,
+    /// Text for standard output, printed before the outputs are put in place.
+    printed: String,
 }
 
 /// Where an output's bytes go: through a temporary file renamed over `target` (a regular
@@ -80,6 +125,13 @@ impl<'a> Plan<'a> {
         Ok(destinations)
     }
 
+    /// Text for standard output (`--stats`, `--dimension`): printed once every output is
+    /// complete and before any is put in place, so that a closed or full standard output
+    /// leaves the folder as it was.
+    pub fn print(&mut self, text: String) {
+        self.printed.push_str(&text);
+    }
+
     /// Writes every output, or none: see the module docs.
     pub fn write(self) -> Result<(), String> {
         let destinations = self.resolve()?;
@@ -106,8 +158,10 @@ impl<'a> Plan<'a> {
             let mut temporary = builder
                 .tempfile_in(folder_of(&target))
                 .map_err(|e| cannot_write(&output.path, &e))?;
+            // Known to an interrupt until renamed or removed.
+            let registered = Registered::new(temporary.path());
             stream(output.produce, temporary.as_file_mut(), &output.path)?;
-            staged.push((temporary, target, output.path));
+            staged.push((temporary, registered, target, output.path));
         }
         // Every temporary file is complete: now the outputs that cannot be staged.
         for (output, target) in in_place {
@@ -117,7 +171,10 @@ impl<'a> Plan<'a> {
                 .map_err(|e| cannot_write(&output.path, &e))?;
             stream(output.produce, file, &output.path)?;
         }
-        for (temporary, target, path) in staged {
+        if !self.printed.is_empty() {
+            crate::console::print(&self.printed)?;
+        }
+        for (temporary, _registered, target, path) in staged {
             temporary
                 .persist(&target)
                 .map_err(|e| cannot_write(&path, &e.error))?;

@@ -70,6 +70,11 @@ pub enum ViewError {
         /// Points given.
         given: usize,
     },
+    /// A zoom frame asked to compute a view whose tier is perturbation: a frame computes
+    /// each pixel alone in a fixed-point tier, and past `Deep`'s rule it would draw what
+    /// `Deep` draws, not the view. Render such a frame with a perturbed
+    /// [`Render`](crate::Render).
+    ZoomNeedsFixedTier,
 }
 
 impl fmt::Display for ViewError {
@@ -115,6 +120,10 @@ impl fmt::Display for ViewError {
                 f,
                 "the reference orbit needs {needed} points (max-iter + 1) but its storage holds \
                  {given}: give more storage or fewer iterations"
+            ),
+            Self::ZoomNeedsFixedTier => f.write_str(
+                "a zoom frame computes in a fixed-point tier, and this view needs \
+                 perturbation: render the frame with a perturbed render instead",
             ),
         }
     }

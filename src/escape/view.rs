@@ -24,6 +24,10 @@ const COORDINATE_LIMIT: i64 = 7 << 59; // 3.5 in Q60
 /// The finest pixel spacing, 2⁻⁵⁴ in Q60 bits: the deep tier keeps 6 bits below it.
 const FINEST_SPACING: i64 = 1 << 6;
 
+/// The automatic tier of a Mandelbrot view is perturbation from this z + i on (z and i as
+/// in [`View::new`]'s rule).
+const PERTURBATION_FROM: u32 = 51;
+
 /// Perturbation's finest pixel spacing is 2 to the minus this.
 const FINEST_PERTURBATION_BITS: u32 = 148;
 
@@ -65,14 +69,16 @@ pub enum Tier {
     /// iterations.
     Standard,
     /// Q60 in `i64` with 128-bit products, for zooms and long-running Julia sets.
-    /// Deepest zoom: pixel spacing ≥ 2⁻⁵⁴ (a width of 1.8·10⁻¹⁴ on 320 pixels); with 12
-    /// guard bits and 1024 iterations, full accuracy down to widths of about 10⁻⁹.
+    /// Deepest zoom: pixel spacing ≥ 2⁻⁵⁴ (a width of 1.8·10⁻¹⁴ on 320 pixels). Chosen for
+    /// the Mandelbrot set while z + i ≤ 50 (see [`View::new`]): past that, its rounding
+    /// loses dwells perturbation keeps.
     Deep,
     /// Perturbation against one reference orbit (see [`ReferenceOrbit`](crate::ReferenceOrbit)):
     /// the reference in up to 192-bit fixed point, each pixel a difference from it in 62-bit
     /// mantissas with an exponent. Chosen for Mandelbrot views finer than `Deep` resolves
     /// (spacing below 2⁻⁵⁴), down to a spacing of 2⁻¹⁴⁸ (a width of about 10⁻⁴² on 320
-    /// pixels); by hand on any Mandelbrot view. Needs storage for the reference: a render
+    /// pixels), and for deep views with long orbits (z + i ≥ 51, see [`View::new`]); by
+    /// hand on any Mandelbrot view. Needs storage for the reference: a render
     /// of it is made with [`Render::perturbed`](crate::Render::perturbed).
     Perturbation,
 }
@@ -99,6 +105,17 @@ impl Tier {
             Self::Medium => 24,
             _ => self.frac_bits(),
         }
+    }
+
+    /// The finest pixel spacing the tier tells apart: its unit (2⁻¹², 2⁻²⁴, 2⁻²⁸), and for
+    /// `Deep` 2⁻⁵⁴, keeping 6 bits below it. Perturbation's, 2⁻¹⁴⁸, is below a
+    /// [`Coord`]'s unit: 0 here.
+    pub const fn finest_spacing(self) -> Coord {
+        Coord::from_bits(match self {
+            Self::Deep => FINEST_SPACING,
+            Self::Perturbation => 0,
+            tier => 1 << (Coord::FRAC_BITS - tier.precision_bits()),
+        })
     }
 
     /// The tier's name, as the CLI spells it.
@@ -155,17 +172,20 @@ impl View {
     ///
     /// The tier is the cheapest that keeps at least 99.9 % of dwells identical to a
     /// double-double reference, and no fewer than a naive `f32` loop, over the calibration
-    /// views with the same z and i below (192 views, pooled by pixels; `cargo bench --bench
-    /// tiers` re-derives the rule and writes the evidence to `docs/tiers.md`). Rounding near the
+    /// views with the same z and i below (pooled by pixels; `cargo bench --bench tiers`
+    /// re-derives the rule and writes the evidence to `docs/tiers.md`). Rounding near the
     /// boundary is magnified the longer an orbit runs, so the rule is in the pixel spacing
     /// d and the cap: with z = ⌈log₂(1/d)⌉ and i = ⌈log₂(max-iter)⌉, the Mandelbrot set
-    /// takes `Medium` while z + i ≤ 12, `Standard` while z + i ≤ 15; a Julia set (all
-    /// boundary) takes `Medium` at z = 7, i = 7 (the whole set on a 320-pixel-wide display
-    /// at 65–128 iterations), `Standard` elsewhere while z + 7·i ≤ 56 (up to 64 iterations
-    /// at z ≤ 14, 128 at z ≤ 7); the rest `Deep`, while the spacing itself is resolvable
+    /// takes `Medium` while z + i ≤ 12, `Standard` while z + i ≤ 15, `Deep` while
+    /// z + i ≤ 50 and [`Tier::Perturbation`] beyond (render it with
+    /// [`Render::perturbed`](crate::Render::perturbed)); a Julia set (all boundary) takes
+    /// `Medium` at z = 7, i = 7 (the whole set on a 320-pixel-wide display at 65–128
+    /// iterations), `Standard` elsewhere while z + 7·i ≤ 56 (up to 64 iterations at
+    /// z ≤ 14, 128 at z ≤ 7); the rest `Deep`, while the spacing itself is resolvable
     /// (≥ 2⁻⁵⁴). `Medium` for that one cell is measured, not derived: pooled, it keeps 44
     /// more of 921,600 dwells than `f32` there, and a few fewer at z = 6 and 10; per view it
-    /// is within 0.04 points of `f32`, either side (docs/tiers.md).
+    /// is within 0.04 points of `f32`, either side (docs/tiers.md). Where no tier keeps
+    /// 99.9 %, [`assured`](Self::assured) says so.
     pub fn new(
         fractal: Fractal,
         centre: (Coord, Coord),
@@ -286,13 +306,16 @@ impl View {
                 finest: Coord::from_bits(FINEST_SPACING),
             }));
         }
-        // ceil(log2(1/d)) for d in Q60 bits (0 for pixels 2 or more wide), and
-        // ceil(log2(max)).
-        let zoom_bits = 60u32.saturating_sub(63 - spacing.leading_zeros());
-        let iteration_bits = 32 - max_iterations.saturating_sub(1).leading_zeros();
+        let (zoom_bits, iteration_bits) = rule_bits(spacing, max_iterations);
         Ok(match fractal {
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 15 => Tier::Standard,
+            // Deep views with long orbits: `Deep`'s 60 bits lose dwells where perturbation's
+            // 62-bit differences from an exact reference keep them (from z = 40 at caps
+            // over 1000, at z = 46 and 53 at every cap measured); at z = 36 neither holds.
+            Fractal::Mandelbrot if zoom_bits + iteration_bits >= PERTURBATION_FROM => {
+                Tier::Perturbation
+            }
             // Rounded 24 bits keep more dwells than f32 on the pool at z = 7, i = 7 (the
             // whole set on a 320-pixel display at 65–128 iterations); elsewhere the pools
             // need `Standard`, or single views at caps up to 64 lose a pixel or a few.
@@ -300,6 +323,28 @@ impl View {
             Fractal::Julia { .. } if zoom_bits + 7 * iteration_bits <= 56 => Tier::Standard,
             _ => Tier::Deep,
         })
+    }
+
+    /// Whether the automatic tier of this view is one the calibration (`docs/tiers.md`)
+    /// found to keep at least 99.9 % of dwells identical to an exact reference. Past it,
+    /// long orbits near the boundary carry more rounding than 60 bits hold, whatever the
+    /// tier: at 10⁻⁶ near the cusp at 0.25 with a cap of 1000, `Deep` and perturbation
+    /// both keep about 98 %. The CLI warns when this is false; with z = ⌈log₂(1/d)⌉ and
+    /// i = ⌈log₂(max-iter)⌉ it holds for the Mandelbrot set while z + i ≤ 25, or i ≤ 8 (caps
+    /// up to 256), or z ≥ 40 (perturbation then keeps long orbits), and past `Deep`'s
+    /// spacing (checked against a 256-bit model); for Julia sets while z + i ≤ 22.
+    pub fn assured(&self) -> bool {
+        let (zoom_bits, iteration_bits) = rule_bits(self.spacing.max(1), self.max_iterations);
+        let deep_view = !self.fixed_point_resolves();
+        match self.fractal {
+            Fractal::Mandelbrot => {
+                deep_view
+                    || zoom_bits + iteration_bits <= 25
+                    || iteration_bits <= 8
+                    || zoom_bits >= 40
+            }
+            Fractal::Julia { .. } => zoom_bits + iteration_bits <= 22,
+        }
     }
 
     /// Computes in `tier` instead of the automatic choice (coarser tiers are faster and less
@@ -353,14 +398,14 @@ impl View {
         self.automatic
     }
 
-    /// Whether the tier tells neighbouring pixels apart: its unit is no larger than the
-    /// pixel spacing. If not, as for `Narrow` at a width of 10⁻⁴ or `Standard` at 5·10⁻⁹
-    /// on 320 pixels, whole blocks of pixels share one point and the picture comes out in
-    /// blocks or flat. The automatic tier always does; a forced one may not, and the CLI
+    /// Whether the tier tells neighbouring pixels apart: the pixel spacing is at least its
+    /// [`finest_spacing`](Tier::finest_spacing). If not, as for `Narrow` at a width of
+    /// 10⁻⁴ or `Standard` at 5·10⁻⁹ on 320 pixels, whole blocks of pixels share one point
+    /// and the picture comes out in blocks or flat. The automatic tier always does; a forced one may not, and the CLI
     /// warns then.
     pub const fn resolves_pixels(&self) -> bool {
         matches!(self.tier, Tier::Perturbation)
-            || self.spacing >= 1 << (Coord::FRAC_BITS - self.tier.precision_bits())
+            || self.spacing >= self.tier.finest_spacing().to_bits()
     }
 
     /// The size in pixels.
@@ -468,6 +513,14 @@ impl View {
             _ => Symmetry::None,
         }
     }
+}
+
+/// The rule's inputs: z = ⌈log₂(1/d)⌉ for a spacing d in Q60 bits (0 for pixels 2 or
+/// more wide) and i = ⌈log₂(max-iter)⌉.
+const fn rule_bits(spacing: i64, max_iterations: u32) -> (u32, u32) {
+    let zoom_bits = 60u32.saturating_sub(63 - spacing.leading_zeros());
+    let iteration_bits = 32 - max_iterations.saturating_sub(1).leading_zeros();
+    (zoom_bits, iteration_bits)
 }
 
 /// `k` half spacings (`spacing` in Q60), rounded half away from zero, as every tier's

@@ -36,8 +36,8 @@
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 
 use super::kernel::{Kernel, Orbit, Part, Periodicity};
-use super::view::View;
-use crate::error::{Error, FitError};
+use super::view::{Tier, View};
+use crate::error::{Error, FitError, ViewError};
 use crate::render::palette::Palette;
 
 /// What a reusing frame did.
@@ -138,7 +138,9 @@ pub struct ZoomFrame<'a, V: ZoomValue = u16> {
 impl<'a, V: ZoomValue> ZoomFrame<'a, V> {
     /// A frame of `view` over `values` (W×H of them), `columns` (W) and `rows` (H); nothing
     /// computed yet. [`FitError::BufferTooSmall`] if a slice is too short,
-    /// [`FitError::CellTooNarrow`] if the view's values do not fit a `V`.
+    /// [`FitError::CellTooNarrow`] if the view's values do not fit a `V`,
+    /// [`ViewError::ZoomNeedsFixedTier`] if the view's tier is perturbation (a frame would
+    /// compute it in `Deep`: render it with [`Render::perturbed`](crate::Render::perturbed)).
     pub fn new(
         view: View,
         values: &'a mut [V],
@@ -156,8 +158,11 @@ impl<'a, V: ZoomValue> ZoomFrame<'a, V> {
         Ok(frame)
     }
 
-    /// Whether this frame's storage holds `view`.
+    /// Whether this frame's storage holds `view`, and `view` is computed in a fixed tier.
     fn check(&self, view: &View) -> Result<(), Error> {
+        if view.tier() == Tier::Perturbation {
+            return Err(Error::View(ViewError::ZoomNeedsFixedTier));
+        }
         let size = view.size();
         let pixels = size.width as usize * size.height as usize;
         for (needed, given) in [

@@ -1,0 +1,33 @@
+//! What a command prints on standard output, with its failures handled: a closed pipe
+//! (`list FILE | head -1`) stops the run quietly, any other failure (a full device) is an
+//! error that names standard output; neither is a panic.
+
+use std::io::{self, Write};
+
+/// The message of a quiet stop: [`run`](crate::run) prints nothing for it and exits with
+/// status 1, as a tool stopped by a closed pipe does.
+pub const QUIET: &str = "";
+
+/// Writes `text` to standard output and flushes it.
+pub fn print(text: &str) -> Result<(), String> {
+    let mut out = io::stdout().lock();
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| failed(&e))
+}
+
+/// The message for a write to standard output that failed: [`QUIET`] for a closed pipe.
+pub fn failed(error: &io::Error) -> String {
+    if error.kind() == io::ErrorKind::BrokenPipe {
+        QUIET.to_string()
+    } else {
+        format!("cannot write to standard output: {error}")
+    }
+}
+
+/// Writes `text` to standard error, ignoring a failure there (a closed or full standard
+/// error has nowhere left to report to, and must not panic).
+pub fn complain(text: &str) {
+    let mut err = io::stderr().lock();
+    let _ = err.write_all(text.as_bytes()).and_then(|()| err.flush());
+}
