@@ -43,7 +43,7 @@ fn walked_box(
     let mut corners: Option<(Point, Point)> = None;
     for segment in Segments::starting(grammar, order, start).unwrap() {
         let segment = match segment {
-            Err(Error::Walk(WalkError::StepUnderflow)) => return None,
+            Err(Error::Walk(WalkError::StepUnderflow | WalkError::StepTooFine)) => return None,
             segment => segment.unwrap(),
         };
         for p in [segment.start, segment.end] {

@@ -12,7 +12,7 @@ use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
 use indicatif::{ProgressBar, ProgressStyle};
-use tinyfractal::{Algorithm, Coord, Tier, View, ZoomFrame, ZoomLine};
+use tinyfractal::{Algorithm, DeepCoord, Tier, View, ZoomFrame, ZoomLine, MAX_DECIMAL_PLACES};
 
 use crate::args::{AnimateArgs, Animation};
 use crate::escape_scene::{self, Request};
@@ -81,8 +81,9 @@ pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
 /// when given (both exactly as written), the rest shrink by one factor a frame.
 fn widths(start: &str, end: Option<&str>, factor: f64, frames: u32) -> Result<Vec<String>, String> {
     let number = |option: &str, text: &str| {
-        Coord::parse(text)
-            .map(Coord::to_f64)
+        DeepCoord::parse(text)
+            .map(DeepCoord::to_f64)
+            .ok()
             .filter(|&w| w > 0.0)
             .ok_or_else(|| {
                 format!("{option}: `{text}` is not a width between 0 and 8 (e.g. 3 or 1e-5)")
@@ -100,13 +101,31 @@ fn widths(start: &str, end: Option<&str>, factor: f64, frames: u32) -> Result<Ve
             "--factor {factor}: give a factor above 0 (e.g. 1.05)"
         ));
     }
-    Ok((0..frames)
+    (0..frames)
         .map(|k| match (k, end) {
-            (0, _) => start.to_string(),
-            (k, Some(end)) if k + 1 == frames => end.to_string(),
-            (k, _) => format!("{:e}", first / factor.powi(k as i32)),
+            (0, _) => Ok(start.to_string()),
+            (k, Some(end)) if k + 1 == frames => Ok(end.to_string()),
+            (k, _) => frame_width(first / factor.powi(k as i32)).ok_or_else(|| {
+                format!(
+                    "--factor {factor} over {frames} frames: frame {k} would be {:e} wide, past \
+                     the deepest zoom (about 10^-42 across 320 pixels) and the widest view; \
+                     use fewer --frames or a factor nearer 1",
+                    first / factor.powi(k as i32)
+                )
+            }),
         })
-        .collect())
+        .collect()
+}
+
+/// A frame's width as decimal text a view reads: 15 significant digits, fewer where that
+/// would pass the 56 decimal places a coordinate holds; `None` past that or past 8.
+fn frame_width(width: f64) -> Option<String> {
+    if !(width.is_normal() && width < 8.0) {
+        return None;
+    }
+    let exponent = width.log10().floor() as i32;
+    let digits = 14.min(MAX_DECIMAL_PLACES as i32 + exponent);
+    (digits >= 0).then(|| format!("{width:.*e}", digits as usize))
 }
 
 /// A zoom: each frame reuses the last within `tolerance` % of a pixel (`None`: every
@@ -124,11 +143,17 @@ fn zoom(
     let mut palette = None;
     let views = widths
         .iter()
-        .map(|width| {
-            escape_scene::view_at(request, width).map(|(view, frame_palette)| {
-                palette.get_or_insert(frame_palette);
-                view
-            })
+        .enumerate()
+        .map(|(index, width)| {
+            escape_scene::view_at(request, width)
+                .map(|(view, frame_palette)| {
+                    palette.get_or_insert(frame_palette);
+                    view
+                })
+                .map_err(|e| match index {
+                    0 => e,
+                    _ => format!("frame {index} of the zoom, {width} wide: {e}"),
+                })
         })
         .collect::<Result<Vec<View>, String>>()?;
     let Some(palette) = palette else {

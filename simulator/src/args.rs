@@ -290,8 +290,9 @@ struct ExploreOptions {
         allow_hyphen_values = true
     )]
     width: String,
-    /// Iteration cap of the first view
-    #[arg(long = "max-iter", value_name = "N", default_value_t = 256)]
+    /// Iteration cap of the first view, 1 to 65535
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=65535))]
     max_iterations: u32,
     /// Picture size in pixels, WxH (a status line goes below it)
     #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = parse_size)]
@@ -306,9 +307,9 @@ struct AnimateOptions {
 
 #[derive(Debug, Args)]
 struct FrameOptions {
-    /// Frames to write (growth writes one an order, 0 to --order, instead)
-    #[arg(long, value_name = "N", default_value_t = 100)]
-    frames: u32,
+    /// Frames to write [default: 100]
+    #[arg(long, value_name = "N")]
+    frames: Option<u32>,
     /// NAME.gif (animated GIF), NAME.png (APNG), or a folder for frame-0000.png, ...
     #[arg(long, value_name = "PATH", default_value = "animation.gif")]
     out: PathBuf,
@@ -373,8 +374,9 @@ struct AnimatedView {
         allow_hyphen_values = true
     )]
     width: String,
-    /// Iteration cap
-    #[arg(long = "max-iter", value_name = "N", default_value_t = 256)]
+    /// Iteration cap, 1 to 65535
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=65535))]
     max_iterations: u32,
     /// The colours
     #[arg(long, value_enum, default_value = "classic")]
@@ -489,6 +491,12 @@ struct DeriveOptions {
     max_length: u64,
 }
 
+/// Frames an animation writes without `--frames`.
+const DEFAULT_FRAMES: u32 = 100;
+
+/// The highest order an L-system command takes (the walkers' depth is one more).
+const MAX_ORDER: i64 = crate::scene::DEPTH as i64 - 1;
+
 /// `derive`'s default `--max-length`.
 pub const DEFAULT_MAX_LENGTH: u64 = 1_000_000;
 
@@ -535,8 +543,9 @@ struct SystemOptions {
     /// The inline system's notation (default abop; .l files are Fractint's)
     #[arg(long, value_enum, conflicts_with = "file")]
     dialect: Option<DialectName>,
-    /// The order (derivation steps)
-    #[arg(long, value_name = "N")]
+    /// The order (derivation steps), 0 to 256
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(0..=MAX_ORDER))]
     order: u32,
     /// The seed of stochastic productions (overrides the file's `seed:`)
     #[arg(long, value_name = "N")]
@@ -577,19 +586,16 @@ enum DialectName {
 
 #[derive(Debug, Args)]
 struct EscapeOptions {
-    /// Centre of the view, RE,IM
-    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", default_value = "-0.75,0", allow_hyphen_values = true, value_parser = parse_pair)]
-    centre: (String, String),
-    /// Width along the real axis
-    #[arg(
-        long,
-        value_name = "W",
-        default_value = "3.5",
-        allow_hyphen_values = true
-    )]
-    width: String,
-    /// Iteration cap
-    #[arg(long = "max-iter", value_name = "N", default_value_t = 256)]
+    /// Centre of the view, RE,IM [default: -0.75,0 for the Mandelbrot set, 0,0 for a Julia
+    /// set]
+    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", allow_hyphen_values = true, value_parser = parse_pair)]
+    centre: Option<(String, String)>,
+    /// Width along the real axis [default: 3.5 for the Mandelbrot set, 3.2 for a Julia set]
+    #[arg(long, value_name = "W", allow_hyphen_values = true)]
+    width: Option<String>,
+    /// Iteration cap, 1 to 65535
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=65535))]
     max_iterations: u32,
     /// How pixels are scheduled
     #[arg(long, value_enum, default_value = "fast")]
@@ -679,9 +685,10 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = Cli::try_parse_from(
-        std::iter::once(OsString::from("tinyfractal")).chain(args.into_iter().map(Into::into)),
-    )?;
+    let args: Vec<OsString> = std::iter::once(OsString::from("tinyfractal"))
+        .chain(args.into_iter().map(Into::into))
+        .collect();
+    let cli = Cli::try_parse_from(&args).map_err(|error| negative_count(error, &args))?;
     Ok(match cli.command {
         None => Command::Gallery {
             out: PathBuf::from("gallery"),
@@ -728,6 +735,30 @@ pub fn completions(shell: clap_complete::Shell) -> Result<(), String> {
     let mut script = Vec::new();
     clap_complete::generate(shell, &mut Cli::command(), "tinyfractal", &mut script);
     crate::console::print(&String::from_utf8_lossy(&script))
+}
+
+/// Clap reads a negative number after an option that takes a count as an unknown
+/// option (`unexpected argument '-1'`): said as what it is, naming the option.
+fn negative_count(error: clap::Error, args: &[OsString]) -> clap::Error {
+    if error.kind() != ErrorKind::UnknownArgument {
+        return error;
+    }
+    let negative =
+        |text: &str| text.len() > 1 && text.starts_with('-') && text[1..].parse::<f64>().is_ok();
+    let found = args.windows(2).find_map(|pair| {
+        let (option, value) = (pair[0].to_str()?, pair[1].to_str()?);
+        (option.starts_with("--") && negative(value))
+            .then(|| (option.to_string(), value.to_string()))
+    });
+    match found {
+        Some((option, value)) => usage(
+            ErrorKind::ValueValidation,
+            &format!(
+                "{option} {value}: {option} takes a count of 0 or more, not a negative number"
+            ),
+        ),
+        None => error,
+    }
 }
 
 fn usage(kind: ErrorKind, message: &str) -> clap::Error {
@@ -827,9 +858,16 @@ fn animation(kind: AnimationKind) -> Result<AnimateArgs, clap::Error> {
             options.frames,
         ),
         AnimationKind::Growth(options) => {
+            if options.frames.frames.is_some() {
+                return Err(usage(
+                    ErrorKind::ArgumentConflict,
+                    "--frames does not apply to growth: it writes one frame an order, 0 to \
+                     --order (leave out --frames)",
+                ));
+            }
             let mut frames = options.frames;
             // Orders 0 to N: N + 1 frames.
-            frames.frames = options.system.order.saturating_add(1);
+            frames.frames = Some(options.system.order.saturating_add(1));
             let seed = options.system.seed;
             (
                 Animation::Growth {
@@ -843,7 +881,8 @@ fn animation(kind: AnimationKind) -> Result<AnimateArgs, clap::Error> {
             (Animation::Figure { pose: options.pose }, options.frames)
         }
     };
-    if frames.frames == 0 {
+    let count = frames.frames.unwrap_or(DEFAULT_FRAMES);
+    if count == 0 {
         return Err(usage(
             ErrorKind::ValueValidation,
             "--frames 0: give at least one frame",
@@ -851,7 +890,7 @@ fn animation(kind: AnimationKind) -> Result<AnimateArgs, clap::Error> {
     }
     Ok(AnimateArgs {
         kind,
-        frames: frames.frames,
+        frames: count,
         out: frames.out,
         delay_ms: frames.delay_ms,
         size: frames.size,
@@ -860,10 +899,17 @@ fn animation(kind: AnimationKind) -> Result<AnimateArgs, clap::Error> {
 }
 
 fn escape(julia: Option<(String, String)>, options: EscapeOptions) -> EscapeArgs {
+    // Each set's whole picture by default.
+    let (centre, width) = match julia {
+        None => (("-0.75", "0"), "3.5"),
+        Some(_) => (("0", "0"), "3.2"),
+    };
     EscapeArgs {
         julia,
-        centre: options.centre,
-        width: options.width,
+        centre: options
+            .centre
+            .unwrap_or_else(|| (centre.0.to_string(), centre.1.to_string())),
+        width: options.width.unwrap_or_else(|| width.to_string()),
         max_iterations: options.max_iterations,
         algorithm: match options.algorithm {
             AlgorithmName::Exact => tinyfractal::Algorithm::Exact,
@@ -896,6 +942,9 @@ fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let bad = || format!("`{text}` is not WxH, e.g. 320x240");
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    if w == 0 || h == 0 {
+        return Err(format!("{w}x{h} has no pixels: give at least 1x1"));
+    }
     if w > MAX_SIDE || h > MAX_SIDE || u64::from(w) * u64::from(h) > MAX_PIXELS {
         return Err(format!(
             "{w}x{h} is larger than the largest picture: at most {MAX_SIDE} pixels a side and {MAX_PIXELS} in all (8192x8192)"

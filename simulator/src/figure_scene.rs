@@ -34,7 +34,8 @@ pub struct FigureOptions {
     )]
     time: f64,
     /// Write N frames of one cycle, NAME-000.png to NAME-(N-1).png, instead of one picture
-    #[arg(long, value_name = "N")]
+    /// (without --segments or --dimension, which are of one picture)
+    #[arg(long, value_name = "N", conflicts_with_all = ["segments", "dimension"])]
     frames: Option<u32>,
     /// Write every drawn line, `x0 y0 x1 y1 part` a line, in world units
     #[arg(long, value_name = "TXT")]

@@ -46,33 +46,57 @@ pub fn run() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let result = match command {
-        Command::Completions(shell) => args::completions(shell),
-        Command::List(path) => list(&path),
-        Command::Animate(arguments) => animate::animate(&arguments),
-        Command::Explore(arguments) => explore_window(&arguments),
-        Command::Derive(arguments) => derive(&arguments),
-        Command::Gallery { out } => gallery::run(&out),
-        Command::RenderLSystem(lsystem) => render_lsystem(&lsystem),
-        Command::RenderEscape(escape) => render_escape(&escape),
-        Command::RenderIfs(options) => ifs_scene::render_ifs(&options),
-        Command::RenderGingerbread(options) => ifs_scene::render_gingerbread(&options),
-        Command::RenderFigure(options) => figure_scene::render_figure(&options),
-        Command::RenderCarpet(options) => shape_scene::render_carpet(&options),
-        Command::RenderGasket(options) => shape_scene::render_gasket(&options),
-        Command::RenderCube(options) => shape_scene::render_cube(&options),
-        Command::RenderTerrain(options) => shape_scene::render_terrain(&options),
-        Command::RenderTerrain2d(options) => shape_scene::render_terrain2d(&options),
-        Command::Dimension { file, background } => dimension(&file, background),
-    };
+    let result = (|| -> Result<(), Failure> {
+        match command {
+            Command::Completions(shell) => args::completions(shell)?,
+            Command::List(path) => list(&path)?,
+            Command::Animate(arguments) => animate::animate(&arguments)?,
+            Command::Explore(arguments) => explore_window(&arguments)?,
+            Command::Derive(arguments) => derive(&arguments)?,
+            Command::Gallery { out } => gallery::run(&out)?,
+            Command::RenderLSystem(lsystem) => render_lsystem(&lsystem)?,
+            Command::RenderEscape(escape) => render_escape(&escape)?,
+            Command::RenderIfs(options) => ifs_scene::render_ifs(&options)?,
+            Command::RenderGingerbread(options) => ifs_scene::render_gingerbread(&options)?,
+            Command::RenderFigure(options) => figure_scene::render_figure(&options)?,
+            Command::RenderCarpet(options) => shape_scene::render_carpet(&options)?,
+            Command::RenderGasket(options) => shape_scene::render_gasket(&options)?,
+            Command::RenderCube(options) => shape_scene::render_cube(&options)?,
+            Command::RenderTerrain(options) => shape_scene::render_terrain(&options)?,
+            Command::RenderTerrain2d(options) => shape_scene::render_terrain2d(&options)?,
+            Command::Dimension { file, background } => dimension(&file, background)?,
+        }
+        Ok(())
+    })();
     match result {
         Ok(()) => ExitCode::SUCCESS,
         // Standard output was closed (`| head`): a quiet stop.
-        Err(message) if message == console::QUIET => ExitCode::FAILURE,
-        Err(message) => {
+        Err(Failure::Run(message)) if message == console::QUIET => ExitCode::FAILURE,
+        Err(Failure::Run(message)) => {
             console::complain(&format!("tinyfractal: error: {message}\n"));
             ExitCode::FAILURE
         }
+        Err(Failure::Usage(message)) => {
+            console::complain(&format!(
+                "tinyfractal: error: {message}\n(see `tinyfractal help`, or `tinyfractal help \
+                 COMMAND`)\n"
+            ));
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Why a command failed, and so its exit status: a run's error (1), or a usage error
+/// found only once the input was read (2), such as an option the file's system does not
+/// take.
+pub enum Failure {
+    Run(String),
+    Usage(String),
+}
+
+impl From<String> for Failure {
+    fn from(message: String) -> Self {
+        Self::Run(message)
     }
 }
 
@@ -98,23 +122,101 @@ fn read_text(path: &Path) -> Result<String, String> {
             MAX_INPUT_BYTES >> 20
         ));
     }
+    if bytes.starts_with(&[0xff, 0xfe]) || bytes.starts_with(&[0xfe, 0xff]) {
+        return Err(format!(
+            "{} is UTF-16 text: save it as UTF-8 (or 8-bit text, as Fractint's own files are)",
+            path.display()
+        ));
+    }
+    if bytes.contains(&0) {
+        return Err(format!(
+            "{} is a binary file, not text (it holds zero bytes): give a .l, .lsys or .ifs \
+             text file",
+            path.display()
+        ));
+    }
+    // A UTF-8 byte-order mark is no part of the text.
+    let bytes = bytes.strip_prefix(&[0xef, 0xbb, 0xbf]).unwrap_or(&bytes);
     // Fractint files are 8-bit text: read every byte as its Latin-1 character.
-    Ok(match String::from_utf8(bytes) {
-        Ok(text) => text,
-        Err(error) => error.into_bytes().iter().map(|&b| char::from(b)).collect(),
+    Ok(match std::str::from_utf8(bytes) {
+        Ok(text) => text.to_string(),
+        Err(_) => bytes.iter().map(|&b| char::from(b)).collect(),
     })
 }
 
-/// Whether a file is in the `.lsys` notation (by its extension); `.l` otherwise.
-fn is_lsys(path: &Path) -> bool {
-    path.extension()
-        .is_some_and(|extension| extension == "lsys")
+/// What a text file holds, by its extension (in any case) or, without a known one, by
+/// its content.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum FileKind {
+    /// Fractint's `.l` L-systems.
+    Fractint,
+    /// cpfg-like `.lsys` L-systems.
+    Lsys,
+    /// Fractint's `.ifs` maps.
+    Ifs,
+}
+
+impl FileKind {
+    /// The kind of the file at `path` holding `text`.
+    pub(crate) fn of(path: &Path, text: &str) -> Self {
+        let extension = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or_default();
+        if extension.eq_ignore_ascii_case("lsys") {
+            Self::Lsys
+        } else if extension.eq_ignore_ascii_case("ifs") {
+            Self::Ifs
+        } else if Self::holds_ifs(text) {
+            // Maps where L-systems were expected, whatever the extension (`.l` included).
+            Self::Ifs
+        } else if extension.eq_ignore_ascii_case("l") || !text.contains("-->") {
+            Self::Fractint
+        } else {
+            Self::Lsys
+        }
+    }
+
+    /// Whether `text`'s first entry reads as IFS maps and not as a Fractint L-system.
+    fn holds_ifs(text: &str) -> bool {
+        let maps = tinyfractal::IfsFile::new(text)
+            .entries()
+            .next()
+            .is_some_and(|entry| entry.and_then(|entry| entry.ifs()).is_ok());
+        let system = LFile::new(text)
+            .entries()
+            .next()
+            .is_some_and(|entry| entry.and_then(|entry| entry.grammar()).is_ok());
+        maps && !system
+    }
+
+    /// Refuses an IFS file where L-systems were asked for, naming it.
+    pub(crate) fn lsystems(self, path: &Path) -> Result<Self, String> {
+        if self == Self::Ifs {
+            return Err(format!(
+                "{} is an IFS file (Fractint's .ifs maps), not L-systems: draw its entries with \
+                 `tinyfractal render ifs --file {} --name NAME`",
+                path.display(),
+                path.display()
+            ));
+        }
+        Ok(self)
+    }
+}
+
+/// Whether the file at `path` holding `text` is in the `.lsys` notation (`.l` otherwise),
+/// or an error naming an IFS file.
+fn is_lsys(path: &Path, text: &str) -> Result<bool, String> {
+    Ok(FileKind::of(path, text).lsystems(path)? == FileKind::Lsys)
 }
 
 /// The names of the entries of `text`, the file at `path` (`.lsys` or Fractint's `.l`),
 /// each or the error reading it.
-fn entry_names<'a>(path: &Path, text: &'a str) -> Vec<Result<&'a str, tinyfractal::Error>> {
-    if is_lsys(path) {
+fn entry_names<'a>(
+    path: &Path,
+    text: &'a str,
+) -> Result<Vec<Result<&'a str, tinyfractal::Error>>, String> {
+    Ok(if is_lsys(path, text)? {
         LsysFile::new(text)
             .entries()
             .map(|entry| entry.map(|entry| entry.name()))
@@ -124,16 +226,23 @@ fn entry_names<'a>(path: &Path, text: &'a str) -> Vec<Result<&'a str, tinyfracta
             .entries()
             .map(|entry| entry.map(|entry| entry.name()))
             .collect()
-    }
+    })
 }
 
 fn list(path: &Path) -> Result<(), String> {
     let text = read_text(path)?;
     let failed = |e: tinyfractal::Error| format!("{}: {e}", path.display());
-    let names: Vec<&str> = entry_names(path, &text)
-        .into_iter()
-        .collect::<Result<_, _>>()
-        .map_err(failed)?;
+    let names: Vec<&str> = if FileKind::of(path, &text) == FileKind::Ifs {
+        tinyfractal::IfsFile::new(&text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect::<Result<_, _>>()
+    } else {
+        entry_names(path, &text)?
+            .into_iter()
+            .collect::<Result<_, _>>()
+    }
+    .map_err(failed)?;
     let mut text = String::new();
     for name in names {
         text.push_str(name);
@@ -159,7 +268,7 @@ pub(crate) fn load<'a>(
             *file_text = read_text(path)?;
             let file_text: &'a String = file_text;
             let failed = |e: tinyfractal::Error| format!("{name} in {}: {e}", path.display());
-            if is_lsys(path) {
+            if is_lsys(path, file_text)? {
                 let entry = LsysFile::new(file_text).entry(name).map_err(failed)?;
                 let loaded = if entry.is_parametric() {
                     Loaded::Parametric(Box::new(entry.parametric().map_err(failed)?))
@@ -200,9 +309,10 @@ pub(crate) fn load<'a>(
 
 /// `derive`: the string at the order, on one line, if it is at most `--max-length` symbols
 /// (measured first, so nothing is printed past the limit).
-fn derive(arguments: &DeriveArgs) -> Result<(), String> {
+fn derive(arguments: &DeriveArgs) -> Result<(), Failure> {
     let mut file_text = String::new();
     let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    seed_applies(&arguments.source, arguments.seed, &name)?;
     let budget = derive_budget(arguments);
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
@@ -214,7 +324,7 @@ fn derive(arguments: &DeriveArgs) -> Result<(), String> {
                 ParametricWalker::<'_, { scene::DEPTH }>::new(&grammar, arguments.order)
                     .map(|walker| walker.with_budget(budget))
             };
-            return print_derivation(walk, arguments, &name);
+            return Ok(print_derivation(walk, arguments, &name)?);
         }
     };
     if let Some(seed) = arguments.seed {
@@ -226,7 +336,20 @@ fn derive(arguments: &DeriveArgs) -> Result<(), String> {
             core::iter::from_fn(move || walker.next_symbol())
         })
     };
-    print_derivation(walk, arguments, &name)
+    Ok(print_derivation(walk, arguments, &name)?)
+}
+
+/// `--seed` is for the stochastic productions only `.lsys` files have: given for a `.l`
+/// file's or an inline system, it is a usage error, not ignored.
+fn seed_applies(source: &Source, seed: Option<u32>, name: &str) -> Result<(), Failure> {
+    let lsys = matches!(source, Source::File { path, .. } if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("lsys")));
+    if seed.is_some() && !lsys {
+        return Err(Failure::Usage(format!(
+            "--seed does not apply to {name}: only `.lsys` systems have stochastic \
+             productions (leave out --seed)"
+        )));
+    }
+    Ok(())
 }
 
 /// Reads a walk may take: expansions that print nothing still take reads, so they are
@@ -351,16 +474,31 @@ fn render_parametric(
     )
 }
 
-fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
+fn render_lsystem(arguments: &LSystemArgs) -> Result<(), Failure> {
     let mut file_text = String::new();
     let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    let three_d = [
+        ("--projection", arguments.projection.is_some()),
+        ("--depth-cue", arguments.depth_cue),
+        ("--environment", arguments.environment.is_some()),
+    ];
+    if let (Loaded::Plain(_), Some((option, _))) =
+        (&loaded, three_d.iter().find(|(_, given)| *given))
+    {
+        return Err(Failure::Usage(format!(
+            "{option} does not apply to {name}: 3D views, depth cueing and environments are \
+             the general engine's, for parametric `.lsys` systems, and {name} is drawn in the \
+             plane (leave out {option})"
+        )));
+    }
+    seed_applies(&arguments.source, arguments.seed, &name)?;
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
         Loaded::Parametric(mut grammar) => {
             if let Some(seed) = arguments.seed {
                 grammar.set_seed(seed);
             }
-            return render_parametric(arguments, &grammar, &name);
+            return Ok(render_parametric(arguments, &grammar, &name)?);
         }
     };
     if let Some(seed) = arguments.seed {
@@ -385,7 +523,7 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
         ));
     }
     let (grammar, order) = (&grammar, arguments.order);
-    deliver(
+    Ok(deliver(
         common,
         &name.to_lowercase(),
         &rendered.display,
@@ -398,7 +536,7 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), String> {
             }
         },
         &scene::stats_line(&rendered),
-    )
+    )?)
 }
 
 fn render_escape(arguments: &EscapeArgs) -> Result<(), String> {
@@ -544,19 +682,15 @@ fn explorer(arguments: &args::ExploreArgs) -> Result<explore::Explorer, String> 
     }
     if let Some(path) = &arguments.file {
         let text = read_text(path)?;
-        let names: Vec<String> = entry_names(path, &text)
+        let names: Vec<String> = entry_names(path, &text)?
             .into_iter()
             .filter_map(|name| name.ok().map(str::to_string))
             .collect();
         if names.is_empty() {
             return Err(format!("{}: no systems to explore", path.display()));
         }
-        return Ok(explore::Explorer::lsystems(
-            text,
-            names,
-            is_lsys(path),
-            size,
-        ));
+        let lsys = is_lsys(path, &text)?;
+        return Ok(explore::Explorer::lsystems(text, names, lsys, size));
     }
     let number = |option: &str, text: &str| {
         escape_scene::coordinate(option, text).map(tinyfractal::Coord::to_f64)

@@ -148,16 +148,6 @@ fn errors_name_the_system_and_leave_no_file() {
             "deeper than the turtle stack (1024 levels)",
         ),
         (
-            vec!["--axiom", "F", "--angle", "4", "--order", "1000"],
-            "order 1000 is too high: this walker supports orders up to 256",
-        ),
-        (
-            vec![
-                "--axiom", "F", "--angle", "4", "--order", "1", "--size", "0x10",
-            ],
-            "zero width or height",
-        ),
-        (
             vec!["--axiom", "F", "--angle", "0", "--order", "1"],
             "angle 0",
         ),
@@ -477,11 +467,6 @@ fn escape_time_errors() {
             vec!["mandelbrot", "--width", "7.9"],
             "reaches 4.68766 from 0 on an axis, beyond ±3.5",
         ),
-        (vec!["mandelbrot", "--max-iter", "0"], "max-iter 0"),
-        (
-            vec!["mandelbrot", "--max-iter", "100000"],
-            "max-iter 100000",
-        ),
         (
             vec!["julia", "--c", "-0.8,0.156", "--width", "0.00000000000001"],
             "a Julia view is limited to the deep tier's spacing of 2^-54",
@@ -490,7 +475,6 @@ fn escape_time_errors() {
             vec!["mandelbrot", "--width", "1e-45"],
             "pixel spacing of 3.1250e-48",
         ),
-        (vec!["mandelbrot", "--size", "0x5"], "zero width or height"),
         (
             vec!["mandelbrot", "--center", "x,0"],
             "--center: `x` is not a number between -8 and 8 (write e.g. -0.75, 1e-9 or 2.5E-3)",
@@ -739,8 +723,8 @@ fn a_failing_run_leaves_the_folder_exactly_as_it_was() {
             "8x8",
             "--out",
             out,
-            "--max-iter",
-            "0",
+            "--width",
+            "1e-45",
         ],
     ];
     for args in cases {

@@ -40,6 +40,9 @@ pub enum WalkError {
     Overflow,
     /// The step shrank (through `@`) below what fixed point can represent with precision.
     StepUnderflow,
+    /// The walk starts with a step below what fixed point represents with precision: the
+    /// picture is more steps across than the target has pixels by a factor of 2²⁰ or more.
+    StepTooFine,
     /// A parameter expression of a parametric system cannot be evaluated.
     Arithmetic {
         /// The module whose parameters (or whose production's condition) it is.
@@ -75,7 +78,8 @@ impl fmt::Display for WalkError {
             ),
             Self::BudgetExhausted { budget } => write!(
                 f,
-                "the derivation needs more than {budget} symbols: lower the order or raise the budget"
+                "the derivation needs more than {budget} symbols, the walk's budget: lower the \
+                 order (a program using the crate can set a larger budget with `with_budget`)"
             ),
             Self::NoEnvironment { symbol } => write!(
                 f,
@@ -106,6 +110,12 @@ impl fmt::Display for WalkError {
             Self::StepUnderflow => write!(
                 f,
                 "the step shrank below fixed-point precision (too many `@` scalings): lower the order"
+            ),
+            Self::StepTooFine => write!(
+                f,
+                "the picture is too many steps across for the target: one step would be under \
+                 2^-20 of a pixel, below fixed-point precision; lower the order or enlarge the \
+                 target"
             ),
         }
     }

@@ -86,7 +86,8 @@ pub(crate) struct Turtle<'g, const STACK: usize> {
     state: State,
     stack: Vec<State, STACK>,
     max_stack: usize,
-    /// Steps below this (but 0) are [`WalkError::StepUnderflow`].
+    /// Steps below this (but 0) are [`WalkError::StepTooFine`] at the start,
+    /// [`WalkError::StepUnderflow`] after `@`.
     min_step: Real,
     /// Step vectors of the last few headings, for the current step.
     steps: StepCache,
@@ -101,7 +102,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         start: Start,
     ) -> Result<Self, Error> {
         if start.step.abs() < MIN_STEP {
-            return Err(Error::Walk(WalkError::StepUnderflow));
+            return Err(Error::Walk(WalkError::StepTooFine));
         }
         let mut turtle = Self {
             headings,
