@@ -328,3 +328,59 @@ fn density_colours_count_every_point() {
         }))
     );
 }
+
+/// Fractint draws entries with a probability of 0 or less (public collections use them on
+/// purpose): it adds probabilities until the sum reaches a random number in [0, 1] and
+/// takes the last map if it never does. The maps' shares of a long game match that loop,
+/// run here in f64 over a fine grid of random numbers.
+#[test]
+fn maps_of_zero_or_negative_probability_are_chosen_as_fractint_chooses() {
+    let probabilities = [0.3, 0.0, -0.2, 0.5, 0.1, 0.3];
+    let rows: String = probabilities
+        .iter()
+        .enumerate()
+        .map(|(k, p)| format!("  0.5 0 0 0.5 {} 0 {p}\n", k as f64 * 0.1))
+        .collect();
+    let text = format!("negative {{\n{rows}}}\n");
+    let ifs = IfsFile::new(&text)
+        .entry("negative")
+        .unwrap()
+        .ifs()
+        .unwrap();
+    // Fractint's loop, as written in its source.
+    let grid = 100_000;
+    let mut expected = [0usize; 6];
+    for i in 0..grid {
+        let r = (i as f64 + 0.5) / grid as f64;
+        let (mut sum, mut k) = (probabilities[0], 0);
+        while sum < r && k < probabilities.len() - 1 {
+            k += 1;
+            sum += probabilities[k];
+        }
+        expected[k] += 1;
+    }
+    // Maps 1 and 2 (0 and -0.2) are never chosen; map 3's sum, 0.6, passes the largest
+    // before it, 0.3: chosen from 0.3 to 0.6.
+    assert_eq!(expected[1] + expected[2], 0);
+    assert_eq!(ifs.never_chosen(), 2);
+    let points = 200_000;
+    let mut counts = [0usize; 6];
+    for point in ChaosGame::new(&ifs, 7, points) {
+        counts[point.unwrap().map] += 1;
+    }
+    for k in 0..6 {
+        let model = expected[k] as f64 / grid as f64;
+        let ours = counts[k] as f64 / points as f64;
+        assert!(
+            (model - ours).abs() < 0.005,
+            "map {k}: {ours} against Fractint's {model}"
+        );
+    }
+    // And the picture draws.
+    let mut bitmap = Bitmap::new(64, 64);
+    IfsPicture::new(&ifs, 2000)
+        .fit(bitmap.bounding_box(), &[BinaryColor::On])
+        .unwrap()
+        .draw(&mut bitmap)
+        .unwrap();
+}

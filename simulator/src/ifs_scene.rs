@@ -115,6 +115,14 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
         .entry(&name)
         .and_then(|entry| entry.ifs())
         .map_err(failed)?;
+    if ifs.never_chosen() > 0 {
+        crate::warn(&format!(
+            "{name}: {} of its maps have a probability of 0 or less, or are passed by the \
+             sums before them: drawn as Fractint draws them, never chosen (the last map takes \
+             what the others leave)",
+            ifs.never_chosen()
+        ));
+    }
     let mut picture = IfsPicture::new(&ifs, options.points_count).with_seed(options.seed);
     if let Some(projection) = options.projection {
         picture = picture.with_projection(projection);

@@ -263,6 +263,22 @@ pub(crate) fn load<'a>(
     source: &'a Source,
     file_text: &'a mut String,
 ) -> Result<(Loaded<'a>, String), String> {
+    load_for(source, file_text, Purpose::Draw)
+}
+
+/// What a system is loaded for: a drawing needs its angle, a derivation does not.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Purpose {
+    Draw,
+    Derive,
+}
+
+/// [`load`] for `purpose`.
+pub(crate) fn load_for<'a>(
+    source: &'a Source,
+    file_text: &'a mut String,
+    purpose: Purpose,
+) -> Result<(Loaded<'a>, String), String> {
     Ok(match source {
         Source::File { path, name } => {
             *file_text = read_text(path)?;
@@ -272,13 +288,19 @@ pub(crate) fn load<'a>(
                 let entry = LsysFile::new(file_text).entry(name).map_err(failed)?;
                 let loaded = if entry.is_parametric() {
                     Loaded::Parametric(Box::new(entry.parametric().map_err(failed)?))
+                } else if purpose == Purpose::Derive {
+                    Loaded::Plain(Box::new(entry.grammar_to_derive().map_err(failed)?))
                 } else {
                     Loaded::Plain(Box::new(entry.grammar().map_err(failed)?))
                 };
                 return Ok((loaded, name.clone()));
             }
             let entry = LFile::new(file_text).entry(name).map_err(failed)?;
-            let grammar = entry.grammar().map_err(failed)?;
+            let grammar = match purpose {
+                Purpose::Derive => entry.grammar_to_derive(),
+                Purpose::Draw => entry.grammar(),
+            }
+            .map_err(failed)?;
             for warning in entry.warnings() {
                 warn(&format!("{name} in {}: {warning}", path.display()));
             }
@@ -311,7 +333,7 @@ pub(crate) fn load<'a>(
 /// (measured first, so nothing is printed past the limit).
 fn derive(arguments: &DeriveArgs) -> Result<(), Failure> {
     let mut file_text = String::new();
-    let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    let (loaded, name) = load_for(&arguments.source, &mut file_text, Purpose::Derive)?;
     seed_applies(&arguments.source, arguments.seed, &name)?;
     let budget = derive_budget(arguments);
     let mut grammar = match loaded {

@@ -207,3 +207,42 @@ fn files_are_known_by_content_and_extension() {
     let output = run(&["list", &data("lecture.ifs")]);
     assert_eq!(common::stdout(&output), "fern\ngasket\n");
 }
+
+/// The lecture's algae (A → AB, B → A) has no angle: deriving it needs none, drawing it
+/// says what is missing.
+#[test]
+fn derive_needs_no_angle() {
+    let dir = scratch("algae");
+    let fractint = dir.join("algae.l");
+    std::fs::write(&fractint, "Algae {\n  Axiom A\n  A=AB\n  B=A\n}\n").unwrap();
+    let lsys = dir.join("algae.lsys");
+    std::fs::write(&lsys, "Algae {\n  axiom: A\n  A --> AB\n  B --> A\n}\n").unwrap();
+    for (path, expected) in [(&fractint, "abaababa\n"), (&lsys, "ABAABABAABAAB\n")] {
+        let path = path.to_str().unwrap();
+        let order = if path.ends_with(".l") { "4" } else { "5" };
+        let output = run(&[
+            "derive", "--file", path, "--name", "algae", "--order", order,
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        assert_eq!(common::stdout(&output), expected);
+        let out = dir.join("algae.png");
+        let output = run(&[
+            "render",
+            "lsystem",
+            "--file",
+            path,
+            "--name",
+            "algae",
+            "--order",
+            "3",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_eq!(output.status.code(), Some(1));
+        assert!(
+            stderr(&output).contains("has no angle"),
+            "{}",
+            stderr(&output)
+        );
+    }
+}

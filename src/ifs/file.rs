@@ -3,7 +3,7 @@
 //! probability p), or in 3D the matrix row by row, the translation and p (13 numbers);
 //! `;` starts a comment.
 
-use super::maps::{AffineMap, Ifs};
+use super::maps::{AffineMap, Ifs, MAX_MAPS};
 use crate::error::{Error, Location, ReadError};
 use crate::math::Real;
 
@@ -149,6 +149,9 @@ impl<'a> IfsEntry<'a> {
             ifs.set_3d();
         }
         let mut sum: i64 = 0;
+        // As written, for maps of probability 0 or less, which Fractint draws.
+        let mut probabilities = [Real::ZERO; MAX_MAPS];
+        let mut unchosen = false;
         for (line, code) in lines(self.body, self.body_line) {
             // The first line starts after the `{`.
             let base = if line == self.body_line {
@@ -200,7 +203,17 @@ impl<'a> IfsEntry<'a> {
                 )
             };
             sum = sum.saturating_add(probability.to_bits());
-            ifs.add_at(map, probability, at)?;
+            if let Some(slot) = probabilities.get_mut(ifs.len()) {
+                *slot = probability;
+            }
+            // A map Fractint never chooses is weighed below, with all the others.
+            let placeholder = if probability.to_bits() <= 0 {
+                unchosen = true;
+                Real::ONE
+            } else {
+                probability
+            };
+            ifs.add_at(map, placeholder, at)?;
         }
         let whole = Location {
             line: self.line,
@@ -215,6 +228,9 @@ impl<'a> IfsEntry<'a> {
                 sum: Real::from_bits(sum),
                 at: whole,
             }));
+        }
+        if unchosen {
+            ifs.weigh_as_fractint(probabilities.get(..ifs.len()).unwrap_or(&[]));
         }
         Ok(())
     }

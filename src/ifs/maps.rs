@@ -55,6 +55,40 @@ impl Ifs {
         Ok(())
     }
 
+    /// Gives the maps the weights Fractint's choice gives them from `probabilities` (each
+    /// map's, in order, as written: some 0 or negative), in units of 2⁻²⁴: Fractint walks
+    /// the maps adding probabilities until the sum reaches a random number in [0, 1], and
+    /// takes the last map if it never does. So a map is chosen for the random numbers
+    /// between the largest sum before it and its own sum (none if that is not larger: a
+    /// map of probability 0 or less is never chosen), and the last map for every number
+    /// above all the sums before it (what the others leave).
+    pub(crate) fn weigh_as_fractint(&mut self, probabilities: &[Real]) {
+        const ONE: i64 = 1 << 24;
+        let (mut sum, mut reached) = (0i64, 0i64);
+        let last = self.maps.len().saturating_sub(1);
+        self.total = 0;
+        for (index, ((_, weight), probability)) in
+            self.maps.iter_mut().zip(probabilities).enumerate()
+        {
+            let share = if index == last {
+                ONE - reached
+            } else {
+                sum += probability.to_bits() >> 8;
+                let upto = sum.clamp(0, ONE);
+                let share = upto - reached;
+                reached = reached.max(upto);
+                share
+            };
+            *weight = u32::try_from(share.max(0)).unwrap_or(0);
+            self.total += u64::from(*weight);
+        }
+    }
+
+    /// Maps that are never chosen (a weight of 0: see `weigh_as_fractint`).
+    pub fn never_chosen(&self) -> usize {
+        self.maps.iter().filter(|(_, weight)| *weight == 0).count()
+    }
+
     /// Adds a map chosen with `probability`.
     pub fn add(&mut self, map: AffineMap, probability: Real) -> Result<(), Error> {
         self.add_at(map, probability, Location::column(1))

@@ -87,6 +87,19 @@ impl<'a> Entry<'a> {
 
     /// Reads the entry into a grammar (Fractint dialect).
     pub fn grammar(&self) -> Result<Grammar<'a>, Error> {
+        self.read(true)
+    }
+
+    /// Reads the entry to derive its string only: an entry with no `Angle` line (the
+    /// lecture's algae, A → AB, B → A) is accepted, its grammar turning by a quarter turn
+    /// that a derivation never uses.
+    pub fn grammar_to_derive(&self) -> Result<Grammar<'a>, Error> {
+        self.read(false)
+    }
+
+    /// The entry's grammar; with `angle_required` false, a quarter turn where no angle is
+    /// given.
+    fn read(&self, angle_required: bool) -> Result<Grammar<'a>, Error> {
         if let Some(next) = self.interrupted_by {
             return Err(Error::Read(ReadError::EntryRunsIntoNext {
                 entry: self.line,
@@ -137,7 +150,11 @@ impl<'a> Entry<'a> {
                 return Err(Error::Read(ReadError::ExtraText { at: at(column) }));
             }
         }
-        let angle = angle.ok_or(Error::Read(ReadError::MissingAngle))?;
+        let angle = match angle {
+            Some(angle) => angle,
+            None if !angle_required => Angle::Divisions(4),
+            None => return Err(Error::Read(ReadError::MissingAngle)),
+        };
         let (axiom, axiom_at) = axiom.ok_or(Error::Read(ReadError::MissingAxiom))?;
         let mut grammar = Grammar::new_at(Dialect::Fractint, axiom, angle, axiom_at)?;
         for (line, mut words) in self.lines() {

@@ -181,6 +181,19 @@ impl<'a> LsysEntry<'a> {
 impl<'a> LsysEntry<'a> {
     /// Reads the system into a grammar (ABOP's notation).
     pub fn grammar(&self) -> Result<Grammar<'a>, Error> {
+        self.read(true)
+    }
+
+    /// Reads the system to derive its string only: a system with no `angle:` line (the
+    /// lecture's algae, A → AB, B → A) is accepted, its grammar turning by a quarter turn
+    /// that a derivation never uses.
+    pub fn grammar_to_derive(&self) -> Result<Grammar<'a>, Error> {
+        self.read(false)
+    }
+
+    /// The system's grammar; with `angle_required` false, a quarter turn where no angle is
+    /// given.
+    fn read(&self, angle_required: bool) -> Result<Grammar<'a>, Error> {
         let mut axiom = None;
         let mut angle = None;
         let mut seed = None;
@@ -213,7 +226,11 @@ impl<'a> LsysEntry<'a> {
                 return Err(Error::Read(ReadError::UnknownLine { at: at(column) }));
             }
         }
-        let angle = angle.ok_or(Error::Read(ReadError::MissingAngle))?;
+        let angle = match angle {
+            Some(angle) => angle,
+            None if !angle_required => Angle::Divisions(4),
+            None => return Err(Error::Read(ReadError::MissingAngle)),
+        };
         let (axiom, axiom_at) = axiom.ok_or(Error::Read(ReadError::MissingAxiom))?;
         let mut grammar = Grammar::new_at(Dialect::Abop, axiom, angle, axiom_at)?;
         grammar.set_seed(seed.unwrap_or(0));
