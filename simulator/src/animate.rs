@@ -4,6 +4,7 @@
 
 use std::io::{self, Write};
 use std::path::Path;
+use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
 use std::time::Instant;
 
 use embedded_graphics::pixelcolor::Rgb888;
@@ -27,12 +28,80 @@ pub fn progress(total: u64, what: &str) -> ProgressBar {
     bar
 }
 
-/// `animate ...`.
+/// A finished frame, handed from the animation to the encoder as it is made.
+type Picture = SimulatorDisplay<Rgb888>;
+
+/// What the animation sends the writer: each frame as it is made, then the `--stats`
+/// detail.
+enum Message {
+    Frame(Picture),
+    Done(String),
+}
+
+/// Where an animation sends its frames: on to the writer, at most one frame ahead of it,
+/// so an animation's memory does not grow with its frames.
+struct Emit<'s> {
+    sender: SyncSender<Message>,
+    bar: &'s ProgressBar,
+}
+
+impl Emit<'_> {
+    /// Sends `picture` on; an error once the writer has stopped (it says why).
+    fn frame(&self, picture: Picture) -> Result<(), String> {
+        self.bar.inc(1);
+        self.sender
+            .send(Message::Frame(picture))
+            .map_err(|_| WRITER_STOPPED.to_string())
+    }
+}
+
+/// The animation's error when the writer stopped first (the writer's own error is the one
+/// reported).
+const WRITER_STOPPED: &str = "the writer stopped";
+
+/// `animate ...`: the frames are made on a thread of their own and written as they come
+/// (numbered PNGs, a GIF or an APNG), all or nothing.
 pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
     let started = Instant::now();
     let size = Size::new(arguments.size.0, arguments.size.1);
     let bar = progress(u64::from(arguments.frames), "frames");
-    let (frames, detail) = match &arguments.kind {
+    let (sender, receiver) = sync_channel(1);
+    let result = std::thread::scope(|scope| {
+        let maker = scope.spawn(|| {
+            let emit = Emit { sender, bar: &bar };
+            let detail = make(arguments, size, &emit)?;
+            let _ = emit.sender.send(Message::Done(detail));
+            Ok::<(), String>(())
+        });
+        let stats = |detail: String| {
+            if arguments.stats {
+                format!(
+                    "frames={}{detail} elapsed_ms={:.3}\n",
+                    arguments.frames,
+                    started.elapsed().as_secs_f64() * 1e3
+                )
+            } else {
+                String::new()
+            }
+        };
+        let written = write(&receiver, arguments, stats);
+        // The writer is done: a maker still sending stops at its next frame.
+        drop(receiver);
+        let made = maker
+            .join()
+            .unwrap_or_else(|_| Err("the animation stopped unexpectedly".to_string()));
+        match (made, written) {
+            (Err(error), _) if error != WRITER_STOPPED => Err(error),
+            (_, written) => written,
+        }
+    });
+    bar.finish_and_clear();
+    result
+}
+
+/// Makes the animation's frames into `emit`; the `--stats` detail.
+fn make(arguments: &AnimateArgs, size: Size, emit: &Emit<'_>) -> Result<String, String> {
+    match &arguments.kind {
         Animation::Zoom {
             view,
             end_width,
@@ -48,33 +117,21 @@ pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
                 *factor,
                 tolerance,
                 arguments.frames,
-                &bar,
-            )?
+                emit,
+            )
         }
         Animation::Palette { view, step } => palette_cycle(
             &escape_scene::request(view, size),
             *step,
             arguments.frames,
-            &bar,
-        )?,
-        Animation::Growth { source, seed } => growth(source, *seed, arguments.frames, size, &bar)?,
+            emit,
+        ),
+        Animation::Growth { source, seed } => growth(source, *seed, arguments.frames, size, emit),
         Animation::Figure { pose } => {
-            let frames = crate::figure_scene::cycle(*pose, arguments.frames, size)?;
-            bar.inc(u64::from(arguments.frames));
-            (frames, String::new())
+            crate::figure_scene::cycle(*pose, arguments.frames, size, |frame| emit.frame(frame))?;
+            Ok(String::new())
         }
-    };
-    bar.finish_and_clear();
-    let stats = if arguments.stats {
-        format!(
-            "frames={}{detail} elapsed_ms={:.3}\n",
-            frames.len(),
-            started.elapsed().as_secs_f64() * 1e3
-        )
-    } else {
-        String::new()
-    };
-    write(&frames, &arguments.out, arguments.delay_ms, stats)
+    }
 }
 
 /// The widths of a zoom's frames, as text: the first is `--width`, the last `end_width`
@@ -136,8 +193,8 @@ fn zoom(
     factor: f64,
     tolerance: Option<u32>,
     frames: u32,
-    bar: &ProgressBar,
-) -> Result<(Vec<SimulatorDisplay<Rgb888>>, String), String> {
+    emit: &Emit<'_>,
+) -> Result<String, String> {
     let widths = widths(request.width, end_width, factor, frames)?;
     // Every frame has the same palette: one is kept.
     let mut palette = None;
@@ -157,7 +214,7 @@ fn zoom(
         })
         .collect::<Result<Vec<View>, String>>()?;
     let Some(palette) = palette else {
-        return Ok((Vec::new(), String::new()));
+        return Ok(String::new());
     };
     // A frame that is not exact by the tier rule says so, once, before any is computed.
     if let Some((index, warning)) = views
@@ -176,7 +233,6 @@ fn zoom(
     let mut columns = vec![ZoomLine::default(); request.size.width as usize];
     let mut rows = vec![ZoomLine::default(); request.size.height as usize];
     let (mut computed, mut total) = (0u64, 0u64);
-    let mut pictures = Vec::with_capacity(views.len());
     // One frame, moved in place from view to view. A frame computes in a fixed tier, so a
     // view whose tier is perturbation (past `Deep`'s spacing, or deep with a long orbit)
     // is rendered whole by perturbation, as `render` renders it; the frame's storage is
@@ -193,8 +249,7 @@ fn zoom(
             let (perturbed, _) = escape_scene::compute(*view, Algorithm::Exact)?;
             computed += pixels as u64;
             total += pixels as u64;
-            pictures.push(escape_scene::paint(view, &perturbed, &palette));
-            bar.inc(1);
+            emit.frame(escape_scene::paint(view, &perturbed, &palette))?;
             continue;
         }
         // The last frame takes only lines at exactly its own points: it is exact.
@@ -202,16 +257,12 @@ fn zoom(
         let stats = frame.advance(*view, tolerance).map_err(|e| e.to_string())?;
         computed += u64::from(stats.computed);
         total += u64::from(stats.computed + stats.reused);
-        pictures.push(escape_scene::paint(view, frame.values(), &palette));
-        bar.inc(1);
+        emit.frame(escape_scene::paint(view, frame.values(), &palette))?;
     }
     let share = computed as f64 / total.max(1) as f64;
-    Ok((
-        pictures,
-        format!(
-            " computed_share={share:.4} last_width={}",
-            widths.last().map_or("", String::as_str)
-        ),
+    Ok(format!(
+        " computed_share={share:.4} last_width={}",
+        widths.last().map_or("", String::as_str)
     ))
 }
 
@@ -220,21 +271,21 @@ fn palette_cycle(
     request: &Request<'_>,
     step: u16,
     frames: u32,
-    bar: &ProgressBar,
-) -> Result<(Vec<SimulatorDisplay<Rgb888>>, String), String> {
+    emit: &Emit<'_>,
+) -> Result<String, String> {
     let (view, palette) = escape_scene::view_at(request, request.width)?;
     let (values, _) = escape_scene::compute(view, Algorithm::Exact)?;
-    let pictures = (0..frames)
-        .map(|k| {
-            let offset = (u64::from(k) * u64::from(step) % 65_536) as u16;
-            let turned = palette.turned(offset).ok_or_else(|| {
-                format!("--palette {}: colour cycling needs a gradient (classic, fire, gray or smooth-*)", request.palette)
-            })?;
-            bar.inc(1);
-            Ok(escape_scene::paint(&view, &values, &turned))
-        })
-        .collect::<Result<Vec<_>, String>>()?;
-    Ok((pictures, String::new()))
+    for k in 0..frames {
+        let offset = (u64::from(k) * u64::from(step) % 65_536) as u16;
+        let turned = palette.turned(offset).ok_or_else(|| {
+            format!(
+                "--palette {}: colour cycling needs a gradient (classic, fire, gray or smooth-*)",
+                request.palette
+            )
+        })?;
+        emit.frame(escape_scene::paint(&view, &values, &turned))?;
+    }
+    Ok(String::new())
 }
 
 /// An L-system at orders 0 to `frames` − 1, each fitted to the picture.
@@ -243,8 +294,8 @@ fn growth(
     seed: Option<u32>,
     frames: u32,
     size: Size,
-    bar: &ProgressBar,
-) -> Result<(Vec<SimulatorDisplay<Rgb888>>, String), String> {
+    emit: &Emit<'_>,
+) -> Result<String, String> {
     let mut text = String::new();
     let (loaded, name) = crate::load(source, &mut text)?;
     let crate::Loaded::Plain(grammar) = loaded else {
@@ -256,51 +307,64 @@ fn growth(
     if let Some(seed) = seed {
         grammar.set_seed(seed);
     }
-    let pictures = (0..frames)
-        .map(|order| {
-            let rendered = crate::scene::render(&grammar, order, size.width, size.height, None)
-                .map_err(|e| format!("{name} at order {order}: {e}"))?;
-            bar.inc(1);
-            Ok(rendered.display)
-        })
-        .collect::<Result<Vec<_>, String>>()?;
-    Ok((pictures, String::new()))
+    for order in 0..frames {
+        let rendered = crate::scene::render(&grammar, order, size.width, size.height, None)
+            .map_err(|e| format!("{name} at order {order}: {e}"))?;
+        emit.frame(rendered.display)?;
+    }
+    Ok(String::new())
 }
 
-/// Writes the frames: `NAME.gif`, `NAME.png` (APNG), or a folder of `frame-NNNN.png`
-/// (created if missing), all or nothing.
-/// Writes the frames to `out` (a GIF, an APNG or a folder of numbered PNGs) and prints
-/// `stats`, all or nothing; in a folder, numbered frames past these (an earlier, longer
-/// run's) are removed once these are in place.
+/// Writes the frames `receiver` brings to `--out` (a GIF, an APNG or a folder of numbered
+/// PNGs, made if missing) as they come, and the `--stats` line once the last is in,
+/// all or nothing; in a folder, numbered frames past these (an earlier, longer run's)
+/// are removed once these are in place.
 fn write(
-    frames: &[SimulatorDisplay<Rgb888>],
-    out: &Path,
-    delay_ms: u32,
-    stats: String,
+    receiver: &Receiver<Message>,
+    arguments: &AnimateArgs,
+    stats: impl FnOnce(String) -> String,
 ) -> Result<(), String> {
+    let (out, delay_ms, count) = (&arguments.out, arguments.delay_ms, arguments.frames);
+    // The next frame, or why there is none (the maker's error is reported instead).
+    let next = || match receiver.recv() {
+        Ok(Message::Frame(picture)) => Ok(picture),
+        _ => Err(io::Error::other("the animation stopped")),
+    };
     let mut plan = crate::output::Plan::new();
-    plan.print(stats);
     let extension = out
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
     let paths: Vec<_>;
+    let folder = !matches!(extension.as_deref(), Some("gif" | "png"));
+    let made_folder = folder && !out.exists();
     match extension.as_deref() {
-        Some("gif") => plan.add("--out", out, |w| gif(frames, delay_ms, w)),
-        Some("png") => plan.add("--out", out, |w| apng(frames, delay_ms, w)),
+        Some("gif") => plan.add("--out", out, move |w| gif(count, next, delay_ms, w)),
+        Some("png") => plan.add("--out", out, move |w| apng(count, next, delay_ms, w)),
         _ => {
             std::fs::create_dir_all(out).map_err(|e| format!("--out {}: {e}", out.display()))?;
-            paths = (0..frames.len())
+            paths = (0..count)
                 .map(|k| out.join(format!("frame-{k:04}.png")))
                 .collect();
-            for (frame, path) in frames.iter().zip(&paths) {
-                plan.add("--out", path, move |w| crate::output::png(frame, w));
+            for path in &paths {
+                plan.add("--out", path, move |w| crate::output::png(&next()?, w));
             }
-            plan.write()?;
-            return remove_stale_frames(out, frames.len());
         }
     }
-    plan.write()
+    plan.print_after(move || match receiver.recv() {
+        Ok(Message::Done(detail)) => Ok(stats(detail)),
+        _ => Err("the animation stopped".to_string()),
+    });
+    let written = plan.write();
+    if written.is_err() && made_folder {
+        // Only if empty: nothing of anyone else's is removed.
+        let _ = std::fs::remove_dir(out);
+    }
+    written?;
+    if folder {
+        remove_stale_frames(out, count as usize)?;
+    }
+    Ok(())
 }
 
 /// Removes `frame-NNNN.png` files numbered `count` and on from `folder`: what an earlier
@@ -336,43 +400,59 @@ fn rgb(frame: &SimulatorDisplay<Rgb888>) -> Vec<u8> {
         .to_vec()
 }
 
-fn gif(frames: &[SimulatorDisplay<Rgb888>], delay_ms: u32, out: &mut dyn Write) -> io::Result<()> {
+fn gif(
+    count: u32,
+    next: impl Fn() -> io::Result<Picture>,
+    delay_ms: u32,
+    out: &mut dyn Write,
+) -> io::Result<()> {
     let mut encoder = GifEncoder::new_with_speed(out, 10);
     encoder
         .set_repeat(Repeat::Infinite)
         .map_err(io::Error::other)?;
     let delay = Delay::from_numer_denom_ms(delay_ms, 1);
-    encoder
-        .encode_frames(frames.iter().filter_map(|frame| {
-            let size = frame.size();
-            let rgba = rgb(frame)
-                .chunks_exact(3)
-                .flat_map(|p| [p[0], p[1], p[2], 255])
-                .collect();
-            RgbaImage::from_raw(size.width, size.height, rgba)
-                .map(|image| Frame::from_parts(image, 0, 0, delay))
-        }))
-        .map_err(io::Error::other)
+    for _ in 0..count {
+        let frame = next()?;
+        let size = frame.size();
+        let rgba = rgb(&frame)
+            .chunks_exact(3)
+            .flat_map(|p| [p[0], p[1], p[2], 255])
+            .collect();
+        let image = RgbaImage::from_raw(size.width, size.height, rgba)
+            .ok_or_else(|| io::Error::other("a frame of the wrong size"))?;
+        encoder
+            .encode_frame(Frame::from_parts(image, 0, 0, delay))
+            .map_err(io::Error::other)?;
+    }
+    Ok(())
 }
 
-fn apng(frames: &[SimulatorDisplay<Rgb888>], delay_ms: u32, out: &mut dyn Write) -> io::Result<()> {
-    let Some(first) = frames.first() else {
+fn apng(
+    count: u32,
+    next: impl Fn() -> io::Result<Picture>,
+    delay_ms: u32,
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    if count == 0 {
         return Ok(());
-    };
+    }
+    let first = next()?;
     let size = first.size();
     let mut encoder = png::Encoder::new(out, size.width, size.height);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
-    let count = u32::try_from(frames.len()).map_err(io::Error::other)?;
     encoder.set_animated(count, 0).map_err(io::Error::other)?;
     let delay = u16::try_from(delay_ms).unwrap_or(u16::MAX);
     encoder
         .set_frame_delay(delay, 1000)
         .map_err(io::Error::other)?;
     let mut writer = encoder.write_header().map_err(io::Error::other)?;
-    for frame in frames {
+    writer
+        .write_image_data(&rgb(&first))
+        .map_err(io::Error::other)?;
+    for _ in 1..count {
         writer
-            .write_image_data(&rgb(frame))
+            .write_image_data(&rgb(&next()?))
             .map_err(io::Error::other)?;
     }
     writer.finish().map_err(io::Error::other)

@@ -86,24 +86,25 @@ fn fit(
     Ok((drawing, size))
 }
 
-/// `frames` pictures of one cycle of `movement` at `size`, fitted once over all of them,
-/// so the figure walks in place instead of jumping.
+/// `frames` pictures of one cycle of `movement` at `size`, each into `emit` as it is drawn,
+/// fitted once over all of them so the figure walks in place instead of jumping.
 pub fn cycle(
     movement: PoseName,
     frames: u32,
     size: Size,
-) -> Result<Vec<SimulatorDisplay<Rgb888>>, String> {
+    mut emit: impl FnMut(SimulatorDisplay<Rgb888>) -> Result<(), String>,
+) -> Result<(), String> {
     let poses = (0..frames)
         .map(|index| pose(movement, f64::from(index) / f64::from(frames)))
         .collect::<Result<Vec<_>, _>>()?;
     let Some(&first) = poses.first() else {
-        return Ok(Vec::new());
+        return Ok(());
     };
     let (drawing, size) = fit(&Figure::new(&BODY, first), size, poses.iter().copied())?;
-    poses
-        .iter()
-        .map(|&pose| render(&drawing.with_pose(pose), size).map(|(display, _)| display))
-        .collect()
+    for &pose in &poses {
+        emit(render(&drawing.with_pose(pose), size)?.0)?;
+    }
+    Ok(())
 }
 
 /// `render figure`.
@@ -122,7 +123,11 @@ pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
         let stem = out.with_extension("");
         let size = Size::new(options.common.width(), options.common.height());
         // Every frame and the stats line, all or nothing.
-        let pictures = cycle(options.pose, frames, size)?;
+        let mut pictures = Vec::new();
+        cycle(options.pose, frames, size, |picture| {
+            pictures.push(picture);
+            Ok(())
+        })?;
         let paths: Vec<PathBuf> = (0..pictures.len())
             .map(|index| PathBuf::from(format!("{}-{index:03}.png", stem.display())))
             .collect();

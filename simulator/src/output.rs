@@ -77,6 +77,8 @@ pub struct Plan<'a> {
     outputs: Vec<Output<'a>>,
     /// Text for standard output, printed before the outputs are put in place.
     printed: String,
+    /// More of it, made once every output is complete.
+    printed_after: Option<Box<dyn FnOnce() -> Result<String, String> + 'a>>,
 }
 
 /// Where an output's bytes go: through a temporary file renamed over `target` (a regular
@@ -132,6 +134,12 @@ impl<'a> Plan<'a> {
         self.printed.push_str(&text);
     }
 
+    /// Text for standard output made once every output is complete (what only the end of
+    /// the outputs' making knows), printed after [`print`](Self::print)'s.
+    pub fn print_after(&mut self, text: impl FnOnce() -> Result<String, String> + 'a) {
+        self.printed_after = Some(Box::new(text));
+    }
+
     /// Writes every output, or none: see the module docs.
     pub fn write(self) -> Result<(), String> {
         let destinations = self.resolve()?;
@@ -171,8 +179,12 @@ impl<'a> Plan<'a> {
                 .map_err(|e| cannot_write(&output.path, &e))?;
             stream(output.produce, file, &output.path)?;
         }
-        if !self.printed.is_empty() {
-            crate::console::print(&self.printed)?;
+        let mut printed = self.printed;
+        if let Some(after) = self.printed_after {
+            printed.push_str(&after()?);
+        }
+        if !printed.is_empty() {
+            crate::console::print(&printed)?;
         }
         for (temporary, _registered, target, path) in staged {
             temporary
