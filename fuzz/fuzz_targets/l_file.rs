@@ -1,11 +1,11 @@
 //! Fractint `.l` text: read every entry, its warnings and grammar, and draw it at small
-//! orders into a strict target.
+//! orders into a strict target; derive it as `derive` reads it (no angle needed).
 
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use tinyfractal::LFile;
-use tinyfractal_fuzz::draw_plain;
+use tinyfractal_fuzz::{derive_plain, draw_plain};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&orders, text)) = data.split_first() else {
@@ -19,6 +19,10 @@ fuzz_target!(|data: &[u8]| {
         }
         if let Ok(grammar) = entry.grammar() {
             draw_plain(&grammar, u32::from(orders % 6));
+        }
+        // As `derive` reads it: no angle needed.
+        if let Ok(grammar) = entry.grammar_to_derive() {
+            derive_plain(&grammar, u32::from(orders % 6));
         }
     }
 });

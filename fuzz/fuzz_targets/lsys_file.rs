@@ -5,7 +5,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use tinyfractal::LsysFile;
-use tinyfractal_fuzz::{draw_parametric, draw_plain};
+use tinyfractal_fuzz::{derive_plain, draw_parametric, draw_plain};
 
 fuzz_target!(|data: &[u8]| {
     let Some((&orders, text)) = data.split_first() else {
@@ -19,8 +19,14 @@ fuzz_target!(|data: &[u8]| {
             if let Ok(grammar) = entry.parametric() {
                 draw_parametric(&grammar, order);
             }
-        } else if let Ok(grammar) = entry.grammar() {
-            draw_plain(&grammar, order);
+        } else {
+            if let Ok(grammar) = entry.grammar() {
+                draw_plain(&grammar, order);
+            }
+            // As `derive` reads it: no angle needed.
+            if let Ok(grammar) = entry.grammar_to_derive() {
+                derive_plain(&grammar, order);
+            }
         }
     }
 });

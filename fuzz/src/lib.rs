@@ -7,7 +7,7 @@ use core::convert::Infallible;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use tinyfractal::{
     cells_needed, Cell, Colors, DwellSink, Grammar, LSystem, ParametricGrammar, ParametricLSystem,
-    DEFAULT_DEPTH, DEFAULT_STACK,
+    Walker, DEFAULT_DEPTH, DEFAULT_STACK,
 };
 
 /// Symbols a walk may read per input: a fuzz input must stay well under a second.
@@ -138,6 +138,21 @@ pub fn draw_plain(grammar: &Grammar<'_>, order: u32) {
             let _ = drawing.draw(&mut target);
         }
     }
+}
+
+/// Derives a plain grammar at `order` (as `derive` does, for a system read without an
+/// angle too): at most [`BUDGET`] symbols, each written out.
+pub fn derive_plain(grammar: &Grammar<'_>, order: u32) {
+    let Ok(walker) = Walker::<'_, '_, DEFAULT_DEPTH>::with_capacity(grammar, order) else {
+        return;
+    };
+    let mut walker = walker.with_budget(BUDGET);
+    let mut text = String::new();
+    while let Some(symbol) = walker.next_symbol() {
+        let Ok(symbol) = symbol else { break };
+        text = symbol.to_string();
+    }
+    assert!(text.len() < 1 << 16);
 }
 
 /// Draws a parametric grammar at `order` into a strict target.
