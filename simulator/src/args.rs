@@ -740,21 +740,24 @@ pub fn completions(shell: clap_complete::Shell) -> Result<(), String> {
 /// Clap reads a negative number after an option that takes a count as an unknown
 /// option (`unexpected argument '-1'`): said as what it is, naming the option.
 fn negative_count(error: clap::Error, args: &[OsString]) -> clap::Error {
-    if error.kind() != ErrorKind::UnknownArgument {
-        return error;
-    }
     let negative =
         |text: &str| text.len() > 1 && text.starts_with('-') && text[1..].parse::<f64>().is_ok();
-    let found = args.windows(2).find_map(|pair| {
+    let invalid = match error.get(clap::error::ContextKind::InvalidArg) {
+        Some(clap::error::ContextValue::String(invalid)) => invalid.clone(),
+        _ => return error,
+    };
+    if error.kind() != ErrorKind::UnknownArgument || !negative(&invalid) {
+        return error;
+    }
+    let option = args.windows(2).find_map(|pair| {
         let (option, value) = (pair[0].to_str()?, pair[1].to_str()?);
-        (option.starts_with("--") && negative(value))
-            .then(|| (option.to_string(), value.to_string()))
+        (option.starts_with("--") && value == invalid).then(|| option.to_string())
     });
-    match found {
-        Some((option, value)) => usage(
+    match option {
+        Some(option) => usage(
             ErrorKind::ValueValidation,
             &format!(
-                "{option} {value}: {option} takes a count of 0 or more, not a negative number"
+                "{option} {invalid}: {option} takes a count of 0 or more, not a negative number"
             ),
         ),
         None => error,

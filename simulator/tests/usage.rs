@@ -101,6 +101,11 @@ fn limits_and_causes_are_the_options_own() {
         &["animate", "zoom", "--frames", "-1"],
         &["--frames -1", "not a negative number"],
     );
+    // An unknown option before a negative number is still the unknown option.
+    usage_error(
+        &["animate", "zoom", "--frobnicate", "-1"],
+        &["'--frobnicate'"],
+    );
     usage_error(
         &["render", "mandelbrot", "--size", "0x0"],
         &["0x0 has no pixels"],
