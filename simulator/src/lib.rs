@@ -210,45 +210,37 @@ fn is_lsys(path: &Path, text: &str) -> Result<bool, String> {
     Ok(FileKind::of(path, text).lsystems(path)? == FileKind::Lsys)
 }
 
-/// The names of the entries of `text`, the file at `path` (`.lsys` or Fractint's `.l`),
-/// each or the error reading it.
-fn entry_names<'a>(
-    path: &Path,
-    text: &'a str,
-) -> Result<Vec<Result<&'a str, tinyfractal::Error>>, String> {
-    Ok(if is_lsys(path, text)? {
-        LsysFile::new(text)
+/// The names of the entries of `text`, a file of `kind`, each or the error reading it.
+fn entry_names(kind: FileKind, text: &str) -> Vec<Result<&str, tinyfractal::Error>> {
+    match kind {
+        FileKind::Lsys => LsysFile::new(text)
             .entries()
             .map(|entry| entry.map(|entry| entry.name()))
-            .collect()
-    } else {
-        LFile::new(text)
+            .collect(),
+        FileKind::Fractint => LFile::new(text)
             .entries()
             .map(|entry| entry.map(|entry| entry.name()))
-            .collect()
-    })
+            .collect(),
+        FileKind::Ifs => tinyfractal::IfsFile::new(text)
+            .entries()
+            .map(|entry| entry.map(|entry| entry.name()))
+            .collect(),
+    }
 }
 
 fn list(path: &Path) -> Result<(), String> {
     let text = read_text(path)?;
     let failed = |e: tinyfractal::Error| format!("{}: {e}", path.display());
-    let names: Vec<&str> = if FileKind::of(path, &text) == FileKind::Ifs {
-        tinyfractal::IfsFile::new(&text)
-            .entries()
-            .map(|entry| entry.map(|entry| entry.name()))
-            .collect::<Result<_, _>>()
-    } else {
-        entry_names(path, &text)?
-            .into_iter()
-            .collect::<Result<_, _>>()
-    }
-    .map_err(failed)?;
-    let mut text = String::new();
+    let names: Vec<&str> = entry_names(FileKind::of(path, &text), &text)
+        .into_iter()
+        .collect::<Result<_, _>>()
+        .map_err(failed)?;
+    let mut listed = String::new();
     for name in names {
-        text.push_str(name);
-        text.push('\n');
+        listed.push_str(name);
+        listed.push('\n');
     }
-    console::print(&text)
+    console::print(&listed)
 }
 
 /// A system as a source names it: plain (Fractint, ABOP, stochastic) or parametric.
@@ -704,14 +696,15 @@ fn explorer(arguments: &args::ExploreArgs) -> Result<explore::Explorer, String> 
     }
     if let Some(path) = &arguments.file {
         let text = read_text(path)?;
-        let names: Vec<String> = entry_names(path, &text)?
+        let kind = FileKind::of(path, &text).lsystems(path)?;
+        let names: Vec<String> = entry_names(kind, &text)
             .into_iter()
             .filter_map(|name| name.ok().map(str::to_string))
             .collect();
         if names.is_empty() {
             return Err(format!("{}: no systems to explore", path.display()));
         }
-        let lsys = is_lsys(path, &text)?;
+        let lsys = kind == FileKind::Lsys;
         return Ok(explore::Explorer::lsystems(text, names, lsys, size));
     }
     let number = |option: &str, text: &str| {
