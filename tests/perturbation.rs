@@ -169,7 +169,7 @@ fn views_past_deep_take_perturbation_and_shallower_ones_a_fixed_tier() {
 
 /// A deep view with a long orbit (10⁻¹² over 64 pixels at 4000 iterations, here the same
 /// spacing on 32×24): the automatic tier counts the cap and takes perturbation, which
-/// keeps 99.9 % of the model's dwells where `Deep` keeps under 90 % (docs/tiers.md).
+/// keeps 99.9 % of the model's dwells where `Deep` keeps fewer (docs/tiers.md).
 #[test]
 fn the_automatic_tier_of_a_deep_view_with_a_long_orbit_keeps_its_dwells() {
     let (width, size, max) = ("0.5e-12", (32, 24), 4000);

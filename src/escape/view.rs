@@ -328,8 +328,8 @@ impl View {
     /// Whether the automatic tier of this view is one the calibration (`docs/tiers.md`)
     /// found to keep at least 99.9 % of dwells identical to an exact reference. Past it,
     /// long orbits near the boundary carry more rounding than 60 bits hold, whatever the
-    /// tier: at 10⁻⁶ near the cusp at 0.25 with a cap of 1000, `Deep` and perturbation
-    /// both keep about 98 %. The CLI warns when this is false; with z = ⌈log₂(1/d)⌉ and
+    /// tier, as at 10⁻⁶ near the cusp at 0.25 with a cap of 1000 (docs/tiers.md has the
+    /// shares). The CLI warns when this is false; with z = ⌈log₂(1/d)⌉ and
     /// i = ⌈log₂(max-iter)⌉ it holds for the Mandelbrot set while z + i ≤ 25, or i ≤ 8 (caps
     /// up to 256), or z ≥ 40 (perturbation then keeps long orbits), and past `Deep`'s
     /// spacing (checked against a 256-bit model); for Julia sets while z + i ≤ 22.
