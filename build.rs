@@ -23,7 +23,12 @@ fn main() {
     println!("cargo:rerun-if-env-changed=TINYFRACTAL_CORPUS");
     println!("cargo:rerun-if-env-changed=CI");
     let corpus = env::var_os("TINYFRACTAL_CORPUS").map_or_else(
-        || PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus"),
+        // Read when the script runs, not when it was compiled: a target folder copied
+        // from another clone kept that clone's path.
+        || {
+            PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").unwrap_or_default())
+                .join("../shared/corpus")
+        },
         PathBuf::from,
     );
     // Watching a folder that does not exist would rerun this on every build; after adding

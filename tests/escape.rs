@@ -193,7 +193,8 @@ const CASES: &[Case] = &[
         width: "0.0000001",
         size: Size::new(160, 120),
         max: 1000,
-        tier: Tier::Deep,
+        // z + i = 31 + 10 with a cap over 256: long orbits `Deep` may lose.
+        tier: Tier::Wide,
     },
 ];
 
@@ -313,7 +314,7 @@ fn model_dd_of(
 fn a_view_too_deep_for_32_bits_switches_tier_and_agrees() {
     let deep = &CASES[6];
     let view = view_of(deep);
-    assert_eq!(view.tier(), Tier::Deep);
+    assert_eq!(view.tier(), Tier::Wide);
     let centre = (
         Coord::parse(deep.centre.0).unwrap(),
         Coord::parse(deep.centre.1).unwrap(),

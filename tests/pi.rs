@@ -58,11 +58,12 @@ fn dwell(c: (&str, &str), tier: Option<Tier>) -> (u32, Tier) {
 /// neck's and the cusp's first cases. A coarser tier past these is off by more than ±1
 /// (`Standard` at 0.25 + 10⁻⁶ counts 3145 against 3140), which is what the tier rule and
 /// its calibration are for.
-const REACH: [(Option<Tier>, usize, usize); 6] = [
+const REACH: [(Option<Tier>, usize, usize); 7] = [
     (Some(Tier::Narrow), 2, 1),
     (Some(Tier::Medium), 3, 2),
     (Some(Tier::Standard), 4, 2),
     (Some(Tier::Deep), 4, 4),
+    (Some(Tier::Wide), 4, 4),
     (Some(Tier::Perturbation), 4, 4),
     (None, 4, 4),
 ];

@@ -662,6 +662,7 @@ enum Precision {
     Medium,
     Standard,
     Deep,
+    Wide,
     Perturbation,
 }
 
@@ -673,6 +674,7 @@ impl Precision {
             Self::Medium => Some(tinyfractal::Tier::Medium),
             Self::Standard => Some(tinyfractal::Tier::Standard),
             Self::Deep => Some(tinyfractal::Tier::Deep),
+            Self::Wide => Some(tinyfractal::Tier::Wide),
             Self::Perturbation => Some(tinyfractal::Tier::Perturbation),
         }
     }

@@ -227,12 +227,9 @@ pub fn stats_line(rendered: &Rendered) -> String {
 pub enum TierWarning {
     /// A forced tier's finest spacing is coarser than the pixels: flat or in blocks.
     CannotResolve,
-    /// A forced fixed tier where the rule picks perturbation: its 60 bits lose dwells
-    /// perturbation keeps.
+    /// A forced tier where the rule picks `Wide` or perturbation for a long orbit: its
+    /// bits lose dwells the automatic tier keeps.
     CannotCarry,
-    /// No tier was found to keep 99.9 % of dwells at this width and cap
-    /// ([`View::assured`]).
-    BeyondCalibration,
 }
 
 impl TierWarning {
@@ -241,10 +238,11 @@ impl TierWarning {
         let forced = view.tier() != view.automatic_tier();
         if !view.resolves_pixels() {
             Some(Self::CannotResolve)
-        } else if forced && view.automatic_tier() == Tier::Perturbation {
+        } else if forced
+            && matches!(view.automatic_tier(), Tier::Wide | Tier::Perturbation)
+            && view.tier() != Tier::Wide
+        {
             Some(Self::CannotCarry)
-        } else if !view.assured() {
-            Some(Self::BeyondCalibration)
         } else {
             None
         }
@@ -259,7 +257,6 @@ impl TierWarning {
                 format!(" warning=tier_cannot_resolve automatic_tier={automatic}")
             }
             Self::CannotCarry => format!(" warning=tier_cannot_carry automatic_tier={automatic}"),
-            Self::BeyondCalibration => " warning=beyond_calibration".to_string(),
         }
     }
 
@@ -278,16 +275,9 @@ impl TierWarning {
             ),
             Self::CannotCarry => format!(
                 "--precision {tier} cannot carry this view's rounding: at this pixel spacing \
-                 ({}) and --max-iter {max} its 60 bits lose dwells that perturbation keeps, \
-                 so some pixels differ from an exact orbit; the automatic tier for this view \
-                 is {automatic} (leave out --precision)",
-                view.spacing()
-            ),
-            Self::BeyondCalibration => format!(
-                "at this pixel spacing ({}) and --max-iter {max}, no tier is known to keep \
-                 99.9 % of dwells identical to an exact orbit (long orbits near the boundary \
-                 carry more rounding than 60 bits hold): some pixels may differ; a lower \
-                 --max-iter or a wider view is exact",
+                 ({}) and --max-iter {max} its bits lose dwells that {automatic} keeps, so \
+                 some pixels differ from an exact orbit; the automatic tier for this view is \
+                 {automatic} (leave out --precision)",
                 view.spacing()
             ),
         }

@@ -193,11 +193,8 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                         entry.palette
                     ));
                 }
-                // A view no tier is known to keep exact says so in its row.
+                // A forced tier that is not exact by the rule says so in its row.
                 let caveat = match crate::escape_scene::TierWarning::of(&rendered.view) {
-                    Some(crate::escape_scene::TierWarning::BeyondCalibration) => {
-                        ", some dwells may differ (docs/tiers.md)"
-                    }
                     Some(_) => ", not exact (a forced tier)",
                     None => "",
                 };

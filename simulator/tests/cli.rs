@@ -225,13 +225,16 @@ fn gallery_renders_every_scene() {
         assert!(table.contains(scene), "{table}");
         assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");
     }
-    // The deep zoom (10⁻⁹ at 4000 iterations) goes by perturbation, which keeps more of
-    // its dwells than `Deep`'s 60 bits (measured in docs/tiers.md).
-    for deep in ["deep-zoom", "deep-minibrot", "deep-spiral"] {
+    // The deep zoom (10⁻⁹ at 4000 iterations) goes by `Wide`, which keeps the dwells
+    // `Deep`'s 60 bits and perturbation lose (measured in docs/tiers.md); past `Deep`'s
+    // spacing, perturbation.
+    for (deep, tier) in [
+        ("deep-zoom", "wide tier"),
+        ("deep-minibrot", "perturbation tier"),
+        ("deep-spiral", "perturbation tier"),
+    ] {
         assert!(
-            table
-                .lines()
-                .any(|l| l.contains(deep) && l.contains("perturbation tier")),
+            table.lines().any(|l| l.contains(deep) && l.contains(tier)),
             "{table}"
         );
     }
@@ -550,11 +553,11 @@ fn a_forced_tier_too_coarse_for_the_view_warns() {
     }
 }
 
-/// `--precision deep` where it cannot hold says so: past its spacing (it cannot tell the
-/// pixels apart) and where the cap is longer than its rounding carries (the rule picks
-/// perturbation); and a view that no tier is known to keep exact says that.
+/// A forced tier that cannot hold says so: `deep` past its spacing (it cannot tell the
+/// pixels apart), and `deep` or perturbation where the cap is longer than its rounding
+/// carries (the rule picks `wide` or perturbation); the automatic tier is quiet.
 #[test]
-fn a_deep_tier_that_cannot_hold_and_views_past_calibration_warn() {
+fn forced_tiers_that_cannot_hold_warn_and_the_automatic_tier_is_quiet() {
     let dir = scratch("deep-warnings");
     let out = dir.join("view.png");
     let render = |centre: &str, width: &str, max: &str, tier: Option<&str>| {
@@ -581,47 +584,79 @@ fn a_deep_tier_that_cannot_hold_and_views_past_calibration_warn() {
         (stderr(&output), stdout(&output))
     };
     let spiral = "-0.743643887037151,0.131825904205330";
+    let cusp = "0.2818,0.0108";
     // Past its spacing, and where the cap is longer than its rounding carries.
-    for (width, max, said, kind) in [
+    for (centre, width, max, tier, said, kind, automatic) in [
         (
+            spiral,
             "1e-15",
             "1000",
+            "deep",
             "cannot tell this view's pixels apart",
             "tier_cannot_resolve",
+            "perturbation",
         ),
         (
+            spiral,
             "1e-12",
             "4000",
+            "deep",
             "cannot carry this view's rounding",
             "tier_cannot_carry",
+            "wide",
+        ),
+        (
+            spiral,
+            "1e-12",
+            "2000",
+            "deep",
+            "cannot carry this view's rounding",
+            "tier_cannot_carry",
+            "perturbation",
+        ),
+        (
+            cusp,
+            "1e-6",
+            "1000",
+            "deep",
+            "cannot carry this view's rounding",
+            "tier_cannot_carry",
+            "wide",
+        ),
+        (
+            cusp,
+            "1e-6",
+            "1000",
+            "perturbation",
+            "cannot carry this view's rounding",
+            "tier_cannot_carry",
+            "wide",
         ),
     ] {
-        let (err, stats) = render(spiral, width, max, Some("deep"));
+        let (err, stats) = render(centre, width, max, Some(tier));
         assert!(
-            err.contains(&format!("--precision deep {said}")) && err.contains("perturbation"),
+            err.contains(&format!("--precision {tier} {said}"))
+                && err.contains(&format!("automatic tier for this view is {automatic}")),
             "{err}"
         );
-        let expected = format!("warning={kind} automatic_tier=perturbation");
+        let expected = format!("warning={kind} automatic_tier={automatic}");
         assert!(stats.trim_end().ends_with(&expected), "{stats}");
     }
-    // The same view by the automatic tier: perturbation, exact, no warning.
-    let (err, stats) = render(spiral, "1e-12", "4000", None);
-    assert_eq!(err, "");
-    assert!(
-        stats.contains("tier=perturbation") && !stats.contains("warning"),
-        "{stats}"
-    );
-    // Near the cusp at 10⁻⁶ with a cap of 1000 no tier holds (docs/tiers.md): said, not
-    // hidden.
-    let (err, stats) = render("0.2818,0.0108", "1e-6", "1000", None);
-    assert!(
-        err.contains("no tier is known to keep 99.9 % of dwells"),
-        "{err}"
-    );
-    assert!(
-        stats.trim_end().ends_with("warning=beyond_calibration"),
-        "{stats}"
-    );
+    // The same views by the automatic tier, and `wide` where the rule picks perturbation
+    // (it keeps those dwells too): exact, no warning.
+    for (centre, width, max, tier, chosen) in [
+        (spiral, "1e-12", "4000", None, "wide"),
+        (spiral, "1e-12", "2000", None, "perturbation"),
+        (spiral, "1e-12", "2000", Some("wide"), "wide"),
+        (cusp, "1e-6", "1000", None, "wide"),
+    ] {
+        let (err, stats) = render(centre, width, max, tier);
+        assert_eq!(err, "");
+        assert!(
+            stats.contains(&format!("tier={chosen} ")) && !stats.contains("warning"),
+            "{stats}"
+        );
+    }
     // At a cap of 256 the same view is exact and quiet.
     let (err, stats) = render("0.2818,0.0108", "1e-6", "256", None);
     assert_eq!(err, "");
@@ -1236,7 +1271,8 @@ fn numbers_in_scientific_notation() {
             dwell.to_str().unwrap(),
         ]);
         assert!(output.status.success(), "{}", stderr(&output));
-        assert!(stdout(&output).contains("tier=deep"), "{}", stdout(&output));
+        // z + i = 34 + 9 with a cap over 256: `Wide`.
+        assert!(stdout(&output).contains("tier=wide"), "{}", stdout(&output));
     }
     assert_eq!(std::fs::read(&a).unwrap(), std::fs::read(&b).unwrap());
 }

@@ -31,7 +31,9 @@ use super::view::{Fractal, Parts, Shading, Tier, View, SMOOTH_FRACTION_BITS};
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 #[cfg(tinyfractal_no_long_multiply)]
 use crate::math::wide::twice_product_by_squares;
-use crate::math::wide::{mul_i32_wide, mul_wide_in_line, shift_round_i64};
+use crate::math::wide::{
+    mul_high_i128, mul_i32_wide, mul_wide_in_line, shift_round, shift_round_i64,
+};
 
 /// How an orbit that repeats is recognised (Brent: compare with a point saved at
 /// iterations 64, 128, 256, ...; see `FIRST_SAVE`).
@@ -72,6 +74,7 @@ enum Kind {
     RoundedMedium,
     Standard,
     Deep,
+    Wide,
 }
 
 /// One coordinate of a pixel's point in the tier's units, converted once per column or
@@ -120,6 +123,7 @@ impl Kernel {
                 (Tier::Medium, Fractal::Julia { .. }) => Kind::RoundedMedium,
                 (Tier::Standard, _) => Kind::Standard,
                 (Tier::Deep | Tier::Perturbation, _) => Kind::Deep,
+                (Tier::Wide, _) => Kind::Wide,
             },
             max: view.max_iterations,
             inside: u32::from(view.inside_value()),
@@ -222,6 +226,7 @@ impl Kernel {
             Kind::RoundedMedium => orbit::<RoundedMedium, false>(self, re.0, im.0),
             Kind::Standard => orbit::<Standard, false>(self, re.0, im.0),
             Kind::Deep => orbit::<Deep, false>(self, re.0, im.0),
+            Kind::Wide => orbit::<Wide, false>(self, re.0, im.0),
         }
     }
 
@@ -235,7 +240,7 @@ impl Kernel {
             Kind::Medium => visitor.visit(InTier::<Medium>(self, PhantomData)),
             Kind::RoundedMedium => visitor.visit(InTier::<RoundedMedium>(self, PhantomData)),
             Kind::Standard => visitor.visit(InTier::<Standard>(self, PhantomData)),
-            Kind::Deep => visitor.visit(InTier::<Deep>(self, PhantomData)),
+            Kind::Deep | Kind::Wide => visitor.visit(Called(self)),
         }
     }
 }
@@ -287,6 +292,31 @@ impl<A: Arithmetic> TierOrbit for InTier<'_, A> {
     }
 }
 
+/// `Deep` or `Wide`, chosen at each pixel: one copy of the tile code for both, and one of
+/// `Wide`'s orbit. Their orbits are calls either way, so the choice costs a comparison
+/// beside hundreds of steps; with copies of their own for `Wide`, the LM3S6965's firmware
+/// did not fit its 256 KiB of flash.
+struct Called<'k>(&'k Kernel);
+
+impl TierOrbit for Called<'_> {
+    #[inline(always)]
+    fn dwell(&self, re: Part, im: Part) -> Orbit {
+        match self.0.arithmetic {
+            Kind::Wide => orbit::<Wide, false>(self.0, re.0, im.0),
+            _ => orbit::<Deep, false>(self.0, re.0, im.0),
+        }
+    }
+
+    /// `Wide` in its one copy, the tests for a Julia set and a smooth value kept.
+    #[inline(always)]
+    fn traced_dwell(&self, re: Part, im: Part) -> Orbit {
+        match self.0.arithmetic {
+            Kind::Wide => orbit::<Wide, false>(self.0, re.0, im.0),
+            _ => orbit::<Deep, true>(self.0, re.0, im.0),
+        }
+    }
+}
+
 /// Q60 to `frac` fractional bits, rounded half away from zero (so negation commutes).
 const fn from_q60(bits: i64, frac: u32) -> i64 {
     if frac >= 60 {
@@ -296,10 +326,11 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
     }
 }
 
-/// A tier's value type (`i32` or `i64`): the few operations the orbit needs beyond
-/// arithmetic, with their unsigned twins.
+/// A tier's value type (`i32`, `i64` or `i128`): the few operations the orbit needs
+/// beyond arithmetic, with their unsigned twins.
 trait Word: Copy + Add<Output = Self> + Sub<Output = Self> {
-    /// A coordinate already in the tier's units (within ±3.5, so the cast is exact).
+    /// A coordinate already in the tier's units (within ±3.5, so the cast is exact); an
+    /// `i128` is `Wide`'s Q124, from coordinates in Q60.
     fn from_units(units: i64) -> Self;
     fn abs(self) -> Self;
     fn wrapping_sub(self, other: Self) -> Self;
@@ -311,13 +342,13 @@ trait Word: Copy + Add<Output = Self> + Sub<Output = Self> {
 }
 
 macro_rules! word {
-    ($v:ty, $u:ty) => {
+    ($v:ty, $u:ty, $shift:expr) => {
         // In the narrow tier the cast from i64 is a real narrowing, elsewhere a no-op.
         #[allow(trivial_numeric_casts)]
         impl Word for $v {
             #[inline(always)]
             fn from_units(units: i64) -> Self {
-                units as $v
+                (units as $v) << $shift
             }
             #[inline(always)]
             fn abs(self) -> Self {
@@ -339,8 +370,9 @@ macro_rules! word {
     };
 }
 
-word!(i32, u32);
-word!(i64, u64);
+word!(i32, u32, 0);
+word!(i64, u64, 0);
+word!(i128, u128, 64);
 
 /// One tier's arithmetic: its value type, its product type (with `FOUR`, 4 in the
 /// product's units), the product as the tier keeps it (rounded down), x² − y² back in
@@ -409,6 +441,11 @@ type RoundedMedium = HighWord<true>;
 struct Standard;
 /// Q60 in i64 with exact 128-bit products (Q120).
 struct Deep;
+/// Q124 in i128 whose 256-bit products keep their high halves (Q120, rounded down):
+/// twice `Deep`'s bits, for the long orbits of deep views where 60 bits are not enough.
+/// |x|, |y| < 7.5 (below 2¹²⁷ in Q124), and a sum of two squares below 114 (below 2¹²⁷
+/// in Q120): nothing overflows.
+struct Wide;
 
 impl Arithmetic for Narrow {
     const WORD_STEPS: bool = true;
@@ -543,6 +580,29 @@ impl Arithmetic for Deep {
     #[inline(always)]
     fn q28(v: i64) -> i32 {
         shift_round_i64(v, 32) as i32
+    }
+}
+
+impl Arithmetic for Wide {
+    type Value = i128;
+    type Product = i128;
+    const FOUR: i128 = 4 << 120;
+    #[inline(always)]
+    fn mul(a: i128, b: i128) -> i128 {
+        mul_high_i128(a, b)
+    }
+    #[inline(always)]
+    fn to_value(d: i128) -> i128 {
+        d << 4
+    }
+    /// 2xy from xy's high half doubled: a bit fewer than x² − y², far below the spacing.
+    #[inline(always)]
+    fn twice_xy(x: i128, y: i128, _: i128, _: i128) -> i128 {
+        mul_high_i128(x, y) << 5
+    }
+    #[inline(always)]
+    fn q28(v: i128) -> i32 {
+        shift_round(v, 96) as i32
     }
 }
 

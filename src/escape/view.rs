@@ -24,9 +24,26 @@ const COORDINATE_LIMIT: i64 = 7 << 59; // 3.5 in Q60
 /// The finest pixel spacing, 2⁻⁵⁴ in Q60 bits: the deep tier keeps 6 bits below it.
 const FINEST_SPACING: i64 = 1 << 6;
 
-/// The automatic tier of a Mandelbrot view is perturbation from this z + i on (z and i as
-/// in [`View::new`]'s rule).
+/// The automatic tier of a Mandelbrot view is perturbation from this z + i on, where it is
+/// not `Wide` (z and i as in [`View::new`]'s rule).
 const PERTURBATION_FROM: u32 = 51;
+
+/// A Mandelbrot view with z + i above this and a cap over 256 takes `Wide` while z is
+/// below [`WIDE_BELOW`] (z and i as in [`View::new`]'s rule): `Deep` loses dwells there.
+const DEEP_UNTIL: u32 = 25;
+
+/// Below this z, only `Wide` keeps the long orbits `Deep` loses; from it, perturbation
+/// does at caps up to 2048 (z + i ≥ [`PERTURBATION_FROM`]).
+const WIDE_BELOW: u32 = 40;
+
+/// From this i on (caps over 2048), a Mandelbrot view past z + i = [`DEEP_UNTIL`] takes
+/// `Wide` at any z (perturbation loses dwells there too), and so does every Julia view
+/// (`Deep` loses them).
+const LONG_ORBIT: u32 = 12;
+
+/// A Julia view with z + i above this takes `Wide`: `Deep` loses dwells there (and at caps
+/// over 2048, see [`LONG_ORBIT`]).
+const JULIA_DEEP_UNTIL: u32 = 22;
 
 /// Perturbation's finest pixel spacing is 2 to the minus this.
 const FINEST_PERTURBATION_BITS: u32 = 148;
@@ -70,22 +87,38 @@ pub enum Tier {
     Standard,
     /// Q60 in `i64` with 128-bit products, for zooms and long-running Julia sets.
     /// Deepest zoom: pixel spacing ≥ 2⁻⁵⁴ (a width of 1.8·10⁻¹⁴ on 320 pixels). Chosen for
-    /// the Mandelbrot set while z + i ≤ 50 (see [`View::new`]): past that, its rounding
-    /// loses dwells perturbation keeps.
+    /// the Mandelbrot set while z + i ≤ 25, or at caps up to 256, or from z = 40 at caps up
+    /// to 1024 while z + i ≤ 50 (see [`View::new`]): past that, its rounding loses dwells
+    /// `Wide` or perturbation keep.
     Deep,
+    /// Q124 in `i128` with the high halves of 256-bit products (Q120): twice `Deep`'s
+    /// bits, at about three times its time on a 64-bit host, down to the same finest
+    /// spacing (2⁻⁵⁴). Chosen where the calibration found that neither `Deep` nor
+    /// perturbation keeps 99.9 % of dwells: deep views with long orbits near the boundary
+    /// (see [`View::new`]). The bits a chaotic orbit needs grow with its length (a pixel
+    /// near the cardioid's edge at 0.28 + 0.01i lost about 60 for every 1,700 iterations),
+    /// so at caps in the tens of thousands even 120 bits miss a few pixels in ten
+    /// thousand: 99.90 % on the worst view calibrated (docs/tiers.md).
+    Wide,
     /// Perturbation against one reference orbit (see [`ReferenceOrbit`](crate::ReferenceOrbit)):
     /// the reference in up to 192-bit fixed point, each pixel a difference from it in 62-bit
     /// mantissas with an exponent. Chosen for Mandelbrot views finer than `Deep` resolves
     /// (spacing below 2⁻⁵⁴), down to a spacing of 2⁻¹⁴⁸ (a width of about 10⁻⁴² on 320
-    /// pixels), and for deep views with long orbits (z + i ≥ 51, see [`View::new`]); by
-    /// hand on any Mandelbrot view. Needs storage for the reference: a render
+    /// pixels), and from z = 40 where z + i ≥ 51 at caps up to 2048 (see [`View::new`]);
+    /// by hand on any Mandelbrot view. Needs storage for the reference: a render
     /// of it is made with [`Render::perturbed`](crate::Render::perturbed).
     Perturbation,
 }
 
 impl Tier {
     /// Every fixed-point tier, narrowest first.
-    pub const ALL: [Tier; 4] = [Tier::Narrow, Tier::Medium, Tier::Standard, Tier::Deep];
+    pub const ALL: [Tier; 5] = [
+        Tier::Narrow,
+        Tier::Medium,
+        Tier::Standard,
+        Tier::Deep,
+        Tier::Wide,
+    ];
 
     /// Fractional bits of the tier's numbers (a perturbation's pixels keep 62 bits
     /// relative to their distance from the reference; its reference, up to 188).
@@ -94,6 +127,7 @@ impl Tier {
             Self::Narrow => 12,
             Self::Medium | Self::Standard => 28,
             Self::Deep => 60,
+            Self::Wide => 124,
             Self::Perturbation => DeepCoord::FRAC_BITS,
         }
     }
@@ -103,16 +137,17 @@ impl Tier {
     pub const fn precision_bits(self) -> u32 {
         match self {
             Self::Medium => 24,
+            Self::Wide => 120,
             _ => self.frac_bits(),
         }
     }
 
     /// The finest pixel spacing the tier tells apart: its unit (2⁻¹², 2⁻²⁴, 2⁻²⁸), and for
-    /// `Deep` 2⁻⁵⁴, keeping 6 bits below it. Perturbation's, 2⁻¹⁴⁸, is below a
-    /// [`Coord`]'s unit: 0 here.
+    /// `Deep` and `Wide` 2⁻⁵⁴ (their pixels' points are in Q60, keeping 6 bits below it).
+    /// Perturbation's, 2⁻¹⁴⁸, is below a [`Coord`]'s unit: 0 here.
     pub const fn finest_spacing(self) -> Coord {
         Coord::from_bits(match self {
-            Self::Deep => FINEST_SPACING,
+            Self::Deep | Self::Wide => FINEST_SPACING,
             Self::Perturbation => 0,
             tier => 1 << (Coord::FRAC_BITS - tier.precision_bits()),
         })
@@ -125,6 +160,7 @@ impl Tier {
             Self::Medium => "medium",
             Self::Standard => "standard",
             Self::Deep => "deep",
+            Self::Wide => "wide",
             Self::Perturbation => "perturbation",
         }
     }
@@ -170,22 +206,25 @@ pub struct View {
 impl View {
     /// Checks a view and picks its tier.
     ///
-    /// The tier is the cheapest that keeps at least 99.9 % of dwells identical to a
-    /// double-double reference, and no fewer than a naive `f32` loop, over the calibration
+    /// The tier is the cheapest that keeps at least 99.9 % of dwells identical to an exact
+    /// reference (double-double, and a 256-bit model where that runs out of bits), and no
+    /// fewer than a naive `f32` loop, over the calibration
     /// views with the same z and i below (pooled by pixels; `cargo bench --bench tiers`
     /// re-derives the rule and writes the evidence to `docs/tiers.md`). Rounding near the
     /// boundary is magnified the longer an orbit runs, so the rule is in the pixel spacing
     /// d and the cap: with z = ⌈log₂(1/d)⌉ and i = ⌈log₂(max-iter)⌉, the Mandelbrot set
-    /// takes `Medium` while z + i ≤ 12, `Standard` while z + i ≤ 15, `Deep` while
-    /// z + i ≤ 50 and [`Tier::Perturbation`] beyond (render it with
-    /// [`Render::perturbed`](crate::Render::perturbed)); a Julia set (all boundary) takes
+    /// takes `Medium` while z + i ≤ 12, `Standard` while z + i ≤ 15; past z + i = 25
+    /// with a cap over 256, [`Tier::Wide`] while z < 40 or the cap is over 2048; otherwise
+    /// `Deep` up to z + i = 50 and [`Tier::Perturbation`] beyond (render it with
+    /// [`Render::perturbed`](crate::Render::perturbed)). A Julia set (all boundary) takes
     /// `Medium` at z = 7, i = 7 (the whole set on a 320-pixel-wide display at 65–128
     /// iterations), `Standard` elsewhere while z + 7·i ≤ 56 (up to 64 iterations at
-    /// z ≤ 14, 128 at z ≤ 7); the rest `Deep`, while the spacing itself is resolvable
-    /// (≥ 2⁻⁵⁴). `Medium` for that one cell is measured, not derived: pooled, it keeps 44
-    /// more of 921,600 dwells than `f32` there, and a few fewer at z = 6 and 10; per view it
-    /// is within 0.04 points of `f32`, either side (docs/tiers.md). Where no tier keeps
-    /// 99.9 %, [`assured`](Self::assured) says so.
+    /// z ≤ 14, 128 at z ≤ 7), `Deep` while z + i ≤ 22 and the cap is at most 2048, and
+    /// `Wide` beyond; all while the
+    /// spacing itself is resolvable (≥ 2⁻⁵⁴). `Medium` for that one cell is measured, not
+    /// derived: pooled, it keeps 44 more of 921,600 dwells than `f32` there, and a few
+    /// fewer at z = 6 and 10; per view it is within 0.04 points of `f32`, either side
+    /// (docs/tiers.md).
     pub fn new(
         fractal: Fractal,
         centre: (Coord, Coord),
@@ -310,9 +349,19 @@ impl View {
         Ok(match fractal {
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 15 => Tier::Standard,
-            // Deep views with long orbits: `Deep`'s 60 bits lose dwells where perturbation's
-            // 62-bit differences from an exact reference keep them (from z = 40 at caps
-            // over 1000, at z = 46 and 53 at every cap measured); at z = 36 neither holds.
+            // Long orbits of deep views: past z + i = 25 at caps over 256, `Deep`'s 60 bits
+            // lose dwells near the boundary (near the cusp at 0.25, 10⁻⁶ wide at a cap of
+            // 1000: 98 %), and so do perturbation's 62-bit differences from an exact
+            // reference while z < 40, or at caps over 2048 (99.8 % on a view at z = 43).
+            Fractal::Mandelbrot
+                if iteration_bits > 8
+                    && zoom_bits + iteration_bits > DEEP_UNTIL
+                    && (zoom_bits < WIDE_BELOW || iteration_bits >= LONG_ORBIT) =>
+            {
+                Tier::Wide
+            }
+            // Near `Deep`'s finest spacing, and from z = 40 at caps up to 2048, perturbation
+            // keeps the dwells `Deep` loses.
             Fractal::Mandelbrot if zoom_bits + iteration_bits >= PERTURBATION_FROM => {
                 Tier::Perturbation
             }
@@ -321,30 +370,14 @@ impl View {
             // need `Standard`, or single views at caps up to 64 lose a pixel or a few.
             Fractal::Julia { .. } if zoom_bits == 7 && iteration_bits == 7 => Tier::Medium,
             Fractal::Julia { .. } if zoom_bits + 7 * iteration_bits <= 56 => Tier::Standard,
+            Fractal::Julia { .. }
+                if zoom_bits + iteration_bits > JULIA_DEEP_UNTIL
+                    || iteration_bits >= LONG_ORBIT =>
+            {
+                Tier::Wide
+            }
             _ => Tier::Deep,
         })
-    }
-
-    /// Whether the automatic tier of this view is one the calibration (`docs/tiers.md`)
-    /// found to keep at least 99.9 % of dwells identical to an exact reference. Past it,
-    /// long orbits near the boundary carry more rounding than 60 bits hold, whatever the
-    /// tier, as at 10⁻⁶ near the cusp at 0.25 with a cap of 1000 (docs/tiers.md has the
-    /// shares). The CLI warns when this is false; with z = ⌈log₂(1/d)⌉ and
-    /// i = ⌈log₂(max-iter)⌉ it holds for the Mandelbrot set while z + i ≤ 25, or i ≤ 8 (caps
-    /// up to 256), or z ≥ 40 (perturbation then keeps long orbits), and past `Deep`'s
-    /// spacing (checked against a 256-bit model); for Julia sets while z + i ≤ 22.
-    pub fn assured(&self) -> bool {
-        let (zoom_bits, iteration_bits) = rule_bits(self.spacing.max(1), self.max_iterations);
-        let deep_view = !self.fixed_point_resolves();
-        match self.fractal {
-            Fractal::Mandelbrot => {
-                deep_view
-                    || zoom_bits + iteration_bits <= 25
-                    || iteration_bits <= 8
-                    || zoom_bits >= 40
-            }
-            Fractal::Julia { .. } => zoom_bits + iteration_bits <= 22,
-        }
     }
 
     /// Computes in `tier` instead of the automatic choice (coarser tiers are faster and less

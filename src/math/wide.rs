@@ -111,6 +111,33 @@ fn mul_wide_by_halves(a: i64, b: i64) -> i128 {
     }
 }
 
+/// ⌊a·b / 2¹²⁸⌋, the high half of the exact 256-bit product, for the `Wide` tier: four
+/// 64×64→128 products of the magnitudes, then the floor for a negative product (so the
+/// tier rounds down, as the others do). |a|, |b| must be below 2¹²⁷. A call on Cortex-M,
+/// where its 128-bit products are library calls themselves: in line, each of the orbit's
+/// copies took kilobytes of flash.
+#[cfg_attr(target_arch = "arm", inline(never))]
+pub(crate) fn mul_high_i128(a: i128, b: i128) -> i128 {
+    let negative = (a < 0) != (b < 0);
+    let (a, b) = (a.unsigned_abs(), b.unsigned_abs());
+    let low_half = |v: u128| u128::from(v as u64);
+    let (a_low, a_high) = (low_half(a), a >> 64);
+    let (b_low, b_high) = (low_half(b), b >> 64);
+    let low = a_low * b_low;
+    let (cross_1, cross_2) = (a_low * b_high, a_high * b_low);
+    // Below 3·2⁶⁴: the carry into the high half.
+    let middle = low_half(cross_1) + low_half(cross_2) + (low >> 64);
+    // Below 2¹²⁶ + 3·2⁶⁴ for magnitudes below 2¹²⁷: it fits an i128.
+    let high = a_high * b_high + (cross_1 >> 64) + (cross_2 >> 64) + (middle >> 64);
+    let inexact = (middle as u64 | low as u64) != 0;
+    let high = high as i128;
+    if negative {
+        -high - i128::from(inexact)
+    } else {
+        high
+    }
+}
+
 /// `value / 2^shift` rounded half away from zero (so negation commutes), for one width.
 macro_rules! shift_round_in {
     ($(#[$doc:meta])* $name:ident, $t:ty) => {
@@ -190,6 +217,69 @@ mod tests {
                     2 * i64::from(a) * i64::from(b),
                     "{a} {b}"
                 );
+            }
+        }
+    }
+
+    /// The 256-bit high half against schoolbook multiplication in 32-bit limbs of the
+    /// two's complement values, at edges and a spread of patterns, both signs.
+    #[test]
+    fn high_halves_of_256_bit_products_are_floors() {
+        extern crate std;
+        // a·b mod 2²⁵⁶ from the two's complement limbs, then its high 128 bits: the floor.
+        fn model(a: i128, b: i128) -> i128 {
+            let limbs = |v: i128| {
+                let fill = if v < 0 { u32::MAX } else { 0 };
+                let mut out = [fill; 8];
+                for (k, limb) in out.iter_mut().take(4).enumerate() {
+                    *limb = (v >> (32 * k)) as u32;
+                }
+                out
+            };
+            let (a, b) = (limbs(a), limbs(b));
+            let mut product = [0u64; 9];
+            for i in 0..8 {
+                let mut carry = 0u64;
+                for j in 0..8 - i {
+                    let t = product[i + j] + u64::from(a[i]) * u64::from(b[j]) + carry;
+                    product[i + j] = t & 0xFFFF_FFFF;
+                    carry = t >> 32;
+                }
+            }
+            (4..8)
+                .rev()
+                .fold(0i128, |high, k| (high << 32) | product[k] as i128)
+        }
+        let mut values: std::vec::Vec<i128> = std::vec![
+            0,
+            1,
+            -1,
+            2,
+            -2,
+            1 << 64,
+            -(1 << 64),
+            (1 << 64) - 1,
+            i128::MAX,
+            -i128::MAX,
+            1 << 126,
+            -(1 << 126),
+            7 << 124
+        ];
+        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+        for _ in 0..300 {
+            // xorshift64, two draws a value, with its width varied.
+            let mut next = || {
+                state ^= state << 13;
+                state ^= state >> 7;
+                state ^= state << 17;
+                state
+            };
+            let v = (i128::from(next()) << 64 | i128::from(next())) >> (1 + next() % 100);
+            values.push(v);
+        }
+        for &a in &values {
+            for &b in values.iter().step_by(7) {
+                assert_eq!(mul_high_i128(a, b), model(a, b), "{a} × {b}");
             }
         }
     }
