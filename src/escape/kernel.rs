@@ -418,6 +418,9 @@ trait Arithmetic {
     /// same steps, so every core counts the same iterations (Cortex-M0: 2 % fewer
     /// instructions for the full view).
     const WORD_STEPS: bool = false;
+    /// Whether the orbit takes one step a turn: `Wide`, whose steps are calls, and whose
+    /// unrolled loops did not fit the LM3S6965's flash.
+    const COMPACT: bool = false;
 }
 
 /// Q12 in i32 with 32-bit products (Q24).
@@ -584,6 +587,7 @@ impl Arithmetic for Deep {
 }
 
 impl Arithmetic for Wide {
+    const COMPACT: bool = true;
     type Value = i128;
     type Product = i128;
     const FOUR: i128 = 4 << 120;
@@ -772,6 +776,30 @@ fn orbit_in_line<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64,
     // Most points escape within the first few steps: they run without repeat tests.
     let plain = kernel.plain;
     let mut n = steps;
+    if A::COMPACT {
+        // The same steps and tests as below, one step a turn.
+        while n < plain {
+            n += 1;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+        }
+        let (mut saved, mut next_save) = ((z.x, z.y), plain);
+        while n < max {
+            if n == next_save {
+                saved = (z.x.wrapping_sub(tolerance), z.y.wrapping_sub(tolerance));
+                next_save *= 2;
+            }
+            n += 1;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+            if z.repeats(saved, span) {
+                return Orbit::inside_after(kernel, n);
+            }
+        }
+        return Orbit::inside_after(kernel, max);
+    }
     // Where there is a long multiply, turns of the loops are counted down (one
     // subtraction and branch a turn; n found again on leaving), four steps a turn before
     // the repeat tests start: the Julia set at 320×240 on Cortex-M4F took 1.7 % fewer
@@ -1084,6 +1112,39 @@ pub(crate) fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
 mod tests {
     use super::*;
     use crate::math::Coord;
+
+    /// `Wide`'s one-step loop saves and tests at the same steps as the unrolled loops: on
+    /// a grid over the full view, where its orbits and `Deep`'s agree to far below the
+    /// tolerance, every pixel stops at the same step in both, by escape or by a repeat.
+    #[test]
+    fn the_compact_loop_tests_repeats_at_the_same_steps() {
+        let view = View::new(
+            Fractal::Mandelbrot,
+            (Coord::from_f64(-0.75).unwrap(), Coord::from_bits(0)),
+            Coord::from_f64(3.0).unwrap(),
+            embedded_graphics::geometry::Size::new(64, 48),
+            1000,
+        )
+        .unwrap();
+        let periodicity = Periodicity::Within(1 << 36);
+        let deep = Kernel::new(&view.with_tier(Tier::Deep), periodicity);
+        let wide = Kernel::new(&view.with_tier(Tier::Wide), periodicity);
+        let (mut repeats, mut compared) = (0, 0);
+        for j in 0..48 {
+            for i in 0..64 {
+                let (re, im) = (
+                    q60(-2.25 + 3.0 * i as f64 / 64.0),
+                    q60(1.125 - 2.25 * j as f64 / 48.0),
+                );
+                let a = deep.dwell(deep.part(re), deep.part(im));
+                let b = wide.dwell(wide.part(re), wide.part(im));
+                assert_eq!((a.dwell, a.iterations), (b.dwell, b.iterations), "{i},{j}");
+                repeats += usize::from(a.dwell == 1000 && a.iterations < 1000);
+                compared += 1;
+            }
+        }
+        assert!(repeats > 100, "{repeats} of {compared} stopped by a repeat");
+    }
 
     fn q60(v: f64) -> i64 {
         (v * (1u64 << 60) as f64) as i64
