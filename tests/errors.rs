@@ -455,18 +455,24 @@ fn fixed_point_overflow_and_underflow_are_reported() {
         Segments::new(&growing, 11).unwrap().find_map(Result::err),
         Some(Error::Walk(WalkError::Overflow))
     );
+    // The fit measures it in a smaller unit and draws it, at order 6 and at 11 alike
+    // (tests/scaling.rs has the wider systems), as one line across.
     let area = Rectangle::new(Point::zero(), Size::new(64, 64));
-    let fitted = LSystem::new(&growing, 11).fit(area, &[BinaryColor::On]);
+    for order in [6, 11, 60] {
+        let fitted = LSystem::<'_, '_, 100, 20>::with_capacity(&growing, order)
+            .fit(area, &[BinaryColor::On])
+            .unwrap();
+        // Margins of 2 leave x 2..=61; the centre row 31.5 rounds half away from zero to 32.
+        assert_eq!(
+            fitted.bounding_box(),
+            Rectangle::new(Point::new(2, 32), Size::new(60, 1)),
+            "order {order}"
+        );
+    }
+    // Past 2²⁰⁰ of growth (8⁸⁰ = 2²⁴⁰) even the smallest unit overflows: said, not drawn wrong.
+    let fitted =
+        LSystem::<'_, '_, 100, 20>::with_capacity(&growing, 80).fit(area, &[BinaryColor::On]);
     assert_eq!(fitted.map(|_| ()), Err(Error::Walk(WalkError::Overflow)));
-    // At order 6 the first step is 2^-12 px: precise enough, drawn as one line across.
-    let fitted = LSystem::new(&growing, 6)
-        .fit(area, &[BinaryColor::On])
-        .unwrap();
-    // Margins of 2 leave x 2..=61; the centre row 31.5 rounds half away from zero to 32.
-    assert_eq!(
-        fitted.bounding_box(),
-        Rectangle::new(Point::new(2, 32), Size::new(60, 1))
-    );
 }
 
 /// Steps that `@` shrinks below what a turtle unit resolves still fit and draw right: the

@@ -93,6 +93,11 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         Ok(Segments::with_capacity(self.grammar, self.order, start)?.with_budget(self.budget))
     }
 
+    /// The segments in pixels (any step taken; see `Segments::in_pixels`).
+    fn pixel_segments(&self, start: Start) -> Result<Segments<'g, 'a, DEPTH, STACK>, Error> {
+        Ok(Segments::in_pixels(self.grammar, self.order, start)?.with_budget(self.budget))
+    }
+
     /// Walks once in turtle units and returns the bounding box of what is drawn
     /// ([`FitError::EmptyDrawing`] if nothing is).
     pub fn bounds(&self) -> Result<Bounds, Error> {
@@ -100,22 +105,69 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             .ok_or(Error::Fit(FitError::EmptyDrawing))
     }
 
-    /// The bounding box of what is drawn, by a walk in turtle units, and the unit: one step,
-    /// or 2¹⁰, 2²⁰ or 2³⁰ of them where `@` shrinks steps below what one step resolves.
-    fn sized_bounds(&self) -> Result<(Sizing, Real), Error> {
+    /// The bounding box of what is drawn, by a walk in turtle units, and the exponent of
+    /// the first step in them: 1, or 2¹⁰, 2²⁰ or 2³⁰ where `@` shrinks steps below what
+    /// one resolves. A system whose steps span more than that (`@` shrinking or growing
+    /// them by many orders of magnitude, as spirals and shells do) is measured taking
+    /// steps of any size, from a first step of 2³⁰ down (by 2¹⁰, then squaring, to
+    /// 2^[`MIN_UNIT_EXPONENT`]) to where it fits, then again in the unit that makes it
+    /// about 2²⁴ units across: its smallest steps then round by 2⁻³³ units, far below a
+    /// pixel, the fit's scale keeps its bits, and the drawing pass is checked by a walk of
+    /// its own (see `Sizing::wide`).
+    fn sized_bounds(&self) -> Result<(Sizing, i32), Error> {
         let mut result = Err(Error::Walk(WalkError::StepUnderflow));
-        for shift in [0, 10, 20, 30] {
-            let unit = Real::from_int(1 << shift);
-            let start = Start {
-                step: unit,
-                ..Start::default()
-            };
-            result = self.sizing_from(start, false).map(|sizing| (sizing, unit));
+        for exponent in [0, 10, 20, 30] {
+            result = self
+                .sizing_from(unit_start(exponent), false)
+                .map(|sizing| (sizing, exponent));
             if !matches!(result, Err(Error::Walk(WalkError::StepUnderflow))) {
                 break;
             }
         }
-        result
+        if !matches!(
+            result,
+            Err(Error::Walk(WalkError::StepUnderflow | WalkError::Overflow))
+        ) {
+            return result;
+        }
+        let wide = |exponent: i32| {
+            self.sizing_from(unit_start(exponent), true).map(|sizing| {
+                (
+                    Sizing {
+                        wide: true,
+                        ..sizing
+                    },
+                    exponent,
+                )
+            })
+        };
+        let mut exponent = 30;
+        let (sizing, exponent) = loop {
+            match wide(exponent) {
+                Err(Error::Walk(WalkError::Overflow)) if exponent > MIN_UNIT_EXPONENT => {
+                    exponent = if exponent > -30 {
+                        exponent - 10
+                    } else {
+                        (2 * exponent).max(MIN_UNIT_EXPONENT)
+                    };
+                }
+                other => break other?,
+            }
+        };
+        // The extent scales with the unit: about 2²⁴ units gives the fit's scale more bits.
+        let across = sizing.bounds.map_or(0, |b| {
+            let span = |low: Real, high: Real| high.to_bits().saturating_sub(low.to_bits());
+            span(b.min.x, b.max.x).max(span(b.min.y, b.max.y))
+        });
+        // Whole units across, in bits: 24 leaves the scale (pixels a unit, in Q32) about 24
+        // significant bits on a display up to 2⁸ wide, 2¹⁶ for 2¹⁶, and 7 bits of margin.
+        let bits = 32 - across.leading_zeros() as i32;
+        if across > 0 && !(23..=25).contains(&bits) {
+            if let Ok(refined) = wide(exponent + 24 - bits) {
+                return Ok(refined);
+            }
+        }
+        Ok((sizing, exponent))
     }
 
     /// The bounding box of what is drawn from `start`, by a walk; `None` if nothing is.
@@ -127,10 +179,11 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 
     /// [`bounds_from`](Self::bounds_from), with the segments counted.
     fn sizing_from(&self, start: Start, in_pixels: bool) -> Result<Sizing, Error> {
-        let mut walk = self.segments(start)?;
-        if in_pixels {
-            walk = walk.in_pixels();
-        }
+        let mut walk = if in_pixels {
+            self.pixel_segments(start)?
+        } else {
+            self.segments(start)?
+        };
         let mut bounds: Option<Bounds> = None;
         walk.for_each_segment(|segment| {
             widen(&mut bounds, segment);
@@ -142,6 +195,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             segments: stats.segments,
             symbols: stats.symbols,
             scalings: walk.scalings(),
+            wide: false,
         })
     }
 
@@ -211,11 +265,18 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             None => None,
         };
         let (sizing, unit) = match tabled {
-            Some(sizing) => (sizing, Real::ONE),
+            Some(sizing) => (sizing, 0),
             None => self.sized_bounds()?,
         };
         let bounds = sizing.bounds;
         let (start, scale) = fitted_placement(bounds, unit, self.orientation, &area, self.margin)?;
+        // A first step below 2⁻²⁰ pixel: positions round by up to 2⁻³³ pixel a step, so a
+        // picture that many steps across could drift by pixels (Koch at order 18 on 64
+        // pixels). A system measured in a unit of its own (`@` over many orders of
+        // magnitude) takes it while its walk is under 2³¹ symbols: a quarter pixel at most.
+        if start.too_fine() && (!sizing.wide || sizing.symbols >= 1 << 31) {
+            return Err(Error::Walk(WalkError::StepTooFine));
+        }
         // Known from the sizing where the drawing pass is that walk scaled (see
         // `predicted_box`): then the pass that would measure it is not walked.
         let predicted = sizing
@@ -243,6 +304,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             segments: summary.segments,
             symbols: summary.symbols,
             scalings: 0,
+            wide: false,
         }))
     }
 
@@ -267,16 +329,16 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
             Real::from_int(placement.origin.y),
         ));
         let position = TurtlePoint { x, y };
-        self.prepared(
-            Start {
-                position,
-                step: placement.step,
-                turns: placement.turns,
-            },
-            palette,
-            None,
-            None,
-        )
+        let start = Start {
+            position,
+            step: placement.step,
+            step_shift: 0,
+            turns: placement.turns,
+        };
+        if start.too_fine() {
+            return Err(Error::Walk(WalkError::StepTooFine));
+        }
+        self.prepared(start, palette, None, None)
     }
 
     /// Checks the drawing from `start` and measures its pixel box: from the table at this
@@ -295,8 +357,8 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         });
         let walked = |system: &Self| -> Result<Rectangle, Error> {
             if let Some(predicted) = predicted {
-                // What the pass would refuse before its first step (the order, the step).
-                system.segments(start)?;
+                // What the pass would refuse before its first step (the order).
+                system.pixel_segments(start)?;
                 return Ok(predicted);
             }
             let pixels = system.bounds_from(start, true)?;
@@ -484,12 +546,26 @@ impl<C: PixelColor> Pen<C> {
     }
 }
 
+/// The smallest first step a sizing walk takes, as a power of 2: a system whose steps grow
+/// by more than about 2²⁰⁰ over its walk overflows (the drawing pass shifts its first step
+/// by as much again as the fit's scale, within a step's 2⁻²⁵⁵).
+const MIN_UNIT_EXPONENT: i32 = -200;
+
+/// A sizing walk whose first step is 2^`exponent` units (at most 2³⁰).
+fn unit_start(exponent: i32) -> Start {
+    Start {
+        step: Real::from_int(1 << exponent.clamp(0, 30)),
+        step_shift: exponent.min(0).unsigned_abs(),
+        ..Start::default()
+    }
+}
+
 /// Where the turtle starts, and its step in pixels, for a picture whose drawn box is
-/// `bounds` in units of `unit` steps, fitted into `area` less `margin`. A picture that draws
-/// nothing is valid: it is placed at the area's middle.
+/// `bounds` in units of which a first step is 2^`unit`, fitted into `area` less `margin`. A picture that
+/// draws nothing is valid: it is placed at the area's middle.
 pub(crate) fn fitted_start(
     bounds: Option<Bounds>,
-    unit: Real,
+    unit: i32,
     orientation: Orientation,
     area: &Rectangle,
     margin: u32,
@@ -500,7 +576,7 @@ pub(crate) fn fitted_start(
 /// [`fitted_start`], and the scale: pixels per unit of `bounds`.
 fn fitted_placement(
     bounds: Option<Bounds>,
-    unit: Real,
+    unit: i32,
     orientation: Orientation,
     area: &Rectangle,
     margin: u32,
@@ -510,15 +586,17 @@ fn fitted_placement(
     });
     let fitted = fit(low, high, orientation, area, margin)?;
     let (x, y) = orientation.to_picture(fitted.origin);
-    // Pixels per picture unit, times the unit's steps: pixels per step.
+    // Pixels per picture unit, times the unit's steps: pixels per step (a unit below a
+    // step as a shift, which keeps the scale's bits).
     let step = fitted
         .scale
-        .checked_mul(unit)
+        .checked_mul(Real::from_int(1 << unit.clamp(0, 30)))
         .ok_or(Error::Walk(WalkError::Overflow))?;
     Ok((
         Start {
             position: TurtlePoint { x, y },
             step,
+            step_shift: unit.min(0).unsigned_abs(),
             turns: 0,
         },
         fitted.scale,
@@ -532,6 +610,9 @@ struct Sizing {
     segments: u64,
     symbols: u64,
     scalings: u64,
+    /// Measured taking steps of any size (see `sized_bounds`): the drawing pass is not
+    /// predicted from it, but walked.
+    wide: bool,
 }
 
 /// The largest margin, in units of the last place, [`predicted_box`] is given: 2⁻⁸ pixel.
@@ -554,6 +635,9 @@ impl Sizing {
     /// and need a scale of at most ½ (then every place this walk reached, below 2³¹, lands
     /// within 2³⁰ of the start).
     fn margin(&self, grammar: &Grammar<'_>, scale: Real, start: Start) -> Option<i64> {
+        if self.wide || start.step_shift > 0 {
+            return None;
+        }
         let mut moves = false;
         for &op in grammar.all_ops() {
             match grammar.command(op) {
@@ -689,7 +773,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize> LSystemDrawing<'_, '_, 
         D: DrawTarget<Color = P::Color>,
     {
         let clip = target.bounding_box();
-        let mut segments = self.system.segments(self.start)?.in_pixels();
+        let mut segments = self.system.pixel_segments(self.start)?;
         let mut pen = Pen::default();
         if let Some(table) = &self.table {
             let decide = |cell: &Summary, start: TurtlePoint| self.decide(cell, start, &clip);

@@ -11,6 +11,7 @@ use super::walker::{Next, Walker, DEFAULT_DEPTH};
 use crate::error::{Error, ReadError, WalkError};
 use crate::math::angle::Headings;
 use crate::math::trig::BinaryAngle;
+use crate::math::wide::shift_round;
 use crate::math::Real;
 
 /// Branches the turtle stack holds by default.
@@ -19,7 +20,7 @@ pub const DEFAULT_STACK: usize = 20;
 /// The smallest step, as a fraction of a unit: 2⁻²⁰. Below it a step keeps fewer than 12
 /// significant bits and a measurement in these units would be silently wrong, so it is an
 /// error instead: the fit then measures again in a larger unit. A walk in pixels (see
-/// [`Segments::in_pixels`]) takes any step: each rounds by at most 2⁻³³ pixel.
+/// `Segments::in_pixels`) takes any step: each rounds by at most 2⁻³³ pixel.
 const MIN_STEP: Real = Real::from_bits(1 << 12);
 
 /// A point in turtle space: y up, `+` turns counter-clockwise.
@@ -47,8 +48,12 @@ pub struct Segment {
 pub struct Start {
     /// The first position.
     pub position: TurtlePoint,
-    /// The length of one step.
+    /// The length of one step, times 2^`step_shift`.
     pub step: Real,
+    /// The step is `step`·2^−`step_shift`: a fitted picture whose first steps are far
+    /// below a pixel (an `@` system that grows by many orders of magnitude) keeps their
+    /// precision. 0 unless a fit sets it.
+    pub step_shift: u32,
     /// The first heading, in turns of the system's angle counter-clockwise from +x (as if
     /// the axiom began with that many `+`).
     pub turns: i32,
@@ -60,22 +65,151 @@ impl Default for Start {
         Self {
             position: TurtlePoint::default(),
             step: Real::ONE,
+            step_shift: 0,
             turns: 0,
         }
     }
 }
 
-/// Everything `[` saves.
+impl Start {
+    /// Whether the first step is 0 or below 2⁻²⁰ of a unit ([`WalkError::StepTooFine`]
+    /// for a walk in turtle units, and for a fitted or placed picture whose walk is not
+    /// short enough for its rounding to stay below a pixel).
+    pub(crate) fn too_fine(&self) -> bool {
+        let step = Step::new(self.step, self.step_shift);
+        step == Step::ZERO || step.below(MIN_STEP)
+    }
+}
+
+/// Shifts past this make a step 0, as a float's exponent runs out (a double's at about
+/// 2⁻¹⁰⁷⁴, a float's at 2⁻¹⁴⁹): a saved turtle keeps the shift in a byte.
+const MAX_STEP_SHIFT: u32 = u8::MAX as u32;
+
+/// A step length with the dynamic range `@` needs: mantissa·2^−shift, the mantissa in
+/// [1, 2) whenever the shift is above 0, so a step shrunk by many orders of magnitude
+/// keeps 32 significant bits and grows back exactly by the inverse factors (Fractint's
+/// float turtle draws such spirals; a fixed-point step would round to nothing). With a
+/// shift of 0 it is the plain `Real` the turtle always had.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Step {
+    mantissa: Real,
+    shift: u32,
+}
+
+impl Step {
+    const ZERO: Self = Self {
+        mantissa: Real::ZERO,
+        shift: 0,
+    };
+
+    /// `value`·2^−`shift`, normalised.
+    fn new(value: Real, shift: u32) -> Self {
+        // A `Real` at any shift fits: normalising only shifts it into [1, 2).
+        Self::from_q64(i128::from(value.to_bits()) << 32, shift).unwrap_or(Self::ZERO)
+    }
+
+    /// `value` (Q64)·2^−`shift`, with as much of the shift as keeps the mantissa in
+    /// [1, 2), rounded once to its 32 fractional bits (half away from zero, as
+    /// `Real::checked_mul` rounds); 0 where the shift would pass [`MAX_STEP_SHIFT`].
+    /// `None` where it is too large for a `Real` at a shift of 0.
+    #[inline(never)]
+    fn from_q64(value: i128, shift: u32) -> Option<Self> {
+        if value == 0 {
+            return Some(Self::ZERO);
+        }
+        // 1.0 is bit 64 of a Q64 value.
+        let top = 127 - value.unsigned_abs().leading_zeros();
+        let (mantissa, shift) = if top < 64 {
+            let up = 64 - top;
+            if shift.saturating_add(up) > MAX_STEP_SHIFT {
+                return Some(Self::ZERO);
+            }
+            (shift_round(value << up, 32), shift + up)
+        } else {
+            let down = (top - 64).min(shift);
+            (shift_round(value, 32 + down), shift - down)
+        };
+        // Rounding up to 2.0 exactly: halved, exactly, where there is a shift to give.
+        let (mantissa, shift) = if shift > 0 && mantissa.unsigned_abs() >= 2 << 32 {
+            (mantissa / 2, shift - 1)
+        } else {
+            (mantissa, shift)
+        };
+        let mantissa = Real::from_bits(i64::try_from(mantissa).ok()?);
+        Some(Self { mantissa, shift })
+    }
+
+    /// This step times `factor`; `None` past the `Real` range. Out of line, as `@` and the
+    /// lengths are rare beside steps: in the walks' copies of the turtle it cost the
+    /// LM3S6965 firmware kilobytes of flash.
+    #[inline(never)]
+    fn times(self, factor: Real) -> Option<Self> {
+        let product = i128::from(self.mantissa.to_bits()) * i128::from(factor.to_bits());
+        Self::from_q64(product, self.shift)
+    }
+
+    /// Whether this step is not 0 and below `min` (not 0) in size.
+    fn below(self, min: Real) -> bool {
+        let magnitude = u128::from(self.mantissa.to_bits().unsigned_abs());
+        let min = u128::from(min.to_bits().unsigned_abs());
+        magnitude != 0 && min != 0 && (self.shift >= 65 || magnitude < min << self.shift)
+    }
+
+    /// The vector one step moves by along `(cos, sin)` (Q30): each part rounded once,
+    /// half away from zero, so mirror images stay exact (see [`scaled`]).
+    #[inline(always)]
+    fn vector(self, direction: (i32, i32)) -> (Real, Real) {
+        if self.shift == 0 {
+            return scaled(self.mantissa, direction);
+        }
+        self.shifted_vector(direction)
+    }
+
+    /// [`vector`](Self::vector) of a shifted step, out of line (see [`times`](Self::times)).
+    #[cold]
+    #[inline(never)]
+    fn shifted_vector(self, direction: (i32, i32)) -> (Real, Real) {
+        // |mantissa·cos| < 2⁶⁵: from a total shift of 67 every part rounds to 0.
+        if self.shift > 36 {
+            return (Real::ZERO, Real::ZERO);
+        }
+        let part = |cos: i32| {
+            let product = i128::from(self.mantissa.to_bits()) * i128::from(cos);
+            Real::from_bits(shift_round(product, 30 + self.shift) as i64)
+        };
+        (part(direction.0), part(direction.1))
+    }
+}
+
+/// Everything `[` saves: 32 bytes, the step's two parts apart (as a `Step` it would be
+/// padded to 16 bytes), and the heading in a byte (`Angle n` has n ≤ 64).
 #[derive(Debug, Clone, Copy)]
 struct State {
     position: TurtlePoint,
+    /// The step's mantissa and shift (see [`Step`]).
     step: Real,
+    step_shift: u8,
     /// The heading for `Angle n`, in divisions (0..n).
-    heading: u16,
+    heading: u8,
     /// The free heading (`\`, `/`, `D`, `M`; and every turn for a free angle).
     free: BinaryAngle,
     color: u8,
     reversed: bool,
+}
+
+impl State {
+    fn step(&self) -> Step {
+        Step {
+            mantissa: self.step,
+            shift: u32::from(self.step_shift),
+        }
+    }
+
+    fn set_step(&mut self, step: Step) {
+        self.step = step.mantissa;
+        // At most `MAX_STEP_SHIFT`.
+        self.step_shift = step.shift as u8;
+    }
 }
 
 /// The turtle: a state and a stack of saved states (`STACK` deep).
@@ -86,8 +220,8 @@ pub(crate) struct Turtle<'g, const STACK: usize> {
     state: State,
     stack: Vec<State, STACK>,
     max_stack: usize,
-    /// Steps below this (but 0) are [`WalkError::StepTooFine`] at the start,
-    /// [`WalkError::StepUnderflow`] after `@`.
+    /// Steps below this (but 0) are [`WalkError::StepUnderflow`] after `@` (none in a walk
+    /// in pixels, where this is 0).
     min_step: Real,
     /// Step vectors of the last few headings, for the current step.
     steps: StepCache,
@@ -96,12 +230,16 @@ pub(crate) struct Turtle<'g, const STACK: usize> {
 }
 
 impl<'g, const STACK: usize> Turtle<'g, STACK> {
+    /// A turtle at `start`. A walk in turtle units refuses a first step below
+    /// [`MIN_STEP`] ([`WalkError::StepTooFine`]); one in pixels (`in_pixels`) takes any.
     pub(crate) fn new(
         headings: &'g Headings,
         dialect: Dialect,
         start: Start,
+        in_pixels: bool,
     ) -> Result<Self, Error> {
-        if start.step.abs() < MIN_STEP {
+        let step = Step::new(start.step, start.step_shift);
+        if !in_pixels && start.too_fine() {
             return Err(Error::Walk(WalkError::StepTooFine));
         }
         let mut turtle = Self {
@@ -109,7 +247,8 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             dialect,
             state: State {
                 position: start.position,
-                step: start.step,
+                step: step.mantissa,
+                step_shift: step.shift as u8,
                 heading: 0,
                 free: BinaryAngle::default(),
                 color: 0,
@@ -117,7 +256,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             },
             stack: Vec::new(),
             max_stack: 0,
-            min_step: MIN_STEP,
+            min_step: if in_pixels { Real::ZERO } else { MIN_STEP },
             steps: StepCache::EMPTY,
             scalings: 0,
         };
@@ -142,14 +281,15 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 state.free.0.wrapping_sub(delta)
             };
         } else if left {
-            state.heading = if state.heading + 1 >= n {
+            state.heading = if u16::from(state.heading) + 1 >= n {
                 0
             } else {
                 state.heading + 1
             };
         } else {
             state.heading = if state.heading == 0 {
-                n - 1
+                // n ≤ 64: it fits.
+                (n - 1) as u8
             } else {
                 state.heading - 1
             };
@@ -169,19 +309,19 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     #[inline(always)]
     fn main_vector(&mut self) -> (Real, Real) {
         let n = self.headings.divisions();
-        let step = self.state.step;
+        let step = self.state.step();
         if n == 0 {
             let angle = self.state.free;
             let shift = self.headings.cycle_shift();
             // Keys are 16 bits: free headings keyed by their index among the multiples of
             // 2^shift, when those are few enough; any others are computed each time.
             let Ok(key) = u16::try_from(angle.0.checked_shr(shift).unwrap_or(0)) else {
-                return scaled(step, angle.cos_sin());
+                return step.vector(angle.cos_sin());
             };
             return match self.steps.get(key) {
                 Some(vector) => vector,
                 None => {
-                    let vector = scaled(step, angle.cos_sin());
+                    let vector = step.vector(angle.cos_sin());
                     self.steps.put(key, vector);
                     vector
                 }
@@ -189,13 +329,13 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         }
         // The look-up and fill are written out in both arms: through one shared closure the
         // OLED scenes took 1-5 % more instructions on Cortex-M3 and M4.
-        let heading = self.state.heading;
+        let heading = u16::from(self.state.heading);
         let mirrored = heading > n / 2;
         let k = if mirrored { n - heading } else { heading };
         let (dx, dy) = match self.steps.get(k) {
             Some(vector) => vector,
             None => {
-                let vector = scaled(step, self.headings.cos_sin(k));
+                let vector = step.vector(self.headings.cos_sin(k));
                 self.steps.put(k, vector);
                 vector
             }
@@ -211,8 +351,8 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
     }
 
     /// Moves `step` along `direction` and returns the segment it covered.
-    fn advance_by(&mut self, step: Real, direction: (i32, i32)) -> Result<Segment, Error> {
-        self.advance_along(scaled(step, direction))
+    fn advance_by(&mut self, step: Step, direction: (i32, i32)) -> Result<Segment, Error> {
+        self.advance_along(step.vector(direction))
     }
 
     /// Moves by `(dx, dy)` and returns the segment it covered.
@@ -241,7 +381,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         if self.headings.divisions() == 0 {
             self.state.free.cos_sin()
         } else {
-            self.headings.cos_sin(self.state.heading)
+            self.headings.cos_sin(u16::from(self.state.heading))
         }
     }
 
@@ -254,13 +394,13 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
             Command::Draw => return self.advance_main().map(Some),
             Command::DrawFree => {
                 return self
-                    .advance_by(self.state.step, self.state.free.cos_sin())
+                    .advance_by(self.state.step(), self.state.free.cos_sin())
                     .map(Some)
             }
             Command::DrawBy(length) | Command::MoveBy(length) => {
                 let step = state
-                    .step
-                    .checked_mul(length)
+                    .step()
+                    .times(length)
                     .ok_or(Error::Walk(WalkError::Overflow))?;
                 let segment = self.advance_by(step, self.main_direction())?;
                 return Ok(matches!(command, Command::DrawBy(_)).then_some(segment));
@@ -269,7 +409,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 self.advance_main()?;
             }
             Command::MoveFree => {
-                self.advance_by(self.state.step, self.state.free.cos_sin())?;
+                self.advance_by(self.state.step(), self.state.free.cos_sin())?;
             }
             Command::Left => {
                 let left = !state.reversed;
@@ -284,9 +424,9 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 if n == 0 {
                     state.free.0 = state.free.0.wrapping_add(1 << 31);
                 } else {
-                    // Half a turn: n - n/2 divisions (headings are below n).
-                    let turned = state.heading + (n - n / 2);
-                    state.heading = if turned >= n { turned - n } else { turned };
+                    // Half a turn: n - n/2 divisions (headings are below n ≤ 64).
+                    let turned = u16::from(state.heading) + (n - n / 2);
+                    state.heading = if turned >= n { turned - n } else { turned } as u8;
                 }
             }
             Command::Reverse => state.reversed = !state.reversed,
@@ -299,18 +439,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                     state.free.0.wrapping_sub(delta)
                 };
             }
-            Command::Scale(factor) => {
-                self.steps.clear();
-                self.scalings += 1;
-                state.step = state
-                    .step
-                    .checked_mul(factor)
-                    .ok_or(Error::Walk(WalkError::Overflow))?;
-                // A step of exactly 0 is Fractint's `@` without a number: points.
-                if state.step != Real::ZERO && state.step.abs() < self.min_step {
-                    return Err(Error::Walk(WalkError::StepUnderflow));
-                }
-            }
+            Command::Scale(factor) => self.scale(factor)?,
             Command::SetColor(color) => state.color = color,
             Command::RaiseColor(by) => state.color = state.color.wrapping_add(by),
             Command::LowerColor(by) => state.color = state.color.wrapping_sub(by),
@@ -331,7 +460,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                     }))?;
                 // Fractint's `]` restores everything but the colour; ABOP's restores all.
                 let color = state.color;
-                if saved.step != state.step {
+                if saved.step != state.step || saved.step_shift != state.step_shift {
                     self.steps.clear();
                 }
                 *state = saved;
@@ -427,6 +556,24 @@ pub(crate) enum Decision {
 }
 
 impl<const STACK: usize> Turtle<'_, STACK> {
+    /// `@`: the step times `factor`. Out of line (see [`Step::times`]).
+    #[inline(never)]
+    fn scale(&mut self, factor: Real) -> Result<(), Error> {
+        self.steps.clear();
+        self.scalings += 1;
+        let step = self
+            .state
+            .step()
+            .times(factor)
+            .ok_or(Error::Walk(WalkError::Overflow))?;
+        self.state.set_step(step);
+        // A step of exactly 0 is Fractint's `@` without a number: points.
+        if step.below(self.min_step) {
+            return Err(Error::Walk(WalkError::StepUnderflow));
+        }
+        Ok(())
+    }
+
     /// The turtle moved past an expansion summarised by `cell`; `None` on overflow.
     fn pass(&mut self, cell: &Summary) -> Option<()> {
         let state = &mut self.state;
@@ -435,7 +582,8 @@ impl<const STACK: usize> Turtle<'_, STACK> {
             y: state.position.y.checked_add(cell.displacement.1)?,
         };
         if self.headings.divisions() > 0 {
-            state.heading = cell.heading;
+            // A division of n ≤ 64.
+            state.heading = cell.heading as u8;
         } else {
             let shift = self.headings.cycle()?.shift;
             state.free = BinaryAngle(u32::from(cell.heading) << shift);
@@ -499,21 +647,33 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
         order: u32,
         start: Start,
     ) -> Result<Self, Error> {
+        Self::walking(grammar, order, start, false)
+    }
+
+    /// A walk whose unit is a pixel: any step is taken, a first one or one shrunk by `@`
+    /// far below 2⁻²⁰ (each position rounds by at most 2⁻³³ pixel a step, so a picture of
+    /// fewer than 2³² segments is off by less than half a pixel; the step itself keeps its
+    /// 32 significant bits, see `Step`).
+    pub(crate) fn in_pixels(
+        grammar: &'g Grammar<'a>,
+        order: u32,
+        start: Start,
+    ) -> Result<Self, Error> {
+        Self::walking(grammar, order, start, true)
+    }
+
+    fn walking(
+        grammar: &'g Grammar<'a>,
+        order: u32,
+        start: Start,
+        in_pixels: bool,
+    ) -> Result<Self, Error> {
         Ok(Self {
             walker: Walker::with_capacity(grammar, order)?,
-            turtle: Turtle::new(grammar.headings(), grammar.dialect(), start)?,
+            turtle: Turtle::new(grammar.headings(), grammar.dialect(), start, in_pixels)?,
             segments: 0,
             failed: false,
         })
-    }
-
-    /// A walk whose unit is a pixel: steps shrunk by `@` below 2⁻²⁰ are taken, not refused
-    /// (each rounds by at most 2⁻³³ pixel, so a picture of fewer than 2³² segments is off
-    /// by less than half a pixel).
-    #[must_use]
-    pub(crate) fn in_pixels(mut self) -> Self {
-        self.turtle.min_step = Real::from_bits(1);
-        self
     }
 
     /// Ends the walk with [`WalkError::BudgetExhausted`] after `symbols` symbols.
@@ -580,7 +740,7 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> 
     fn heading(&self) -> (u16, bool) {
         let turtle = &self.turtle;
         let heading = if turtle.headings.divisions() > 0 {
-            turtle.state.heading
+            u16::from(turtle.state.heading)
         } else {
             let shift = turtle.headings.cycle().map_or(31, |cycle| cycle.shift);
             u16::try_from(turtle.state.free.0 >> shift).unwrap_or(u16::MAX)

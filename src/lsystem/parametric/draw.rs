@@ -137,7 +137,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     pub fn new(grammar: &'g ParametricGrammar, order: u32, start: Start) -> Result<Self, Error> {
         Ok(Self {
             walker: ParametricWalker::new(grammar, order)?,
-            turtle: Turtle::new(grammar.headings(), Dialect::Abop, start)?,
+            turtle: Turtle::new(grammar.headings(), Dialect::Abop, start, false)?,
             segments: 0,
             failed: false,
         })
@@ -323,7 +323,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     ) -> Result<ParametricDrawing<'g, P, DEPTH, STACK, SLOTS>, Error> {
         let area = *area;
         let bounds = measure(self.segments(Start::default())?)?;
-        let start = fitted_start(bounds, Real::ONE, self.orientation, &area, DEFAULT_MARGIN)?;
+        let start = fitted_start(bounds, 0, self.orientation, &area, DEFAULT_MARGIN)?;
         let pixels: Option<Bounds> = measure(self.segments(start)?)?;
         Ok(ParametricDrawing {
             system: *self,
