@@ -297,7 +297,7 @@ fn growth(
     emit: &Emit<'_>,
 ) -> Result<String, String> {
     let mut text = String::new();
-    let (loaded, name) = crate::load(source, &mut text)?;
+    let (loaded, name, _) = crate::load(source, &mut text)?;
     let crate::Loaded::Plain(grammar) = loaded else {
         return Err(format!(
             "{name}: growth animates plain systems; this one is parametric"

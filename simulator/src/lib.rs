@@ -249,12 +249,12 @@ pub(crate) enum Loaded<'a> {
     Parametric(Box<ParametricGrammar>),
 }
 
-/// The system a source names, and the name to report it by; warnings go to stderr. The
-/// file is read once, here.
+/// The system a source names, the name to report it by, and the kind of its file (`None`
+/// inline); warnings go to stderr. The file is read once, here.
 pub(crate) fn load<'a>(
     source: &'a Source,
     file_text: &'a mut String,
-) -> Result<(Loaded<'a>, String), String> {
+) -> Result<(Loaded<'a>, String, Option<FileKind>), String> {
     load_for(source, file_text, Purpose::Draw)
 }
 
@@ -270,7 +270,7 @@ pub(crate) fn load_for<'a>(
     source: &'a Source,
     file_text: &'a mut String,
     purpose: Purpose,
-) -> Result<(Loaded<'a>, String), String> {
+) -> Result<(Loaded<'a>, String, Option<FileKind>), String> {
     Ok(match source {
         Source::File { path, name } => {
             *file_text = read_text(path)?;
@@ -285,7 +285,7 @@ pub(crate) fn load_for<'a>(
                 } else {
                     Loaded::Plain(Box::new(entry.grammar().map_err(failed)?))
                 };
-                return Ok((loaded, name.clone()));
+                return Ok((loaded, name.clone(), Some(FileKind::Lsys)));
             }
             let entry = LFile::new(file_text).entry(name).map_err(failed)?;
             let grammar = match purpose {
@@ -296,7 +296,11 @@ pub(crate) fn load_for<'a>(
             for warning in entry.warnings() {
                 warn(&format!("{name} in {}: {warning}", path.display()));
             }
-            (Loaded::Plain(Box::new(grammar)), name.clone())
+            (
+                Loaded::Plain(Box::new(grammar)),
+                name.clone(),
+                Some(FileKind::Fractint),
+            )
         }
         Source::Inline {
             axiom,
@@ -316,7 +320,11 @@ pub(crate) fn load_for<'a>(
                     .with_rule(*symbol, body)
                     .map_err(|e| format!("{label}: rule {symbol}={body}: {e}"))?;
             }
-            (Loaded::Plain(Box::new(grammar)), "lsystem".to_string())
+            (
+                Loaded::Plain(Box::new(grammar)),
+                "lsystem".to_string(),
+                None,
+            )
         }
     })
 }
@@ -325,8 +333,8 @@ pub(crate) fn load_for<'a>(
 /// (measured first, so nothing is printed past the limit).
 fn derive(arguments: &DeriveArgs) -> Result<(), Failure> {
     let mut file_text = String::new();
-    let (loaded, name) = load_for(&arguments.source, &mut file_text, Purpose::Derive)?;
-    seed_applies(&arguments.source, arguments.seed, &name)?;
+    let (loaded, name, kind) = load_for(&arguments.source, &mut file_text, Purpose::Derive)?;
+    seed_applies(kind, arguments.seed, &name)?;
     let budget = derive_budget(arguments);
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
@@ -355,9 +363,8 @@ fn derive(arguments: &DeriveArgs) -> Result<(), Failure> {
 
 /// `--seed` is for the stochastic productions only `.lsys` files have: given for a `.l`
 /// file's or an inline system, it is a usage error, not ignored.
-fn seed_applies(source: &Source, seed: Option<u32>, name: &str) -> Result<(), Failure> {
-    let lsys = matches!(source, Source::File { path, .. } if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("lsys")));
-    if seed.is_some() && !lsys {
+fn seed_applies(kind: Option<FileKind>, seed: Option<u32>, name: &str) -> Result<(), Failure> {
+    if seed.is_some() && kind != Some(FileKind::Lsys) {
         return Err(Failure::Usage(format!(
             "--seed does not apply to {name}: only `.lsys` systems have stochastic \
              productions (leave out --seed)"
@@ -490,7 +497,7 @@ fn render_parametric(
 
 fn render_lsystem(arguments: &LSystemArgs) -> Result<(), Failure> {
     let mut file_text = String::new();
-    let (loaded, name) = load(&arguments.source, &mut file_text)?;
+    let (loaded, name, kind) = load(&arguments.source, &mut file_text)?;
     let three_d = [
         ("--projection", arguments.projection.is_some()),
         ("--depth-cue", arguments.depth_cue),
@@ -505,7 +512,7 @@ fn render_lsystem(arguments: &LSystemArgs) -> Result<(), Failure> {
              plane (leave out {option})"
         )));
     }
-    seed_applies(&arguments.source, arguments.seed, &name)?;
+    seed_applies(kind, arguments.seed, &name)?;
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
         Loaded::Parametric(mut grammar) => {

@@ -208,6 +208,26 @@ fn files_are_known_by_content_and_extension() {
             stderr(&output)
         );
     }
+    // `--seed` goes by what the file holds: an `.lsys` file under another extension takes
+    // it, and the seed picks the stochastic plant's productions.
+    let plant = dir.join("plants.txt");
+    std::fs::copy(data("abop.lsys"), &plant).unwrap();
+    let derive = |seed: &str| {
+        let output = run(&[
+            "derive",
+            "--file",
+            plant.to_str().unwrap(),
+            "--name",
+            "Fig1.27",
+            "--order",
+            "3",
+            "--seed",
+            seed,
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        common::stdout(&output)
+    };
+    assert_ne!(derive("1"), derive("2"));
     // `list` lists an IFS file's entries.
     let output = run(&["list", &data("lecture.ifs")]);
     assert_eq!(common::stdout(&output), "fern\ngasket\n");
