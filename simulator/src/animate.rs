@@ -12,21 +12,11 @@ use embedded_graphics::prelude::*;
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 use tinyfractal::{Algorithm, DeepCoord, Tier, View, ZoomFrame, ZoomLine, MAX_DECIMAL_PLACES};
 
 use crate::args::{AnimateArgs, Animation};
 use crate::escape_scene::{self, Request};
-
-/// A bar over `total` steps on stderr, drawn only when stderr is a terminal.
-pub fn progress(total: u64, what: &str) -> ProgressBar {
-    let bar = ProgressBar::new(total);
-    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} {elapsed}") {
-        bar.set_style(style.progress_chars("=> "));
-    }
-    bar.set_message(what.to_string());
-    bar
-}
 
 /// A finished frame, handed from the animation to the encoder as it is made.
 type Picture = SimulatorDisplay<Rgb888>;
@@ -64,7 +54,7 @@ const WRITER_STOPPED: &str = "the writer stopped";
 pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
     let started = Instant::now();
     let size = Size::new(arguments.size.0, arguments.size.1);
-    let bar = progress(u64::from(arguments.frames), "frames");
+    let bar = crate::progress::bar(u64::from(arguments.frames), "frames");
     let (sender, receiver) = sync_channel(1);
     let result = std::thread::scope(|scope| {
         let maker = scope.spawn(|| {

@@ -37,7 +37,7 @@ type Rendered = (Picture, String, String, Duration);
 pub fn run(out: &Path) -> Result<(), String> {
     let make_folder = folder_missing(out)?;
     let scenes = GALLERY.len() + GENERAL_GALLERY.len() + IFS_GALLERY.len();
-    let bar = crate::animate::progress(scenes as u64, "gallery");
+    let bar = crate::progress::bar(scenes as u64, "gallery");
     let mut rendered: Vec<(&str, Rendered)> = Vec::with_capacity(scenes);
     let mut failed = 0;
     let mut report = |name: &'static str, result: Result<Rendered, String>| {

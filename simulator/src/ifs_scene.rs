@@ -8,6 +8,7 @@ use std::time::Instant;
 use clap::Args;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
+use indicatif::ProgressBar;
 use tinyfractal::{Gingerbread, IfsFile, IfsPicture};
 
 use crate::args::Common;
@@ -20,9 +21,30 @@ const GREENS: [Rgb888; 4] = [
     Rgb888::new(0x9A, 0xCD, 0x32),
 ];
 
-/// Most points `--points-count` and `--iterations` take: a bound on a run's time (about
-/// half a minute for the chaos game and its fit on a host), refused with it beyond.
+/// Most points `--points-count` and `--iterations` take: a bound on a run's time (a few
+/// minutes for the chaos game and its fit on a host), refused with it beyond.
 pub const MAX_POINTS: u64 = 1_000_000_000;
+
+/// From this many points a run shows its progress on a terminal (about a second's work).
+const PROGRESS_FROM: u64 = 10_000_000;
+
+/// A spinner for the fit's measuring pass (inside the engine, so its length is not seen)
+/// of a run of at least [`PROGRESS_FROM`] points; `None` below.
+fn measuring(points: u64) -> Option<ProgressBar> {
+    (points >= PROGRESS_FROM)
+        .then(|| crate::progress::spinner(&format!("measuring {points} points")))
+}
+
+/// Ends the spinner, and a bar over the draw's points where there was one.
+fn drawing(measuring: Option<ProgressBar>, points: u64) -> ProgressBar {
+    match measuring {
+        Some(spinner) => {
+            spinner.finish_and_clear();
+            crate::progress::bar(points, "points")
+        }
+        None => ProgressBar::hidden(),
+    }
+}
 
 #[derive(Debug, Clone, PartialEq, Args)]
 pub struct IfsOptions {
@@ -129,6 +151,7 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
     }
     let mut target = options.common.display();
     let started = Instant::now();
+    let spinner = measuring(options.points_count);
     let drawn = if options.density {
         let keys = [
             Rgb888::new(0x00, 0x10, 0x00),
@@ -139,15 +162,21 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
             .ok_or("the density palette is empty")?;
         let pixels = options.common.width() as usize * options.common.height() as usize;
         let mut counts = vec![0u16; pixels];
-        picture
+        // Counted in memory, then written a row at a time: the spinner runs throughout.
+        let drawn = picture
             .fit_density(options.common.area(), palette, &mut counts)
             .map_err(failed)?
-            .try_draw(&mut target)
+            .try_draw(&mut target);
+        drawing(spinner, 0).finish_and_clear();
+        drawn
     } else {
-        picture
+        let fitted = picture
             .fit(options.common.area(), &GREENS)
-            .map_err(failed)?
-            .try_draw(&mut target)
+            .map_err(failed)?;
+        let bar = drawing(spinner, options.points_count);
+        let drawn = fitted.try_draw(&mut crate::progress::Ticking::new(&mut target, &bar));
+        bar.finish_and_clear();
+        drawn
     };
     let plotted = drawn.map_err(crate::scene::engine_error).map_err(failed)?;
     let stats = format!(
@@ -215,13 +244,14 @@ pub fn render_gingerbread(options: &GingerbreadOptions) -> Result<(), String> {
     let failed = |e: tinyfractal::Error| format!("gingerbread: {e}");
     let mut target = options.common.display();
     let started = Instant::now();
-    let drawing = map
+    let spinner = measuring(options.iterations);
+    let fitted = map
         .fit(options.common.area(), Rgb888::new(0xD2, 0x69, 0x1E))
         .map_err(failed)?;
-    let plotted = drawing
-        .try_draw(&mut target)
-        .map_err(crate::scene::engine_error)
-        .map_err(failed)?;
+    let bar = drawing(spinner, options.iterations);
+    let drawn = fitted.try_draw(&mut crate::progress::Ticking::new(&mut target, &bar));
+    bar.finish_and_clear();
+    let plotted = drawn.map_err(crate::scene::engine_error).map_err(failed)?;
     let elapsed = started.elapsed();
     // The cycle, searched over at most 2^24 steps (two points of memory).
     let cycle = match map.cycle(1 << 24).map_err(failed)? {

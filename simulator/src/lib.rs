@@ -13,6 +13,7 @@ pub mod gallery;
 pub mod ifs_scene;
 pub mod output;
 pub mod palette;
+pub mod progress;
 pub mod scene;
 pub mod shape_scene;
 
