@@ -123,7 +123,7 @@ fn parse_point(text: &str) -> Result<(i64, i64), String> {
 pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
     crate::window_available(options.common.window)?;
     let (text, name) = match (&options.file, &options.name) {
-        (Some(path), Some(name)) => (crate::read_text(path)?, name.clone()),
+        (Some(path), Some(name)) => (crate::files::read_text(path)?, name.clone()),
         _ => {
             let rows: Vec<String> = options.map.iter().map(|m| m.replace(',', " ")).collect();
             (
