@@ -167,7 +167,9 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
             .fit_density(options.common.area(), palette, &mut counts)
             .map_err(failed)?
             .try_draw(&mut target);
-        drawing(spinner, 0).finish_and_clear();
+        if let Some(spinner) = spinner {
+            spinner.finish_and_clear();
+        }
         drawn
     } else {
         let fitted = picture

@@ -95,10 +95,9 @@ pub enum Tier {
     /// bits, at about three times its time on a 64-bit host, down to the same finest
     /// spacing (2⁻⁵⁴). Chosen where the calibration found that neither `Deep` nor
     /// perturbation keeps 99.9 % of dwells: deep views with long orbits near the boundary
-    /// (see [`View::new`]). The bits a chaotic orbit needs grow with its length (a pixel
-    /// near the cardioid's edge at 0.28 + 0.01i lost about 60 for every 1,700 iterations),
-    /// so at caps in the tens of thousands even 120 bits miss a few pixels in ten
-    /// thousand: 99.90 % on the worst view calibrated (docs/tiers.md).
+    /// (see [`View::new`]). The bits a chaotic orbit needs grow with its length, so at
+    /// caps in the tens of thousands even 120 bits miss a few pixels in ten thousand
+    /// (docs/tiers.md has the shares).
     Wide,
     /// Perturbation against one reference orbit (see [`ReferenceOrbit`](crate::ReferenceOrbit)):
     /// the reference in up to 192-bit fixed point, each pixel a difference from it in 62-bit
@@ -350,9 +349,8 @@ impl View {
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 15 => Tier::Standard,
             // Long orbits of deep views: past z + i = 25 at caps over 256, `Deep`'s 60 bits
-            // lose dwells near the boundary (near the cusp at 0.25, 10⁻⁶ wide at a cap of
-            // 1000: 98 %), and so do perturbation's 62-bit differences from an exact
-            // reference while z < 40, or at caps over 2048 (99.8 % on a view at z = 43).
+            // lose dwells near the boundary, and so do perturbation's 62-bit differences
+            // from an exact reference while z < 40, or at caps over 2048 (docs/tiers.md).
             Fractal::Mandelbrot
                 if iteration_bits > 8
                     && zoom_bits + iteration_bits > DEEP_UNTIL

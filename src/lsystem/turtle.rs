@@ -76,8 +76,7 @@ impl Start {
     /// for a walk in turtle units, and for a fitted or placed picture whose walk is not
     /// short enough for its rounding to stay below a pixel).
     pub(crate) fn too_fine(&self) -> bool {
-        let step = Step::new(self.step, self.step_shift);
-        step == Step::ZERO || step.below(MIN_STEP)
+        Step::new(self.step, self.step_shift).too_fine()
     }
 }
 
@@ -146,6 +145,11 @@ impl Step {
     fn times(self, factor: Real) -> Option<Self> {
         let product = i128::from(self.mantissa.to_bits()) * i128::from(factor.to_bits());
         Self::from_q64(product, self.shift)
+    }
+
+    /// Whether this step is 0 or below [`MIN_STEP`] (see [`Start::too_fine`]).
+    fn too_fine(self) -> bool {
+        self == Self::ZERO || self.below(MIN_STEP)
     }
 
     /// Whether this step is not 0 and below `min` (not 0) in size.
@@ -239,7 +243,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
         in_pixels: bool,
     ) -> Result<Self, Error> {
         let step = Step::new(start.step, start.step_shift);
-        if !in_pixels && start.too_fine() {
+        if !in_pixels && step.too_fine() {
             return Err(Error::Walk(WalkError::StepTooFine));
         }
         let mut turtle = Self {
