@@ -121,10 +121,10 @@ pub use error::{
     Unsupported, ViewError, WalkError,
 };
 pub use escape::drawing::{EscapeTime, Painter};
-pub use escape::perturbation::{ReferenceOrbit, ReferencePoint, REFERENCE_POINT_BYTES};
-pub use escape::schedule::{
-    Algorithm, Progress, Render, RenderStats, MAX_FAST_TOLERANCE, TILE, TILE_CELLS, TILE_ROWS,
-};
+pub use escape::kernel::MAX_FAST_TOLERANCE;
+pub use escape::perturbation::{ReferenceOrbit, REFERENCE_POINT_BYTES};
+pub use escape::scaled::ReferencePoint;
+pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, TILE, TILE_CELLS, TILE_ROWS};
 pub use escape::view::{
     Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
 };
@@ -141,7 +141,7 @@ pub use ifs::gingerbread::{
     Cycle, Gingerbread, GingerbreadDrawing, MapPoint, Points as GingerbreadPoints,
 };
 pub use ifs::maps::{AffineMap, Ifs, MAX_MAPS};
-pub use lsystem::alphabet::Dialect;
+pub use lsystem::alphabet::{DerivedSymbol, Dialect};
 pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
 pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
 pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
@@ -149,14 +149,15 @@ pub use lsystem::lsys::{LsysEntries, LsysEntry, LsysFile};
 pub use lsystem::parametric::context::MAX_CONTEXT_SLOTS;
 pub use lsystem::parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
 pub use lsystem::parametric::environment::{Environment, TurtleState};
-pub use lsystem::parametric::space::{Segment3, Segments3};
-pub use lsystem::parametric::{
-    DerivedModule, ParametricGrammar, ParametricWalker, Values, MAX_ARGUMENTS, MAX_CONSTANTS,
-    MAX_MODULES, MAX_PARAMS, MAX_PRODUCTIONS,
+pub use lsystem::parametric::grammar::{
+    ParametricGrammar, MAX_ARGUMENTS, MAX_CONSTANTS, MAX_MODULES, MAX_PRODUCTIONS,
 };
+pub use lsystem::parametric::space::{Segment3, Segments3};
+pub use lsystem::parametric::values::{DerivedModule, Values, MAX_PARAMS};
+pub use lsystem::parametric::walker::ParametricWalker;
 pub use lsystem::table::{cells_needed, Cell, MAX_BODY_NESTING};
 pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
-pub use lsystem::walker::{DerivedSymbol, Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
+pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::affine::{Affine2, Affine3};
 pub use math::random::Generator;
 pub use math::{

@@ -8,6 +8,9 @@ use std::path::PathBuf;
 use clap::builder::NonEmptyStringValueParser;
 use clap::{error::ErrorKind, Args, CommandFactory, Parser, Subcommand, ValueEnum};
 
+pub use crate::common::{parse_projection, Common, View, MAX_PIXELS, MAX_SIDE};
+use crate::common::{parse_size, parse_view};
+
 /// What the user asked for.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Command {
@@ -120,51 +123,6 @@ pub enum Source {
     },
 }
 
-/// Options every render takes.
-#[derive(Debug, Clone, PartialEq, Args)]
-pub struct Common {
-    /// Picture size in pixels, WxH (at most 16384 a side, 8192x8192 in all)
-    #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = parse_size)]
-    pub size: (u32, u32),
-    /// Write the picture there (default: NAME.png)
-    #[arg(long, value_name = "PNG")]
-    pub out: Option<PathBuf>,
-    /// Print one line of statistics
-    #[arg(long)]
-    pub stats: bool,
-    /// Show the picture in a window (needs the `window` feature and SDL2)
-    #[arg(long)]
-    pub window: bool,
-    /// Print the picture's box-counting dimension (pixels not black), `dimension=D.DDD`
-    #[arg(long)]
-    pub dimension: bool,
-}
-
-impl Common {
-    pub fn width(&self) -> u32 {
-        self.size.0
-    }
-
-    pub fn height(&self) -> u32 {
-        self.size.1
-    }
-
-    /// A display of `--size`.
-    pub fn display(
-        &self,
-    ) -> embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888> {
-        embedded_graphics_simulator::SimulatorDisplay::new(self.area().size)
-    }
-
-    /// The whole picture, `--size` at the origin.
-    pub fn area(&self) -> embedded_graphics::primitives::Rectangle {
-        embedded_graphics::primitives::Rectangle::new(
-            embedded_graphics::prelude::Point::zero(),
-            embedded_graphics::prelude::Size::new(self.width(), self.height()),
-        )
-    }
-}
-
 /// `render lsystem`'s arguments.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LSystemArgs {
@@ -182,16 +140,6 @@ pub struct LSystemArgs {
     pub depth_cue: bool,
     /// `--environment`: the world an open system grows in.
     pub environment: Option<crate::environment::Shape>,
-}
-
-/// A window of the fitted picture: `x0,y0,x1,y1` as fractions of the target it fills
-/// (0,0 top left, 1,1 bottom right; `0,0,1,1` is the whole picture).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct View {
-    pub x0: f64,
-    pub y0: f64,
-    pub x1: f64,
-    pub y1: f64,
 }
 
 /// `render mandelbrot` / `render julia`'s arguments, as text checked by the core.
@@ -467,20 +415,6 @@ struct LSystemOptions {
     common: Common,
 }
 
-/// `front`, `iso` or `perspective`.
-pub fn parse_projection(text: &str) -> Result<tinyfractal::Projection, String> {
-    match text {
-        "front" => Ok(tinyfractal::Projection::Front),
-        "iso" | "isometric" => Ok(tinyfractal::Projection::Isometric),
-        "perspective" => Ok(tinyfractal::Projection::Perspective {
-            distance: tinyfractal::Real::from_int(3),
-        }),
-        other => Err(format!(
-            "unknown projection `{other}`: give front, iso or perspective"
-        )),
-    }
-}
-
 #[derive(Debug, Args)]
 struct DeriveOptions {
     #[command(flatten)]
@@ -550,32 +484,6 @@ struct SystemOptions {
     /// The seed of stochastic productions (overrides the file's `seed:`)
     #[arg(long, value_name = "N")]
     seed: Option<u32>,
-}
-
-/// Smallest window side: a zoom of a million times keeps pixel positions in range.
-const MIN_VIEW_SIDE: f64 = 1e-6;
-
-fn parse_view(text: &str) -> Result<View, String> {
-    let bad = || {
-        format!(
-            "`{text}` is not X0,Y0,X1,Y1 with 0 <= X0 < X1 <= 1 and 0 <= Y0 < Y1 <= 1 \
-             (sides at least {MIN_VIEW_SIDE})"
-        )
-    };
-    let numbers: Vec<f64> = text
-        .split(',')
-        .map(|part| part.trim().parse::<f64>().map_err(|_| bad()))
-        .collect::<Result<_, _>>()?;
-    let [x0, y0, x1, y1] = numbers[..] else {
-        return Err(bad());
-    };
-    let within = |low: f64, high: f64| {
-        (0.0..=1.0).contains(&low) && high <= 1.0 && high - low >= MIN_VIEW_SIDE
-    };
-    if !(within(x0, x1) && within(y0, y1)) {
-        return Err(bad());
-    }
-    Ok(View { x0, y0, x1, y1 })
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -927,12 +835,6 @@ fn escape(julia: Option<(String, String)>, options: EscapeOptions) -> EscapeArgs
     }
 }
 
-/// The largest picture the CLI draws: 16384 pixels a side and 2²⁶ pixels (64 Mi, 8192×8192)
-/// in all, so a picture and its buffers stay within a few hundred MB.
-pub const MAX_SIDE: u32 = 16_384;
-/// See [`MAX_SIDE`].
-pub const MAX_PIXELS: u64 = 1 << 26;
-
 fn parse_rgb(text: &str) -> Result<u32, String> {
     let hex = text.trim().trim_start_matches('#');
     match u32::from_str_radix(hex, 16) {
@@ -941,21 +843,6 @@ fn parse_rgb(text: &str) -> Result<u32, String> {
             "`{text}` is not a colour RRGGBB in hex, e.g. 000000 or ffffff"
         )),
     }
-}
-
-fn parse_size(text: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("`{text}` is not WxH, e.g. 320x240");
-    let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
-    if w == 0 || h == 0 {
-        return Err(format!("{w}x{h} has no pixels: give at least 1x1"));
-    }
-    if w > MAX_SIDE || h > MAX_SIDE || u64::from(w) * u64::from(h) > MAX_PIXELS {
-        return Err(format!(
-            "{w}x{h} is larger than the largest picture: at most {MAX_SIDE} pixels a side and {MAX_PIXELS} in all (8192x8192)"
-        ));
-    }
-    Ok((w, h))
 }
 
 fn parse_degrees(text: &str) -> Result<tinyfractal::Angle, String> {

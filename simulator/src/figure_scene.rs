@@ -8,7 +8,7 @@ use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{Colors, Figure, FigureDrawing, Pose, Real, BODY};
 
-use crate::args::Common;
+use crate::common::Common;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum PoseName {

@@ -11,7 +11,7 @@ use embedded_graphics_simulator::SimulatorDisplay;
 use indicatif::ProgressBar;
 use tinyfractal::{Gingerbread, IfsFile, IfsPicture};
 
-use crate::args::Common;
+use crate::common::Common;
 
 /// Greens for the maps of an IFS, one a map (the fern's four).
 const GREENS: [Rgb888; 4] = [
@@ -82,7 +82,7 @@ pub struct IfsOptions {
     #[arg(long, value_name = "N", default_value_t = 0)]
     seed: u64,
     /// How a 3D IFS is seen (front, iso, perspective; 2D ones from the front)
-    #[arg(long, value_name = "VIEW", value_parser = crate::args::parse_projection)]
+    #[arg(long, value_name = "VIEW", value_parser = crate::common::parse_projection)]
     projection: Option<tinyfractal::Projection>,
     #[command(flatten)]
     common: Common,

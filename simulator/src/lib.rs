@@ -4,6 +4,7 @@
 
 pub mod animate;
 pub mod args;
+pub mod common;
 pub mod console;
 pub mod environment;
 pub mod escape_scene;

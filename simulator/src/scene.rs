@@ -10,7 +10,7 @@ use tinyfractal::{
     ParametricSegments, Segments, WalkStats,
 };
 
-use crate::args::View;
+use crate::common::View;
 use crate::palette::VGA;
 
 /// Expansion levels the CLI's walks hold: orders up to 256 (the core's default, for MCUs,

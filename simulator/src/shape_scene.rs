@@ -14,7 +14,7 @@ use tinyfractal::{
 };
 use tinyfractal_scenes::{Look, Scene, Work, CUBE_COLOUR};
 
-use crate::args::Common;
+use crate::common::Common;
 
 /// Ink for the carpet, the gasket and the terrain's profile: the palette's first colour.
 const INK: Rgb888 = crate::palette::VGA[0];

@@ -1,7 +1,9 @@
 //! One `Copy` error type for the whole crate, with messages that say how to fix the input:
 //! [`Error`] holds one small enum per stage (reading text, walking, fitting, views), each
-//! with its own `Display` in its own module. Nothing here names another module's items, so
-//! every family can return these without a cycle.
+//! with its own `Display` in its own module. It stands on `math` alone and names no family's
+//! items, so every family can return these without a cycle; the number layer returns its
+//! own small results ([`Overflow`](crate::math::Overflow),
+//! [`AngleOutOfRange`](crate::math::AngleOutOfRange)) that become `Error`s here.
 
 use core::fmt;
 

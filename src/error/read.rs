@@ -2,7 +2,8 @@
 
 use core::fmt;
 
-use super::Location;
+use super::{Error, Location};
+use crate::math::AngleOutOfRange;
 
 /// The text of a system is malformed. Each variant carries the offending value and, where
 /// the input is text, its [`Location`]; the message says how to fix it.
@@ -293,6 +294,17 @@ impl fmt::Display for ReadWarning {
     }
 }
 
+impl ReadError {
+    /// The number layer's [`AngleOutOfRange`] at the place the angle was read.
+    pub(crate) fn angle_at(out: AngleOutOfRange, at: Location) -> Error {
+        Error::Read(Self::AngleOutOfRange {
+            value: i64::from(out.divisions),
+            max: crate::math::MAX_ANGLE_DIVISIONS,
+            at,
+        })
+    }
+}
+
 impl fmt::Display for ReadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
@@ -425,7 +437,7 @@ impl fmt::Display for ReadError {
             ),
             Self::ProbabilitiesDoNotSum { sum, at } => {
                 write!(f, "the probabilities of the productions from {at} sum to ")?;
-                crate::math::decimal::write_four_decimals(f, sum)?;
+                sum.write_four_decimals(f)?;
                 write!(
                     f,
                     ", not 1: make them add up to 1, e.g. 0.33, 0.33 and 0.34"

@@ -3,7 +3,7 @@
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 
-use super::perturbation::ReferencePoint;
+use super::scaled::ReferencePoint;
 use super::schedule::{Algorithm, Render, RenderStats};
 use super::view::View;
 use crate::error::DrawError;

@@ -4,6 +4,7 @@
 pub(crate) mod drawing;
 pub(crate) mod kernel;
 pub(crate) mod perturbation;
+pub(crate) mod scaled;
 pub(crate) mod schedule;
 pub(crate) mod series;
 pub(crate) mod view;

@@ -31,8 +31,9 @@
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 use heapless::Vec;
 
-use super::kernel::{Kernel, Orbit, Part, Periodicity, TierOrbit, TierVisitor};
-use super::perturbation::{Perturbation, Perturbed, ReferenceOrbit, ReferencePoint};
+use super::kernel::{fast_tolerance, Kernel, Orbit, Part, Periodicity, TierOrbit, TierVisitor};
+use super::perturbation::{Perturbation, Perturbed, ReferenceOrbit};
+use super::scaled::ReferencePoint;
 use super::view::{Parts, Symmetry, Tier, View};
 use crate::error::Error;
 use crate::render::sink::DwellSink;
@@ -64,7 +65,7 @@ pub enum Algorithm {
     Exact,
     /// Boundary tracing for Mandelbrot dwells, Mariani–Silver subdivision for the rest,
     /// mirror symmetry and periodicity within 1/16 of a pixel, at most
-    /// [`MAX_FAST_TOLERANCE`]. The repeat test agrees with the exact orbit (tested over
+    /// [`MAX_FAST_TOLERANCE`](super::kernel::MAX_FAST_TOLERANCE). The repeat test agrees with the exact orbit (tested over
     /// random views). Tracing and subdivision can miss a speck: an escaping pixel inside
     /// the region that does not escape, joined to the outside by a channel narrower than
     /// a pixel. Over 150 random Mandelbrot views near the boundary (128×96, widths 10⁻⁵ to
@@ -81,26 +82,6 @@ impl Algorithm {
             Self::Exact => Periodicity::Exact,
             Self::Fast => Periodicity::Within(fast_tolerance(view.spacing)),
         }
-    }
-}
-
-/// Largest periodicity tolerance of a fast render, 2⁻²² in Q60 bits.
-///
-/// A tolerance of 1/16 of a pixel alone grows with the pixel: on a 1×1 view it was 0.2,
-/// and orbits that escape later were called inside. Over 30,000 random small views, a cap
-/// of 2⁻¹⁸ still changed a dwell, 2⁻²⁰ changed none; 2⁻²² leaves a margin of four. It
-/// costs 22 % more iterations on the full view at 320×240 (interior orbits must converge
-/// further) and nothing on zooms, whose 1/16 pixel is already smaller.
-pub const MAX_FAST_TOLERANCE: i64 = 1 << 38;
-
-/// The periodicity tolerance of a fast render with pixel spacing `spacing` (Q60 bits):
-/// 1/16 of a pixel, at most [`MAX_FAST_TOLERANCE`].
-pub(crate) const fn fast_tolerance(spacing: i64) -> i64 {
-    let sixteenth = spacing >> 4;
-    if sixteenth < MAX_FAST_TOLERANCE {
-        sixteenth
-    } else {
-        MAX_FAST_TOLERANCE
     }
 }
 

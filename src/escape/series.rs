@@ -21,7 +21,7 @@
 //! before that: their rounding grows with the iterations skipped, a few parts in 10⁷ of δ
 //! after 600, and at the deep-zoom view 6 of its 8192 pixels came out wrong.)
 
-use super::perturbation::{
+use super::scaled::{
     escaped, may_rebase, normalise, rebased, shr, step, ReferencePoint, Scaled, ZERO_EXPONENT,
 };
 use crate::math::wide::mul_wide;

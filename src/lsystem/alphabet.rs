@@ -5,6 +5,8 @@
 //! `@`) takes the number 0: no turn, colour 0, no change, and for `@` a step of 0 (what
 //! follows draws points).
 
+use core::fmt;
+
 use crate::error::{Error, Location, ReadError};
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
@@ -318,6 +320,28 @@ impl SymbolSet {
     #[inline]
     pub(crate) fn contains(self, symbol: u8) -> bool {
         symbol < 128 && self.0 & (1 << symbol) != 0
+    }
+}
+
+/// One symbol of a derived string, as it prints: the symbol (lower-cased in the Fractint
+/// dialect) and, for a numeric command, its number (`@` the factor, `\` and `/` degrees,
+/// `C`, `<`, `>` the colour), shown with at most 4 decimals, trailing zeros dropped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DerivedSymbol {
+    /// The symbol.
+    pub symbol: char,
+    /// The number of a numeric command.
+    pub number: Option<Real>,
+}
+
+impl fmt::Display for DerivedSymbol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use fmt::Write;
+        f.write_char(self.symbol)?;
+        let Some(number) = self.number else {
+            return Ok(());
+        };
+        number.write_four_decimals(f)
     }
 }
 

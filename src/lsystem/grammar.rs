@@ -8,8 +8,8 @@
 
 use heapless::Vec;
 
-use super::alphabet::{Command, Dialect, Plain};
-use super::walker::{pick, DerivedSymbol};
+use super::alphabet::{Command, DerivedSymbol, Dialect, Plain};
+use super::choice::pick;
 use crate::error::{Error, Location, ReadError};
 use crate::math::angle::Headings;
 use crate::math::wide::shift_round;
@@ -136,7 +136,7 @@ impl<'a> Grammar<'a> {
     ) -> Result<Self, Error> {
         // An empty axiom is valid (Fractint drew it as an empty screen): it draws nothing.
         let axiom = axiom.trim();
-        let headings = Headings::new(angle, at)?;
+        let headings = Headings::new(angle).map_err(|out| ReadError::angle_at(out, at))?;
         let mut grammar = Self {
             dialect,
             axiom_text: axiom,

@@ -21,7 +21,7 @@
 
 use super::alphabet::Dialect;
 use super::grammar::Grammar;
-use super::parametric::{constant, ParametricGrammar, Place, MAX_CONSTANTS};
+use super::parametric::grammar::{constant, ParametricGrammar, Place, MAX_CONSTANTS};
 use crate::error::{Error, Location, ReadError, Unsupported};
 use crate::math::{Angle, Real};
 

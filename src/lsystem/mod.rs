@@ -3,6 +3,7 @@
 //! table beside the walker for measuring and drawing without visiting every segment.
 
 pub(crate) mod alphabet;
+pub(crate) mod choice;
 pub(crate) mod drawing;
 pub(crate) mod fractint;
 pub(crate) mod grammar;

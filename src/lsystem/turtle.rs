@@ -460,7 +460,7 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                     .stack
                     .pop()
                     .ok_or(Error::Read(ReadError::UnbalancedBracket {
-                        at: crate::Location::default(),
+                        at: crate::error::Location::default(),
                     }))?;
                 // Fractint's `]` restores everything but the colour; ABOP's restores all.
                 let color = state.color;

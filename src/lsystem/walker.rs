@@ -10,14 +10,12 @@
 //! by a generator advanced in walk order: every walk of a derivation (the fit's and the
 //! draw's), on every target, makes the same choices.
 
-use core::fmt;
-
 use heapless::Vec;
 
+use super::alphabet::DerivedSymbol;
+use super::choice::{child_key, kept, mix};
 use super::grammar::{Grammar, Span};
 use crate::error::{Error, WalkError};
-use crate::math::decimal::write_four_decimals;
-use crate::math::Real;
 
 /// Frames a walker holds by default: orders 0 to 16.
 pub const DEFAULT_DEPTH: usize = 17;
@@ -129,32 +127,6 @@ pub(crate) fn check_order(order: u32, depth: usize) -> Result<(), Error> {
         return Err(order_too_high(order, depth));
     }
     Ok(())
-}
-
-/// MurmurHash3's 32-bit finaliser: every input bit moves every output bit.
-pub(crate) const fn mix(mut h: u32) -> u32 {
-    h ^= h >> 16;
-    h = h.wrapping_mul(0x85EB_CA6B);
-    h ^= h >> 13;
-    h = h.wrapping_mul(0xC2B2_AE35);
-    h ^ (h >> 16)
-}
-
-/// The hash of the expansion of the symbol at op `position` inside the expansion `parent`:
-/// 32 bits for the choice, of which the frame keeps 16.
-pub(crate) const fn child_key(parent: u16, position: u16) -> u32 {
-    mix((parent as u32).wrapping_mul(0x9E37_79B9) ^ ((position as u32) << 16))
-}
-
-/// Where `key` falls among `total` units of weight: each unit gets an equal share of the
-/// 2³² keys (a multiply and a shift, no division).
-pub(crate) const fn pick(key: u32, total: u64) -> u64 {
-    (key as u64 * total) >> 32
-}
-
-/// The 16 bits of a key a frame keeps.
-pub(crate) const fn kept(key: u32) -> u16 {
-    (key >> 16) as u16
 }
 
 /// Iterates over the symbols of an L-system's derivation of a given order.
@@ -319,28 +291,6 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
             }
             return Some(Ok(Next::Op(op)));
         }
-    }
-}
-
-/// One symbol of a derived string, as it prints: the symbol (lower-cased in the Fractint
-/// dialect) and, for a numeric command, its number (`@` the factor, `\` and `/` degrees,
-/// `C`, `<`, `>` the colour), shown with at most 4 decimals, trailing zeros dropped.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct DerivedSymbol {
-    /// The symbol.
-    pub symbol: char,
-    /// The number of a numeric command.
-    pub number: Option<Real>,
-}
-
-impl fmt::Display for DerivedSymbol {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        use fmt::Write;
-        f.write_char(self.symbol)?;
-        let Some(number) = self.number else {
-            return Ok(());
-        };
-        write_four_decimals(f, number)
     }
 }
 

@@ -4,23 +4,25 @@
 //! and `[`/`]` (a stack of saved maps) restores one bitwise. [`Affine3`], of space: the
 //! maps of a 3D IFS and the camera that turns the Sierpiński cube.
 
-use crate::error::{Error, WalkError};
 use crate::math::trig::{sin_cos_near, BinaryAngle};
 use crate::math::Real;
 
-fn overflow() -> Error {
-    Error::Walk(WalkError::Overflow)
-}
+/// A product or sum left the fixed-point range of [`Real`].
+///
+/// The number layer's own small result, so that it knows nothing of walks; the crate's
+/// `Error` converts it with `?`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Overflow;
 
-fn mul_add(x: Real, y: Real, z: Real, w: Real) -> Result<Real, Error> {
+fn mul_add(x: Real, y: Real, z: Real, w: Real) -> Result<Real, Overflow> {
     x.checked_mul(y)
         .and_then(|p| z.checked_mul(w).and_then(|q| p.checked_add(q)))
-        .ok_or_else(overflow)
+        .ok_or(Overflow)
 }
 
 /// C: x' = a·x + b·y + e, y' = c·x + d·y + f.
 ///
-/// Products that leave the fixed-point range are [`WalkError::Overflow`].
+/// Products that leave the fixed-point range are an [`Overflow`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Affine2 {
     a: Real,
@@ -43,38 +45,38 @@ impl Affine2 {
     };
 
     /// C·(x, y), in space at z = 0.
-    pub fn apply(&self, x: Real, y: Real) -> Result<[Real; 3], Error> {
+    pub fn apply(&self, x: Real, y: Real) -> Result<[Real; 3], Overflow> {
         Ok([
             mul_add(self.a, x, self.b, y)?
                 .checked_add(self.e)
-                .ok_or_else(overflow)?,
+                .ok_or(Overflow)?,
             mul_add(self.c, x, self.d, y)?
                 .checked_add(self.f)
-                .ok_or_else(overflow)?,
+                .ok_or(Overflow)?,
             Real::ZERO,
         ])
     }
 
     /// C · translate(dx, dy).
-    pub fn translate(&mut self, dx: Real, dy: Real) -> Result<(), Error> {
+    pub fn translate(&mut self, dx: Real, dy: Real) -> Result<(), Overflow> {
         let [e, f, _] = self.apply(dx, dy)?;
         (self.e, self.f) = (e, f);
         Ok(())
     }
 
     /// C · rotate(angle), counter-clockwise.
-    pub(crate) fn rotate(&mut self, angle: BinaryAngle) -> Result<(), Error> {
+    pub(crate) fn rotate(&mut self, angle: BinaryAngle) -> Result<(), Overflow> {
         let (cos, sin) = angle.cos_sin();
         self.rotate_by(cos, sin)
     }
 
     /// C · rotate, given the cosine and sine in Q30.
-    fn rotate_by(&mut self, cos: i32, sin: i32) -> Result<(), Error> {
+    fn rotate_by(&mut self, cos: i32, sin: i32) -> Result<(), Overflow> {
         let (cos, sin) = (
             Real::from_bits(i64::from(cos) << 2),
             Real::from_bits(i64::from(sin) << 2),
         );
-        let minus_sin = Real::ZERO.checked_sub(sin).ok_or_else(overflow)?;
+        let minus_sin = Real::ZERO.checked_sub(sin).ok_or(Overflow)?;
         let (a, b, c, d) = (self.a, self.b, self.c, self.d);
         self.a = mul_add(a, cos, b, sin)?;
         self.b = mul_add(a, minus_sin, b, cos)?;
@@ -84,8 +86,8 @@ impl Affine2 {
     }
 
     /// C · scale(sx, sy).
-    pub fn scale(&mut self, sx: Real, sy: Real) -> Result<(), Error> {
-        let times = |v: Real, s: Real| v.checked_mul(s).ok_or_else(overflow);
+    pub fn scale(&mut self, sx: Real, sy: Real) -> Result<(), Overflow> {
+        let times = |v: Real, s: Real| v.checked_mul(s).ok_or(Overflow);
         self.a = times(self.a, sx)?;
         self.c = times(self.c, sx)?;
         self.b = times(self.b, sy)?;
@@ -96,7 +98,7 @@ impl Affine2 {
     /// C · rotate(degrees), with the sine and cosine within 2·10⁻⁹ (the table turned by the
     /// angle-sum formulas, not the interpolated table's 3·10⁻⁷): a hierarchy of joints
     /// keeps its limbs' lengths to 10⁻⁸.
-    pub fn rotate_degrees(&mut self, degrees: Real) -> Result<(), Error> {
+    pub fn rotate_degrees(&mut self, degrees: Real) -> Result<(), Overflow> {
         // The angle as a fraction of a turn: degrees (Q32) over 360 · 2^32.
         const TURN: i128 = 360 << 32;
         let numerator = i128::from(degrees.to_bits()).rem_euclid(TURN);

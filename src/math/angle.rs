@@ -5,10 +5,18 @@ use heapless::Vec;
 
 use super::real::Real;
 use super::trig;
-use crate::error::{Error, Location, ReadError};
 
 /// Most divisions of a full turn for `Angle n` (Fractint allowed 50).
 pub const MAX_ANGLE_DIVISIONS: u16 = 64;
+
+/// `Angle n` with `n` of 0 or over [`MAX_ANGLE_DIVISIONS`].
+///
+/// The number layer's own small result: the reader that found the angle adds where.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AngleOutOfRange {
+    /// The divisions asked for.
+    pub divisions: u16,
+}
 
 /// How far `+` and `-` turn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -57,7 +65,7 @@ impl Headings {
         }
     }
 
-    pub(crate) fn new(angle: Angle, at: Location) -> Result<Self, Error> {
+    pub(crate) fn new(angle: Angle) -> Result<Self, AngleOutOfRange> {
         let mut headings = Self {
             half_table: Vec::new(),
             divisions: 0,
@@ -67,11 +75,7 @@ impl Headings {
         match angle {
             Angle::Divisions(n) => {
                 if n == 0 || n > MAX_ANGLE_DIVISIONS {
-                    return Err(Error::Read(ReadError::AngleOutOfRange {
-                        value: i64::from(n),
-                        max: MAX_ANGLE_DIVISIONS,
-                        at,
-                    }));
+                    return Err(AngleOutOfRange { divisions: n });
                 }
                 headings.divisions = n;
                 for k in 0..=n / 2 {
@@ -175,7 +179,7 @@ mod tests {
     #[test]
     fn every_heading_is_its_exact_direction() {
         for n in 1..=MAX_ANGLE_DIVISIONS {
-            let headings = Headings::new(Angle::Divisions(n), Location::default()).unwrap();
+            let headings = Headings::new(Angle::Divisions(n)).unwrap();
             for k in 0..n {
                 assert_eq!(
                     headings.cos_sin(k),

@@ -1,7 +1,6 @@
 //! Decimal text to fixed point, exactly rounded: the one parser behind `Real`, `Coord`
 //! and angles in degrees.
 
-use super::real::Real;
 use super::wide::div_round;
 
 /// Significant digits a number keeps: 10¹⁹ < 2⁶⁴, so that shifted by up to 62 bits it still
@@ -240,13 +239,15 @@ pub(crate) fn write_scientific_digits(
     }
 }
 
-/// `value` rounded half away from zero to 4 decimals, trailing zeros dropped: how derived
-/// strings print numbers (`A(1.1429,0)`, `@0.5`).
+/// Fixed point `bits` with `frac_bits` fractional bits rounded half away from zero to 4
+/// decimals, trailing zeros dropped: how derived strings print numbers (`A(1.1429,0)`,
+/// `@0.5`).
 pub(crate) fn write_four_decimals(
     f: &mut core::fmt::Formatter<'_>,
-    value: Real,
+    bits: i64,
+    frac_bits: u32,
 ) -> core::fmt::Result {
-    let scaled = div_round(i128::from(value.to_bits()) * 10_000, 1 << Real::FRAC_BITS);
+    let scaled = div_round(i128::from(bits) * 10_000, 1 << frac_bits);
     let sign = if scaled < 0 { "-" } else { "" };
     let (whole, fraction) = (
         scaled.unsigned_abs() / 10_000,

@@ -15,7 +15,8 @@ pub(crate) mod real;
 pub(crate) mod trig;
 pub(crate) mod wide;
 
-pub use angle::{Angle, MAX_ANGLE_DIVISIONS};
+pub use affine::Overflow;
+pub use angle::{Angle, AngleOutOfRange, MAX_ANGLE_DIVISIONS};
 pub use big::{DeepCoord, DeepParseError, DEEP_LIMBS, MAX_DECIMAL_PLACES};
 pub use coord::Coord;
 pub use real::Real;

@@ -10,7 +10,7 @@ use core::fmt;
 
 use fixed::types::I32F32;
 
-use super::decimal::parse_fixed;
+use super::decimal::{parse_fixed, write_four_decimals};
 use super::wide::{div_round, shift_round};
 
 /// A signed fixed-point number with 32 integer and 32 fractional bits.
@@ -194,6 +194,12 @@ impl Real {
     /// The absolute value, saturating.
     pub fn abs(self) -> Self {
         Self(self.0.saturating_abs())
+    }
+
+    /// Writes the value rounded half away from zero to 4 decimals, trailing zeros dropped:
+    /// how derived strings print numbers (`A(1.1429,0)`, `@0.5`).
+    pub(crate) fn write_four_decimals(self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write_four_decimals(f, self.to_bits(), Self::FRAC_BITS)
     }
 }
 

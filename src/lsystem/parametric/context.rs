@@ -23,7 +23,8 @@
 
 use heapless::Vec;
 
-use super::{path_of, Expansion, Frame, Neighbour, ParametricGrammar, Work};
+use super::expansion::{path_of, Expansion, Frame, Work};
+use super::grammar::{Neighbour, ParametricGrammar};
 use crate::error::{Error, WalkError};
 
 /// Left contexts a walk saves at once by default (its `SLOTS`): one per level below each
@@ -189,7 +190,7 @@ pub(crate) fn expand_in_context<const DEPTH: usize>(
         end: 0,
         key: 0,
         path: 0,
-        bound: super::Values::default(),
+        bound: super::values::Values::default(),
     });
     let id = path_of(parent.path, at);
     if let Some(expansion) = expansions.get(level, id, take) {

@@ -17,13 +17,13 @@
 
 use heapless::Vec;
 
-use super::draw::{turtle_action, Action};
-use super::space::Segment3;
-use super::DerivedModule;
+use super::action::{turtle_action, Action};
+use super::values::DerivedModule;
 use crate::error::{Error, WalkError};
 use crate::math::affine::Affine2;
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
+use crate::render::space::Segment3;
 
 /// The matrix turtle: C and a stack of saved ones (`STACK` deep).
 #[derive(Debug, Clone)]

@@ -17,11 +17,13 @@
 use embedded_graphics::prelude::*;
 use heapless::Vec;
 
+use super::action::{turtle_action, Action};
 use super::context::MAX_CONTEXT_SLOTS;
-use super::draw::{turtle_action, Action};
 use super::environment::{Environment, Held, TurtleState};
+use super::grammar::ParametricGrammar;
 use super::matrix::MatrixTurtle;
-use super::{DerivedModule, ParametricGrammar, ParametricWalker};
+use super::values::DerivedModule;
+use super::walker::ParametricWalker;
 use crate::error::{DrawError, Error, WalkError};
 use crate::lsystem::turtle::{next_segment, DEFAULT_STACK};
 use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
@@ -30,9 +32,9 @@ use crate::math::trig::BinaryAngle;
 use crate::math::{Angle, Real};
 use crate::render::palette::Palette;
 use crate::render::raster::draw_line;
-use crate::render::space::{middle, SpaceFit};
 #[cfg(doc)]
-use crate::DEPTH_LEVELS;
+use crate::render::space::DEPTH_LEVELS;
+use crate::render::space::{middle, SpaceFit};
 
 pub use crate::render::space::Segment3;
 

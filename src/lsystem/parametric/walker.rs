@@ -1,0 +1,213 @@
+//! The walk of a parametric system's derivation: a stack of frames, one a level, and the
+//! left contexts and remembered expansions a context-sensitive system needs.
+
+use heapless::Vec;
+
+use super::context::{expand_in_context, Branches, Expansions, Levels, MAX_CONTEXT_SLOTS};
+use super::expansion::{Expansion, Frame, Work};
+use super::expr::Query;
+use super::grammar::ParametricGrammar;
+use super::values::{DerivedModule, Values};
+use crate::error::Error;
+use crate::lsystem::choice::{kept, mix};
+use crate::lsystem::walker::{check_order, order_too_high};
+
+/// The modules of a parametric system's derivation at an order, in order, without
+/// building the string. Yields `Err` once (an arithmetic error, the budget, a capacity)
+/// and ends.
+///
+/// For context-sensitive systems it also keeps, per level, the module a left context
+/// sees, and finds right contexts by reading ahead from its frames (the README's `.lsys`
+/// section says how, and what it costs).
+#[derive(Debug, Clone)]
+pub struct ParametricWalker<
+    'g,
+    const DEPTH: usize = { crate::lsystem::walker::DEFAULT_DEPTH },
+    const SLOTS: usize = MAX_CONTEXT_SLOTS,
+> {
+    grammar: &'g ParametricGrammar,
+    order: u32,
+    frames: Vec<Frame, DEPTH>,
+    /// An error to hand out first (an order beyond `DEPTH`).
+    pending: Option<Error>,
+    work: Work,
+    levels: Levels<DEPTH>,
+    branches: Branches<SLOTS>,
+    expansions: Expansions<DEPTH>,
+}
+
+impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLOTS> {
+    /// A walk of `grammar` at `order`; fails if the order needs more than `DEPTH` levels.
+    pub fn new(grammar: &'g ParametricGrammar, order: u32) -> Result<Self, Error> {
+        check_order(order, DEPTH)?;
+        Ok(Self::starting(
+            grammar,
+            order,
+            crate::lsystem::walker::DEFAULT_BUDGET,
+        ))
+    }
+
+    /// A walk of `grammar` at `order` capped at `budget` modules, built in one piece (a
+    /// walk is kilobytes: every `Result` or builder step around it is a copy on an MCU's
+    /// stack). An order beyond `DEPTH` is its first item, an error.
+    #[inline(always)]
+    pub(crate) fn starting(grammar: &'g ParametricGrammar, order: u32, budget: u64) -> Self {
+        let mut frames = Vec::new();
+        let pending = check_order(order, DEPTH).err();
+        if pending.is_none() {
+            let (position, end) = grammar.axiom;
+            // Cannot fail: DEPTH > order >= 0.
+            let _ = frames.push(Frame {
+                position,
+                end,
+                key: kept(mix(grammar.seed)),
+                path: 0,
+                bound: Values::default(),
+            });
+        }
+        Self {
+            grammar,
+            order,
+            frames,
+            pending,
+            work: Work { read: 0, budget },
+            levels: Levels::new(),
+            branches: Branches::new(),
+            expansions: Expansions::new(),
+        }
+    }
+
+    /// Stops the walk with [`WalkError::BudgetExhausted`] after `symbols` modules are read
+    /// (context searches included).
+    #[must_use]
+    pub fn with_budget(mut self, symbols: u64) -> Self {
+        self.work.budget = symbols;
+        self
+    }
+
+    /// `%` (cpfg, L-Py): drops the rest of the branch it is in, up to the `]` that closes
+    /// the branch (left to be read), or to the end of the string. The rest of the branch
+    /// may go on beyond the frame `%` is in: it is then the rest of the frame above, and so
+    /// up, skipped unexpanded.
+    fn cut(&mut self) {
+        let grammar = self.grammar;
+        let mut depth = 0usize;
+        while let Some(top) = self.frames.last_mut() {
+            while top.position < top.end {
+                match grammar.module(top.position).symbol {
+                    b'[' => depth += 1,
+                    b']' if depth == 0 => return,
+                    b']' => depth -= 1,
+                    _ => {}
+                }
+                top.position += 1;
+            }
+            self.frames.pop();
+        }
+    }
+
+    /// The next module; `query` answers `env(k)` (the environment, about the turtle where
+    /// the walk is).
+    pub(crate) fn next_queried(&mut self, query: Query) -> Option<Result<DerivedModule, Error>> {
+        if let Some(error) = self.pending.take() {
+            return Some(Err(error));
+        }
+        match self.step(query) {
+            Ok(module) => module.map(Ok),
+            Err(error) => {
+                self.frames.clear();
+                Some(Err(error))
+            }
+        }
+    }
+
+    /// Modules read so far, context searches included.
+    pub const fn symbols_read(&self) -> u64 {
+        self.work.read
+    }
+
+    /// The next module, or `None` at the end.
+    fn step(&mut self, query: Query) -> Result<Option<DerivedModule>, Error> {
+        let grammar = self.grammar;
+        let contextual = grammar.has_context();
+        let order = usize::try_from(self.order).unwrap_or(usize::MAX);
+        loop {
+            let level = self.frames.len().wrapping_sub(1);
+            let Some(top) = self.frames.last_mut() else {
+                return Ok(None);
+            };
+            if top.position >= top.end {
+                self.frames.pop();
+                continue;
+            }
+            self.work.tick()?;
+            let at = top.position;
+            top.position += 1;
+            let parent = *top;
+            let module = grammar.read(at, &parent.bound, query)?;
+            if module.symbol == b'%' {
+                self.cut();
+                continue;
+            }
+            let derived = DerivedModule {
+                symbol: char::from(module.symbol),
+                values: module.values,
+            };
+            if level >= order {
+                return Ok(Some(derived));
+            }
+            if contextual {
+                match module.symbol {
+                    b'[' => {
+                        self.branches.open(&self.levels, level, order)?;
+                        return Ok(Some(derived));
+                    }
+                    b']' => {
+                        self.branches.close(&mut self.levels, level, order);
+                        return Ok(Some(derived));
+                    }
+                    _ => {}
+                }
+            }
+            let expansion = if grammar.is_contextual(module.symbol) {
+                expand_in_context(
+                    grammar,
+                    &module,
+                    (at, true),
+                    &self.frames,
+                    &self.levels,
+                    &mut self.expansions,
+                    &mut self.work,
+                )?
+            } else {
+                grammar.expand(&module, at, &parent, (None, None), query)?
+            };
+            if contextual {
+                self.levels.visit(grammar, level, &module);
+            }
+            let frame = match expansion {
+                Expansion::Successor(frame) | Expansion::Kept(frame) => frame,
+                Expansion::Final => {
+                    if contextual {
+                        for below in level + 1..order {
+                            self.levels.visit(grammar, below, &module);
+                        }
+                    }
+                    return Ok(Some(derived));
+                }
+            };
+            // Cannot fail: `new` checked that order + 1 <= DEPTH.
+            self.frames
+                .push(frame)
+                .map_err(|_| order_too_high(self.order, DEPTH))?;
+        }
+    }
+}
+
+impl<const DEPTH: usize, const SLOTS: usize> Iterator for ParametricWalker<'_, DEPTH, SLOTS> {
+    type Item = Result<DerivedModule, Error>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.next_queried(None)
+    }
+}
