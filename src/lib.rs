@@ -161,8 +161,8 @@ pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
 pub use math::affine::{Affine2, Affine3};
 pub use math::random::Generator;
 pub use math::{
-    Angle, Coord, DeepCoord, DeepParseError, Real, DEEP_LIMBS, MAX_ANGLE_DIVISIONS,
-    MAX_DECIMAL_PLACES,
+    Angle, AngleOutOfRange, Coord, DeepCoord, DeepParseError, Overflow, Real, DEEP_LIMBS,
+    MAX_ANGLE_DIVISIONS, MAX_DECIMAL_PLACES,
 };
 pub use render::fit::{Orientation, DEFAULT_MARGIN};
 pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};

@@ -77,7 +77,7 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
         }
     }
 
-    /// Stops the walk with [`WalkError::BudgetExhausted`] after `symbols` modules are read
+    /// Stops the walk with [`WalkError::BudgetExhausted`](crate::error::WalkError::BudgetExhausted) after `symbols` modules are read
     /// (context searches included).
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
