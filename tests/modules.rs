@@ -143,7 +143,7 @@ fn named_paths(code: &str, module: &[String]) -> Vec<Vec<String>> {
         let after = &rest[start..];
         let Some(end) = after.find(';') else { break };
         for path in expand_tree(&after[..end]) {
-            paths.extend(absolute(&path, module));
+            paths.extend(absolute(&path, module, true));
         }
         rest = &after[end..];
     }
@@ -162,7 +162,7 @@ fn named_paths(code: &str, module: &[String]) -> Vec<Vec<String>> {
                     .filter(|s| !s.is_empty())
                     .map(str::to_string)
                     .collect();
-                paths.extend(absolute(&segments, module));
+                paths.extend(absolute(&segments, module, false));
             }
             rest = &tail[end.max(1)..];
         }
@@ -233,12 +233,14 @@ fn expand_tree(tree: &str) -> Vec<Vec<String>> {
         .collect()
 }
 
-/// A path as segments after `crate`, or `None` for another crate's.
-fn absolute(path: &[String], module: &[String]) -> Option<Vec<String>> {
+/// A path as segments after `crate`. A path of a `use` that starts with a plain name is
+/// taken as relative (`use read::ReadError` in `error`): if the name is no child module, it
+/// reaches the module itself and draws no arrow. `None` for another path in code.
+fn absolute(path: &[String], module: &[String], in_use: bool) -> Option<Vec<String>> {
     let mut base: Vec<String> = match path.first()?.as_str() {
         "crate" => Vec::new(),
-        "self" => module.to_vec(),
-        "super" => module.to_vec(),
+        "self" | "super" => module.to_vec(),
+        _ if in_use => return Some([module, path].concat()),
         _ => return None,
     };
     let mut rest = &path[1..];

@@ -212,7 +212,7 @@ fn zoom(
         .enumerate()
         .find_map(|(index, view)| escape_scene::TierWarning::of(view).map(|w| (index, w)))
     {
-        crate::warn(&format!(
+        crate::console::warn(&format!(
             "the frame at width {} and those like it: {}",
             widths[index],
             warning.message(&views[index])
@@ -287,8 +287,8 @@ fn growth(
     emit: &Emit<'_>,
 ) -> Result<String, String> {
     let mut text = String::new();
-    let (loaded, name, _) = crate::load(source, &mut text)?;
-    let crate::Loaded::Plain(grammar) = loaded else {
+    let (loaded, name, _) = crate::systems::load(source, &mut text)?;
+    let crate::systems::Loaded::Plain(grammar) = loaded else {
         return Err(format!(
             "{name}: growth animates plain systems; this one is parametric"
         ));

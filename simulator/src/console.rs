@@ -31,3 +31,22 @@ pub fn complain(text: &str) {
     let mut err = io::stderr().lock();
     let _ = err.write_all(text.as_bytes()).and_then(|()| err.flush());
 }
+
+/// Why a command failed, and so its exit status: a run's error (1), or a usage error
+/// found only once the input was read (2), such as an option the file's system does not
+/// take.
+pub enum Failure {
+    Run(String),
+    Usage(String),
+}
+
+impl From<String> for Failure {
+    fn from(message: String) -> Self {
+        Self::Run(message)
+    }
+}
+
+/// Says something the user should know on stderr; the run goes on.
+pub fn warn(message: &str) {
+    complain(&format!("tinyfractal: warning: {message}\n"));
+}

@@ -381,3 +381,32 @@ fn gradient_keys(name: &str) -> Option<&'static [Rgb888]> {
         _ => None,
     }
 }
+
+/// `render mandelbrot` and `render julia`: the view drawn, with `--dwell`.
+pub fn render_escape(arguments: &crate::args::EscapeArgs) -> Result<(), String> {
+    let common = &arguments.common;
+    let name = if arguments.julia.is_some() {
+        "julia"
+    } else {
+        "mandelbrot"
+    };
+    let size = embedded_graphics::geometry::Size::new(common.width(), common.height());
+    let request = request(arguments, size);
+    crate::delivery::window_available(common.window)?;
+    // Everything is computed and every output checked before anything is written.
+    let rendered = render(&request).map_err(|e| format!("{name}: {e}"))?;
+    if let Some(warning) = TierWarning::of(&rendered.view) {
+        crate::console::warn(&warning.message(&rendered.view));
+    }
+    crate::delivery::deliver(
+        common,
+        name,
+        &rendered.display,
+        |plan| {
+            if let Some(path) = &arguments.dwell {
+                plan.add("--dwell", path, |w| write_dwells(&rendered, w));
+            }
+        },
+        &stats_line(&rendered),
+    )
+}

@@ -109,7 +109,7 @@ pub fn cycle(
 
 /// `render figure`.
 pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
+    crate::delivery::window_available(options.common.window)?;
     let started = std::time::Instant::now();
     if let Some(frames) = options.frames {
         if frames == 0 {
@@ -151,7 +151,7 @@ pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
         "lines={drawn} elapsed_ms={:.3}",
         started.elapsed().as_secs_f64() * 1e3
     );
-    crate::deliver(
+    crate::delivery::deliver(
         &options.common,
         "figure",
         &display,

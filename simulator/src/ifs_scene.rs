@@ -121,7 +121,7 @@ fn parse_point(text: &str) -> Result<(i64, i64), String> {
 
 /// `render ifs`.
 pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
+    crate::delivery::window_available(options.common.window)?;
     let (text, name) = match (&options.file, &options.name) {
         (Some(path), Some(name)) => (crate::files::read_text(path)?, name.clone()),
         _ => {
@@ -138,7 +138,7 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
         .and_then(|entry| entry.ifs())
         .map_err(failed)?;
     if ifs.never_chosen() > 0 {
-        crate::warn(&format!(
+        crate::console::warn(&format!(
             "{name}: {} of its maps have a probability of 0 or less, or are passed by the \
              sums before them: drawn as Fractint draws them, never chosen (the last map takes \
              what the others leave)",
@@ -187,7 +187,7 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
         started.elapsed().as_secs_f64() * 1e3
     );
     let three_d = ifs.is_3d();
-    crate::deliver(
+    crate::delivery::deliver(
         &options.common,
         &name.to_lowercase(),
         &target,
@@ -236,7 +236,7 @@ pub fn render_entry(
 
 /// `render gingerbread`.
 pub fn render_gingerbread(options: &GingerbreadOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
+    crate::delivery::window_available(options.common.window)?;
     let map = Gingerbread {
         m: options.m,
         l: options.l,
@@ -264,7 +264,7 @@ pub fn render_gingerbread(options: &GingerbreadOptions) -> Result<(), String> {
         "points={plotted} {cycle} elapsed_ms={:.3}",
         elapsed.as_secs_f64() * 1e3
     );
-    crate::deliver(
+    crate::delivery::deliver(
         &options.common,
         "gingerbread",
         &target,

@@ -156,13 +156,13 @@ fn render_picture<T>(
 where
     T: Drawable<Color = Rgb888>,
 {
-    crate::window_available(common.window)?;
+    crate::delivery::window_available(common.window)?;
     let mut target = common.display();
     let started = Instant::now();
     let drawing = fit(common.area()).map_err(|e| format!("{name}: {e}"))?;
     let Ok(output) = drawing.draw(&mut target);
     let line = format!("{} {}", counts(output), milliseconds(started.elapsed()));
-    crate::deliver(common, name, &target, |_| {}, &line)
+    crate::delivery::deliver(common, name, &target, |_| {}, &line)
 }
 
 /// `render carpet`.
@@ -205,7 +205,7 @@ pub fn render_cube(options: &CubeOptions) -> Result<(), String> {
 
 /// `render terrain`.
 pub fn render_terrain(options: &TerrainOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
+    crate::delivery::window_available(options.common.window)?;
     let failed = |e: tinyfractal::Error| format!("terrain: {e}");
     let terrain = Terrain::new(options.samples, options.displacement.displacement())
         .with_ends(options.ends.0, options.ends.1);
@@ -220,7 +220,7 @@ pub fn render_terrain(options: &TerrainOptions) -> Result<(), String> {
         "samples={samples} min={low} max={high} {}",
         milliseconds(started.elapsed())
     );
-    crate::deliver(
+    crate::delivery::deliver(
         &options.common,
         "terrain",
         &target,
@@ -240,7 +240,7 @@ pub fn render_terrain(options: &TerrainOptions) -> Result<(), String> {
 
 /// `render terrain2d`.
 pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
-    crate::window_available(options.common.window)?;
+    crate::delivery::window_available(options.common.window)?;
     let failed = |e: tinyfractal::Error| format!("terrain2d: {e}");
     let map =
         TerrainMap::new(options.samples, options.displacement.displacement()).wrapped(options.wrap);
@@ -262,7 +262,7 @@ pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
     let as_real = |v: i32| Real::from_bits(i64::from(v) << 16);
     let side = options.samples as usize;
     let heights = &heights;
-    crate::deliver(
+    crate::delivery::deliver(
         &options.common,
         "terrain2d",
         &target,

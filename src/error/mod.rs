@@ -7,13 +7,17 @@
 
 use core::fmt;
 
+use crate::math::Overflow;
+
 mod fit;
+mod location;
 mod parameter;
 mod read;
 mod view;
 mod walk;
 
 pub use fit::FitError;
+pub use location::Location;
 pub use parameter::ParameterError;
 pub use read::{ReadError, ReadWarning, Unsupported};
 pub use view::ViewError;
@@ -27,33 +31,6 @@ pub(crate) fn only_target_errors<T: Default, E>(result: Result<T, DrawError<E>>)
         Ok(value) => Ok(value),
         Err(DrawError::Target(error)) => Err(error),
         Err(DrawError::Fractal(_)) => Ok(T::default()),
-    }
-}
-
-/// Where in the source text a problem was found (1-based; `line` is 0 for text that did not
-/// come from a file, such as a rule passed on the command line).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct Location {
-    /// 1-based line in the file, or 0 when the text was not read from a file.
-    pub line: u32,
-    /// 1-based column (in bytes) within the line or the inline text.
-    pub column: u32,
-}
-
-impl Location {
-    /// A location inside inline text (no file line).
-    pub const fn column(column: u32) -> Self {
-        Self { line: 0, column }
-    }
-}
-
-impl fmt::Display for Location {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.line == 0 {
-            write!(f, "column {}", self.column)
-        } else {
-            write!(f, "line {}, column {}", self.line, self.column)
-        }
     }
 }
 
@@ -115,6 +92,13 @@ group!(
     View(ViewError),
     Parameter(ParameterError)
 );
+
+/// A map of the number layer left the fixed-point range while walking.
+impl From<Overflow> for Error {
+    fn from(_: Overflow) -> Self {
+        Self::Walk(WalkError::Overflow)
+    }
+}
 
 /// An error while drawing: either the engine's own [`Error`] or the display's.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

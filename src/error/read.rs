@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use super::{Error, Location};
+use super::location::Location;
 use crate::math::AngleOutOfRange;
 
 /// The text of a system is malformed. Each variant carries the offending value and, where
@@ -296,12 +296,12 @@ impl fmt::Display for ReadWarning {
 
 impl ReadError {
     /// The number layer's [`AngleOutOfRange`] at the place the angle was read.
-    pub(crate) fn angle_at(out: AngleOutOfRange, at: Location) -> Error {
-        Error::Read(Self::AngleOutOfRange {
+    pub(crate) fn angle_at(out: AngleOutOfRange, at: Location) -> Self {
+        Self::AngleOutOfRange {
             value: i64::from(out.divisions),
             max: crate::math::MAX_ANGLE_DIVISIONS,
             at,
-        })
+        }
     }
 }
 

@@ -2,8 +2,6 @@
 
 use core::fmt;
 
-use crate::math::Overflow;
-
 /// A walk stopped at one of its bounds. Nothing here is a bug in the input text: each
 /// message says which bound to raise or which order to lower.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -65,13 +63,6 @@ pub enum Arithmetic {
     OutOfRange,
     /// An expression nested deeper than the evaluation stack.
     TooDeep,
-}
-
-/// A map of the number layer left the fixed-point range while walking.
-impl From<Overflow> for super::Error {
-    fn from(_: Overflow) -> Self {
-        Self::Walk(WalkError::Overflow)
-    }
 }
 
 impl fmt::Display for WalkError {

@@ -4,8 +4,8 @@
 //! and `[`/`]` (a stack of saved maps) restores one bitwise. [`Affine3`], of space: the
 //! maps of a 3D IFS and the camera that turns the Sierpiński cube.
 
-use crate::math::trig::{sin_cos_near, BinaryAngle};
-use crate::math::Real;
+use super::real::Real;
+use super::trig::{sin_cos_near, BinaryAngle};
 
 /// A product or sum left the fixed-point range of [`Real`].
 ///

@@ -1,0 +1,134 @@
+//! `tinyfractal explore`: the explorer a command starts, in an SDL window (with the
+//! `window` feature; without it the arguments are checked and the run refused).
+
+#[cfg(feature = "window")]
+use embedded_graphics::pixelcolor::Rgb888;
+#[cfg(feature = "window")]
+use embedded_graphics_simulator::SimulatorDisplay;
+
+use crate::args::ExploreArgs;
+#[cfg(not(feature = "window"))]
+use crate::delivery::window_available;
+use crate::escape_scene;
+use crate::explore;
+use crate::files::{entry_names, read_text, FileKind};
+
+/// The explorer a command starts.
+pub fn explorer(arguments: &ExploreArgs) -> Result<explore::Explorer, String> {
+    let size = embedded_graphics::geometry::Size::new(arguments.size.0, arguments.size.1);
+    if let Some(name) = &arguments.scene {
+        return explore::Explorer::gallery(name, size);
+    }
+    if let Some(path) = &arguments.file {
+        let text = read_text(path)?;
+        let kind = FileKind::of(path, &text).lsystems(path)?;
+        let names: Vec<String> = entry_names(kind, &text)
+            .into_iter()
+            .filter_map(|name| name.ok().map(str::to_string))
+            .collect();
+        if names.is_empty() {
+            return Err(format!("{}: no systems to explore", path.display()));
+        }
+        let lsys = kind == FileKind::Lsys;
+        return Ok(explore::Explorer::lsystems(text, names, lsys, size));
+    }
+    let number = |option: &str, text: &str| {
+        escape_scene::coordinate(option, text).map(tinyfractal::Coord::to_f64)
+    };
+    let julia = match &arguments.julia {
+        Some((re, im)) => Some((
+            escape_scene::coordinate("--c", re)?,
+            escape_scene::coordinate("--c", im)?,
+        )),
+        None => None,
+    };
+    let start = explore::EscapeState {
+        julia,
+        centre: (
+            number("--center", &arguments.centre.0)?,
+            number("--center", &arguments.centre.1)?,
+        ),
+        width: number("--width", &arguments.width)?,
+        max_iterations: arguments.max_iterations,
+        ..explore::EscapeState::default()
+    };
+    Ok(explore::Explorer::escape(start, size))
+}
+
+#[cfg(feature = "window")]
+pub fn explore_window(arguments: &ExploreArgs) -> Result<(), String> {
+    use embedded_graphics_simulator::sdl2::{Keycode, MouseButton};
+    use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorEvent, Window};
+    use explore::Input;
+    let mut explorer = explorer(arguments)?;
+    let size = explorer.picture_size();
+    let mut display = SimulatorDisplay::<Rgb888>::new(embedded_graphics::geometry::Size::new(
+        size.width,
+        size.height + explore::STATUS_HEIGHT,
+    ));
+    let mut window = Window::new("tinyfractal explore", &OutputSettingsBuilder::new().build());
+    let (mut mouse, mut pressed) = (embedded_graphics::prelude::Point::zero(), None);
+    loop {
+        explorer.tick(&mut display, explore::TICK_BUDGET);
+        window.update(&display);
+        let events: Vec<SimulatorEvent> = window.events().collect();
+        for event in events {
+            let input = match event {
+                SimulatorEvent::Quit => return Ok(()),
+                SimulatorEvent::MouseMove { point } => {
+                    mouse = point;
+                    None
+                }
+                SimulatorEvent::MouseButtonDown { point, .. } => {
+                    pressed = Some(point);
+                    None
+                }
+                SimulatorEvent::MouseButtonUp { mouse_btn, point } => {
+                    let from = pressed.take().unwrap_or(point);
+                    let moved = point - from;
+                    if moved.x.abs() + moved.y.abs() > 3 {
+                        Some(Input::Pan(moved.x, moved.y))
+                    } else if mouse_btn == MouseButton::Right {
+                        Some(Input::ZoomOut(point))
+                    } else {
+                        Some(Input::ZoomIn(point))
+                    }
+                }
+                SimulatorEvent::MouseWheel { scroll_delta, .. } => {
+                    Some(Input::Wheel(mouse, scroll_delta.y))
+                }
+                SimulatorEvent::KeyDown { keycode, .. } => {
+                    let step = (size.width / 10) as i32;
+                    match keycode {
+                        Keycode::Left => Some(Input::Pan(step, 0)),
+                        Keycode::Right => Some(Input::Pan(-step, 0)),
+                        Keycode::Up => Some(Input::Pan(0, step)),
+                        Keycode::Down => Some(Input::Pan(0, -step)),
+                        Keycode::Plus | Keycode::Equals | Keycode::KpPlus => Some(Input::More),
+                        Keycode::Minus | Keycode::KpMinus => Some(Input::Fewer),
+                        Keycode::P => Some(Input::NextPalette),
+                        Keycode::C => Some(Input::ToggleCycling),
+                        Keycode::J => Some(Input::JuliaAt(mouse)),
+                        Keycode::S => Some(Input::Save),
+                        Keycode::R => Some(Input::Reset),
+                        Keycode::PageDown => Some(Input::NextSystem),
+                        Keycode::PageUp => Some(Input::PreviousSystem),
+                        Keycode::Escape | Keycode::Q => return Ok(()),
+                        _ => None,
+                    }
+                }
+                _ => None,
+            };
+            if let Some(input) = input {
+                explorer.input(input);
+            }
+        }
+    }
+}
+
+#[cfg(not(feature = "window"))]
+pub fn explore_window(arguments: &ExploreArgs) -> Result<(), String> {
+    // The arguments are still checked, so a mistake is reported as such.
+    explorer(arguments)?;
+    window_available(true)
+}
