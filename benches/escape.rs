@@ -7,7 +7,11 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use embedded_graphics::prelude::*;
 use std::hint::black_box;
-use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Render, View};
+use tinyfractal::{
+    escape::{Algorithm, Render},
+    render::DwellBuffer,
+    Coord, Fractal, View,
+};
 
 /// What a user would write first: f64, every pixel, no tricks. Returns total iterations.
 fn naive(centre: (f64, f64), width: f64, size: Size, max: u32) -> u64 {

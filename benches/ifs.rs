@@ -4,7 +4,7 @@
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use std::hint::black_box;
-use tinyfractal::{ChaosGame, IfsFile, IfsPicture};
+use tinyfractal::{ifs::IfsPicture, ChaosGame, IfsFile};
 
 #[path = "../tests/support/frame.rs"]
 mod frame;

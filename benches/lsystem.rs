@@ -8,7 +8,11 @@
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use std::hint::black_box;
-use tinyfractal::{cells_needed, Angle, Cell, Colors, Dialect, Grammar, LSystem, Segments};
+use tinyfractal::{
+    lsystem::{cells_needed, Cell, Segments},
+    render::Colors,
+    Angle, Dialect, Grammar, LSystem,
+};
 
 #[path = "../tests/support/frame.rs"]
 mod frame;
@@ -167,8 +171,8 @@ fn general(c: &mut Criterion) {
     group.throughput(Throughput::Elements(TREE_SEGMENTS));
     group.bench_function("segments (walk + 3D turtle)", |b| {
         b.iter(|| {
-            let walk: tinyfractal::Segments3 =
-                tinyfractal::Segments3::new(black_box(&grammar), 10).unwrap();
+            let walk: tinyfractal::lsystem::Segments3 =
+                tinyfractal::lsystem::Segments3::new(black_box(&grammar), 10).unwrap();
             assert_eq!(walk.count() as u64, TREE_SEGMENTS);
         })
     });

@@ -9,7 +9,10 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use embedded_graphics::prelude::*;
 use std::hint::black_box;
 use tinyfractal::{
-    Algorithm, DeepCoord, DwellBuffer, Fractal, ReferencePoint, Render, RenderStats, Tier, View,
+    escape::{Algorithm, ReferencePoint, Render, RenderStats, Tier},
+    math::DeepCoord,
+    render::DwellBuffer,
+    Fractal, View,
 };
 
 const SPIRAL: (&str, &str) = ("-0.743643887037151", "0.131825904205330");

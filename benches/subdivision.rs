@@ -9,7 +9,8 @@ use embedded_graphics::{
 };
 use std::hint::black_box;
 use tinyfractal::{
-    Carpet, CubeVariant, Displacement, Gasket, Real, SierpinskiCube, Terrain, TerrainMap,
+    subdivision::CubeVariant, terrain::Displacement, Carpet, Gasket, Real, SierpinskiCube, Terrain,
+    TerrainMap,
 };
 
 #[path = "../tests/support/frame.rs"]

@@ -11,7 +11,9 @@ use std::fmt::Write as _;
 
 use embedded_graphics::prelude::*;
 use tinyfractal::{
-    Algorithm, Coord, DwellBuffer, Fractal, ReferenceOrbit, ReferencePoint, Render, Tier, View,
+    escape::{Algorithm, ReferenceOrbit, ReferencePoint, Render, Tier},
+    render::DwellBuffer,
+    Coord, Fractal, View,
 };
 
 #[path = "../tests/support/dd.rs"]

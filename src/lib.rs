@@ -37,7 +37,7 @@
 //!
 //! ```
 //! use embedded_graphics::{mock_display::MockDisplay, pixelcolor::Gray8, prelude::*};
-//! use tinyfractal::{Coord, EscapeTime, Fractal, Tier, TwoColor, View};
+//! use tinyfractal::{Coord, EscapeTime, Fractal, View, escape::Tier, render::TwoColor};
 //!
 //! let mut display = MockDisplay::<Gray8>::new();
 //! let k = (Coord::parse("-0.8").unwrap(), Coord::parse("0.156").unwrap());
@@ -57,16 +57,31 @@
 //! # Ok::<(), tinyfractal::Error>(())
 //! ```
 //!
-//! ## Layers
-//! `math` (fixed-point numbers, angles, wide products) and `render` (rasteriser, sinks,
-//! palettes, fitting) are shared; each family (`lsystem`, `escape`) depends on them and
-//! never on another family. Errors are grouped by stage: [`ReadError`], [`WalkError`],
-//! [`FitError`], [`ViewError`], all inside [`Error`].
+//! ## Where things are
+//! Each family is a module with its types, constants and a runnable example:
+//!
+//! | module | what it draws |
+//! |---|---|
+//! | [`lsystem`] | L-systems: Fractint `.l`, ABOP and cpfg-style `.lsys` (parametric, stochastic, context-sensitive, open, 3D) |
+//! | [`escape`] | the Mandelbrot and Julia sets, in precision tiers and by perturbation |
+//! | [`ifs`] | iterated function systems (the chaos game, Fractint `.ifs`) and the gingerbread man |
+//! | [`figure`] | the articulated figure, a hierarchy of parts drawn with a stack of maps |
+//! | [`subdivision`] | the Sierpiński carpet, gasket and cube |
+//! | [`terrain`] | profiles and landscapes by midpoint displacement |
+//! | [`dimension`] | the box-counting dimension of any picture |
+//!
+//! Beneath them, [`math`] holds the numbers (fixed-point [`Real`] and [`Coord`], angles,
+//! affine maps, the seeded generator), [`render`] what every family shares on the way to
+//! pixels (palettes, projections, fitting, dwell sinks), and [`error`] the one [`Error`]
+//! type, grouped by stage. A family depends on these and never on another family. The
+//! root re-exports the types a program starts from; [`prelude`] brings the traits and the
+//! vocabulary types at once.
 //!
 //! ## Memory
 //! Nothing is allocated. A [`Grammar`] is about 1.7 KiB (its rules compiled); a walk
-//! ([`Segments`]) is under 1 KiB with the default capacities, whatever the order; an
-//! escape-time [`Render`] about 2.7 KiB at any size, plus 0.5 KiB of stack while it runs.
+//! ([`Segments`](lsystem::Segments)) is under 1 KiB with the default capacities, whatever
+//! the order; an escape-time [`Render`](escape::Render) about 2.7 KiB at any size, plus
+//! 0.5 KiB of stack while it runs.
 //!
 //! ## Numbers
 //! The turtle works in [`Real`] (I32F32) with sines and cosines in Q30 computed by integer
@@ -104,75 +119,26 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
-mod dimension;
-mod error;
-mod escape;
-mod figure;
-mod ifs;
-mod lsystem;
-mod math;
-mod render;
-mod subdivision;
-mod terrain;
+pub mod dimension;
+pub mod error;
+pub mod escape;
+pub mod figure;
+pub mod ifs;
+pub mod lsystem;
+pub mod math;
+pub mod prelude;
+pub mod render;
+pub mod subdivision;
+pub mod terrain;
 
-pub use dimension::{BoxCounter, Dimension};
-pub use error::{
-    Arithmetic, DrawError, Error, FitError, Location, ParameterError, ReadError, ReadWarning,
-    Unsupported, ViewError, WalkError,
+pub use dimension::BoxCounter;
+pub use error::Error;
+pub use escape::{EscapeTime, Fractal, View};
+pub use figure::Figure;
+pub use ifs::{ChaosGame, Gingerbread, Ifs, IfsFile};
+pub use lsystem::{
+    Dialect, Grammar, LFile, LSystem, LsysFile, ParametricGrammar, ParametricLSystem,
 };
-pub use escape::drawing::{EscapeTime, Painter};
-pub use escape::kernel::MAX_FAST_TOLERANCE;
-pub use escape::perturbation::{ReferenceOrbit, REFERENCE_POINT_BYTES};
-pub use escape::scaled::ReferencePoint;
-pub use escape::schedule::{Algorithm, Progress, Render, RenderStats, TILE, TILE_CELLS, TILE_ROWS};
-pub use escape::view::{
-    Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
-};
-pub use escape::zoom::{ReuseStats, ZoomFrame, ZoomLine, ZoomValue};
-pub use figure::body::{walk as walk_pose, wave as wave_pose, Joint, BODY};
-pub use figure::{
-    Figure, FigureDrawing, FigureLine, Part, Pose, Shape, MAX_FIGURE_DEPTH, MAX_JOINTS,
-};
-pub use ifs::chaos::{
-    ChaosGame, DensityDrawing, IfsDrawing, IfsPicture, IfsPoint, DENSITY_LEVELS, SKIPPED,
-};
-pub use ifs::file::{IfsEntry, IfsFile};
-pub use ifs::gingerbread::{
-    Cycle, Gingerbread, GingerbreadDrawing, MapPoint, Points as GingerbreadPoints,
-};
-pub use ifs::maps::{AffineMap, Ifs, MAX_MAPS};
-pub use lsystem::alphabet::{DerivedSymbol, Dialect};
-pub use lsystem::drawing::{Bounds, LSystem, LSystemDrawing, Placement};
-pub use lsystem::fractint::{Entries, Entry, LFile, Warnings};
-pub use lsystem::grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
-pub use lsystem::lsys::{LsysEntries, LsysEntry, LsysFile};
-pub use lsystem::parametric::context::MAX_CONTEXT_SLOTS;
-pub use lsystem::parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
-pub use lsystem::parametric::environment::{Environment, TurtleState};
-pub use lsystem::parametric::grammar::{
-    ParametricGrammar, MAX_ARGUMENTS, MAX_CONSTANTS, MAX_MODULES, MAX_PRODUCTIONS,
-};
-pub use lsystem::parametric::space::{Segment3, Segments3};
-pub use lsystem::parametric::values::{DerivedModule, Values, MAX_PARAMS};
-pub use lsystem::parametric::walker::ParametricWalker;
-pub use lsystem::table::{cells_needed, Cell, MAX_BODY_NESTING};
-pub use lsystem::turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
-pub use lsystem::walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};
-pub use math::affine::{Affine2, Affine3};
-pub use math::random::Generator;
-pub use math::{
-    Angle, AngleOutOfRange, Coord, DeepCoord, DeepParseError, Overflow, Real, DEEP_LIMBS,
-    MAX_ANGLE_DIVISIONS, MAX_DECIMAL_PLACES,
-};
-pub use render::fit::{Orientation, DEFAULT_MARGIN};
-pub use render::palette::{Bands, Colors, Gradient, Palette, TwoColor};
-pub use render::projection::Projection;
-pub use render::sink::{DwellBuffer, DwellSink};
-pub use render::space::DEPTH_LEVELS;
-pub use subdivision::carpet::{Carpet, CarpetDrawing, CarpetStats};
-pub use subdivision::cube::{Camera, CubeDrawing, CubeStats, CubeVariant, SierpinskiCube};
-pub use subdivision::gasket::{Gasket, GasketDrawing, GasketStats};
-pub use subdivision::MAX_SUBDIVISION_ORDER;
-pub use terrain::map::{MapDrawing, TerrainMap, MAX_MAP_LEVELS};
-pub use terrain::profile::{Heights, ProfileDrawing, Terrain};
-pub use terrain::{Displacement, MAX_END, MAX_SIGMA, MAX_TERRAIN_LEVELS};
+pub use math::{Angle, Coord, Real};
+pub use subdivision::{Carpet, Gasket, SierpinskiCube};
+pub use terrain::{Terrain, TerrainMap};

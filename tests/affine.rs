@@ -2,7 +2,7 @@
 //! models written here: composition, application, and the camera's rows.
 
 use proptest::prelude::*;
-use tinyfractal::{Affine3, Real};
+use tinyfractal::{math::Affine3, Real};
 
 fn real(v: f64) -> Real {
     Real::from_f64(v).unwrap()

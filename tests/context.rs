@@ -2,7 +2,7 @@
 //! model that rewrites whole strings level by level, as the book defines it.
 
 use proptest::prelude::*;
-use tinyfractal::{Error, LsysFile, ParametricWalker, ReadError};
+use tinyfractal::{error::ReadError, lsystem::ParametricWalker, Error, LsysFile};
 
 /// The derived string of the system in `text` (one `.lsys` entry) at `order`.
 fn derive(text: &str, order: u32) -> Result<String, Error> {

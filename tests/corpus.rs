@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
-use tinyfractal::FitError;
+use tinyfractal::error::FitError;
 use tinyfractal::{Error, LFile, LSystem};
 
 fn corpus_dir() -> PathBuf {

@@ -5,7 +5,7 @@ mod common;
 
 use common::Bitmap;
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*};
-use tinyfractal::{Angle, BoxCounter, Dialect, Grammar, LSystem, Placement, Real};
+use tinyfractal::{lsystem::Placement, Angle, BoxCounter, Dialect, Grammar, LSystem, Real};
 
 /// Boxes of side `side` pixels that hold at least one lit pixel.
 fn occupied_boxes(bitmap: &Bitmap, side: i32) -> usize {

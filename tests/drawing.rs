@@ -10,7 +10,11 @@ use embedded_graphics::{
     prelude::*,
     primitives::{Line, PrimitiveStyle, Rectangle},
 };
-use tinyfractal::{Angle, Dialect, Grammar, LSystem, Orientation, Placement, Real, Segments};
+use tinyfractal::{
+    lsystem::{Placement, Segments},
+    render::Orientation,
+    Angle, Dialect, Grammar, LSystem, Real,
+};
 
 fn square() -> Grammar<'static> {
     Grammar::new(Dialect::Abop, "F+F+F+F", Angle::Divisions(4)).unwrap()
@@ -202,7 +206,7 @@ fn walker_state_is_small_and_independent_of_order() {
 #[test]
 fn colour_indices_through_any_palette() {
     use embedded_graphics::pixelcolor::{Rgb888, RgbColor};
-    use tinyfractal::{Colors, Gradient};
+    use tinyfractal::render::{Colors, Gradient};
     let grammar = Grammar::new(Dialect::Fractint, "FC1FC2F", Angle::Divisions(4)).unwrap();
     let gradient = Gradient::<Rgb888, 4>::new(
         &[Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE, Rgb888::WHITE],

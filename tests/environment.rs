@@ -3,8 +3,9 @@
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
 use tinyfractal::{
-    Environment, Error, LsysFile, ParametricGrammar, ParametricLSystem, ReadError, Real, Segments3,
-    TurtleState, Unsupported,
+    error::{ReadError, Unsupported},
+    lsystem::{Environment, Segments3, TurtleState},
+    Error, LsysFile, ParametricGrammar, ParametricLSystem, Real,
 };
 
 fn grammar(text: &str) -> Result<ParametricGrammar, Error> {
@@ -49,7 +50,7 @@ fn a_shoot_stops_at_the_line() {
         .unwrap();
     assert_eq!(
         error,
-        Error::Walk(tinyfractal::WalkError::NoEnvironment { symbol: 'A' })
+        Error::Walk(tinyfractal::error::WalkError::NoEnvironment { symbol: 'A' })
     );
 }
 

@@ -5,11 +5,12 @@ mod common;
 use embedded_graphics::{
     mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*, primitives::Rectangle,
 };
+use tinyfractal::error::{FitError, ReadError, ReadWarning, WalkError};
 use tinyfractal::{
-    Angle, Dialect, DrawError, Error, Grammar, LFile, LSystem, Location, Placement, Real, Segments,
-    MAX_RULES,
+    error::{DrawError, Location},
+    lsystem::{Placement, Segments, MAX_RULES},
+    Angle, Dialect, Error, Grammar, LFile, LSystem, Real,
 };
-use tinyfractal::{FitError, ReadError, ReadWarning, WalkError};
 
 fn fixture(name: &str) -> String {
     let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
@@ -393,7 +394,7 @@ fn a_picture_of_nothing_is_valid() {
     for name in ["Erased", "Turns", "EmptyAxiom"] {
         let grammar = file.find(name).unwrap();
         let system = LSystem::new(&grammar, 3);
-        let mut cells = vec![tinyfractal::Cell::default(); 1024];
+        let mut cells = vec![tinyfractal::lsystem::Cell::default(); 1024];
         for drawing in [
             system
                 .fit(
@@ -404,7 +405,7 @@ fn a_picture_of_nothing_is_valid() {
             system
                 .fit_in(
                     Rectangle::new(Point::zero(), Size::new(8, 8)),
-                    tinyfractal::Colors::new(&[BinaryColor::On]).unwrap(),
+                    tinyfractal::render::Colors::new(&[BinaryColor::On]).unwrap(),
                     &mut cells,
                 )
                 .unwrap(),

@@ -6,11 +6,12 @@ mod common;
 use common::{Bitmap, Counting};
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
+use tinyfractal::error::{FitError, ViewError};
 use tinyfractal::{
-    Algorithm, Coord, DwellBuffer, DwellSink, Error, EscapeTime, Fractal, Render, Tier, TwoColor,
-    View,
+    escape::{Algorithm, Render, Tier},
+    render::{DwellBuffer, DwellSink, TwoColor},
+    Coord, Error, EscapeTime, Fractal, View,
 };
-use tinyfractal::{FitError, ViewError};
 
 /// Dwells in the crate's slice-backed sink, with a count of writes per pixel beside it.
 struct Dwells {
@@ -54,7 +55,7 @@ impl DwellSink for Dwells {
     }
 }
 
-fn render(view: View, algorithm: Algorithm) -> (Dwells, tinyfractal::RenderStats) {
+fn render(view: View, algorithm: Algorithm) -> (Dwells, tinyfractal::escape::RenderStats) {
     let mut sink = Dwells::new(view.size());
     let stats = Render::new(view, algorithm).run(&mut sink).unwrap();
     assert!(
@@ -740,7 +741,7 @@ fn palettes_for_every_colour_type() {
         mock_display::MockDisplay,
         pixelcolor::{BinaryColor, Gray4, Rgb565, Rgb888},
     };
-    use tinyfractal::{Bands, Gradient};
+    use tinyfractal::render::{Bands, Gradient};
     let view = full_view(Size::new(64, 48), 60);
     let keys = [Rgb888::BLUE, Rgb888::WHITE, Rgb888::new(255, 160, 0)];
 
@@ -773,7 +774,7 @@ fn palettes_for_every_colour_type() {
 
     // Cycling: an offset of k shifts dwell d to the colour of d + k.
     let cycled = gradient.with_offset(3);
-    use tinyfractal::Palette;
+    use tinyfractal::render::Palette;
     assert_eq!(cycled.color(2, 60), gradient.color(5, 60));
     for k in [0u16, 1, 7, 15, 16, 19, 400, u16::MAX] {
         let cycled = gradient.with_offset(k);

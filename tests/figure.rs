@@ -6,7 +6,10 @@ use std::collections::HashMap;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
 use proptest::prelude::*;
-use tinyfractal::{walk_pose, Figure, Pose, Real, Shape, BODY, MAX_JOINTS};
+use tinyfractal::{
+    figure::{walk as walk_pose, Pose, Shape, BODY, MAX_JOINTS},
+    Figure, Real,
+};
 
 /// A drawn line's ends.
 type Line = ([f64; 2], [f64; 2]);
@@ -28,7 +31,7 @@ fn lines(pose: Pose) -> HashMap<&'static str, Vec<Line>> {
 
 /// Every `Line` part of the body and its length.
 fn limbs() -> Vec<(&'static str, f64)> {
-    fn visit(part: &tinyfractal::Part, out: &mut Vec<(&'static str, f64)>) {
+    fn visit(part: &tinyfractal::figure::Part, out: &mut Vec<(&'static str, f64)>) {
         if let Shape::Line { length } = part.shape {
             out.push((part.name, length.to_f64()));
         }

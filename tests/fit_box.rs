@@ -9,7 +9,8 @@ use common::{shipped_file, SHIPPED_L_FILES};
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
 use tinyfractal::{
-    Angle, Dialect, Error, Grammar, LFile, LSystem, Orientation, Real, Segments, WalkError,
+    error::WalkError, lsystem::Segments, render::Orientation, Angle, Dialect, Error, Grammar,
+    LFile, LSystem, Real,
 };
 
 const ORIENTATIONS: [Orientation; 4] = [
@@ -20,7 +21,7 @@ const ORIENTATIONS: [Orientation; 4] = [
 ];
 
 /// Picture space (y up) to the screen pixel, as the orientation's quarter turn says.
-fn screen(orientation: Orientation, p: tinyfractal::TurtlePoint) -> Point {
+fn screen(orientation: Orientation, p: tinyfractal::lsystem::TurtlePoint) -> Point {
     let neg = |v: Real| Real::from_bits(-v.to_bits());
     let (x, y) = match orientation {
         Orientation::Right => (p.x, neg(p.y)),
@@ -38,7 +39,7 @@ fn walked_box(
     grammar: &Grammar<'_>,
     order: u32,
     orientation: Orientation,
-    start: tinyfractal::Start,
+    start: tinyfractal::lsystem::Start,
 ) -> Option<Rectangle> {
     let mut corners: Option<(Point, Point)> = None;
     for segment in Segments::starting(grammar, order, start).unwrap() {

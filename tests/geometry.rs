@@ -7,7 +7,7 @@ use common::{
     corpus_file, engine_segments, koch_snowflake, shipped_file, ModelSegment, ModelSystem,
     SHIPPED_L_FILES,
 };
-use tinyfractal::{Angle, Dialect, Grammar, LFile, Real, Segments};
+use tinyfractal::{lsystem::Segments, Angle, Dialect, Grammar, LFile, Real};
 
 /// Asserts the engine's segments match the model's: same count, and every end within a
 /// drift bound that grows with the number of steps taken (fixed-point rounding is at most

@@ -10,8 +10,9 @@ use std::path::PathBuf;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use tinyfractal::{
-    Angle, Coord, Dialect, EscapeTime, Fractal, Gradient, Grammar, LFile, LSystem, Orientation,
-    Real, Shading, View,
+    escape::Shading,
+    render::{Gradient, Orientation},
+    Angle, Coord, Dialect, EscapeTime, Fractal, Grammar, LFile, LSystem, Real, View,
 };
 
 const PALETTE: [Rgb888; 4] = [Rgb888::WHITE, Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE];

@@ -7,7 +7,11 @@ use std::collections::{HashMap, HashSet};
 
 use common::Bitmap;
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
-use tinyfractal::{ChaosGame, Error, Gingerbread, IfsFile, IfsPicture, Location, ReadError, Real};
+use tinyfractal::{
+    error::{Location, ReadError},
+    ifs::IfsPicture,
+    ChaosGame, Error, Gingerbread, IfsFile, Real,
+};
 
 /// Fractint's fern (its file's entry, byte for byte).
 const FERN: &str = "fern {\n    0\t 0    0  .16 0\t 0 .01\n   .85\t.04 -.04 .85 0 1.6 .85\n   .2  -.26  .23 .22 0 1.6 .07\n  -.15\t.28  .26 .24 0 .44 .07\n  }\n";
@@ -294,7 +298,7 @@ fn gingerbread_orbit_and_period() {
 fn density_colours_count_every_point() {
     use embedded_graphics::mock_display::MockDisplay;
     use embedded_graphics::pixelcolor::Gray8;
-    use tinyfractal::{FitError, Gradient, DENSITY_LEVELS};
+    use tinyfractal::{error::FitError, ifs::DENSITY_LEVELS, render::Gradient};
     let ifs = IfsFile::new(FERN).entry("fern").unwrap().ifs().unwrap();
     let area = Rectangle::new(Point::zero(), Size::new(64, 64));
     let palette = Gradient::<Gray8, 16>::new(

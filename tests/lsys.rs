@@ -5,7 +5,9 @@ mod common;
 
 use common::shipped_file;
 use tinyfractal::{
-    Angle, Dialect, Error, Grammar, Location, LsysFile, ReadError, Segments, Unsupported, Walker,
+    error::{Location, ReadError, Unsupported},
+    lsystem::{Segments, Walker},
+    Angle, Dialect, Error, Grammar, LsysFile,
 };
 
 /// A system as the book prints it: name, axiom, productions, angle in degrees.
@@ -264,10 +266,11 @@ fn the_books_parametric_derivation() {
         "CB(0)B(8)A(1.1429,0)",
     ];
     for (order, expected) in book.iter().enumerate() {
-        let derived: String = tinyfractal::ParametricWalker::<17>::new(&grammar, order as u32)
-            .unwrap()
-            .map(|module| module.unwrap().to_string())
-            .collect();
+        let derived: String =
+            tinyfractal::lsystem::ParametricWalker::<17>::new(&grammar, order as u32)
+                .unwrap()
+                .map(|module| module.unwrap().to_string())
+                .collect();
         assert_eq!(&derived, expected, "order {order}");
     }
     // The plain reader names what it cannot derive.
@@ -286,7 +289,7 @@ fn parametric_expressions_and_their_errors() {
     let derive = |text: &str, order: u32| -> Result<String, Error> {
         let file = LsysFile::new(text);
         let grammar = file.entries().next().unwrap()?.parametric()?;
-        tinyfractal::ParametricWalker::<17>::new(&grammar, order)?
+        tinyfractal::lsystem::ParametricWalker::<17>::new(&grammar, order)?
             .map(|module| module.map(|m| m.to_string()))
             .collect()
     };
@@ -296,16 +299,16 @@ fn parametric_expressions_and_their_errors() {
     let divide = "p {\n  axiom: A(0)\n  angle: 90\n  A(x) --> A(1/x)\n}\n";
     assert_eq!(
         derive(divide, 1),
-        Err(Error::Walk(tinyfractal::WalkError::Arithmetic {
+        Err(Error::Walk(tinyfractal::error::WalkError::Arithmetic {
             symbol: 'A',
-            problem: tinyfractal::Arithmetic::DivisionByZero,
+            problem: tinyfractal::error::Arithmetic::DivisionByZero,
         }))
     );
     let overflow = "p {\n  axiom: A(2)\n  angle: 90\n  A(x) --> A(x^16)\n}\n";
     assert!(matches!(
         derive(overflow, 2),
-        Err(Error::Walk(tinyfractal::WalkError::Arithmetic {
-            problem: tinyfractal::Arithmetic::OutOfRange,
+        Err(Error::Walk(tinyfractal::error::WalkError::Arithmetic {
+            problem: tinyfractal::error::Arithmetic::OutOfRange,
             ..
         }))
     ));
@@ -331,7 +334,7 @@ fn parametric_expressions_and_their_errors() {
 fn parametric_memory_is_bounded() {
     use core::mem::size_of;
     let grammar = size_of::<tinyfractal::ParametricGrammar>();
-    let walk = size_of::<tinyfractal::ParametricWalker<'static, 17>>();
+    let walk = size_of::<tinyfractal::lsystem::ParametricWalker<'static, 17>>();
     println!("ParametricGrammar: {grammar} bytes; ParametricWalker<17>: {walk} bytes");
     assert!(grammar <= 12 * 1024, "{grammar}");
     assert!(walk <= 21 * 1024 + 512, "{walk}");
@@ -350,11 +353,14 @@ fn a_parametric_system_draws() {
         .parametric()
         .unwrap();
     let order = 4;
-    let segments: Vec<_> =
-        tinyfractal::ParametricSegments::<17, 20>::new(&grammar, order, Default::default())
-            .unwrap()
-            .map(Result::unwrap)
-            .collect();
+    let segments: Vec<_> = tinyfractal::lsystem::ParametricSegments::<17, 20>::new(
+        &grammar,
+        order,
+        Default::default(),
+    )
+    .unwrap()
+    .map(Result::unwrap)
+    .collect();
     assert_eq!(segments.len(), 4usize.pow(order));
     let h = (0.3f64 * 0.7).sqrt();
     let expected = (1.0 + 2.0 * h * 86f64.to_radians().cos()).powi(order as i32);
@@ -406,7 +412,7 @@ fn stochastic_parametric_choices_are_stable_and_fair() {
             .unwrap()
             .parametric()
             .unwrap();
-        tinyfractal::ParametricWalker::<17>::new(&grammar, 11)
+        tinyfractal::lsystem::ParametricWalker::<17>::new(&grammar, 11)
             .unwrap()
             .map(|module| module.unwrap().to_string())
             .collect()
@@ -434,7 +440,7 @@ fn cut_drops_the_rest_of_the_branch() {
             .unwrap()
             .parametric()
             .unwrap();
-        tinyfractal::ParametricWalker::<17>::new(&grammar, order)
+        tinyfractal::lsystem::ParametricWalker::<17>::new(&grammar, order)
             .unwrap()
             .map(|module| module.unwrap().to_string())
             .collect()
@@ -455,7 +461,7 @@ fn trigonometry_and_arity() {
     let derive = |text: &str, order: u32| -> Result<String, Error> {
         let file = LsysFile::new(text);
         let grammar = file.entries().next().unwrap()?.parametric()?;
-        tinyfractal::ParametricWalker::<17>::new(&grammar, order)?
+        tinyfractal::lsystem::ParametricWalker::<17>::new(&grammar, order)?
             .map(|module| module.map(|m| m.to_string()))
             .collect()
     };
@@ -465,8 +471,8 @@ fn trigonometry_and_arity() {
     let vertical = "p {\n  axiom: A(90)\n  angle: 90\n  A(x) --> B(tan(x))\n}\n";
     assert!(matches!(
         derive(vertical, 1),
-        Err(Error::Walk(tinyfractal::WalkError::Arithmetic {
-            problem: tinyfractal::Arithmetic::DivisionByZero,
+        Err(Error::Walk(tinyfractal::error::WalkError::Arithmetic {
+            problem: tinyfractal::error::Arithmetic::DivisionByZero,
             ..
         }))
     ));

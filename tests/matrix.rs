@@ -1,7 +1,7 @@
 //! The lecture's matrix notation: the Koch curve written with S, T, R and D draws the same
 //! 4ⁿ segments as `F → F+F--F+F` scaled by 3⁻ⁿ, against an f64 model written here.
 
-use tinyfractal::{LsysFile, Segments3};
+use tinyfractal::{lsystem::Segments3, LsysFile};
 
 /// The Koch curve from (0,0) to (1,0) at `n` levels, in f64: each segment replaced by
 /// four a third as long, turning +60°, −120°, +60°.

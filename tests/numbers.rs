@@ -1,6 +1,6 @@
 //! Numbers as people write them and as messages show them.
 
-use tinyfractal::{Coord, DeepCoord};
+use tinyfractal::{math::DeepCoord, Coord};
 
 /// `Coord`'s display: six significant digits, rounded half up, trailing zeros dropped,
 /// scientific below 10⁻⁴. Expected texts are worked out by hand from the exact values.

@@ -7,8 +7,11 @@
 use embedded_graphics::geometry::Size;
 use num_bigint::BigInt;
 use tinyfractal::{
-    Algorithm, DeepCoord, DwellBuffer, Error, Fractal, ReferencePoint, Render, RenderStats, Tier,
-    View, ViewError,
+    error::ViewError,
+    escape::{Algorithm, ReferencePoint, Render, RenderStats, Tier},
+    math::DeepCoord,
+    render::DwellBuffer,
+    Error, Fractal, View,
 };
 
 /// Fractional bits of the model.

@@ -7,8 +7,10 @@
 
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
-    Algorithm, DeepCoord, DwellBuffer, Fractal, ReferenceOrbit, ReferencePoint, Render, Tier, View,
-    MAX_ITERATIONS,
+    escape::{Algorithm, ReferenceOrbit, ReferencePoint, Render, Tier, MAX_ITERATIONS},
+    math::DeepCoord,
+    render::DwellBuffer,
+    Fractal, View,
 };
 
 /// Published counts at c = −0.75 + εi: (ε, iterations before |z| > 2). Beyond 10⁻⁴ the

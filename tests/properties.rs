@@ -6,8 +6,8 @@ mod common;
 use common::Bitmap;
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
-use tinyfractal::ReadError;
-use tinyfractal::{Angle, Dialect, Error, Grammar, LFile, LSystem, Segments};
+use tinyfractal::error::ReadError;
+use tinyfractal::{lsystem::Segments, Angle, Dialect, Error, Grammar, LFile, LSystem};
 
 const ALPHABET: &str = "FfGgDdMmXYAB+-|!\\/@IQC<>[]0123456789.=; \n{}aXx";
 
@@ -79,7 +79,10 @@ proptest! {
 /// fit), the same pixels, the same statistics.
 mod table {
     use super::*;
-    use tinyfractal::{cells_needed, Cell, Colors};
+    use tinyfractal::{
+        lsystem::{cells_needed, Cell},
+        render::Colors,
+    };
 
     const BODY: &str = "FFFGG++--|![]XYAB";
 
@@ -131,7 +134,7 @@ mod table {
                     prop_assert!(a.pixels == b.pixels, "pixels differ");
                 }
                 // The walk may stop at its budget where the table does not walk.
-                (Err(Error::Walk(tinyfractal::WalkError::BudgetExhausted { .. })), _) => {}
+                (Err(Error::Walk(tinyfractal::error::WalkError::BudgetExhausted { .. })), _) => {}
                 (walked, tabled) => prop_assert_eq!(walked.map(|_| ()), tabled.map(|_| ())),
             }
         }

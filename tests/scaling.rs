@@ -6,7 +6,7 @@ mod common;
 
 use common::{Bitmap, ModelSystem};
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
-use tinyfractal::{Error, LFile, LSystem, WalkError};
+use tinyfractal::{error::WalkError, Error, LFile, LSystem};
 
 /// Fractint systems past a 64-bit fixed-point turtle's 2⁶³ of range: a shell shrinking
 /// by 0.8 a step (0.8²⁵⁶ ≈ 2⁻⁸²), a horn growing by 1.5 (1.5²⁵⁶ ≈ 2¹⁵⁰), and a square

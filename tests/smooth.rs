@@ -3,8 +3,10 @@
 //! no bands, the same picture however it is scheduled, a typed limit.
 
 use tinyfractal::{
-    Algorithm, Coord, DwellBuffer, Error, Fractal, Render, Shading, View, ViewError,
-    MAX_SMOOTH_ITERATIONS,
+    error::ViewError,
+    escape::{Algorithm, Render, Shading, MAX_SMOOTH_ITERATIONS},
+    render::DwellBuffer,
+    Coord, Error, Fractal, View,
 };
 
 /// ν = N + 2 − log₂(log₂|z_N|²), with N the first step past |z|² = 10¹² (f64): the

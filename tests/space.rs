@@ -4,8 +4,9 @@
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 use proptest::prelude::*;
 use tinyfractal::{
-    LsysFile, ParametricGrammar, ParametricLSystem, ParametricSegments, Projection, Segment3,
-    Segments3, Start,
+    lsystem::{ParametricSegments, Segment3, Segments3, Start},
+    render::Projection,
+    LsysFile, ParametricGrammar, ParametricLSystem,
 };
 
 fn grammar(text: &str) -> ParametricGrammar {

@@ -11,7 +11,9 @@ use embedded_graphics::{
     primitives::Rectangle,
 };
 use tinyfractal::{
-    Camera, Carpet, CubeVariant, Error, Gasket, ParameterError, Real, SierpinskiCube,
+    error::ParameterError,
+    subdivision::{Camera, CubeVariant},
+    Carpet, Error, Gasket, Real, SierpinskiCube,
 };
 
 const UNPAINTED: Rgb565 = Rgb565::RED;
@@ -416,7 +418,7 @@ fn orders_beyond_the_target_and_bad_cameras_are_typed_errors() {
     let zero = Rectangle::new(Point::zero(), Size::new(0, 10));
     assert!(matches!(
         Carpet::new(1).fit(zero, INK, PAPER),
-        Err(Error::Fit(tinyfractal::FitError::ZeroSizeTarget))
+        Err(Error::Fit(tinyfractal::error::FitError::ZeroSizeTarget))
     ));
     let straight_down = Camera {
         azimuth: Real::ZERO,

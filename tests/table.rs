@@ -10,7 +10,11 @@ use embedded_graphics::{
     prelude::*,
     primitives::Rectangle,
 };
-use tinyfractal::{cells_needed, Cell, Colors, Error, Grammar, LFile, LSystem, WalkStats};
+use tinyfractal::{
+    lsystem::{cells_needed, Cell, WalkStats},
+    render::Colors,
+    Error, Grammar, LFile, LSystem,
+};
 
 const PALETTE: [Rgb888; 4] = [Rgb888::WHITE, Rgb888::RED, Rgb888::GREEN, Rgb888::BLUE];
 
@@ -188,7 +192,9 @@ fn koch_at_order_16_draws_from_the_table() {
         .fit(Rectangle::new(Point::zero(), Size::new(320, 240)), &PALETTE);
     assert!(matches!(
         walked,
-        Err(Error::Walk(tinyfractal::WalkError::BudgetExhausted { .. }))
+        Err(Error::Walk(
+            tinyfractal::error::WalkError::BudgetExhausted { .. }
+        ))
     ));
 }
 

@@ -11,7 +11,11 @@ use std::f64::consts::FRAC_1_SQRT_2;
 
 use common::{Counting, Frame};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
-use tinyfractal::{Displacement, Error, FitError, ParameterError, Real, Terrain, TerrainMap};
+use tinyfractal::{
+    error::{FitError, ParameterError},
+    terrain::Displacement,
+    Error, Real, Terrain, TerrainMap,
+};
 
 fn real(value: f64) -> Real {
     Real::from_f64(value).unwrap()
@@ -371,7 +375,10 @@ fn bad_parameters_are_typed_errors() {
 fn memory_is_as_the_readme_states() {
     use embedded_graphics::pixelcolor::Rgb565;
     use std::mem::size_of;
-    use tinyfractal::{CarpetDrawing, CubeDrawing, GasketDrawing, Heights};
+    use tinyfractal::{
+        subdivision::{CarpetDrawing, CubeDrawing, GasketDrawing},
+        terrain::Heights,
+    };
     assert!(size_of::<Heights>() < 400, "{}", size_of::<Heights>());
     assert!(size_of::<CarpetDrawing<Rgb565>>() < 200);
     assert!(size_of::<GasketDrawing<Rgb565>>() < 200);

@@ -22,8 +22,8 @@ use mipidsi::{
     Builder,
 };
 use tinyfractal::{
-    Angle, Coord, Dialect, EscapeTime, Fractal, Gradient, Grammar, LSystem, Orientation as Heading,
-    Real, View,
+    render::{Gradient, Orientation as Heading},
+    Angle, Coord, Dialect, EscapeTime, Fractal, Grammar, LSystem, Real, View,
 };
 
 const CASET: u8 = 0x2A;

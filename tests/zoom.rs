@@ -3,7 +3,9 @@
 
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
-    Algorithm, Coord, DwellBuffer, Fractal, Render, ReuseStats, View, ZoomFrame, ZoomLine,
+    escape::{Algorithm, Render, ReuseStats, ZoomFrame, ZoomLine},
+    render::DwellBuffer,
+    Coord, Fractal, View,
 };
 
 const CENTRE: (f64, f64) = (-0.743_5, 0.131_4);
@@ -147,7 +149,7 @@ fn short_storage_is_a_typed_error() {
     let error = ZoomFrame::new(view(1.0, size), &mut values, &mut columns, &mut rows).unwrap_err();
     assert_eq!(
         error,
-        tinyfractal::Error::Fit(tinyfractal::FitError::BufferTooSmall {
+        tinyfractal::Error::Fit(tinyfractal::error::FitError::BufferTooSmall {
             needed: 1200,
             given: 1199
         })
@@ -265,7 +267,7 @@ fn byte_cells_hold_the_same_frames_and_refuse_larger_values() {
     let high_cap = View::new(Fractal::Mandelbrot, (c(-0.5), c(0.0)), c(3.0), size, 256).unwrap();
     assert_eq!(
         small.advance(high_cap, None).unwrap_err(),
-        tinyfractal::Error::Fit(tinyfractal::FitError::CellTooNarrow {
+        tinyfractal::Error::Fit(tinyfractal::error::FitError::CellTooNarrow {
             largest: 256,
             cell_max: 255
         })
@@ -280,7 +282,7 @@ fn byte_cells_hold_the_same_frames_and_refuse_larger_values() {
     assert!(matches!(
         small.advance(larger.unwrap(), None),
         Err(tinyfractal::Error::Fit(
-            tinyfractal::FitError::BufferTooSmall { .. }
+            tinyfractal::error::FitError::BufferTooSmall { .. }
         ))
     ));
 }

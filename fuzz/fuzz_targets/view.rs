@@ -7,7 +7,7 @@
 use arbitrary::Arbitrary;
 use embedded_graphics::prelude::*;
 use libfuzzer_sys::fuzz_target;
-use tinyfractal::{Algorithm, Coord, Fractal, Render, Shading, Tier, View};
+use tinyfractal::{Coord, Fractal, View, escape::{Algorithm, Render, Shading, Tier}};
 use tinyfractal_fuzz::StrictDwells;
 
 #[derive(Debug, Arbitrary)]

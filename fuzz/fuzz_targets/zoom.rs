@@ -9,9 +9,7 @@
 use arbitrary::Arbitrary;
 use embedded_graphics::prelude::*;
 use libfuzzer_sys::fuzz_target;
-use tinyfractal::{
-    Algorithm, Coord, DwellBuffer, Fractal, Render, View, ZoomFrame, ZoomLine, ZoomValue,
-};
+use tinyfractal::{Coord, Fractal, View, escape::{Algorithm, Render, ZoomFrame, ZoomLine, ZoomValue}, render::DwellBuffer};
 
 #[derive(Debug, Arbitrary)]
 struct Move {

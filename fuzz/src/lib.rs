@@ -5,10 +5,7 @@
 use core::convert::Infallible;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
-use tinyfractal::{
-    cells_needed, Cell, Colors, DwellSink, Grammar, LSystem, ParametricGrammar, ParametricLSystem,
-    Walker, DEFAULT_DEPTH, DEFAULT_STACK,
-};
+use tinyfractal::{Grammar, LSystem, ParametricGrammar, ParametricLSystem, lsystem::{cells_needed, Cell, Walker, DEFAULT_DEPTH, DEFAULT_STACK}, render::{Colors, DwellSink}};
 
 /// Symbols a walk may read per input: a fuzz input must stay well under a second.
 pub const BUDGET: u64 = 20_000;

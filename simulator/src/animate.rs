@@ -13,7 +13,11 @@ use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
 use indicatif::ProgressBar;
-use tinyfractal::{Algorithm, DeepCoord, Tier, View, ZoomFrame, ZoomLine, MAX_DECIMAL_PLACES};
+use tinyfractal::{
+    escape::{Algorithm, Tier, ZoomFrame, ZoomLine},
+    math::{DeepCoord, MAX_DECIMAL_PLACES},
+    View,
+};
 
 use crate::args::{AnimateArgs, Animation};
 use crate::escape_scene::{self, Request};

@@ -135,7 +135,7 @@ pub struct LSystemArgs {
     /// `--view`: the window drawn, as fractions of the picture fitted to the whole target.
     pub view: Option<View>,
     /// `--projection`: draw in 3D, seen this way (3D systems are, isometric by default).
-    pub projection: Option<tinyfractal::Projection>,
+    pub projection: Option<tinyfractal::render::Projection>,
     /// `--depth-cue`: colour 3D lines by depth, nearer brighter.
     pub depth_cue: bool,
     /// `--environment`: the world an open system grows in.
@@ -150,9 +150,9 @@ pub struct EscapeArgs {
     pub centre: (String, String),
     pub width: String,
     pub max_iterations: u32,
-    pub algorithm: tinyfractal::Algorithm,
+    pub algorithm: tinyfractal::escape::Algorithm,
     /// `None` for automatic.
-    pub tier: Option<tinyfractal::Tier>,
+    pub tier: Option<tinyfractal::escape::Tier>,
     pub palette: String,
     pub common: Common,
     pub dwell: Option<PathBuf>,
@@ -403,7 +403,7 @@ struct LSystemOptions {
     /// Draw an .lsys system with the 3D turtle, seen from the front, isometric, or in
     /// perspective (systems using & ^ \ / $ are drawn in 3D anyway, isometric by default)
     #[arg(long, value_name = "VIEW", value_parser = parse_projection)]
-    projection: Option<tinyfractal::Projection>,
+    projection: Option<tinyfractal::render::Projection>,
     /// In 3D, colour each line by its depth, nearer brighter
     #[arg(long = "depth-cue")]
     depth_cue: bool,
@@ -575,15 +575,15 @@ enum Precision {
 }
 
 impl Precision {
-    fn tier(self) -> Option<tinyfractal::Tier> {
+    fn tier(self) -> Option<tinyfractal::escape::Tier> {
         match self {
             Self::Auto => None,
-            Self::Narrow => Some(tinyfractal::Tier::Narrow),
-            Self::Medium => Some(tinyfractal::Tier::Medium),
-            Self::Standard => Some(tinyfractal::Tier::Standard),
-            Self::Deep => Some(tinyfractal::Tier::Deep),
-            Self::Wide => Some(tinyfractal::Tier::Wide),
-            Self::Perturbation => Some(tinyfractal::Tier::Perturbation),
+            Self::Narrow => Some(tinyfractal::escape::Tier::Narrow),
+            Self::Medium => Some(tinyfractal::escape::Tier::Medium),
+            Self::Standard => Some(tinyfractal::escape::Tier::Standard),
+            Self::Deep => Some(tinyfractal::escape::Tier::Deep),
+            Self::Wide => Some(tinyfractal::escape::Tier::Wide),
+            Self::Perturbation => Some(tinyfractal::escape::Tier::Perturbation),
         }
     }
 }
@@ -740,7 +740,7 @@ fn animation(kind: AnimationKind) -> Result<AnimateArgs, clap::Error> {
         centre: view.centre,
         width: view.width,
         max_iterations: view.max_iterations,
-        algorithm: tinyfractal::Algorithm::Exact,
+        algorithm: tinyfractal::escape::Algorithm::Exact,
         tier: None,
         palette: view.palette.name().to_string(),
         common: Common {
@@ -825,8 +825,8 @@ fn escape(julia: Option<(String, String)>, options: EscapeOptions) -> EscapeArgs
         width: options.width.unwrap_or_else(|| width.to_string()),
         max_iterations: options.max_iterations,
         algorithm: match options.algorithm {
-            AlgorithmName::Exact => tinyfractal::Algorithm::Exact,
-            AlgorithmName::Fast => tinyfractal::Algorithm::Fast,
+            AlgorithmName::Exact => tinyfractal::escape::Algorithm::Exact,
+            AlgorithmName::Fast => tinyfractal::escape::Algorithm::Fast,
         },
         tier: options.precision.tier(),
         palette: options.palette.name().to_string(),

@@ -109,11 +109,11 @@ pub(crate) fn parse_view(text: &str) -> Result<View, String> {
 }
 
 /// `front`, `iso` or `perspective`.
-pub fn parse_projection(text: &str) -> Result<tinyfractal::Projection, String> {
+pub fn parse_projection(text: &str) -> Result<tinyfractal::render::Projection, String> {
     match text {
-        "front" => Ok(tinyfractal::Projection::Front),
-        "iso" | "isometric" => Ok(tinyfractal::Projection::Isometric),
-        "perspective" => Ok(tinyfractal::Projection::Perspective {
+        "front" => Ok(tinyfractal::render::Projection::Front),
+        "iso" | "isometric" => Ok(tinyfractal::render::Projection::Isometric),
+        "perspective" => Ok(tinyfractal::render::Projection::Perspective {
             distance: tinyfractal::Real::from_int(3),
         }),
         other => Err(format!(

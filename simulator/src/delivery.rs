@@ -55,7 +55,7 @@ pub fn window_available(asked: bool) -> Result<(), String> {
 }
 
 #[cfg(feature = "window")]
-pub fn show(display: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
+fn show(display: &SimulatorDisplay<Rgb888>) -> Result<(), String> {
     use embedded_graphics_simulator::{OutputSettingsBuilder, Window};
     Window::new(
         "tinyfractal",

@@ -3,7 +3,7 @@
 
 use std::io::{self, Write};
 
-use tinyfractal::{ParametricWalker, Walker, DEFAULT_BUDGET};
+use tinyfractal::lsystem::{ParametricWalker, Walker, DEFAULT_BUDGET};
 
 use crate::args::DeriveArgs;
 use crate::console::{self, Failure};
@@ -44,7 +44,7 @@ pub fn derive(arguments: &DeriveArgs) -> Result<(), Failure> {
 
 /// Reads a walk may take: expansions that print nothing still take reads, so they are
 /// bounded too.
-pub fn derive_budget(arguments: &DeriveArgs) -> u64 {
+fn derive_budget(arguments: &DeriveArgs) -> u64 {
     arguments.max_length.saturating_mul(64).max(DEFAULT_BUDGET)
 }
 
@@ -57,7 +57,7 @@ const COUNTED_FIRST: u64 = 10_000_000;
 /// is printed past the limit and nothing is kept in memory; past it the string streams as
 /// it is derived (`derive ... | head` ends at once) and the run stops with the error at
 /// the limit.
-pub fn print_derivation<W, I, T>(walk: W, arguments: &DeriveArgs, name: &str) -> Result<(), String>
+fn print_derivation<W, I, T>(walk: W, arguments: &DeriveArgs, name: &str) -> Result<(), String>
 where
     W: Fn() -> Result<I, tinyfractal::Error>,
     I: Iterator<Item = Result<T, tinyfractal::Error>>,

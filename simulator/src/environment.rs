@@ -1,7 +1,10 @@
 //! The CLI's built-in worlds for open L-systems (`--environment`): a region a plant may
 //! grow in, standing on the turtle's start, as in ABOP's topiary.
 
-use tinyfractal::{Environment, Real, TurtleState};
+use tinyfractal::{
+    lsystem::{Environment, TurtleState},
+    Real,
+};
 
 /// A region, `size` turtle units across its height scale.
 #[derive(Debug, Clone, Copy, PartialEq)]

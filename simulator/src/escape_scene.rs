@@ -7,8 +7,10 @@ use std::time::{Duration, Instant};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    Algorithm, Bands, Coord, DeepCoord, DeepParseError, DwellBuffer, Error, Fractal, Gradient,
-    Palette, ReferenceOrbit, ReferencePoint, Render, RenderStats, Shading, Tier, TwoColor, View,
+    escape::{Algorithm, ReferenceOrbit, ReferencePoint, Render, RenderStats, Shading, Tier},
+    math::{DeepCoord, DeepParseError},
+    render::{Bands, DwellBuffer, Gradient, Palette, TwoColor},
+    Coord, Error, Fractal, View,
 };
 
 /// A rendered view.
@@ -57,7 +59,7 @@ pub fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
 }
 
 /// A `--center` or `--width` number with every digit kept (up to
-/// [`MAX_DECIMAL_PLACES`](tinyfractal::MAX_DECIMAL_PLACES) after the point), checked: text
+/// [`MAX_DECIMAL_PLACES`](tinyfractal::math::MAX_DECIMAL_PLACES) after the point), checked: text
 /// that is no number, or not within ±8, gets [`coordinate`]'s message.
 pub fn deep_coordinate(what: &str, text: &str) -> Result<DeepCoord, String> {
     DeepCoord::parse(text).map_err(|error| match error {

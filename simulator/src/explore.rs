@@ -15,7 +15,9 @@ use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    Algorithm, Coord, DwellBuffer, DwellSink, Painter, Render, View, MAX_SMOOTH_ITERATIONS,
+    escape::{Algorithm, Painter, Render, MAX_SMOOTH_ITERATIONS},
+    render::{DwellBuffer, DwellSink},
+    Coord, View,
 };
 
 use tinyfractal_scenes::{Entry, Scene, GALLERY};
@@ -447,7 +449,7 @@ impl Explorer {
         };
         let (view, palette) = escape_scene::view_at(&request, &width)?;
         // Its centre is an f64: past Deep's spacing it has no more digits to zoom into.
-        if view.tier() == tinyfractal::Tier::Perturbation {
+        if view.tier() == tinyfractal::escape::Tier::Perturbation {
             return Err(format!(
                 "the explorer zooms to a pixel spacing of 2^-54; for deeper views use \
                  `tinyfractal render mandelbrot --center RE,IM --width {width}` with all the \

@@ -6,7 +6,11 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
-use tinyfractal::{Colors, Figure, FigureDrawing, Pose, Real, BODY};
+use tinyfractal::{
+    figure::{FigureDrawing, Pose, BODY},
+    render::Colors,
+    Figure, Real,
+};
 
 use crate::common::Common;
 
@@ -48,8 +52,8 @@ fn pose(name: PoseName, time: f64) -> Result<Pose, String> {
     let time = Real::from_f64(time).ok_or_else(|| format!("--time {time}: out of range"))?;
     Ok(match name {
         PoseName::Stand => Pose::default(),
-        PoseName::Walk => tinyfractal::walk_pose(time),
-        PoseName::Wave => tinyfractal::wave_pose(time),
+        PoseName::Walk => tinyfractal::figure::walk(time),
+        PoseName::Wave => tinyfractal::figure::wave(time),
     })
 }
 

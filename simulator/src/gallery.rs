@@ -182,7 +182,7 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                 width,
                 size,
                 max_iterations,
-                algorithm: tinyfractal::Algorithm::Fast,
+                algorithm: tinyfractal::escape::Algorithm::Fast,
                 tier,
                 palette: entry.palette,
             };

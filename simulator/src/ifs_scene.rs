@@ -9,7 +9,7 @@ use clap::Args;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use indicatif::ProgressBar;
-use tinyfractal::{Gingerbread, IfsFile, IfsPicture};
+use tinyfractal::{ifs::IfsPicture, Gingerbread, IfsFile};
 
 use crate::common::Common;
 
@@ -83,7 +83,7 @@ pub struct IfsOptions {
     seed: u64,
     /// How a 3D IFS is seen (front, iso, perspective; 2D ones from the front)
     #[arg(long, value_name = "VIEW", value_parser = crate::common::parse_projection)]
-    projection: Option<tinyfractal::Projection>,
+    projection: Option<tinyfractal::render::Projection>,
     #[command(flatten)]
     common: Common,
 }
@@ -158,7 +158,7 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
             Rgb888::new(0x20, 0xA0, 0x20),
             Rgb888::new(0xF0, 0xFF, 0xC0),
         ];
-        let palette = tinyfractal::Gradient::<Rgb888, 16>::new(&keys, Rgb888::BLACK)
+        let palette = tinyfractal::render::Gradient::<Rgb888, 16>::new(&keys, Rgb888::BLACK)
             .ok_or("the density palette is empty")?;
         let pixels = options.common.width() as usize * options.common.height() as usize;
         let mut counts = vec![0u16; pixels];

@@ -10,7 +10,7 @@ use crate::systems::{load, seed_applies, Loaded};
 
 /// `render lsystem` of a parametric `.lsys` system. `--view` fits the whole picture to the
 /// enlarged area and lets the target clip the rest (no expansion table here).
-pub fn render_parametric(
+fn render_parametric(
     arguments: &LSystemArgs,
     grammar: &ParametricGrammar,
     name: &str,

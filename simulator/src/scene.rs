@@ -6,8 +6,9 @@ use std::time::{Duration, Instant};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    cells_needed, Cell, Colors, Error, Grammar, LSystem, Orientation, ParametricGrammar,
-    ParametricSegments, Segments, WalkStats,
+    lsystem::{cells_needed, Cell, ParametricSegments, Segments, WalkStats},
+    render::{Colors, Orientation},
+    Error, Grammar, LSystem, ParametricGrammar,
 };
 
 use crate::common::View;
@@ -61,7 +62,7 @@ pub fn fitted_area(width: u32, height: u32, view: Option<View>) -> Result<Rectan
     let Some(view) = view else {
         return Ok(target);
     };
-    let too_deep = Error::Walk(tinyfractal::WalkError::Overflow);
+    let too_deep = Error::Walk(tinyfractal::error::WalkError::Overflow);
     let scaled = |pixels: u32, low: f64, high: f64| -> Result<(i32, u32), Error> {
         let size = (f64::from(pixels) / (high - low)).round();
         let corner = (-low * size).round();
@@ -106,16 +107,16 @@ impl Rendered {
 }
 
 /// The engine's error of a draw into the simulator's display (whose own cannot happen).
-pub fn engine_error(error: tinyfractal::DrawError<core::convert::Infallible>) -> Error {
+pub fn engine_error(error: tinyfractal::error::DrawError<core::convert::Infallible>) -> Error {
     match error {
-        tinyfractal::DrawError::Fractal(error) => error,
-        tinyfractal::DrawError::Target(never) => match never {},
+        tinyfractal::error::DrawError::Fractal(error) => error,
+        tinyfractal::error::DrawError::Target(never) => match never {},
     }
 }
 
 /// A draw into the simulator's display, with the engine's errors.
 fn drawn<T>(
-    result: Result<T, tinyfractal::DrawError<core::convert::Infallible>>,
+    result: Result<T, tinyfractal::error::DrawError<core::convert::Infallible>>,
 ) -> Result<T, Error> {
     result.map_err(engine_error)
 }
@@ -123,7 +124,7 @@ fn drawn<T>(
 /// How a system of the general engine is drawn: its 3D view, depth cue, environment.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct GeneralLook<'e> {
-    pub projection: Option<tinyfractal::Projection>,
+    pub projection: Option<tinyfractal::render::Projection>,
     pub depth_cue: bool,
     pub environment: Option<&'e crate::environment::Shape>,
 }
@@ -179,7 +180,8 @@ fn render_window(
     let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(width, height));
     let started = Instant::now();
     let system = HostSystem::with_capacity(grammar, order).with_orientation(orientation);
-    let palette = Colors::new(&VGA).ok_or(Error::Fit(tinyfractal::FitError::EmptyPalette))?;
+    let palette =
+        Colors::new(&VGA).ok_or(Error::Fit(tinyfractal::error::FitError::EmptyPalette))?;
     let mut cells = cells_needed(grammar, order)
         .filter(|&needed| needed <= MAX_CELLS)
         .map_or_else(Vec::new, |needed| vec![Cell::default(); needed]);
@@ -224,7 +226,7 @@ pub fn write_segments_3d(
 }
 
 fn write_all_segments(
-    walk: impl Iterator<Item = Result<tinyfractal::Segment, Error>>,
+    walk: impl Iterator<Item = Result<tinyfractal::lsystem::Segment, Error>>,
     out: &mut dyn Write,
 ) -> io::Result<()> {
     for segment in walk {

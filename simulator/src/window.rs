@@ -14,7 +14,7 @@ use crate::explore;
 use crate::files::{entry_names, read_text, FileKind};
 
 /// The explorer a command starts.
-pub fn explorer(arguments: &ExploreArgs) -> Result<explore::Explorer, String> {
+fn explorer(arguments: &ExploreArgs) -> Result<explore::Explorer, String> {
     let size = embedded_graphics::geometry::Size::new(arguments.size.0, arguments.size.1);
     if let Some(name) = &arguments.scene {
         return explore::Explorer::gallery(name, size);

@@ -4,7 +4,10 @@
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
-use tinyfractal::{Algorithm, Coord, Painter, Render};
+use tinyfractal::{
+    escape::{Algorithm, Painter, Render},
+    Coord,
+};
 use tinyfractal_simulator::escape_scene;
 use tinyfractal_simulator::explore::{
     EscapeState, Explorer, Input, Subject, PALETTES, STATUS_HEIGHT,

@@ -2,7 +2,7 @@
 //! [`Error`] holds one small enum per stage (reading text, walking, fitting, views), each
 //! with its own `Display` in its own module. It stands on `math` alone and names no family's
 //! items, so every family can return these without a cycle; the number layer returns its
-//! own small results ([`Overflow`](crate::math::Overflow),
+//! own small results ([`Overflow`],
 //! [`AngleOutOfRange`](crate::math::AngleOutOfRange)) that become `Error`s here.
 
 use core::fmt;

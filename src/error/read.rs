@@ -29,14 +29,14 @@ pub enum ReadError {
     AngleOutOfRange {
         /// The value given.
         value: i64,
-        /// The most divisions supported ([`MAX_ANGLE_DIVISIONS`](crate::MAX_ANGLE_DIVISIONS)).
+        /// The most divisions supported ([`MAX_ANGLE_DIVISIONS`](crate::math::MAX_ANGLE_DIVISIONS)).
         max: u16,
         /// Where it is.
         at: Location,
     },
     /// More rule lines than a grammar holds.
     TooManyRules {
-        /// The capacity ([`MAX_RULES`](crate::MAX_RULES)).
+        /// The capacity ([`MAX_RULES`](crate::lsystem::MAX_RULES)).
         max: usize,
         /// Where the rule that did not fit starts.
         at: Location,
@@ -68,14 +68,14 @@ pub enum ReadError {
     },
     /// The axiom and the rules hold more symbols than a grammar can.
     TooManySymbols {
-        /// The capacity ([`MAX_SYMBOLS`](crate::MAX_SYMBOLS)).
+        /// The capacity ([`MAX_SYMBOLS`](crate::lsystem::MAX_SYMBOLS)).
         max: usize,
         /// The first symbol that did not fit.
         at: Location,
     },
     /// More distinct numeric commands (`@0.5`, `\30`, `C12`, ...) than a grammar can hold.
     TooManyNumericCommands {
-        /// The capacity ([`MAX_NUMERIC_COMMANDS`](crate::MAX_NUMERIC_COMMANDS)).
+        /// The capacity ([`MAX_NUMERIC_COMMANDS`](crate::lsystem::MAX_NUMERIC_COMMANDS)).
         max: usize,
         /// The first one that did not fit.
         at: Location,
@@ -134,7 +134,7 @@ pub enum ReadError {
     },
     /// A module has more parameters than a grammar holds.
     TooManyParameters {
-        /// The capacity ([`MAX_PARAMS`](crate::MAX_PARAMS)).
+        /// The capacity ([`MAX_PARAMS`](crate::lsystem::MAX_PARAMS)).
         max: usize,
         /// Where the module is.
         at: Location,
@@ -155,7 +155,7 @@ pub enum ReadError {
     },
     /// An IFS has more maps than it can hold.
     TooManyMaps {
-        /// The capacity ([`MAX_MAPS`](crate::MAX_MAPS)).
+        /// The capacity ([`MAX_MAPS`](crate::ifs::MAX_MAPS)).
         max: usize,
         /// Where the map that did not fit is.
         at: Location,
@@ -191,8 +191,8 @@ pub enum ReadError {
         at: Location,
     },
     /// An `.lsys` production uses notation the plain reader
-    /// ([`LsysEntry::grammar`](crate::LsysEntry::grammar)) does not take: read it with
-    /// [`LsysEntry::parametric`](crate::LsysEntry::parametric).
+    /// ([`LsysEntry::grammar`](crate::lsystem::LsysEntry::grammar)) does not take: read it with
+    /// [`LsysEntry::parametric`](crate::lsystem::LsysEntry::parametric).
     Unsupported {
         /// What it uses.
         feature: Unsupported,
@@ -202,7 +202,7 @@ pub enum ReadError {
 }
 
 /// Notation of `.lsys` productions that only the general reader
-/// ([`LsysEntry::parametric`](crate::LsysEntry::parametric)) takes.
+/// ([`LsysEntry::parametric`](crate::lsystem::LsysEntry::parametric)) takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Unsupported {
@@ -235,7 +235,7 @@ impl Unsupported {
 
 /// Something a `.l` entry does that Fractint accepted, and that is drawn as Fractint drew
 /// it, but that is most often a mistake, such as a missing `}` (see
-/// [`Entry::warnings`](crate::Entry::warnings)).
+/// [`Entry::warnings`](crate::lsystem::Entry::warnings)).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum ReadWarning {

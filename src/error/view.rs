@@ -13,7 +13,7 @@ pub enum ViewError {
     IterationsOutOfRange {
         /// The value given.
         value: u32,
-        /// The highest cap ([`MAX_ITERATIONS`](crate::MAX_ITERATIONS)).
+        /// The highest cap ([`MAX_ITERATIONS`](crate::escape::MAX_ITERATIONS)).
         max: u32,
     },
     /// Smooth shading asked of a view whose cap is above `max`.
@@ -21,7 +21,7 @@ pub enum ViewError {
         /// The view's cap.
         value: u32,
         /// The highest cap for smooth shading
-        /// ([`MAX_SMOOTH_ITERATIONS`](crate::MAX_SMOOTH_ITERATIONS)).
+        /// ([`MAX_SMOOTH_ITERATIONS`](crate::escape::MAX_SMOOTH_ITERATIONS)).
         max: u32,
     },
     /// The width is zero or negative.
@@ -73,7 +73,7 @@ pub enum ViewError {
     /// A zoom frame asked to compute a view whose tier is perturbation: a frame computes
     /// each pixel alone in a fixed-point tier, and past `Deep`'s rule it would draw what
     /// `Deep` draws, not the view. Render such a frame with a perturbed
-    /// [`Render`](crate::Render).
+    /// [`Render`](crate::escape::Render).
     ZoomNeedsFixedTier,
 }
 

@@ -25,14 +25,14 @@ pub enum WalkError {
         budget: u64,
     },
     /// A condition or parameter asks the environment (`env(k)`) and the walk has none: open
-    /// systems are drawn with an [`Environment`](crate::Environment).
+    /// systems are drawn with an [`Environment`](crate::lsystem::Environment).
     NoEnvironment {
         /// The module whose production or parameters ask.
         symbol: char,
     },
     /// Branches nest deeper than a context-sensitive walk can keep left contexts for.
     ContextsTooDeep {
-        /// The walk's `SLOTS` ([`MAX_CONTEXT_SLOTS`](crate::MAX_CONTEXT_SLOTS) unless
+        /// The walk's `SLOTS` ([`MAX_CONTEXT_SLOTS`](crate::lsystem::MAX_CONTEXT_SLOTS) unless
         /// set): one slot per level below each open branch.
         capacity: usize,
     },

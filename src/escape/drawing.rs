@@ -24,7 +24,7 @@ where
     P: Palette<Color = D::Color>,
 {
     /// Paints `view`'s values into `target` with `palette` (dwells, or smooth values, as
-    /// the view's [`Shading`](crate::Shading) says).
+    /// the view's [`Shading`](crate::escape::Shading) says).
     pub fn new(target: &'t mut D, palette: P, view: &View) -> Self {
         Self {
             target,
@@ -97,9 +97,9 @@ impl<P: Palette> EscapeTime<P> {
 
     /// Draws a Mandelbrot view by perturbation (what a [`Tier::Perturbation`] view
     /// needs), its reference orbit in `storage`: at least
-    /// [`ReferenceOrbit::points_needed`](crate::ReferenceOrbit::points_needed) points.
+    /// [`ReferenceOrbit::points_needed`](crate::escape::ReferenceOrbit::points_needed) points.
     ///
-    /// [`Tier::Perturbation`]: crate::Tier::Perturbation
+    /// [`Tier::Perturbation`]: crate::escape::Tier::Perturbation
     pub fn draw_perturbed<D>(
         &self,
         target: &mut D,

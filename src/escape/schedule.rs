@@ -394,7 +394,7 @@ impl<const CELLS: usize> Render<'static, CELLS> {
     ///
     /// ```
     /// use embedded_graphics::prelude::Size;
-    /// use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Render, View};
+    /// use tinyfractal::{Coord, Fractal, View, escape::{Algorithm, Render}, render::DwellBuffer};
     ///
     /// let centre = (Coord::parse("-0.75").unwrap(), Coord::default());
     /// let size = Size::new(128, 64);
@@ -413,7 +413,7 @@ impl<const CELLS: usize> Render<'static, CELLS> {
     ///
     /// ```compile_fail
     /// use embedded_graphics::prelude::Size;
-    /// use tinyfractal::{Algorithm, Coord, Fractal, Render, View};
+    /// use tinyfractal::{Coord, Fractal, View, escape::{Algorithm, Render}};
     ///
     /// let centre = (Coord::parse("-0.75").unwrap(), Coord::default());
     /// let size = Size::new(128, 64);

@@ -99,13 +99,13 @@ pub enum Tier {
     /// caps in the tens of thousands even 120 bits miss a few pixels in ten thousand
     /// (docs/tiers.md has the shares).
     Wide,
-    /// Perturbation against one reference orbit (see [`ReferenceOrbit`](crate::ReferenceOrbit)):
+    /// Perturbation against one reference orbit (see [`ReferenceOrbit`](crate::escape::ReferenceOrbit)):
     /// the reference in up to 192-bit fixed point, each pixel a difference from it in 62-bit
     /// mantissas with an exponent. Chosen for Mandelbrot views finer than `Deep` resolves
     /// (spacing below 2⁻⁵⁴), down to a spacing of 2⁻¹⁴⁸ (a width of about 10⁻⁴² on 320
     /// pixels), and from z = 40 where z + i ≥ 51 at caps up to 2048 (see [`View::new`]);
     /// by hand on any Mandelbrot view. Needs storage for the reference: a render
-    /// of it is made with [`Render::perturbed`](crate::Render::perturbed).
+    /// of it is made with [`Render::perturbed`](crate::escape::Render::perturbed).
     Perturbation,
 }
 
@@ -215,7 +215,7 @@ impl View {
     /// takes `Medium` while z + i ≤ 12, `Standard` while z + i ≤ 15; past z + i = 25
     /// with a cap over 256, [`Tier::Wide`] while z < 40 or the cap is over 2048; otherwise
     /// `Deep` up to z + i = 50 and [`Tier::Perturbation`] beyond (render it with
-    /// [`Render::perturbed`](crate::Render::perturbed)). A Julia set (all boundary) takes
+    /// [`Render::perturbed`](crate::escape::Render::perturbed)). A Julia set (all boundary) takes
     /// `Medium` at z = 7, i = 7 (the whole set on a 320-pixel-wide display at 65–128
     /// iterations), `Standard` elsewhere while z + 7·i ≤ 56 (up to 64 iterations at
     /// z ≤ 14, 128 at z ≤ 7), `Deep` while z + i ≤ 22 and the cap is at most 2048, and

@@ -140,7 +140,7 @@ impl<'a, V: ZoomValue> ZoomFrame<'a, V> {
     /// computed yet. [`FitError::BufferTooSmall`] if a slice is too short,
     /// [`FitError::CellTooNarrow`] if the view's values do not fit a `V`,
     /// [`ViewError::ZoomNeedsFixedTier`] if the view's tier is perturbation (a frame would
-    /// compute it in `Deep`: render it with [`Render::perturbed`](crate::Render::perturbed)).
+    /// compute it in `Deep`: render it with [`Render::perturbed`](crate::escape::Render::perturbed)).
     pub fn new(
         view: View,
         values: &'a mut [V],

@@ -73,8 +73,8 @@ impl Gingerbread {
     }
 
     /// The orbit's first `iterations` points, from the start.
-    pub fn points(&self) -> Points {
-        Points {
+    pub fn points(&self) -> GingerbreadPoints {
+        GingerbreadPoints {
             map: *self,
             next: Some(Ok(self.start)),
             left: self.iterations,
@@ -137,13 +137,13 @@ impl Gingerbread {
 
 /// The points of an orbit; yields `Err` once (overflow) and ends.
 #[derive(Debug, Clone)]
-pub struct Points {
+pub struct GingerbreadPoints {
     map: Gingerbread,
     next: Option<Result<MapPoint, Error>>,
     left: u64,
 }
 
-impl Iterator for Points {
+impl Iterator for GingerbreadPoints {
     type Item = Result<MapPoint, Error>;
 
     fn next(&mut self) -> Option<Self::Item> {

@@ -74,7 +74,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
         self
     }
 
-    /// Caps every walk at `symbols` symbols ([`WalkError::BudgetExhausted`](crate::WalkError::BudgetExhausted) beyond).
+    /// Caps every walk at `symbols` symbols ([`WalkError::BudgetExhausted`](crate::error::WalkError::BudgetExhausted) beyond).
     #[must_use]
     pub const fn with_budget(mut self, symbols: u64) -> Self {
         self.budget = symbols;
@@ -209,7 +209,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     /// Otherwise, or where an edge of the box lies within that margin of a pixel's boundary,
     /// a second pass at the chosen scale checks the drawing and measures the box (three
     /// walks).
-    /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::WalkError::Overflow): fitted, its step would
+    /// A drawing wider than 2³¹ turtle units is [`WalkError::Overflow`](crate::error::WalkError::Overflow): fitted, its step would
     /// be below 2⁻²³ pixels, too fine for fixed point to place it truthfully.
     pub fn fit<'p, C: PixelColor>(
         &self,
@@ -224,7 +224,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
 
     /// [`fit`](Self::fit) with any [`Palette`] for the colour indices (a [`Gradient`], say).
     ///
-    /// [`Gradient`]: crate::Gradient
+    /// [`Gradient`]: crate::render::Gradient
     pub fn fit_with<P: Palette>(
         &self,
         area: Rectangle,
@@ -234,7 +234,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> LSystem<'g, 'a, DEPTH, STAC
     }
 
     /// [`fit_with`](Self::fit_with), measuring and drawing through the expansion table held
-    /// in `cells` ([`cells_needed`](crate::cells_needed) of them): the picture's box comes
+    /// in `cells` ([`cells_needed`](crate::lsystem::cells_needed) of them): the picture's box comes
     /// from the table instead of a sizing walk (the same box). Where the picture has more
     /// segments than the area has pixels, drawing skips what lies outside the target and
     /// draws what lies within one pixel as that pixel, so its cost follows the picture, not

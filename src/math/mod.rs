@@ -15,8 +15,9 @@ pub(crate) mod real;
 pub(crate) mod trig;
 pub(crate) mod wide;
 
-pub use affine::Overflow;
+pub use affine::{Affine2, Affine3, Overflow};
 pub use angle::{Angle, AngleOutOfRange, MAX_ANGLE_DIVISIONS};
 pub use big::{DeepCoord, DeepParseError, DEEP_LIMBS, MAX_DECIMAL_PLACES};
 pub use coord::Coord;
+pub use random::Generator;
 pub use real::Real;

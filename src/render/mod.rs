@@ -9,3 +9,9 @@ pub(crate) mod projection;
 pub(crate) mod raster;
 pub(crate) mod sink;
 pub(crate) mod space;
+
+pub use fit::{Orientation, DEFAULT_MARGIN};
+pub use palette::{Bands, Colors, Gradient, Palette, TwoColor};
+pub use projection::Projection;
+pub use sink::{DwellBuffer, DwellSink};
+pub use space::DEPTH_LEVELS;

@@ -9,7 +9,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{centred_square, check_order, depth_first, power};
+use super::order::{centred_square, check_order, depth_first, power};
 use crate::error::Error;
 
 /// The Sierpiński carpet at an order.

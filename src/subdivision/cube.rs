@@ -17,7 +17,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{check_order, depth_first, power};
+use super::order::{check_order, depth_first, power};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::affine::Affine3;
 use crate::math::trig::ONE_Q30;

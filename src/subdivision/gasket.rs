@@ -14,7 +14,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{check_order, power};
+use super::order::{check_order, power};
 use crate::error::{Error, FitError};
 
 /// The triangle's height over its base, as a ratio (≈ √3/2).

@@ -15,7 +15,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{displaced, levels_of, real_of, Displacement};
+use super::displacement::{displaced, levels_of, real_of, Displacement};
 use crate::error::{Error, FitError};
 use crate::math::random::normal_q16;
 use crate::math::Real;

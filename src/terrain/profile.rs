@@ -5,7 +5,9 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::{displaced, levels_of, real_of, Displacement, MAX_END, MAX_TERRAIN_LEVELS};
+use super::displacement::{
+    displaced, levels_of, real_of, Displacement, MAX_END, MAX_TERRAIN_LEVELS,
+};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::random::normal_q16;
 use crate::math::Real;

@@ -231,7 +231,7 @@ impl ModelSystem {
 
 /// The engine's segments as f64.
 pub fn engine_segments(grammar: &tinyfractal::Grammar<'_>, order: u32) -> Vec<ModelSegment> {
-    tinyfractal::Segments::new(grammar, order)
+    tinyfractal::lsystem::Segments::new(grammar, order)
         .unwrap()
         .map(|s| {
             let s = s.unwrap();
@@ -283,7 +283,7 @@ pub fn koch_snowflake() -> tinyfractal::Grammar<'static> {
 }
 
 /// The pixel a drawing pass puts a turtle point on (orientation right: the row is -y).
-pub fn pixel(p: tinyfractal::TurtlePoint) -> Point {
+pub fn pixel(p: tinyfractal::lsystem::TurtlePoint) -> Point {
     Point::new(p.x.round_to_i32(), -p.y.round_to_i32())
 }
 

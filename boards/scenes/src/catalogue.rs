@@ -4,8 +4,12 @@
 
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
-    Angle, Coord, CubeVariant, DeepCoord, Dialect, Displacement, Error, Fractal, Grammar,
-    Orientation, Real, Shading, Tier, View,
+    escape::{Shading, Tier},
+    math::DeepCoord,
+    render::Orientation,
+    subdivision::CubeVariant,
+    terrain::Displacement,
+    Angle, Coord, Dialect, Error, Fractal, Grammar, Real, View,
 };
 
 /// An L-system in ABOP notation: axiom, rules, angle, and the symbols besides `F` that draw.
@@ -451,7 +455,7 @@ const fn adjusted(entry: Entry, shading: Option<Shading>, tier: Option<Tier>) ->
         None => own_shading,
     };
     if let Shading::Smooth = shading {
-        assert!(max_iterations <= tinyfractal::MAX_SMOOTH_ITERATIONS);
+        assert!(max_iterations <= tinyfractal::escape::MAX_SMOOTH_ITERATIONS);
     }
     Entry {
         scene: Scene::Escape {

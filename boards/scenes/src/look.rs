@@ -5,12 +5,18 @@ use embedded_graphics::{
     pixelcolor::{Gray4, GrayColor, Rgb565, Rgb888},
     prelude::*,
 };
-use tinyfractal::FitError;
+use tinyfractal::error::FitError;
 use tinyfractal::{
-    walk_pose, Carpet, Cell, Colors, Coord, DeepCoord, Displacement, DrawError, Error, EscapeTime,
-    Figure, Fractal, Gasket, Gradient, Ifs, IfsFile, IfsPicture, LSystem, LsysFile, Orientation,
-    ParametricGrammar, ParametricLSystem, Real, ReferencePoint, Shading, SierpinskiCube, Terrain,
-    TerrainMap, Tier, View, ZoomFrame, ZoomLine, BODY, DEFAULT_DEPTH, DEFAULT_STACK,
+    error::DrawError,
+    escape::{ReferencePoint, Shading, Tier, ZoomFrame, ZoomLine},
+    figure::{walk as walk_pose, BODY},
+    ifs::IfsPicture,
+    lsystem::{Cell, DEFAULT_DEPTH, DEFAULT_STACK},
+    math::DeepCoord,
+    render::{Colors, Gradient, Orientation},
+    terrain::Displacement,
+    Carpet, Coord, Error, EscapeTime, Figure, Fractal, Gasket, Ifs, IfsFile, LSystem, LsysFile,
+    ParametricGrammar, ParametricLSystem, Real, SierpinskiCube, Terrain, TerrainMap, View,
 };
 
 use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};

@@ -6,7 +6,7 @@ use core::convert::Infallible;
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*, primitives::Rectangle};
 
-use tinyfractal::{Coord, Shading};
+use tinyfractal::{escape::Shading, Coord};
 
 use crate::catalogue::Scene;
 

@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use embedded_graphics::prelude::Size;
-use tinyfractal::{Render, REFERENCE_POINT_BYTES};
+use tinyfractal::escape::{Render, REFERENCE_POINT_BYTES};
 use tinyfractal_scenes::measure::Checksum;
 use tinyfractal_scenes::{
     Entry, Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, MAX_BOARD_REFERENCE_POINTS,

@@ -1,7 +1,11 @@
 //! A scene computed in a tier other than the rule's draws what the rule's tier would: the
 //! boards measure a cheaper tier only where it keeps every dwell.
 
-use tinyfractal::{Algorithm, DwellBuffer, Render, Tier, View};
+use tinyfractal::{
+    escape::{Algorithm, Render, Tier},
+    render::DwellBuffer,
+    View,
+};
 use tinyfractal_scenes::{Entry, DISPLAY_SCENES, GALLERY, SCENES};
 
 /// The view's dwells, every pixel computed at its own point.

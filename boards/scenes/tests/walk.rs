@@ -3,7 +3,10 @@
 //! the fit shared by every frame; and a board gets a call between frames to pace it.
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
-use tinyfractal::{walk_pose, Figure, Real, BODY};
+use tinyfractal::{
+    figure::{walk as walk_pose, BODY},
+    Figure, Real,
+};
 use tinyfractal_scenes::{Scene, Work, GREY};
 
 #[path = "../../../tests/support/frame.rs"]

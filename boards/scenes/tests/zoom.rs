@@ -3,7 +3,11 @@
 //! (every pixel computed exactly at its own point, through the same gradient).
 
 use embedded_graphics::pixelcolor::Gray4;
-use tinyfractal::{Algorithm, Coord, DwellBuffer, Fractal, Gradient, Palette, Render, View};
+use tinyfractal::{
+    escape::{Algorithm, Render},
+    render::{DwellBuffer, Gradient, Palette},
+    Coord, Fractal, View,
+};
 use tinyfractal_scenes::{Scene, Work, GREY, ZOOM_SCENES};
 
 #[path = "../../../tests/support/frame.rs"]

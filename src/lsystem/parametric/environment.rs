@@ -26,7 +26,7 @@ pub struct TurtleState {
 /// [`query`](Self::query)`(k, turtle)`.
 ///
 /// ```
-/// use tinyfractal::{Environment, LsysFile, Real, Segments3, TurtleState};
+/// use tinyfractal::{LsysFile, Real, lsystem::{Environment, Segments3, TurtleState}};
 ///
 /// /// 1 inside a circle of radius 10 about the origin, else 0.
 /// struct Circle;
