@@ -2,7 +2,7 @@
 //! Mandelbrot view and a boundary-heavy zoom, 320×240. Also prints the work each does as a
 //! fraction of the naive loop's, and the draw calls per frame.
 //!
-//! `cargo bench --bench escape`; the README quotes these numbers.
+//! `cargo bench --bench escape`; docs/performance.md quotes these numbers.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use embedded_graphics::prelude::*;

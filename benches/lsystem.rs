@@ -3,7 +3,7 @@
 //! iterator and an `f32` turtle (a sizing walk, then a drawing walk with Bresenham into a
 //! byte buffer).
 //!
-//! `cargo bench --bench lsystem`; `benches/record` keeps the numbers the README quotes.
+//! `cargo bench --bench lsystem`; `benches/record` keeps the numbers docs/performance.md quotes.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};

@@ -3,7 +3,7 @@
 //! `deep-zoom`), and perturbation alone past `Deep`'s reach (a minibrot 10⁻²⁰ and a
 //! Misiurewicz spiral 10⁻³⁰), 320×240. Also prints the iterations each computes and skips.
 //!
-//! `cargo bench --bench perturbation`; the README quotes these numbers.
+//! `cargo bench --bench perturbation`; docs/performance.md quotes these numbers.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use embedded_graphics::prelude::*;

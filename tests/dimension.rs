@@ -1,5 +1,5 @@
 //! Fractal theory: box-counting dimensions of rendered pictures against their theoretical
-//! values (the README's table), and the core's box counter against an independent one.
+//! values (the table in docs/families.md), and the core's box counter against an independent one.
 
 mod common;
 
@@ -83,7 +83,7 @@ fn estimate(
     (d.value.to_f64(), d.residual.to_f64(), counter)
 }
 
-/// Theory, the core's estimate and the tolerance stated in the README's table.
+/// Theory, the core's estimate and the tolerance stated in docs/families.md's table.
 const TOLERANCE: f64 = 0.05;
 
 fn check(

@@ -233,7 +233,7 @@ fn colour_indices_through_any_palette() {
     assert_eq!(by_list.get_pixel(Point::new(9, 0)), Some(Rgb888::BLUE));
 }
 
-/// The walk's worst case per capacity, as the README states it: 8 bytes a level, 32 a
+/// The walk's worst case per capacity, as docs/memory.md states it: 8 bytes a level, 32 a
 /// saved turtle, and 248 more (on a 64-bit host; less on a 32-bit MCU).
 #[test]
 fn walker_state_grows_by_its_capacities() {

@@ -455,7 +455,7 @@ impl fmt::Display for ReadError {
             Self::Unsupported { feature, at } => write!(
                 f,
                 "{} at {at}: the plain reader does not take them; read the system with \
-                 `LsysEntry::parametric` (the CLI does; see the README's `.lsys` section)",
+                 `LsysEntry::parametric` (the CLI does; see docs/lsystems.md)",
                 feature.describe()
             ),
             Self::OldMacLineEndings => write!(

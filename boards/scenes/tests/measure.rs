@@ -160,7 +160,7 @@ fn run(core: &Core, elf: &Path) -> Vec<BTreeMap<String, String>> {
         .collect()
 }
 
-/// The README's RAM claims for perturbation, from the measured stacks: the largest cap
+/// docs/memory.md's RAM claims for perturbation, from the measured stacks: the largest cap
 /// whose reference orbit fits the LM3S6965's 64 KiB beside the OLED board's 4 KiB
 /// framebuffer, static data and the rest of the deep scene's stack (which holds a
 /// reference of `MAX_BOARD_REFERENCE_POINTS`); and the micro:bit's, which runs no
@@ -186,11 +186,11 @@ fn reference_caps(stacks: &BTreeMap<(&str, &str), (u64, u64)>) {
     );
     assert!(
         lm3s >= 1850,
-        "the README says a cap of about 1,900 fits: {lm3s}"
+        "docs/memory.md says a cap of about 1,900 fits: {lm3s}"
     );
     assert!(
         microbit >= 60,
-        "the README says a cap of about 75 (at least 60) fits the micro:bit: {microbit}"
+        "docs/memory.md says a cap of about 75 (at least 60) fits the micro:bit: {microbit}"
     );
 }
 

@@ -1,5 +1,5 @@
-//! The performance tables in `docs/performance.md` and the README are generated from the
-//! measurements (`boards/measurements.json`, written by `boards/measure`, and
+//! The performance tables in `docs/performance.md`, `docs/families.md` and the README are
+//! generated from the measurements (`boards/measurements.json`, written by `boards/measure`, and
 //! `benches/results.json`, written by `benches/record`), never typed by hand. This test
 //! regenerates every table and fails when a document's copy is stale;
 //! `TINYFRACTAL_BLESS=1` (or `boards/tables`) writes them instead.
@@ -499,7 +499,7 @@ fn performance_tables_are_generated_from_the_measurements() {
     ];
     let bless = std::env::var_os("TINYFRACTAL_BLESS").is_some();
     let mut stale = Vec::new();
-    for document in ["README.md", "docs/performance.md"] {
+    for document in ["README.md", "docs/performance.md", "docs/families.md"] {
         let path = repository().join(document);
         let text = std::fs::read_to_string(&path).unwrap();
         let fresh = regenerated(&text, &tables);

@@ -17,7 +17,7 @@ use crate::lsystem::walker::{check_order, order_too_high};
 /// and ends.
 ///
 /// For context-sensitive systems it also keeps, per level, the module a left context
-/// sees, and finds right contexts by reading ahead from its frames (the README's `.lsys`
+/// sees, and finds right contexts by reading ahead from its frames (docs/lsystems.md's `.lsys`
 /// section says how, and what it costs).
 #[derive(Debug, Clone)]
 pub struct ParametricWalker<
