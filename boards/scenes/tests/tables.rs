@@ -1,8 +1,8 @@
 //! The performance tables in `docs/performance.md`, `docs/families.md` and the README are
-//! generated from the measurements (`boards/measurements.json`, written by `boards/measure`, and
-//! `benches/results.json`, written by `benches/record`), never typed by hand. This test
-//! regenerates every table and fails when a document's copy is stale;
-//! `TINYFRACTAL_BLESS=1` (or `boards/tables`) writes them instead.
+//! generated from the measurements (`boards/measurements.json`, written by `boards/measure`,
+//! and `benches/results.json`, written by `benches/record`), never typed by hand. This test
+//! regenerates every table and fails when a document's copy is stale; `TINYFRACTAL_BLESS=1` (or
+//! `boards/tables`) writes them instead.
 //!
 //! A table sits between `<!-- generated: NAME -->` and `<!-- end: NAME -->`.
 
