@@ -7,10 +7,10 @@
 //! ```
 //! use tinyfractal::prelude::*;
 //!
-//! let step: Real = Real::from_ratio(1, 2).ok_or(Error::Walk(tinyfractal::error::WalkError::Overflow))?;
-//! assert_eq!(step.to_f64(), 0.5);
-//! assert_eq!(Angle::parse_degrees("22.5"), Some(Angle::Degrees(Real::from_ratio(45, 2).unwrap())));
-//! # Ok::<(), Error>(())
+//! let degrees = Real::from_ratio(45, 2).unwrap();
+//! assert_eq!(Angle::parse_degrees("22.5"), Some(Angle::Degrees(degrees)));
+//! let centre: Coord = Coord::parse("-0.75").unwrap();
+//! assert_eq!(centre.to_f64(), -0.75);
 //! ```
 
 pub use crate::error::Error;

@@ -11,6 +11,21 @@
 //! box only ever fills.
 //!
 //! [`Drawable`]: embedded_graphics::Drawable
+//!
+//! ```
+//! use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::{PrimitiveStyle, Rectangle}};
+//! use tinyfractal::BoxCounter;
+//!
+//! // A filled square has dimension 2.
+//! let size = Size::new(256, 256);
+//! let mut bits = vec![0u32; BoxCounter::<BinaryColor>::words_needed(size, 0)];
+//! let mut counter = BoxCounter::new(size, 0, BinaryColor::Off, &mut bits)?;
+//! let square = Rectangle::new(Point::zero(), size);
+//! let Ok(()) = square.into_styled(PrimitiveStyle::with_fill(BinaryColor::On)).draw(&mut counter);
+//! let estimate = counter.dimension()?;
+//! assert!((estimate.value.to_f64() - 2.0).abs() < 0.01);
+//! # Ok::<(), tinyfractal::Error>(())
+//! ```
 
 use core::convert::Infallible;
 

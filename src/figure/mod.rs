@@ -6,6 +6,22 @@
 //! A [`Part`] is a shape along its local +x axis (a limb from the joint to its end), its
 //! children and their attachment points. The figure is drawn as lines (a rectangle as its
 //! outline, a circle as a 16-sided polygon), fitted to the target like an L-system.
+//!
+//! ```
+//! use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+//! use tinyfractal::figure::{walk, BODY};
+//! use tinyfractal::{Figure, Real};
+//!
+//! // The lecture's body a quarter of the way through its walk, fitted into 64×64.
+//! let mut display = MockDisplay::<BinaryColor>::new();
+//! display.set_allow_overdraw(true);
+//! let pose = walk(Real::from_ratio(1, 4).unwrap());
+//! let lines = Figure::new(&BODY, pose)
+//!     .fit(display.bounding_box(), &[BinaryColor::On])?
+//!     .draw(&mut display)?;
+//! assert!(lines > 30);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 pub(crate) mod body;
 pub(crate) mod hierarchy;

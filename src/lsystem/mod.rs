@@ -1,6 +1,28 @@
 //! The L-system engine, one stage per module:
 //! grammar (and the `.l` reader) → walker → turtle → raster → drawable, with the expansion
 //! table beside the walker for measuring and drawing without visiting every segment.
+//!
+//! ```
+//! use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
+//! use tinyfractal::lsystem::Segments;
+//! use tinyfractal::{Angle, Dialect, Grammar, LSystem, LsysFile};
+//!
+//! // The raw layer: the dragon's segments at order 3, in turtle units.
+//! let dragon = Grammar::new(Dialect::Abop, "FX", Angle::Divisions(4))?
+//!     .with_rule('X', "X+YF+")?
+//!     .with_rule('Y', "-FX-Y")?;
+//! assert_eq!(Segments::new(&dragon, 3)?.count(), 8);
+//!
+//! // A stochastic `.lsys` system: a seed draws the same plant on every target.
+//! let file = LsysFile::new("bush {\n axiom: F\n angle: 25\n seed: 3\n\
+//!                           F --> F[+F]F[-F]F : 0.5\n F --> F[+F]F : 0.5\n}\n");
+//! let bush = file.entry("bush")?.grammar()?;
+//! let mut display = MockDisplay::<BinaryColor>::new();
+//! display.set_allow_overdraw(true);
+//! let stats = LSystem::new(&bush, 3).fit(display.bounding_box(), &[BinaryColor::On])?.draw(&mut display)?;
+//! assert!(stats.segments > 27);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 pub(crate) mod alphabet;
 pub(crate) mod choice;
