@@ -1,6 +1,9 @@
 //! The chaos game: the lecture's fern, 100,000 points, played alone and fitted and drawn
 //! into 320×240. `cargo bench --bench ifs`; `benches/record` keeps the numbers.
 
+// `criterion_group!` defines a public function without documentation.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use std::hint::black_box;

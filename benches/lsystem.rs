@@ -5,6 +5,9 @@
 //!
 //! `cargo bench --bench lsystem`; `benches/record` keeps the numbers docs/performance.md quotes.
 
+// `criterion_group!` defines a public function without documentation.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use std::hint::black_box;
@@ -96,7 +99,7 @@ fn bench(c: &mut Criterion) {
     let size = Size::new(SIZE.0 as u32, SIZE.1 as u32);
     println!(
         "walker state (Segments, default capacities): {} bytes at any order",
-        core::mem::size_of::<Segments<'static, 'static>>()
+        size_of::<Segments<'static, 'static>>()
     );
     let mut group = c.benchmark_group("koch-snowflake-order-8");
     group.throughput(Throughput::Elements(segments));

@@ -5,6 +5,9 @@
 //!
 //! `cargo bench --bench perturbation`; docs/performance.md quotes these numbers.
 
+// `criterion_group!` defines a public function without documentation.
+#![allow(missing_docs)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use embedded_graphics::prelude::*;
 use std::hint::black_box;

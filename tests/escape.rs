@@ -798,13 +798,13 @@ fn palettes_for_every_colour_type() {
 
 #[test]
 fn a_render_fits_in_a_few_kilobytes() {
-    let bytes = core::mem::size_of::<Render>();
+    let bytes = size_of::<Render>();
     // 4 KiB of tile dwells (32×64), 768 bytes of tile coordinates, the view (with its
     // 72-byte deep centre and spacing), the kernel constants, the counters, and a
     // perturbed render's series (16 terms of 16 bytes in one scale) and finish.
     assert!(bytes <= 5600, "Render is {bytes} bytes");
     // With 32-row tiles, 2 KiB of dwells fewer.
-    let small = core::mem::size_of::<Render<'_, 1024>>();
+    let small = size_of::<Render<'_, 1024>>();
     assert_eq!(bytes - small, 2048);
 }
 

@@ -201,7 +201,7 @@ fn koch_at_order_16_draws_from_the_table() {
 /// The table's worst case per cell, as the docs state it.
 #[test]
 fn a_cell_is_at_most_96_bytes() {
-    let bytes = core::mem::size_of::<Cell>();
+    let bytes = size_of::<Cell>();
     println!("Cell: {bytes} bytes");
     assert!(bytes <= 96, "{bytes}");
     // Koch1 at order 16: one symbol with a rule, 16 levels, 6 headings, one sense (no `!`).

@@ -1,6 +1,8 @@
-//! `animate`: a zoom that reuses its frames, colour cycling, an L-system growing by order,
-//! the walking figure; written as numbered PNG frames, an animated GIF or an APNG, all or
-//! nothing, with a progress bar on a terminal.
+//! `tinyfractal animate`: a picture that moves, as frames.
+//!
+//! A zoom that reuses its frames, colour cycling, an L-system growing by order, the walking
+//! figure; written as numbered PNG frames, an animated GIF or an APNG, all or nothing, with a
+//! progress bar on a terminal.
 
 use std::io::{self, Write};
 use std::path::Path;

@@ -1,6 +1,7 @@
-//! Command-line parsing with clap (derive): one subcommand per family, `--help` on each,
-//! `--version`, and shell completions. The option names are a contract (the README and the
-//! issues name them): keep them exactly as they are.
+//! Command-line parsing with clap (derive).
+//!
+//! One subcommand per family, `--help` on each, `--version`, and shell completions. The option
+//! names are a contract (the README and the issues name them): keep them exactly as they are.
 
 use std::ffi::OsString;
 use std::path::PathBuf;

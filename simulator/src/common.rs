@@ -1,6 +1,8 @@
-//! What every render shares on the command line: `--size`, `--out`, `--stats`, `--window`,
-//! `--dimension`, and the window (`--view`) and projection values some take. Defined once
-//! here, below the parser and the scenes that both use them.
+//! What every render shares on the command line.
+//!
+//! `--size`, `--out`, `--stats`, `--window`, `--dimension`, and the window (`--view`) and
+//! projection values some take. Defined once here, below the parser and the scenes that both
+//! use them.
 
 use std::path::PathBuf;
 

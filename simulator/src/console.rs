@@ -1,6 +1,7 @@
-//! What a command prints on standard output, with its failures handled: a closed pipe
-//! (`list FILE | head -1`) stops the run quietly, any other failure (a full device) is an
-//! error that names standard output; neither is a panic.
+//! What a command prints on standard output, with its failures handled.
+//!
+//! A closed pipe (`list FILE | head -1`) stops the run quietly, any other failure (a full
+//! device) is an error that names standard output; neither is a panic.
 
 use std::io::{self, Write};
 

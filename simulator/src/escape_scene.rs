@@ -59,8 +59,9 @@ pub fn coordinate(what: &str, text: &str) -> Result<Coord, String> {
 }
 
 /// A `--center` or `--width` number with every digit kept (up to
-/// [`MAX_DECIMAL_PLACES`](tinyfractal::math::MAX_DECIMAL_PLACES) after the point), checked: text
-/// that is no number, or not within ±8, gets [`coordinate`]'s message.
+/// [`MAX_DECIMAL_PLACES`](tinyfractal::math::MAX_DECIMAL_PLACES) after the point), checked.
+///
+/// Text that is no number, or not within ±8, gets [`coordinate`]'s message.
 pub fn deep_coordinate(what: &str, text: &str) -> Result<DeepCoord, String> {
     DeepCoord::parse(text).map_err(|error| match error {
         DeepParseError::TooManyDigits { .. } => format!("{what}: `{text}`: {error}"),

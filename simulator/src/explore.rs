@@ -1,9 +1,11 @@
-//! `explore`: an explorer of escape-time views and L-system files, as Fractint and XaoS
-//! users know it. The state and its inputs live here, apart from SDL, so that they are
-//! tested headless: an [`Input`] changes the view and cancels the stale render, and
-//! [`Explorer::tick`] renders progressively (a coarse preview first, then the budgeted
-//! `Render::step`), so the window stays responsive while a deep view computes. The
-//! `window` feature's loop only maps SDL events to inputs and shows the display.
+//! `tinyfractal explore`: the explorer's state and inputs, apart from SDL.
+//!
+//! An explorer of escape-time views and L-system files, as Fractint and XaoS users know it. The
+//! state and its inputs live here, apart from SDL, so that they are tested headless: an
+//! [`Input`] changes the view and cancels the stale render, and [`Explorer::tick`] renders
+//! progressively (a coarse preview first, then the budgeted `Render::step`), so the window
+//! stays responsive while a deep view computes. The `window` feature's loop only maps SDL
+//! events to inputs and shows the display.
 
 use std::path::PathBuf;
 use std::time::{Duration, Instant};

@@ -24,9 +24,11 @@ pub fn read_text(path: &Path) -> Result<String, String> {
     decode(path, &bytes)
 }
 
-/// The text of `bytes`, read from `path`: UTF-8 (a byte-order mark skipped) or, failing
-/// that, 8-bit text as Fractint's own files are (each byte its Latin-1 character). Too
-/// large a file, UTF-16 and binary files are named as such.
+/// The text of `bytes`, read from `path`.
+///
+/// UTF-8 (a byte-order mark skipped) or, failing that, 8-bit text as Fractint's own files are
+/// (each byte its Latin-1 character). Too large a file, UTF-16 and binary files are named as
+/// such.
 pub fn decode(path: &Path, bytes: &[u8]) -> Result<String, String> {
     if bytes.len() as u64 > MAX_INPUT_BYTES {
         return Err(format!(

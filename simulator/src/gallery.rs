@@ -31,9 +31,11 @@ fn folder_missing(out: &Path) -> Result<bool, String> {
 /// A scene's picture and what the table says of it: detail, work, time.
 type Rendered = (Picture, String, String, Duration);
 
-/// Renders every scene, then writes them all into `out` with the table on standard
-/// output, or nothing: a scene that fails, a full disk or a closed standard output leaves
-/// the folder as it was (a folder made for the gallery is removed again).
+/// Renders every scene, then writes them all into `out` with the table on standard output, or
+/// nothing.
+///
+/// A scene that fails, a full disk or a closed standard output leaves the folder as it was (a
+/// folder made for the gallery is removed again).
 pub fn run(out: &Path) -> Result<(), String> {
     let make_folder = folder_missing(out)?;
     let scenes = GALLERY.len() + GENERAL_GALLERY.len() + IFS_GALLERY.len();

@@ -23,9 +23,10 @@ use image::ImageEncoder;
 /// The temporary files being written now: what an interrupt removes.
 static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
-/// Makes Ctrl-C (SIGINT), SIGTERM and SIGHUP remove the temporary files of the outputs
-/// being written, then end the run with status 130: a run stopped half way leaves the
-/// folder as it was. Called once, as the run starts.
+/// Makes Ctrl-C (SIGINT), SIGTERM and SIGHUP remove the temporary files of the outputs being
+/// written, then end the run with status 130.
+///
+/// A run stopped half way leaves the folder as it was. Called once, as the run starts.
 pub fn remove_temporaries_on_interrupt() {
     // A second handler cannot be set (tests call `run` once a process): nothing to do.
     let _ = ctrlc::set_handler(|| {

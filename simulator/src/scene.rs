@@ -55,8 +55,10 @@ pub fn render(
 }
 
 /// The area the whole picture is fitted to so that `view` of it fills a `width`×`height`
-/// target: the target scaled by the window's inverse and moved by its corner. The drawing
-/// culls the rest, so the cost follows what is visible.
+/// target.
+///
+/// The target scaled by the window's inverse and moved by its corner. The drawing culls the
+/// rest, so the cost follows what is visible.
 pub fn fitted_area(width: u32, height: u32, view: Option<View>) -> Result<Rectangle, Error> {
     let target = Rectangle::new(Point::zero(), Size::new(width, height));
     let Some(view) = view else {
@@ -192,9 +194,11 @@ fn render_window(
     Ok(Rendered::timed(display, stats, started, fit))
 }
 
-/// Every drawn segment, `x0 y0 x1 y1` per line, in turtle units (start at the origin,
-/// heading +x, step 1, y up): the engine's fixed-point values printed exactly. Streamed:
-/// a derivation of billions of segments needs no more memory than one.
+/// Every drawn segment, `x0 y0 x1 y1` per line, in turtle units (start at the origin, heading
+/// +x, step 1, y up).
+///
+/// The engine's fixed-point values printed exactly. Streamed: a derivation of billions of
+/// segments needs no more memory than one.
 pub fn write_segments(grammar: &Grammar<'_>, order: u32, out: &mut dyn Write) -> io::Result<()> {
     let walk = Segments::<'_, '_, DEPTH, STACK>::with_capacity(grammar, order, Default::default())
         .map_err(io::Error::other)?;

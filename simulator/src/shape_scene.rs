@@ -1,6 +1,7 @@
-//! `render carpet`, `render gasket`, `render cube` (the Sierpiński family), `render
-//! terrain` and `render terrain2d` (midpoint displacement), and the gallery's entries of
-//! them: drawn on black, the carpet and gasket in the palette's first colour (white).
+//! `render carpet`, `render gasket`, `render cube` (the Sierpiński family), `render terrain`
+//! and `render terrain2d` (midpoint displacement), and the gallery's entries of them.
+//!
+//! Drawn on black, the carpet and gasket in the palette's first colour (white).
 
 use std::io::Write;
 use std::path::PathBuf;

@@ -1,5 +1,6 @@
-//! Fractal dimension by box counting, over whatever a [`Drawable`] draws: a
-//! [`BoxCounter`] is a `DrawTarget` that keeps one bit per box of the finest size (in a
+//! Fractal dimension by box counting, over whatever a [`Drawable`] draws.
+//!
+//! A [`BoxCounter`] is a `DrawTarget` that keeps one bit per box of the finest size (in a
 //! buffer the caller gives), counts the occupied boxes of sides 2ᵏ from it, and fits the
 //! slope of log₂ N against log₂ of the side by least squares: D = −slope, with the fit's
 //! residual. Logarithms and the fit are fixed point, so the estimate is the same on every

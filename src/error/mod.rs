@@ -1,4 +1,5 @@
-//! One `Copy` error type for the whole crate, with messages that say how to fix the input:
+//! One `Copy` error type for the whole crate, with messages that say how to fix the input.
+//!
 //! [`Error`] holds one small enum per stage (reading text, walking, fitting, views), each
 //! with its own `Display` in its own module. It stands on `math` alone and names no family's
 //! items, so every family can return these without a cycle; the number layer returns its

@@ -233,8 +233,9 @@ impl Unsupported {
     }
 }
 
-/// Something a `.l` entry does that Fractint accepted, and that is drawn as Fractint drew
-/// it, but that is most often a mistake, such as a missing `}` (see
+/// Something a `.l` entry does that Fractint accepted but is most often a mistake.
+///
+/// It is drawn as Fractint drew it, with a warning: a missing `}`, for one (see
 /// [`Entry::warnings`](crate::lsystem::Entry::warnings)).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]

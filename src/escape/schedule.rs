@@ -176,8 +176,10 @@ impl Pixels<'_> {
     }
 }
 
-/// A render in progress: call [`step`](Self::step) from a main loop with a budget, or
-/// [`run`](Self::run) to finish in one go. A perturbed render borrows its reference
+/// A render in progress.
+///
+/// Call [`step`](Self::step) from a main loop with a budget, or [`run`](Self::run) to
+/// finish in one go. A perturbed render borrows its reference
 /// orbit's storage for `'r`; any other is a `Render<'static>`. `CELLS` is the tile's
 /// cells (see [`with_capacity`](Render::with_capacity)).
 #[derive(Debug, Clone)]

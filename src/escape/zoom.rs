@@ -94,8 +94,9 @@ impl ZoomValue for u16 {
     }
 }
 
-/// A column or row of a frame: the point it was computed at (Q60 bits, not always its
-/// nominal one), and while a frame is computed, the old line it takes. 12 bytes: the
+/// A column or row of a frame.
+///
+/// The point it was computed at (Q60 bits, not always its nominal one), and while a frame is computed, the old line it takes. 12 bytes: the
 /// point is kept as two 32-bit halves so that a line is aligned to 4, not 8.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct ZoomLine {

@@ -1,5 +1,6 @@
-//! Object hierarchies (the lecture's articulated body): parts drawn in their parent's
-//! coordinate system, each placed by a joint (a translation to the parent's attachment
+//! Object hierarchies: the lecture's articulated body.
+//!
+//! Parts are drawn in their parent's coordinate system, each placed by a joint (a translation to the parent's attachment
 //! point, then a rotation by the joint's angle), walked depth first with a bounded stack
 //! of [`Affine2`](crate::math::Affine2) maps, as `glPushMatrix`/`glPopMatrix` do.
 //!

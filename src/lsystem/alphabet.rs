@@ -323,8 +323,9 @@ impl SymbolSet {
     }
 }
 
-/// One symbol of a derived string, as it prints: the symbol (lower-cased in the Fractint
-/// dialect) and, for a numeric command, its number (`@` the factor, `\` and `/` degrees,
+/// One symbol of a derived string, as it prints.
+///
+/// The symbol (lower-cased in the Fractint dialect) and, for a numeric command, its number (`@` the factor, `\` and `/` degrees,
 /// `C`, `<`, `>` the colour), shown with at most 4 decimals, trailing zeros dropped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct DerivedSymbol {

@@ -96,6 +96,8 @@ impl Ops {
     }
 }
 
+/// A system's axiom and rules, compiled into symbols and tables.
+///
 /// Worst-case RAM: the ops ([`MAX_SYMBOLS`] bytes), the numeric commands
 /// ([`MAX_NUMERIC_COMMANDS`] × 16 bytes), [`MAX_RULES`] rule spans (5 bytes each), a
 /// 128-byte rule lookup table, a 128-byte table of what each symbol does, and the

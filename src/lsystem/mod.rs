@@ -1,5 +1,6 @@
-//! The L-system engine, one stage per module:
-//! grammar (and the `.l` reader) → walker → turtle → raster → drawable, with the expansion
+//! L-systems, read from Fractint `.l` files, ABOP rules or `.lsys` files, and drawn.
+//!
+//! One stage per module: grammar (and the `.l` reader) → walker → turtle → raster → drawable, with the expansion
 //! table beside the walker for measuring and drawing without visiting every segment.
 //!
 //! ```

@@ -1,5 +1,6 @@
-//! The numbers every family shares: fixed-point `Real` (the turtle's) and `Coord` (the
-//! complex plane's), their exact decimal parser, wide products and rounding, integer
+//! The numbers every family shares.
+//!
+//! Fixed-point `Real` (the turtle's) and `Coord` (the complex plane's), their exact decimal parser, wide products and rounding, integer
 //! sines, and turn angles with their direction tables. This is also where affine maps,
 //! the matrix stack and the seeded generator belong.
 

@@ -1,4 +1,6 @@
-//! From numbers to pixels, for every family: the run rasteriser for lines, value sinks
+//! From numbers to pixels, for every family.
+//!
+//! The run rasteriser for lines, value sinks
 //! (the raw layer under colour), palettes, and fitting a picture into a target. This is
 //! also where 3D projection belongs.
 

@@ -24,8 +24,9 @@ pub trait DwellSink {
     }
 }
 
-/// Dwells in a caller's slice, row by row, `width` to a row: the sink for tests, host
-/// output and anything that needs the numbers rather than colours. Pixels outside the
+/// Dwells in a caller's slice, row by row, `width` to a row.
+///
+/// The sink for tests, host output and anything that needs the numbers rather than colours. Pixels outside the
 /// slice are dropped, as a `DrawTarget` drops pixels outside its bounds.
 #[derive(Debug)]
 pub struct DwellBuffer<'a> {

@@ -1,4 +1,6 @@
-//! Subdivision fractals (the lecture's Sierpiński family): the carpet (a square split 3×3
+//! Subdivision fractals: the lecture's Sierpiński family.
+//!
+//! The carpet (a square split 3×3
 //! with its centre removed, recursively), the gasket (a triangle split in four with its
 //! middle removed) and the cube (27 subcubes with the centre, or the centre and the six
 //! face centres, removed), each drawn by index arithmetic or a bounded explicit stack,

@@ -1,4 +1,6 @@
-//! Random fractals by midpoint displacement, as the lecture gives them: a midpoint is the
+//! Random fractals by midpoint displacement, as the lecture gives them.
+//!
+//! A midpoint is the
 //! mean of its ends plus a normal variate N(0, σ), and σ is multiplied by the roughness r
 //! at each level (r = 1/√2 is Brownian motion). A profile ([`Terrain`]) in 1D and a
 //! landscape ([`TerrainMap`], diamond-square) in 2D.

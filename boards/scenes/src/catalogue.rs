@@ -631,9 +631,10 @@ pub const IFS_GALLERY: [IfsEntry; 2] = [
     },
 ];
 
-/// The general engine's scenes measured on Cortex-M3 and M4 (not M0: the micro:bit's
-/// 16 KiB cannot hold the engine's grammar and walk): ABOP's monopodial tree (figure 2.6,
-/// a parametric 3D system) at its order on the OLED.
+/// The general engine's scenes measured on Cortex-M3 and M4 (not M0: the micro:bit's 16 KiB
+/// cannot hold the engine's grammar and walk).
+///
+/// ABOP's monopodial tree (figure 2.6, a parametric 3D system) at its order on the OLED.
 pub const GENERAL_SCENES: [GeneralEntry; 1] = [GeneralEntry {
     name: "monopodial-tree",
     source: ABOP_LSYS,
@@ -682,10 +683,11 @@ pub const SCENES: [Entry; 14] = [
     in_tier(Tier::Deep, escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire")),
 ];
 
-/// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the
-/// stack ([`MAX_BOARD_REFERENCE_POINTS`](crate::MAX_BOARD_REFERENCE_POINTS), 24 KiB):
-/// on the boards with the RAM for it and measured on Cortex-M3 and M4, not on the
-/// micro:bit (16 KiB). A minibrot 2.5·10⁻²¹ across in a view 10⁻²⁰ wide.
+/// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the stack
+/// ([`MAX_BOARD_REFERENCE_POINTS`](crate::MAX_BOARD_REFERENCE_POINTS), 24 KiB).
+///
+/// On the boards with the RAM for it and measured on Cortex-M3 and M4, not on the micro:bit (16
+/// KiB). A minibrot 2.5·10⁻²¹ across in a view 10⁻²⁰ wide.
 #[rustfmt::skip]
 pub const DEEP_SCENES: [Entry; 2] = [
     escape("perturbation-zoom", None, MINIBROT_78, "1e-20", 1000, OLED, "fire"),
@@ -693,11 +695,12 @@ pub const DEEP_SCENES: [Entry; 2] = [
     perturbed("deep-zoom-perturbed", SCENES[13]),
 ];
 
-/// A zoom drawn on every board and measured on every core: 32 frames into the spiral at
-/// 1.05× a frame, in one frame of a byte a pixel (10 KiB on the stack at 128×64), each
-/// frame taking the last one's lines within a pixel; beside it the same frames with no
-/// tolerance (lines only at exactly the same points: in a zoom, nearly every pixel is
-/// computed), what a zoom costs without reuse.
+/// A zoom drawn on every board and measured on every core.
+///
+/// 32 frames into the spiral at 1.05× a frame, in one frame of a byte a pixel (10 KiB on the
+/// stack at 128×64), each frame taking the last one's lines within a pixel; beside it the same
+/// frames with no tolerance (lines only at exactly the same points: in a zoom, nearly every
+/// pixel is computed), what a zoom costs without reuse.
 #[rustfmt::skip]
 pub const ZOOM_SCENES: [Entry; 2] = [
     zoom("zoom", SPIRAL, "0.01", 200, (32, 100)),
@@ -731,9 +734,10 @@ const fn zoom(
     }
 }
 
-/// The escape-time views at a real board's display size (320×240), measured on
-/// Cortex-M0/M3/M4 beside the OLED's frames: the full Mandelbrot view at 256 iterations
-/// and the Julia set k = −0.8 + 0.156i at 100.
+/// The escape-time views at a real board's display size (320×240), measured on Cortex-M0/M3/M4
+/// beside the OLED's frames.
+///
+/// The full Mandelbrot view at 256 iterations and the Julia set k = −0.8 + 0.156i at 100.
 #[rustfmt::skip]
 pub const DISPLAY_SCENES: [Entry; 2] = [
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"),

@@ -21,9 +21,10 @@ use tinyfractal::{
 
 use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
 
-/// Expansion-table cells an L-system scene is measured with (96 bytes each, on the stack
-/// while it draws: 3.75 KiB): the OLED plant's 40 (its 22.5° keeps a quarter of its 16
-/// headings) and the snowflake's 24.
+/// Expansion-table cells an L-system scene is measured with (96 bytes each, on the stack while
+/// it draws: 3.75 KiB).
+///
+/// The OLED plant's 40 (its 22.5° keeps a quarter of its 16 headings) and the snowflake's 24.
 pub const LSYSTEM_CELLS: usize = 40;
 
 /// Most heights of a landscape drawn on a board (33², 4.3 KiB on the stack while it draws).

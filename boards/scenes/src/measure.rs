@@ -1,6 +1,8 @@
 //! What the measuring firmware (`boards/qemu-measure`) runs, shared with the host test that
-//! checks it: a target that folds every pixel into a checksum, and the two baselines a user
-//! would write first, computed from the catalogue's own scenes.
+//! checks it.
+//!
+//! A target that folds every pixel into a checksum, and the two baselines a user would write
+//! first, computed from the catalogue's own scenes.
 
 use core::convert::Infallible;
 
@@ -10,11 +12,12 @@ use tinyfractal::{escape::Shading, Coord};
 
 use crate::catalogue::Scene;
 
-/// A target with no memory (128×64 unless made larger): every pixel written (position and
-/// grey, in order) is folded into an FNV-1a checksum, so the host can check the MCU drew
-/// the same thing. Like a display driver it takes runs (`fill_contiguous`, `fill_solid`)
-/// without a `Pixel` and a bounds check each; the baselines draw through `draw_iter`,
-/// pixel by pixel.
+/// A target with no memory (128×64 unless made larger).
+///
+/// Every pixel written (position and grey, in order) is folded into an FNV-1a checksum, so the
+/// host can check the MCU drew the same thing. Like a display driver it takes runs
+/// (`fill_contiguous`, `fill_solid`) without a `Pixel` and a bounds check each; the baselines
+/// draw through `draw_iter`, pixel by pixel.
 #[derive(Debug, Clone, Copy)]
 pub struct Checksum {
     /// The checksum so far.

@@ -1,8 +1,10 @@
 //! How a board moves from one scene to the next.
 
-/// How a board moves to the next scene: returns once the button has been pressed and
-/// released, or after `ms` milliseconds. `elapsed_ms` counts from the start of the wait, and
-/// `pressed` reads the button (its polarity is the board's business).
+/// How a board moves to the next scene.
+///
+/// Returns once the button has been pressed and released, or after `ms` milliseconds.
+/// `elapsed_ms` counts from the start of the wait, and `pressed` reads the button (its polarity
+/// is the board's business).
 pub fn wait_for_press_or(
     ms: u64,
     mut elapsed_ms: impl FnMut() -> u64,

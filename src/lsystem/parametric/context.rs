@@ -27,8 +27,9 @@ use super::expansion::{path_of, Expansion, Frame, Work};
 use super::grammar::{Neighbour, ParametricGrammar};
 use crate::error::{Error, WalkError};
 
-/// Left contexts a walk saves at once by default (its `SLOTS`): one per level below each
-/// open branch, over all the branches open at a place of the walk (ABOP figure 1.31 (b)
+/// Left contexts a walk saves at once by default (its `SLOTS`).
+///
+/// One per level below each open branch, over all the branches open at a place of the walk (ABOP figure 1.31 (b)
 /// at order 30 needs 144). 48 bytes each; a walk of a system without contexts needs none
 /// (`SLOTS = 0` saves 12 KiB on an MCU).
 pub const MAX_CONTEXT_SLOTS: usize = 256;
