@@ -2,28 +2,28 @@
 //! fuzz targets share it: the argument parser, each family's host renderer, the gallery and
 //! the all-or-nothing output plan. `src/main.rs` only calls [`run`].
 
-pub mod animate;
+pub(crate) mod animate;
 pub mod args;
-pub mod common;
-pub mod console;
-pub mod delivery;
-pub mod derive;
-pub mod dimension;
-pub mod environment;
+pub(crate) mod common;
+pub(crate) mod console;
+pub(crate) mod delivery;
+pub(crate) mod derive;
+pub(crate) mod dimension;
+pub(crate) mod environment;
 pub mod escape_scene;
 pub mod explore;
-pub mod figure_scene;
+pub(crate) mod figure_scene;
 pub mod files;
 pub mod gallery;
-pub mod ifs_scene;
-pub mod lsystem_scene;
-pub mod output;
-pub mod palette;
-pub mod progress;
+pub(crate) mod ifs_scene;
+pub(crate) mod lsystem_scene;
+pub(crate) mod output;
+pub(crate) mod palette;
+pub(crate) mod progress;
 pub mod scene;
-pub mod shape_scene;
-pub mod systems;
-pub mod window;
+pub(crate) mod shape_scene;
+pub(crate) mod systems;
+pub(crate) mod window;
 
 use std::process::ExitCode;
 
