@@ -3,8 +3,8 @@
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
 
+use super::render::{Algorithm, Render, RenderStats};
 use super::scaled::ReferencePoint;
-use super::schedule::{Algorithm, Render, RenderStats};
 use super::view::View;
 use crate::error::DrawError;
 use crate::render::palette::Palette;

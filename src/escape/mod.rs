@@ -30,19 +30,24 @@
 //! ```
 
 pub(crate) mod drawing;
+pub(crate) mod emit;
 pub(crate) mod kernel;
 pub(crate) mod perturbation;
+pub(crate) mod render;
 pub(crate) mod scaled;
 pub(crate) mod schedule;
 pub(crate) mod series;
+pub(crate) mod subdivide;
+pub(crate) mod tile;
+pub(crate) mod trace;
 pub(crate) mod view;
 pub(crate) mod zoom;
 
 pub use drawing::{EscapeTime, Painter};
 pub use kernel::MAX_FAST_TOLERANCE;
 pub use perturbation::{ReferenceOrbit, REFERENCE_POINT_BYTES};
+pub use render::{Algorithm, Progress, Render, RenderStats, TILE, TILE_CELLS, TILE_ROWS};
 pub use scaled::ReferencePoint;
-pub use schedule::{Algorithm, Progress, Render, RenderStats, TILE, TILE_CELLS, TILE_ROWS};
 pub use view::{
     Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
 };
