@@ -29,9 +29,11 @@
 //! # Ok::<(), tinyfractal::Error>(())
 //! ```
 
+pub(crate) mod arithmetic;
 pub(crate) mod drawing;
 pub(crate) mod emit;
 pub(crate) mod kernel;
+pub(crate) mod orbit;
 pub(crate) mod perturbation;
 pub(crate) mod render;
 pub(crate) mod scaled;

@@ -30,7 +30,8 @@
 //! cardioid and bulb test is made at the reference's precision.
 
 use super::kernel::MAX_FAST_TOLERANCE;
-use super::kernel::{in_cardioid_or_bulb, smooth_value, Kernel, Orbit, Periodicity};
+use super::kernel::{Kernel, Orbit, Periodicity};
+use super::orbit::{in_cardioid_or_bulb, smooth_value};
 use super::scaled::{
     clamp_i32, escaped, may_rebase, normalise, rebased, step, to_q28, ReferencePoint, Scaled,
     MANTISSA_BITS,

@@ -1,7 +1,8 @@
 //! A tile's geometry and its cells: where tiles fall in the view, which cell is where, and
 //! how a cell gets its orbit in the render's tier.
 
-use super::kernel::{Orbit, Part, TierOrbit, TierVisitor};
+use super::kernel::{Orbit, Part};
+use super::orbit::{TierOrbit, TierVisitor};
 use super::perturbation::{Perturbation, Perturbed};
 use super::render::{Pixels, Render, RenderStats, TILE, TILE_ROWS};
 use super::view::Symmetry;

@@ -1,0 +1,646 @@
+//! One pixel's orbit: z ← z² + c iterated in a tier's arithmetic until it escapes, repeats
+//! or reaches the cap, and the dispatch that compiles it once per tier.
+//!
+//! Overflow cannot happen, by invariant: an orbit is only squared while |z|² ≤ 4 (so |x|,
+//! |y| ≤ 2), and every c is within ±3.5 (checked by the view), so the next value is below
+//! 7.5 and its square below 57: inside every tier's range. A Julia start outside radius 2
+//! escapes at once (|z₁| ≥ |z₀|² − |k| > 2 because |k| ≤ 2) and is never squared.
+//!
+//! Mirrored points have the same dwell by construction: a Mandelbrot point is iterated as
+//! its twin in the upper half-plane (|im|), so products round down with a plain shift
+//! instead of toward zero (which costs a correction per step). A Julia set's half turn
+//! needs nothing: z₀ and −z₀ have the same z₁ however products round.
+
+use core::marker::PhantomData;
+
+use super::arithmetic::*;
+use super::kernel::{Kernel, Kind, Orbit, Part};
+use super::view::SMOOTH_FRACTION_BITS;
+use crate::math::log::{log2, LOG2_FRAC_BITS};
+use crate::math::wide::mul_i32_wide;
+
+impl Kernel {
+    /// The dwell of the point (`re`, `im`).
+    #[inline(always)]
+    pub(crate) fn dwell(&self, re: Part, im: Part) -> Orbit {
+        match self.arithmetic {
+            Kind::Narrow => orbit::<Narrow, false>(self, re.0, im.0),
+            Kind::Medium => orbit::<Medium, false>(self, re.0, im.0),
+            Kind::RoundedMedium => orbit::<RoundedMedium, false>(self, re.0, im.0),
+            Kind::Standard => orbit::<Standard, false>(self, re.0, im.0),
+            Kind::Deep => orbit::<Deep, false>(self, re.0, im.0),
+            Kind::Wide => orbit::<Wide, false>(self, re.0, im.0),
+        }
+    }
+
+    /// Calls `visitor` with this kernel's tier as a type, so a caller is compiled once per
+    /// tier with the orbit in line (see [`TierVisitor`]): a render's tile subdivision, where
+    /// most pixels are computed, tests no tier per pixel.
+    #[inline(always)]
+    pub(crate) fn visit<V: TierVisitor>(&self, visitor: V) -> V::Output {
+        match self.arithmetic {
+            Kind::Narrow => visitor.visit(InTier::<Narrow>(self, PhantomData)),
+            Kind::Medium => visitor.visit(InTier::<Medium>(self, PhantomData)),
+            Kind::RoundedMedium => visitor.visit(InTier::<RoundedMedium>(self, PhantomData)),
+            Kind::Standard => visitor.visit(InTier::<Standard>(self, PhantomData)),
+            Kind::Deep | Kind::Wide => visitor.visit(Called(self)),
+        }
+    }
+}
+
+/// A pixel's dwell in one tier, known at compile time.
+pub(crate) trait TierOrbit {
+    /// The dwell of the point (`re`, `im`).
+    fn dwell(&self, re: Part, im: Part) -> Orbit;
+
+    /// [`dwell`](Self::dwell) for a kernel that is [`traceable`](Kernel::traceable): a
+    /// Mandelbrot view's dwells, compiled without the tests for a Julia set's start or
+    /// a smooth value's finish (both known false).
+    fn traced_dwell(&self, re: Part, im: Part) -> Orbit;
+}
+
+/// Code compiled once per tier: [`Kernel::visit`] calls it with the kernel's.
+pub(crate) trait TierVisitor {
+    /// What the code returns.
+    type Output;
+    /// Runs with the tier `orbit`.
+    fn visit<T: TierOrbit>(self, orbit: T) -> Self::Output;
+}
+
+/// A kernel in tier `A`.
+struct InTier<'k, A>(&'k Kernel, PhantomData<A>);
+
+impl<A: Arithmetic> TierOrbit for InTier<'_, A> {
+    /// The 32-bit tiers' orbit in line where there is a long multiply (with four steps a
+    /// turn in Brent's stretches: the full view at 320×240 took 2.3 % fewer instructions on
+    /// Cortex-M4F than with a call, the Julia set 1.8 %). `Deep` stays a call: in line, the
+    /// deep zoom took 10 % more; so does every tier on Cortex-M0, whose full view took 0.9 %
+    /// more in line.
+    #[inline(always)]
+    fn dwell(&self, re: Part, im: Part) -> Orbit {
+        if A::WORD_STEPS && cfg!(not(tinyfractal_no_long_multiply)) {
+            orbit_in_line::<A, false>(self.0, re.0, im.0)
+        } else {
+            orbit::<A, false>(self.0, re.0, im.0)
+        }
+    }
+
+    #[inline(always)]
+    fn traced_dwell(&self, re: Part, im: Part) -> Orbit {
+        if A::WORD_STEPS && cfg!(not(tinyfractal_no_long_multiply)) {
+            orbit_in_line::<A, true>(self.0, re.0, im.0)
+        } else {
+            orbit::<A, true>(self.0, re.0, im.0)
+        }
+    }
+}
+
+/// `Deep` or `Wide`, chosen at each pixel: one copy of the tile code for both, and one of
+/// `Wide`'s orbit. Their orbits are calls either way, so the choice costs a comparison
+/// beside hundreds of steps; with copies of their own for `Wide`, the LM3S6965's firmware
+/// did not fit its 256 KiB of flash.
+struct Called<'k>(&'k Kernel);
+
+impl TierOrbit for Called<'_> {
+    #[inline(always)]
+    fn dwell(&self, re: Part, im: Part) -> Orbit {
+        match self.0.arithmetic {
+            Kind::Wide => orbit::<Wide, false>(self.0, re.0, im.0),
+            _ => orbit::<Deep, false>(self.0, re.0, im.0),
+        }
+    }
+
+    /// `Wide` in its one copy, the tests for a Julia set and a smooth value kept.
+    #[inline(always)]
+    fn traced_dwell(&self, re: Part, im: Part) -> Orbit {
+        match self.0.arithmetic {
+            Kind::Wide => orbit::<Wide, false>(self.0, re.0, im.0),
+            _ => orbit::<Deep, true>(self.0, re.0, im.0),
+        }
+    }
+}
+
+/// An orbit point and its squares.
+struct Z<A: Arithmetic> {
+    x: A::Value,
+    y: A::Value,
+    x2: A::Product,
+    y2: A::Product,
+}
+
+impl<A: Arithmetic> Z<A> {
+    #[inline(always)]
+    fn new(x: A::Value, y: A::Value) -> Self {
+        Self {
+            x,
+            y,
+            x2: A::mul(x, x),
+            y2: A::mul(y, y),
+        }
+    }
+
+    #[inline(always)]
+    fn escaped(&self) -> bool {
+        A::escapes(self.x2, self.y2)
+    }
+
+    /// One step, z ← z² + c, then its squares; true if it escaped.
+    #[inline(always)]
+    fn step(&mut self, cr: A::Value, ci: A::Value) -> bool {
+        (self.x, self.y) = A::square_plus((self.x, self.y), (self.x2, self.y2), (cr, ci));
+        self.x2 = A::mul(self.x, self.x);
+        self.y2 = A::mul(self.y, self.y);
+        self.escaped()
+    }
+
+    /// Whether the point is within the tolerance of a saved one (`saved` less the
+    /// tolerance, `span` twice the tolerance).
+    #[inline(always)]
+    fn repeats(&self, saved: (A::Value, A::Value), span: A::Value) -> bool {
+        self.x.wrapping_sub(saved.0).unsigned_at_most(span)
+            && self.y.wrapping_sub(saved.1).unsigned_at_most(span)
+    }
+}
+
+impl Kernel {
+    /// The dwell of the Mandelbrot point c (Q60, `Deep`'s units) whose orbit is at z
+    /// (Q60) after `steps` steps, in [`HighWords`]: the finish of a perturbed pixel whose
+    /// first steps the series skipped. Escape only: testing repeats there as `orbit`
+    /// does was measured at the deep-zoom view, found none and cost 30 % more
+    /// instructions on Cortex-M3.
+    #[inline(never)]
+    pub(crate) fn resume(&self, c: (i64, i64), z: (i64, i64), steps: u32) -> Orbit {
+        let mut z = Z::<HighWords>::new(z.0, z.1);
+        let mut n = steps;
+        while !z.escaped() {
+            if n >= self.max {
+                return Orbit::inside_after(self, n);
+            }
+            n += 1;
+            z.step(c.0, c.1);
+        }
+        Orbit {
+            dwell: if self.smooth {
+                let q28 = |(x, y): (i64, i64)| (HighWords::q28(x), HighWords::q28(y));
+                smooth_value(n, q28((z.x, z.y)), q28(c), self.max, self.inside)
+            } else {
+                n.max(1)
+            },
+            iterations: n,
+        }
+    }
+}
+
+/// The dwell of the point (`re`, `im`) in tier `A`'s units.
+///
+/// The first `FIRST_SAVE` steps test only escape. Then repeats are found by Brent's
+/// method: the orbit point saved at n = FIRST_SAVE, 2·FIRST_SAVE, 4·FIRST_SAVE, ... is
+/// compared with every point up to the next save (every fourth in the 32-bit tiers, see
+/// `Arithmetic::WORD_STEPS`). Each stretch between saves is a loop of its own, so the
+/// step itself tests nothing but escape and repeat.
+#[inline(never)]
+fn orbit<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
+    orbit_in_line::<A, TRACEABLE>(kernel, re, im)
+}
+
+/// [`orbit`]'s body, for callers that take it in line. `TRACEABLE`: the kernel is
+/// [`traceable`](Kernel::traceable), so its tests for a Julia set and a smooth value
+/// compile away.
+#[inline(always)]
+fn orbit_in_line<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
+    let max = kernel.max;
+    let (re, im) = (A::Value::from_units(re), A::Value::from_units(im));
+    let julia = if TRACEABLE { None } else { kernel.julia };
+    let ((cr, ci), (x, y), steps) = match julia {
+        None => {
+            if in_cardioid_or_bulb(A::q28(re), A::q28(im)) {
+                return Orbit::inside_after(kernel, 0);
+            }
+            // The upper half-plane twin: the same dwell, exactly (see the module docs). The
+            // first step is free: z₁ = c.
+            let c = (re, im.abs());
+            (c, c, 1)
+        }
+        Some((kr, ki)) => (
+            (A::Value::from_units(kr), A::Value::from_units(ki)),
+            (re, im),
+            0,
+        ),
+    };
+    let mut z = Z::<A>::new(x, y);
+    // The value of an orbit that escaped at step n (c passed by value: a closure that
+    // captured it kept it in memory, stored on every pixel's way in).
+    let escaped_at = |n: u32, z: &Z<A>| escaped::<A, TRACEABLE>(kernel, n, (z.x, z.y), (cr, ci));
+    if z.escaped() {
+        return escaped_at(steps, &z);
+    }
+    let tolerance = A::Value::from_units(kernel.tolerance);
+    // Orbit points compared have |x|, |y| ≤ 2, so nothing wraps.
+    let span = tolerance.twice();
+    // Most points escape within the first few steps: they run without repeat tests.
+    let plain = kernel.plain;
+    let mut n = steps;
+    if A::COMPACT {
+        // The same steps and tests as below, one step a turn.
+        while n < plain {
+            n += 1;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+        }
+        let (mut saved, mut next_save) = ((z.x, z.y), plain);
+        while n < max {
+            if n == next_save {
+                saved = (z.x.wrapping_sub(tolerance), z.y.wrapping_sub(tolerance));
+                next_save *= 2;
+            }
+            n += 1;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+            if z.repeats(saved, span) {
+                return Orbit::inside_after(kernel, n);
+            }
+        }
+        return Orbit::inside_after(kernel, max);
+    }
+    // Where there is a long multiply, turns of the loops are counted down (one
+    // subtraction and branch a turn; n found again on leaving), four steps a turn before
+    // the repeat tests start: the Julia set at 320×240 on Cortex-M4F took 1.7 % fewer
+    // instructions than with two a turn. On Cortex-M0 (eight low registers, products
+    // from halves) the extra counter spilled (four a turn cost the Julia set 25 % more,
+    // counting down 3–5 %), so it keeps two a turn counted by n.
+    // Turns of four steps up to `stop`, counted down, each step tested for escape and
+    // each turn ended by `$after` (given the steps done before the turn).
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    macro_rules! fours_until {
+        ($stop:expr, |$done:ident| $after:block) => {{
+            let fours = $stop.saturating_sub(n) / 4;
+            let mut left = fours;
+            while left > 0 {
+                let $done = n + 4 * (fours - left);
+                for k in 1..=4 {
+                    if z.step(cr, ci) {
+                        return escaped_at($done + k, &z);
+                    }
+                }
+                $after
+                left -= 1;
+            }
+            n += 4 * fours;
+        }};
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        fours_until!(plain, |_done| {});
+        // At most three more, each tested and unrolled: a counted loop here cost the
+        // Mandelbrot set's first stretch (then 15 steps) more than the fours saved.
+        for _ in 0..3 {
+            if n < plain {
+                n += 1;
+                if z.step(cr, ci) {
+                    return escaped_at(n, &z);
+                }
+            }
+        }
+    }
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        while n + 1 < plain {
+            if z.step(cr, ci) {
+                return escaped_at(n + 1, &z);
+            }
+            n += 2;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+        }
+        if n < plain {
+            n += 1;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+        }
+    }
+    // At most 2·max ≤ 2^17 (the view caps max at u16::MAX): it cannot overflow.
+    let mut next_save = 2 * plain;
+    while n < max {
+        // The saved point, less the tolerance: x − saved + tolerance in one step.
+        let saved = (z.x.wrapping_sub(tolerance), z.y.wrapping_sub(tolerance));
+        let stop = next_save.min(max);
+        // Counted as above.
+        #[cfg(not(tinyfractal_no_long_multiply))]
+        {
+            if A::WORD_STEPS {
+                // Four steps a turn and one repeat test, at 4k steps after the save: a
+                // cycle of period p is still found, at most 3p steps later.
+                fours_until!(stop, |done| {
+                    if z.repeats(saved, span) {
+                        return Orbit::inside_after(kernel, done + 4);
+                    }
+                });
+            } else {
+                // Two steps a turn, each tested.
+                let pairs = stop.saturating_sub(n) / 2;
+                let mut left = pairs;
+                while left > 0 {
+                    let done = n + 2 * (pairs - left);
+                    if z.step(cr, ci) {
+                        return escaped_at(done + 1, &z);
+                    }
+                    if z.repeats(saved, span) {
+                        return Orbit::inside_after(kernel, done + 1);
+                    }
+                    if z.step(cr, ci) {
+                        return escaped_at(done + 2, &z);
+                    }
+                    if z.repeats(saved, span) {
+                        return Orbit::inside_after(kernel, done + 2);
+                    }
+                    left -= 1;
+                }
+                n += 2 * pairs;
+            }
+        }
+        // The same turns as above, counted by n (see the first stretch).
+        #[cfg(tinyfractal_no_long_multiply)]
+        if A::WORD_STEPS {
+            while n + 3 < stop {
+                if z.step(cr, ci) {
+                    return escaped_at(n + 1, &z);
+                }
+                if z.step(cr, ci) {
+                    return escaped_at(n + 2, &z);
+                }
+                if z.step(cr, ci) {
+                    return escaped_at(n + 3, &z);
+                }
+                n += 4;
+                if z.step(cr, ci) {
+                    return escaped_at(n, &z);
+                }
+                if z.repeats(saved, span) {
+                    return Orbit::inside_after(kernel, n);
+                }
+            }
+        }
+        #[cfg(tinyfractal_no_long_multiply)]
+        while !A::WORD_STEPS && n + 1 < stop {
+            if z.step(cr, ci) {
+                return escaped_at(n + 1, &z);
+            }
+            if z.repeats(saved, span) {
+                return Orbit::inside_after(kernel, n + 1);
+            }
+            n += 2;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+            if z.repeats(saved, span) {
+                return Orbit::inside_after(kernel, n);
+            }
+        }
+        if n < stop {
+            n += 1;
+            if z.step(cr, ci) {
+                return escaped_at(n, &z);
+            }
+            if z.repeats(saved, span) {
+                return Orbit::inside_after(kernel, n);
+            }
+        }
+        next_save *= 2;
+    }
+    Orbit::inside_after(kernel, max)
+}
+
+/// The value of an orbit of c that escaped at step `n` at z.
+#[inline(always)]
+fn escaped<A: Arithmetic, const TRACEABLE: bool>(
+    kernel: &Kernel,
+    n: u32,
+    (x, y): (A::Value, A::Value),
+    (cr, ci): (A::Value, A::Value),
+) -> Orbit {
+    Orbit {
+        dwell: if !TRACEABLE && kernel.smooth {
+            smooth_value(
+                n,
+                (A::q28(x), A::q28(y)),
+                (A::q28(cr), A::q28(ci)),
+                kernel.max,
+                kernel.inside,
+            )
+        } else {
+            n.max(1)
+        },
+        iterations: n,
+    }
+}
+
+/// The smooth value of an orbit that escaped at step `n` with z (Q28), its c (Q28): the
+/// normalised iteration count ν = N + 2 − log₂(log₂|z_N|²) in sixteenths, taken at the
+/// first N past the escape with |z_N| ≥ 256 (three steps from |z| = 3; at most
+/// `SMOOTH_STEPS`, for points that crawl out along the tip at −2). There the `+ c` that
+/// makes ν jump at a band's edge is below 10⁻⁴ of z²: the value is continuous across the
+/// bands to well within its sixteenth (checked against an f64 model that runs to
+/// |z| = 10⁶ in the tests). Clamped to 1..inside − 1, so an escaping pixel is never taken
+/// for the "not yet computed" 0 or for inside; escaping at the cap counts as inside, as its
+/// dwell does.
+///
+/// In i64, Q20: a point is only squared while |x|, |y| < 256, so squares stay below 2⁵⁶;
+/// the next point is below 2¹⁷ (Q20: 2³⁷), and its |z|² is taken in Q16 from Q8 parts.
+#[inline(never)]
+pub(crate) fn smooth_value(n: u32, z: (i32, i32), c: (i32, i32), max: u32, inside: u32) -> u32 {
+    const BAILOUT: u64 = 256 << 20;
+    if n >= max {
+        return inside;
+    }
+    let (cr, ci) = (i64::from(c.0) >> 8, i64::from(c.1) >> 8);
+    let (mut x, mut y) = (i64::from(z.0) >> 8, i64::from(z.1) >> 8);
+    let mut steps = 0;
+    while steps < SMOOTH_STEPS && x.unsigned_abs() < BAILOUT && y.unsigned_abs() < BAILOUT {
+        let (x2, y2) = (x * x, y * y);
+        if (x2 + y2).unsigned_abs() >= BAILOUT * BAILOUT {
+            break;
+        }
+        (x, y) = (((x2 - y2) >> 20) + cr, ((2 * x * y) >> 20) + ci);
+        steps += 1;
+    }
+    let (x, y) = (x >> 12, y >> 12);
+    // |z|² is above 4 (the orbit escaped), so both logarithms are positive.
+    let modulus = (x * x + y * y).unsigned_abs();
+    let nu = log2(modulus, 16)
+        .and_then(|bits| log2(u64::try_from(bits).ok()?, LOG2_FRAC_BITS))
+        .map_or(0, |log_log| {
+            ((i64::from(n) + i64::from(steps) + 2) << LOG2_FRAC_BITS) - i64::from(log_log)
+        });
+    // Q16 → sixteenths, rounded.
+    let shift = LOG2_FRAC_BITS - SMOOTH_FRACTION_BITS;
+    let value = (nu + (1 << (shift - 1))) >> shift;
+    u32::try_from(value)
+        .unwrap_or(0)
+        .clamp(1, inside.saturating_sub(1).max(1))
+}
+
+/// Most steps a smooth value takes past the escape.
+const SMOOTH_STEPS: u32 = 32;
+
+/// Inside the main cardioid or the period-2 bulb, decided in Q28 with 64-bit products (no
+/// 128-bit library calls on Cortex-M) and a margin of 2⁻²⁰, which covers every rounding
+/// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
+/// or next to the boundary is iterated instead. |x|, |y| ≤ 3.5 (the view's limit), so every
+/// value below fits its type.
+// In line: a call from each tier's subdivision cost the full view 4 % on Cortex-M4F.
+#[inline(always)]
+pub(crate) fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
+    const ONE: i32 = 1 << 28;
+    // 2^-20 in Q56.
+    const MARGIN: i64 = 1 << 36;
+    // Both lie within -1.25 ≤ x ≤ 0.375, |y| ≤ 0.65: most of a picture fails these cheaper
+    // comparisons first.
+    if !(-(ONE + ONE / 4)..=3 * ONE / 8).contains(&x) || y.unsigned_abs() > (ONE / 20 * 13) as u32 {
+        return false;
+    }
+    // Q56.
+    let y2 = mul_i32_wide(y, y);
+    // Period-2 bulb: (x + 1)² + y² < 1/16.
+    let x1 = x + ONE;
+    if mul_i32_wide(x1, x1) + y2 + MARGIN < 1 << 52 {
+        return true;
+    }
+    // Cardioid: q(q + x - 1/4) < y²/4 with q = (x - 1/4)² + y², all below 2^63.
+    let xq = x - ONE / 4;
+    // Q28, rounded down: the margin covers it.
+    let q = (mul_i32_wide(xq, xq) + y2) >> 28;
+    // From q ≥ 2 on, q + xq ≥ 1/4 and q ≥ y², so q(q + xq) ≥ y²/4: outside. Below it, q and
+    // q + xq fit in an i32.
+    if q >= 2 << 28 {
+        return false;
+    }
+    let q = q as i32;
+    mul_i32_wide(q, q + xq) + MARGIN < y2 / 4
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::escape::kernel::{Periodicity, FIRST_SAVE};
+    use crate::escape::view::{Fractal, Tier, View};
+    use crate::math::Coord;
+
+    /// `Wide`'s one-step loop saves and tests at the same steps as the unrolled loops: on
+    /// a grid over the full view, where its orbits and `Deep`'s agree to far below the
+    /// tolerance, every pixel stops at the same step in both, by escape or by a repeat.
+    #[test]
+    fn the_compact_loop_tests_repeats_at_the_same_steps() {
+        let view = View::new(
+            Fractal::Mandelbrot,
+            (Coord::from_f64(-0.75).unwrap(), Coord::from_bits(0)),
+            Coord::from_f64(3.0).unwrap(),
+            embedded_graphics::geometry::Size::new(64, 48),
+            1000,
+        )
+        .unwrap();
+        let periodicity = Periodicity::Within(1 << 36);
+        let deep = Kernel::new(&view.with_tier(Tier::Deep), periodicity);
+        let wide = Kernel::new(&view.with_tier(Tier::Wide), periodicity);
+        let (mut repeats, mut compared) = (0, 0);
+        for j in 0..48 {
+            for i in 0..64 {
+                let (re, im) = (
+                    q60(-2.25 + 3.0 * i as f64 / 64.0),
+                    q60(1.125 - 2.25 * j as f64 / 48.0),
+                );
+                let a = deep.dwell(deep.part(re), deep.part(im));
+                let b = wide.dwell(wide.part(re), wide.part(im));
+                assert_eq!((a.dwell, a.iterations), (b.dwell, b.iterations), "{i},{j}");
+                repeats += usize::from(a.dwell == 1000 && a.iterations < 1000);
+                compared += 1;
+            }
+        }
+        assert!(repeats > 100, "{repeats} of {compared} stopped by a repeat");
+    }
+
+    fn q60(v: f64) -> i64 {
+        (v * (1u64 << 60) as f64) as i64
+    }
+
+    fn q28(v: f64) -> i32 {
+        (v * f64::from(1 << 28)) as i32
+    }
+
+    #[test]
+    fn cardioid_and_bulb_contain_their_centres_only() {
+        for (re, im) in [
+            (0.0, 0.0),
+            (-0.5, 0.3),
+            (-1.0, 0.0),
+            (-1.2, 0.1),
+            (0.2, 0.0),
+        ] {
+            assert!(in_cardioid_or_bulb(q28(re), q28(im)), "{re},{im}");
+        }
+        for (re, im) in [
+            (0.3, 0.0),
+            (-0.75, 0.2),
+            (-1.3, 0.0),
+            (0.26, 0.0),
+            (-2.0, 0.0),
+            (1.9, 1.9),
+        ] {
+            assert!(!in_cardioid_or_bulb(q28(re), q28(im)), "{re},{im}");
+        }
+    }
+
+    #[test]
+    fn tiers_agree_on_simple_points() {
+        let view = View::new(
+            Fractal::Mandelbrot,
+            (Coord::default(), Coord::default()),
+            Coord::from_f64(3.0).unwrap(),
+            embedded_graphics::geometry::Size::new(100, 100),
+            500,
+        )
+        .unwrap();
+        for (re, im, dwell) in [(1.0, 0.0, 3), (-0.1, 0.1, u32::MAX), (-2.1, 0.0, 1)] {
+            let expected = if dwell == u32::MAX { 500 } else { dwell };
+            for tier in Tier::ALL {
+                let kernel = Kernel::new(&view.with_tier(tier), Periodicity::Exact);
+                let orbit = kernel.dwell(kernel.part(q60(re)), kernel.part(q60(im)));
+                assert_eq!(orbit.dwell, expected, "{re},{im} {tier:?}");
+            }
+            // The perturbed pixels' finish, from z₁ = c.
+            let c = (q60(re), q60(im));
+            let kernel = Kernel::new(&view, Periodicity::Exact);
+            assert_eq!(kernel.resume(c, c, 1).dwell, expected, "{re},{im} finish");
+        }
+    }
+
+    /// A Julia set of a parameter outside the Mandelbrot set (its critical orbit escapes)
+    /// tests no repeats, in every tier; one inside keeps Brent's test.
+    #[test]
+    fn dust_julia_sets_test_no_repeats() {
+        let julia = |re: f64, im: f64, tier| {
+            let view = View::new(
+                Fractal::Julia {
+                    re: Coord::from_f64(re).unwrap(),
+                    im: Coord::from_f64(im).unwrap(),
+                },
+                (Coord::default(), Coord::default()),
+                Coord::from_f64(3.0).unwrap(),
+                embedded_graphics::geometry::Size::new(320, 240),
+                100,
+            )
+            .unwrap();
+            Kernel::new(&view.with_tier(tier), Periodicity::Exact).plain
+        };
+        for tier in Tier::ALL {
+            // 0 escapes at step 252 for −0.8 + 0.156i (in f64), past the cap of 100,
+            // and at 15 for −0.8 + 0.2i; −0.1 + 0.1i is in the main cardioid.
+            assert_eq!(julia(-0.8, 0.156, tier), 100, "{tier:?}");
+            assert_eq!(julia(-0.8, 0.2, tier), 100, "{tier:?}");
+            assert_eq!(julia(-0.1, 0.1, tier), FIRST_SAVE, "{tier:?}");
+        }
+    }
+}
