@@ -99,12 +99,10 @@ pub(super) trait Arithmetic {
     }
     fn q28(v: Self::Value) -> i32;
     /// Whether a step is a few 32-bit multiplies: then the repeat-testing loop takes four
-    /// steps a turn and tests once, which leaves the turn's constants in registers (the
-    /// full view at 320×240, measured with the cells' orbit in line: 11 % fewer
-    /// instructions on Cortex-M4F, 5 % on M3). A 64-bit tier keeps a test after each step:
-    /// four a turn spilled its values, 8 % more for the deep zoom. Every core tests the
-    /// same steps, so every core counts the same iterations (Cortex-M0: 2 % fewer
-    /// instructions for the full view).
+    /// steps a turn and tests once, which leaves the turn's constants in registers; a
+    /// 64-bit tier keeps a test after each step, whose values four a turn would spill
+    /// (docs/performance.md). Every core tests the same steps, so every core counts the
+    /// same iterations.
     const WORD_STEPS: bool = false;
     /// Whether the orbit takes one step a turn: `Wide`, whose steps are calls, and whose
     /// unrolled loops did not fit the LM3S6965's flash.
@@ -125,8 +123,7 @@ pub(super) type Medium = HighWord<false>;
 /// 320×240 Julia views at 100 iterations keep as many dwells as a naive `f32` loop
 /// (docs/tiers.md), at one instruction a product on Cortex-M4 as truncated (`smmulr`, and
 /// `smmlar` for the escape test's sum). Elsewhere rounding costs an add a product, which
-/// the Mandelbrot set's `Medium` views (already exact) are spared: rounded, the full view
-/// at 128×64 took 10 % more instructions on Cortex-M3.
+/// the Mandelbrot set's `Medium` views (already exact) are spared.
 pub(super) type RoundedMedium = HighWord<true>;
 /// Q28 in i32 with exact 64-bit products (Q56).
 pub(super) struct Standard;
@@ -215,7 +212,7 @@ impl Arithmetic for Standard {
     /// are only summed for the escape test (`smull` and `smlal`, neither kept); and each
     /// product's two words added to c apart (`add` with a shifted operand, twice) instead
     /// of being joined first: the same bits as `(p >> 28) + c`, one instruction fewer a
-    /// product. Not on a 64-bit host, where the plain form was 20 % faster.
+    /// product. Not on a 64-bit host, where the plain form is faster.
     #[cfg(all(target_arch = "arm", not(tinyfractal_no_long_multiply)))]
     #[inline(always)]
     fn square_plus((x, y): (i32, i32), _: (i64, i64), (cr, ci): (i32, i32)) -> (i32, i32) {
@@ -228,8 +225,7 @@ impl Arithmetic for Standard {
     /// |z|² > 4 from the high word first: below 4·2²⁴ there, it is not. The exact test on
     /// both words runs only from there. LLVM merges any test it can see through with the
     /// first into one 64-bit comparison a step, so the sum reaches it through `black_box`
-    /// (a store and a load, at escape only): as a call out of line it cost 25 instructions
-    /// a pixel, 1.5 % of the Julia set at 320×240 on Cortex-M4F and 5.7 % of the full view.
+    /// (a store and a load, at escape only), cheaper than a call out of line.
     #[cfg(not(tinyfractal_no_long_multiply))]
     #[inline(always)]
     fn escapes(x2: i64, y2: i64) -> bool {

@@ -15,25 +15,18 @@
 //! instead of toward zero (which costs a correction per step). A Julia set's half turn
 //! needs nothing: z₀ and −z₀ have the same z₁ however products round.
 //!
-//! Each tier is a type implementing [`Arithmetic`] (its value and product types, how it
-//! multiplies and shifts back), and one generic [`orbit`] iterates them all. This replaced a
-//! macro with nine positional parameters; measured under QEMU on the board scenes, the
-//! generic kernel takes the same or fewer instructions per frame (Cortex-M0: −3 % on the
-//! full view, −5.7 % on the Julia set; M4F: −1.3 % on the deep zoom), except the Julia set
-//! on Cortex-M3, +3.4 %, where LLVM keeps the tolerance and the saved point on the stack
-//! in the repeat-testing loop. Taking one step a turn there instead of two costs 10 % more
-//! on M3 and M4F; the loops take two or four (see `orbit`).
+//! Each tier is a type implementing `Arithmetic` (its value and product types, how it
+//! multiplies and shifts back), and one generic `orbit` iterates them all, so each tier's
+//! loop is compiled with its arithmetic in line (why not a macro: docs/performance.md).
 
 use super::view::{Fractal, Parts, Shading, Tier, View};
 use crate::math::wide::shift_round_i64;
 
 /// Largest periodicity tolerance of a fast render, 2⁻²² in Q60 bits.
 ///
-/// A tolerance of 1/16 of a pixel alone grows with the pixel: on a 1×1 view it was 0.2,
-/// and orbits that escape later were called inside. Over 30,000 random small views, a cap
-/// of 2⁻¹⁸ still changed a dwell, 2⁻²⁰ changed none; 2⁻²² leaves a margin of four. It
-/// costs 22 % more iterations on the full view at 320×240 (interior orbits must converge
-/// further) and nothing on zooms, whose 1/16 pixel is already smaller.
+/// A tolerance of 1/16 of a pixel alone grows with the pixel, and on large pixels orbits
+/// that escape later were called inside; 2⁻²² is four times below the largest cap that
+/// changed no dwell over random small views (docs/performance.md).
 pub const MAX_FAST_TOLERANCE: i64 = 1 << 38;
 
 /// The periodicity tolerance of a fast render with pixel spacing `spacing` (Q60 bits):
@@ -183,10 +176,8 @@ impl Kernel {
     /// regions (see `schedule`): a Mandelbrot view's dwells. Every set of points with
     /// dwell above k is connected there, so a region lies inside another only where a
     /// pixel grid breaks a connection narrower than a pixel. A Julia set's filaments break
-    /// often at display sizes (the boards' Julia set at 320×240 lost 50 pixels, and with
-    /// them more agreement with an f64 model than the f32 loop loses), and smooth values
-    /// change every few cells, where following outlines cost more than subdivision's
-    /// scans (the boards' smooth view at 128×64: 25 % more on Cortex-M4F).
+    /// often at display sizes, and smooth values change every few cells, where following
+    /// outlines costs more than subdivision's scans (docs/performance.md).
     pub(crate) const fn traceable(&self) -> bool {
         self.julia.is_none() && !self.smooth
     }
@@ -203,8 +194,7 @@ impl Kernel {
     }
 
     /// [`part`](Self::part) of each coordinate of `q60s`, into `parts`: the rounding's
-    /// shift and half found once, not once a coordinate (on the Cortex-M4F, the full
-    /// view's coordinates took 33 instructions each, where a part at a time took 72).
+    /// shift and half found once, not once a coordinate.
     pub(crate) fn fill_parts(&self, q60s: Parts, parts: &mut [Part]) {
         // As `shift_round_i64`, half away from zero (`Deep`: no shift, half 0). Nothing
         // wraps in the view (|q60| ≤ 3.5·2⁶⁰); past its edge the parts are not used.
@@ -240,9 +230,7 @@ const fn from_q60(bits: i64, frac: u32) -> i64 {
 }
 
 /// Steps before the first point is saved for the repeat test: most points escape before,
-/// and a plain step costs 12 instructions on Cortex-M4F against 14.5 in Brent's stretches
-/// (the full view at 320×240 1.8 % fewer instructions than from 16 on, the 128×64 view
-/// 2.7 %; the zoom scene 0.6 % more, its interior pixels found later).
+/// and a plain step costs less than a step of Brent's stretches (docs/performance.md).
 pub(super) const FIRST_SAVE: u32 = 64;
 
 /// Steps of a Julia parameter's critical orbit that decide whether the set is dust (see

@@ -71,11 +71,8 @@ pub(crate) trait TierVisitor {
 struct InTier<'k, A>(&'k Kernel, PhantomData<A>);
 
 impl<A: Arithmetic> TierOrbit for InTier<'_, A> {
-    /// The 32-bit tiers' orbit in line where there is a long multiply (with four steps a
-    /// turn in Brent's stretches: the full view at 320×240 took 2.3 % fewer instructions on
-    /// Cortex-M4F than with a call, the Julia set 1.8 %). `Deep` stays a call: in line, the
-    /// deep zoom took 10 % more; so does every tier on Cortex-M0, whose full view took 0.9 %
-    /// more in line.
+    /// The 32-bit tiers' orbit in line where there is a long multiply; `Deep`, and every
+    /// tier on Cortex-M0, stay a call, which costs less there (docs/performance.md).
     #[inline(always)]
     fn dwell(&self, re: Part, im: Part) -> Orbit {
         if A::WORD_STEPS && cfg!(not(tinyfractal_no_long_multiply)) {
@@ -165,9 +162,8 @@ impl<A: Arithmetic> Z<A> {
 impl Kernel {
     /// The dwell of the Mandelbrot point c (Q60, `Deep`'s units) whose orbit is at z
     /// (Q60) after `steps` steps, in [`HighWords`]: the finish of a perturbed pixel whose
-    /// first steps the series skipped. Escape only: testing repeats there as `orbit`
-    /// does was measured at the deep-zoom view, found none and cost 30 % more
-    /// instructions on Cortex-M3.
+    /// first steps the series skipped. Escape only: repeats there are too rare to pay
+    /// for their test (docs/performance.md).
     #[inline(never)]
     pub(crate) fn resume(&self, c: (i64, i64), z: (i64, i64), steps: u32) -> Orbit {
         let mut z = Z::<HighWords>::new(z.0, z.1);
@@ -266,10 +262,8 @@ fn orbit_in_line<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64,
     }
     // Where there is a long multiply, turns of the loops are counted down (one
     // subtraction and branch a turn; n found again on leaving), four steps a turn before
-    // the repeat tests start: the Julia set at 320×240 on Cortex-M4F took 1.7 % fewer
-    // instructions than with two a turn. On Cortex-M0 (eight low registers, products
-    // from halves) the extra counter spilled (four a turn cost the Julia set 25 % more,
-    // counting down 3–5 %), so it keeps two a turn counted by n.
+    // the repeat tests start. On Cortex-M0 (eight low registers, products from halves)
+    // the extra counter spills, so it keeps two a turn counted by n (docs/performance.md).
     // Turns of four steps up to `stop`, counted down, each step tested for escape and
     // each turn ended by `$after` (given the steps done before the turn).
     #[cfg(not(tinyfractal_no_long_multiply))]
@@ -491,7 +485,7 @@ const SMOOTH_STEPS: u32 = 32;
 /// below (at most about 2⁻²¹·⁷): a point it accepts is inside for certain, and a point on
 /// or next to the boundary is iterated instead. |x|, |y| ≤ 3.5 (the view's limit), so every
 /// value below fits its type.
-// In line: a call from each tier's subdivision cost the full view 4 % on Cortex-M4F.
+// In line: it is called for every cell of every tier's subdivision.
 #[inline(always)]
 pub(crate) fn in_cardioid_or_bulb(x: i32, y: i32) -> bool {
     const ONE: i32 = 1 << 28;

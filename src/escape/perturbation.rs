@@ -7,9 +7,8 @@
 //! [`ReferencePoint`]s: a complex 62-bit mantissa with one exponent, 24 bytes per
 //! iteration, in storage the caller provides. A pixel c = C + δc then iterates
 //! δₙ₊₁ = 2Zₙδₙ + δₙ² + δc, its δ in the same format: the two parts of a point share a
-//! scale. 30-bit mantissas were tried first: rounding grows about as the iterations times
-//! the mantissa's precision, and at thousands of iterations 30 bits kept only 92 % of
-//! dwells (62 bits: 99.8 % and more, in the tests).
+//! scale. Rounding grows about as the iterations times the mantissa's precision, hence
+//! 62 bits (docs/performance.md).
 //!
 //! Glitches are handled by rebasing (Zhuoran's method): when the pixel's own point
 //! z = Zₙ + δₙ is smaller than δₙ, or the reference has ended (escaped), δ becomes z and
@@ -172,7 +171,7 @@ pub(crate) struct Perturbation<'r> {
 
 /// Where the view allows it (`finishes_in_high_words`), pixels finish after the series
 /// as z itself in Q60 by the products' high words: from the skipped-to iteration on that
-/// costs far fewer instructions a step than δ (on Cortex-M3 about a third of `Deep`'s).
+/// costs far fewer instructions a step than δ.
 #[derive(Debug, Clone, Copy)]
 struct Finish {
     kernel: Kernel,
@@ -184,12 +183,8 @@ struct Finish {
 }
 
 /// How far below a pixel the finish's rounding must stay, beyond 2 bits for each doubling
-/// of the iterations, for pixels to finish in Q60; otherwise they go on by perturbation.
-/// Measured at two views: the deep-zoom view (10⁻⁷ over 128 pixels, cap 1000: `Deep`'s
-/// rounding 29 bits below the spacing, 20 + 8 needed; the high words' 34 below the image
-/// at the skip, 18 + 8 needed) keeps every dwell; the seahorse at 10⁻¹² over 48 pixels
-/// with a cap of 3000 (14 bits below the spacing, against 24 + 8) lost 3 % of its dwells
-/// finishing in `Deep`.
+/// of the iterations, for pixels to finish in Q60; otherwise they go on by perturbation. Eight bits keep
+/// every dwell where it was measured (docs/performance.md).
 const FINISH_BITS: i32 = 8;
 
 /// The high-word finish's precision: each product within 2^-55, x² − y² within 2^-54.

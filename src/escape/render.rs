@@ -36,9 +36,7 @@ pub enum Algorithm {
     /// [`MAX_FAST_TOLERANCE`](super::kernel::MAX_FAST_TOLERANCE). The repeat test agrees with the exact orbit (tested over
     /// random views). Tracing and subdivision can miss a speck: an escaping pixel inside
     /// the region that does not escape, joined to the outside by a channel narrower than
-    /// a pixel. Over 150 random Mandelbrot views near the boundary (128×96, widths 10⁻⁵ to
-    /// 0.3), tracing missed 310 of 1.84 million pixels, subdivision 26; tracing computed
-    /// 36 % fewer pixels of the full view at 320×240.
+    /// a pixel (how often: docs/escape-time.md). Use `Exact` where no pixel may differ.
     #[default]
     Fast,
 }
@@ -127,7 +125,7 @@ impl Pixels<'_> {
     }
 
     /// The parts of the columns or rows `coordinates` runs over, into `parts`: one
-    /// function for both (in line, each took 2.7 KiB of flash).
+    /// function for both, so its code is in flash once.
     #[inline(never)]
     pub(super) fn fill(&self, coordinates: Parts, parts: &mut [Part]) {
         match self {
@@ -175,8 +173,7 @@ pub struct Render<'r, const CELLS: usize = TILE_CELLS> {
     pub(super) tile_pixels: u32,
     /// The current tile's dwells, row by row with no gaps (w×h of them): a tile leaves as
     /// one slice. Last (`repr(C)`), so that the other fields are a load's short offset
-    /// away: laid out by the compiler, the full view at 320×240 took 0.5 % more on the
-    /// M4F.
+    /// away.
     pub(super) tile: [u16; CELLS],
 }
 

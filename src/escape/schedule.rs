@@ -46,8 +46,7 @@ impl Render<'static> {
 impl<const CELLS: usize> Render<'static, CELLS> {
     /// As [`new`](Render::new), with the tile's cells in the type (32 times a power of
     /// two from 2 to 64): `Render::<'_, 1024>::with_capacity(view, algorithm)` holds
-    /// 2,048 bytes fewer and traces 32×32 tiles (on Cortex-M4F, the full view at 320×240
-    /// took 2.1 % more instructions, the boards' deep zoom 8.9 % more).
+    /// 2,048 bytes fewer and traces 32×32 tiles, a little slower (docs/performance.md).
     ///
     /// ```
     /// use embedded_graphics::prelude::Size;
@@ -156,7 +155,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     /// pixel's), sent as one `uniform` call, so a slow core or a window shows the whole
     /// picture at once, blocky; then the render proper overwrites every pixel with the
     /// same picture it draws without a preview. It computes one pixel in `block`² more
-    /// (about 4 % more iterations for the full view at 8; tested to stay under 10 %).
+    /// (tested to cost under a tenth more iterations).
     /// A `block` below 2 means no preview; a render already under way keeps its plan.
     #[must_use]
     pub const fn with_preview(mut self, block: u32) -> Self {
@@ -287,8 +286,8 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         } else {
             0
         };
-        // Copied out and back round the tile's clearing: moved within the tile and the rest
-        // cleared by a fill, the full view took 25 K more instructions on the M4F.
+        // Copied out and back round the tile's clearing, cheaper than moving it within
+        // the tile and clearing the rest by a fill.
         let last_row = self.cell_index(0, tile_rows - 1);
         let mut kept = [0u16; TILE as usize];
         if let (Some(to), Some(from)) = (

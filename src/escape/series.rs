@@ -16,10 +16,8 @@
 //!
 //! The coefficients share one exponent (block floating point, 56-bit parts): an update
 //! and a pixel's evaluation are exact 64×64 products and shifts, with nothing normalised
-//! per term. (With each term in its own 62-bit mantissa and exponent, Cortex-M3 took 1.6×
-//! the instructions an update and 5× a pixel's evaluation; 30-bit mantissas were tried
-//! before that: their rounding grows with the iterations skipped, a few parts in 10⁷ of δ
-//! after 600, and at the deep-zoom view 6 of its 8192 pixels came out wrong.)
+//! per term, and rounding that does not grow with the iterations skipped (the designs
+//! measured before this one: docs/performance.md).
 
 use super::scaled::{
     escaped, may_rebase, normalise, rebased, shr, step, ReferencePoint, Scaled, ZERO_EXPONENT,
@@ -27,19 +25,16 @@ use super::scaled::{
 use crate::math::wide::mul_wide;
 
 /// Terms of the series: each costs every pixel a multiply-add, and the coefficients about
-/// `SERIES_TERMS`/4 products an iteration each. Measured on Cortex-M3 at the deep-zoom
-/// view (10⁻⁷ over 128×64, 1000 iterations), with the block coefficients and a `Deep`
-/// finish: 16 terms 143 M instructions a frame, 20 terms 139 M, 24 terms 149 M; 20 took
-/// 3.4 KiB more flash, when the measuring firmware had 4 KiB left on the LM3S6965.
+/// `SERIES_TERMS`/4 products an iteration each. 16 is within a few per cent of the
+/// fastest count measured and takes the least flash (docs/performance.md).
 pub const SERIES_TERMS: usize = 16;
 
 /// Probe points on the view's border: its four corners and the middles of its sides.
 const PROBES: usize = 8;
 
-/// Tolerance: the series must match every probe to 2^-`TOLERANCE_BITS` of a pixel.
-/// Measured at the deep-zoom view at 320×240 against `Deep`'s dwells: 2⁻²⁰ (as first
-/// chosen) differs in 4 of 76,800 pixels, 2⁻⁸ in 13, 2⁻³ in 68 and 2⁰ in 239; 2⁻⁸ skips
-/// 120 more iterations (25 % fewer computed at 128×64, where the dwells stay identical).
+/// Tolerance: the series must match every probe to 2^-`TOLERANCE_BITS` of a pixel. 2⁻⁸ keeps the
+/// dwells of the boards' deep zoom identical to `Deep`'s while skipping more iterations
+/// than finer tolerances (docs/performance.md).
 const TOLERANCE_BITS: i32 = 8;
 
 /// The probes are compared with the series every `CHECK_EVERY` iterations (the check
@@ -164,9 +159,8 @@ impl Series {
 
 /// The coefficients b₁ … bₖ in one scale (block floating point), bₖ = (x + iy)·2^−`exponent`,
 /// the largest part in [2⁵⁵, 2⁵⁶): an iteration of them and a pixel's Horner steps are
-/// then exact 64×64 products and shifts, with no normalising of each (measured on
-/// Cortex-M3 at the deep-zoom view: the pixels' evaluation took a fifth of the
-/// instructions it took with a [`Scaled`] value per term). Every modulus is below 2^56.5,
+/// then exact 64×64 products and shifts, with no normalising of each (far cheaper
+/// than a [`Scaled`] value per term). Every modulus is below 2^56.5,
 /// so their sum, and every partial sum of Horner's rule (|u| < 1), stays below 2⁶². A
 /// coefficient far below the largest keeps fewer bits; its error is no larger than the
 /// largest one's, and the probes check the result.
@@ -310,7 +304,7 @@ fn horner(coefficients: &[(i64, i64)], (ux, uy): (i64, i64)) -> (i64, i64) {
 
 /// The exact complex product. Not inlined, nor are the loops that call it unrolled
 /// (their lengths are hidden from the optimiser): written out for every term, the
-/// series took 6 KiB more flash than the measuring firmware has to spare.
+/// series would not fit the measuring firmware's flash.
 #[inline(never)]
 fn product((ax, ay): (i64, i64), (bx, by): (i64, i64)) -> (i128, i128) {
     (

@@ -8,11 +8,8 @@ use super::tile::{Cells, TileDwells};
 
 /// A block whose border is not one dwell and which spans fewer than this many cells past
 /// its first, across or down (at most 5 cells), is computed whole rather than split: its
-/// inside is a few cells, fewer than the scans of four sub-blocks would visit. Against 4
-/// (at most 4 cells), the full view at 320×240 took 1.7 % fewer instructions on M3 and
-/// M4F, the 128×64 views 4–6 % fewer, and the boards' 128×64 Julia set and deep zoom
-/// agree with the exact render in 2 and 1 pixels more (0 and 3 differ); the deep zoom
-/// took 1.3 % more, and on Cortex-M0 the 320×240 frames 0.6–0.9 % more.
+/// inside is a few cells, fewer than the scans of four sub-blocks would visit. 5 against 4
+/// was measured on every board scene (docs/performance.md).
 pub(super) const WHOLE_BELOW: u32 = 5;
 
 /// A rectangle of a tile, corners inclusive, in tile coordinates.

@@ -26,10 +26,9 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     /// Rows from one tile's first to the next's, down a column of tiles: where it adds no
     /// tile, a tile's last row is the first of the tile below, computed once (tiles go
     /// down a column before the next, so the shared row is still in `tile`). A tile's
-    /// edge is on the outline of every region along it, so its cells are all computed;
-    /// on the full view at 320×240, sharing them computed 683 pixels fewer. Where it
-    /// would add a row of tiles (64 rows: three tiles of 31, not two of 32), the deep
-    /// zoom took 0.15 % more instructions.
+    /// edge is on the outline of every region along it, so its cells are all computed,
+    /// and sharing them computes fewer; not where it would add a row of tiles (64 rows:
+    /// three tiles of 31, not two of 32).
     pub(super) fn tile_stride(&self) -> u32 {
         let rows = self.computed_rows();
         let tile_rows = self.tile_rows();
@@ -40,11 +39,9 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         }
     }
 
-    /// A tile's height: traced tiles as tall as the render holds (on the full view at
-    /// 320×240, 32×64 tiles computed 11,245 pixels where 32×32 computed 11,694, and the
-    /// frame took 2.0 % fewer instructions on Cortex-M4F, the boards' deep zoom 8.2 %
-    /// fewer); subdivided ones at most 32 (at 32×64, the boards' Julia set at 320×240
-    /// took 2 % more).
+    /// A tile's height: traced tiles as tall as the render holds (taller tiles share more
+    /// of their outlines); subdivided ones at most 32, where taller ones cost more
+    /// (docs/performance.md).
     pub(super) fn tile_rows(&self) -> u32 {
         match self.pixels {
             Pixels::Fixed(kernel) if kernel.traceable() => Self::ROWS as u32,
@@ -64,11 +61,8 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
 
     /// [`trace`](Self::trace) or [`subdivide`](Self::subdivide) the current tile, compiled
     /// once per way of computing a cell (each fixed tier, its orbit in line, and any
-    /// other). Against one subdivision testing the tier at each cell, the full view at
-    /// 320×240 took 1.8 % fewer instructions on Cortex-M4F (M3 1.5 %, M0 2.2 %), the Julia
-    /// set 1.8 % (M3 1.1 %, M0 2.3 %). In line in `fast_tile`: compiled apart, in this
-    /// crate rather than the sink's, the full view took 1.1 % more on Cortex-M4F (both
-    /// measured with subdivision alone).
+    /// other). No cell tests the tier. In line in `fast_tile`, so that it is
+    /// compiled with the sink's code (docs/performance.md).
     #[inline(always)]
     pub(super) fn compute_tile(&mut self, w: u32, h: u32) -> TileDwells {
         match self.pixels {
@@ -140,8 +134,8 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     }
 }
 
-/// A perturbed pixel's dwell, out of line wherever a render is (in line, perturbation's
-/// finish took 7 KiB more flash).
+/// A perturbed pixel's dwell, out of line wherever a render is: in line, perturbation's
+/// finish would be copied into every caller's flash.
 #[inline(never)]
 pub(super) fn perturbed_dwell(pixels: &Perturbation<'_>, re: Part, im: Part) -> Perturbed {
     pixels.dwell(re.0, im.0)

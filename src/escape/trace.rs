@@ -97,9 +97,8 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     /// outline is followed in turn. Each cell not computed takes the dwell of the cell
     /// before it, as the tile is sent (`emit`): it could only differ if the crack between
     /// them were on an outline, and every region's has been followed. Filled in that pass
-    /// rather than one of its own, the full view at 320×240 took 1.4 % fewer instructions
-    /// on Cortex-M4F. Only the cells along outlines are computed: on the full view at
-    /// 320×240, 12,377 where subdivision computed 19,262 (11,694 with tiles sharing rows).
+    /// rather than one of its own, so each cell is read once. Only the cells along
+    /// outlines are computed, far fewer than subdivision computes (docs/performance.md).
     ///
     /// A region inside another without touching the tile's edge would be missed; in a
     /// Mandelbrot view the sets of points with dwell above k are connected, so there is

@@ -15,19 +15,9 @@
 //! points and only from a frame of its own tier, so it equals a full render (tested, and
 //! fuzzed: the tier rule came from the fuzzer).
 //!
-//! Measured in `tests/zoom.rs` (100 frames at 1.05×, 320×240): with a tolerance of one
-//! pixel, 9.2 % of each frame's pixels are computed on average (10.7 % at worst; a zoom
-//! by 1.05 must compute at least 1 − 1/1.05² ≈ 9.3 % of nominal lines, a little less
-//! here because lines just outside the old frame's edge are within reach); with half a
-//! pixel, 30.6 %, because old lines kept at their own points bunch up and two of them
-//! then reach for one new line. Which lines are taken decides the next frame: the most
-//! lines, earliest first, then each moved to the free line nearest its point. Earliest
-//! first alone (11.6 %) left every line at the low end of its reach and the grid
-//! bunched; nearest first alone loses lines (14 %, modelled). Matching nominal lines
-//! instead (taking a line's values to the new line nearest its nominal point, as a first
-//! design did) computes 9.75 %, but a pixel's point then drifts a little further with
-//! every frame: by frame 100 only 72 % of the pixels had the nominal point's dwell,
-//! against 78 % here.
+//! Which lines are taken decides the next frame: the most lines, earliest first, then
+//! each moved to the free line nearest its point, which computes about the least a zoom
+//! must and keeps the grid even (the alternatives measured: docs/performance.md).
 //!
 //! RAM: the caller holds the frame: W×H cells of values (`u16`, or `u8` where RAM is short)
 //! and 12 bytes a column and a row ([`ZoomLine`]); this module keeps nothing. A 128×64

@@ -543,7 +543,7 @@ impl<'a> Grammar<'a> {
     }
 
     /// What the turtle does for an op. Always inlined: it is on every symbol's path, and
-    /// with more callers (the table) LLVM stopped inlining it, at 10 % of a walk.
+    /// with more callers (the table) LLVM would not inline it.
     #[inline(always)]
     pub(crate) fn command(&self, op: u8) -> Command {
         if op >= NUMERIC {

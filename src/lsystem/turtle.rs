@@ -331,8 +331,8 @@ impl<'g, const STACK: usize> Turtle<'g, STACK> {
                 }
             };
         }
-        // The look-up and fill are written out in both arms: through one shared closure the
-        // OLED scenes took 1-5 % more instructions on Cortex-M3 and M4.
+        // The look-up and fill are written out in both arms: a shared closure costs more
+        // on Cortex-M3 and M4.
         let heading = u16::from(self.state.heading);
         let mirrored = heading > n / 2;
         let k = if mirrored { n - heading } else { heading };
@@ -526,8 +526,8 @@ impl StepCache {
 
 /// `step` along `(cos, sin)` (Q30): the vector one step moves by. Without a long multiply
 /// (Cortex-M0, where the products are library calls) a step of 1, as the fit's sizing walk
-/// in turtle units has, is exact without them: Q30 to Q32 is a shift (the snowflake 10 %
-/// fewer instructions on M0; on M3 and M4F the test cost as much as it saved).
+/// in turtle units has, is exact without them: Q30 to Q32 is a shift (on M3 and M4F the
+/// test would cost as much as it saves).
 #[inline(always)]
 fn scaled(step: Real, (cos, sin): (i32, i32)) -> (Real, Real) {
     #[cfg(tinyfractal_no_long_multiply)]
@@ -805,8 +805,7 @@ impl<'g, const DEPTH: usize, const STACK: usize> Segments<'g, '_, DEPTH, STACK> 
 impl<const DEPTH: usize, const STACK: usize> Segments<'_, '_, DEPTH, STACK> {
     /// Walks on, handing each segment to `f`, until `f` breaks with a value (`Some(Ok)`),
     /// the walk fails (`Some(Err)`, and it ends) or it ends (`None`). The hot loop, written
-    /// out: through `next_segment`'s closure the plain walk took 3 % more instructions on
-    /// Cortex-M.
+    /// out rather than through `next_segment`'s closure, which costs more on Cortex-M.
     #[inline(always)]
     fn walk_until<B>(
         &mut self,
@@ -838,7 +837,7 @@ impl<const DEPTH: usize, const STACK: usize> Segments<'_, '_, DEPTH, STACK> {
 
     /// Calls `f` with every segment to the walk's end, in one loop: the walk's state stays
     /// where it is between segments, where each call of `next` set it up and put it away
-    /// again (about 80 instructions a segment on Cortex-M3, a tenth of the plant scene). The
+    /// again. The
     /// first error, the walk's or `f`'s, stops it.
     #[inline(always)]
     pub(crate) fn for_each_segment<E: From<Error>>(

@@ -380,7 +380,7 @@ impl fmt::Debug for DeepCoord {
 
 /// Writes `value` (finite) in scientific notation, `precision` decimals (at most 15), or
 /// up to six with trailing zeros dropped if `None`. In f64 arithmetic, scaled by tens:
-/// `f64`'s own exact formatting took 14 KiB of a firmware's flash, for error messages.
+/// `f64`'s own exact formatting would cost a firmware far more flash, for error messages.
 fn write_scientific(
     f: &mut fmt::Formatter<'_>,
     value: f64,

@@ -74,9 +74,8 @@ pub(crate) fn mul_wide(a: i64, b: i64) -> i128 {
     mul_wide_in_line(a, b)
 }
 
-/// [`mul_wide`] in line, for the `Deep` tier's orbit: called, with both of a tile's ways
-/// of computing a cell compiled (see `TierOrbit`), the deep zoom took 60 % more
-/// instructions on Cortex-M3 and M4F.
+/// [`mul_wide`] in line, for the `Deep` tier's orbit: a call there, with both of a tile's
+/// ways of computing a cell compiled (see `TierOrbit`), costs far more.
 #[inline(always)]
 pub(crate) fn mul_wide_in_line(a: i64, b: i64) -> i128 {
     // On 64-bit hosts the native product is the same exact value, in one or two
