@@ -9,8 +9,7 @@ use embedded_graphics::{pixelcolor::Rgb565, prelude::*};
 use std::hint::black_box;
 use tinyfractal::{ifs::IfsPicture, ChaosGame, IfsFile};
 
-#[path = "../tests/support/frame.rs"]
-mod frame;
+use tinyfractal_test_support::frame;
 
 const POINTS: u64 = 100_000;
 

@@ -17,8 +17,7 @@ use tinyfractal::{
     Angle, Dialect, Grammar, LSystem,
 };
 
-#[path = "../tests/support/frame.rs"]
-mod frame;
+use tinyfractal_test_support::frame;
 
 type Framebuffer = frame::Frame<Rgb565>;
 

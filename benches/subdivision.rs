@@ -16,8 +16,7 @@ use tinyfractal::{
     TerrainMap,
 };
 
-#[path = "../tests/support/frame.rs"]
-mod frame;
+use tinyfractal_test_support::frame;
 
 fn bench(c: &mut Criterion) {
     let mut target = frame::Frame::filled(Size::new(320, 240), Rgb565::BLACK);

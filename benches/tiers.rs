@@ -16,10 +16,7 @@ use tinyfractal::{
     Coord, Fractal, View,
 };
 
-#[path = "../tests/support/dd.rs"]
-mod dd;
-#[path = "../tests/support/naive.rs"]
-mod naive;
+use tinyfractal_test_support::{dd, naive};
 
 use dd::Dd;
 use num_bigint::BigInt;

@@ -267,10 +267,7 @@ fn dwells_agree_with_the_f64_model() {
     }
 }
 
-#[path = "support/dd.rs"]
-mod dd;
-#[path = "support/naive.rs"]
-mod naive;
+use tinyfractal_test_support::{dd, naive};
 
 use dd::Dd;
 

@@ -8,8 +8,7 @@ use std::path::PathBuf;
 
 use embedded_graphics::prelude::*;
 
-#[path = "../support/frame.rs"]
-mod support;
+use tinyfractal_test_support::frame as support;
 
 /// A system as the model sees it.
 #[derive(Debug, Clone)]

@@ -7,8 +7,7 @@
 //! Without `qemu-system-arm` the test is built as ignored (and says what to install),
 //! except under `CI=true`, where it runs and fails (`.ci/run` installs QEMU).
 
-#[path = "../../tools/qemu.rs"]
-mod tools;
+use tinyfractal_test_support::qemu as tools;
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::net::UnixStream;

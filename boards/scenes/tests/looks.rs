@@ -9,8 +9,7 @@ use embedded_graphics::{
 };
 use tinyfractal_scenes::{Entry, Look, Work, COLOUR, GREY, SCENES, ZOOM_SCENES};
 
-#[path = "../../../tests/support/frame.rs"]
-mod frame;
+use tinyfractal_test_support::frame;
 
 use frame::Frame;
 

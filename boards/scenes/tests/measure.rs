@@ -10,8 +10,7 @@
 //! With `TINYFRACTAL_MEASUREMENTS=PATH` it writes the records to PATH as JSON:
 //! `boards/measure` does that for `boards/measurements.json`.
 
-#[path = "../../tools/qemu.rs"]
-mod tools;
+use tinyfractal_test_support::qemu as tools;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;

@@ -9,8 +9,7 @@ use tinyfractal::{
 };
 use tinyfractal_scenes::{Scene, Work, GREY};
 
-#[path = "../../../tests/support/frame.rs"]
-mod frame;
+use tinyfractal_test_support::frame;
 
 use frame::Frame;
 

@@ -10,8 +10,7 @@ use tinyfractal::{
 };
 use tinyfractal_scenes::{Scene, Work, GREY, ZOOM_SCENES};
 
-#[path = "../../../tests/support/frame.rs"]
-mod frame;
+use tinyfractal_test_support::frame;
 
 use frame::Frame;
 

@@ -1,21 +1,23 @@
-//! One host framebuffer for the tests and benches of every crate (`#[path]`-included):
-//! any colour, any size (MockDisplay stops at 64×64), pixels outside counted rather than
+//! One host framebuffer for the tests and benches of every crate.
+//!
+//! Any colour, any size (MockDisplay stops at 64×64), pixels outside counted rather than
 //! dropped silently, and `fill_solid` writing rows directly, as a real framebuffer does.
-
-#![allow(dead_code)]
 
 use embedded_graphics::{pixelcolor::BinaryColor, prelude::*, primitives::Rectangle};
 
 /// A framebuffer of `C`, row by row.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Frame<C> {
+    /// Its size.
     pub size: Size,
+    /// Its pixels, row by row.
     pub pixels: Vec<C>,
     /// Pixels drawn outside the frame.
     pub outside: usize,
 }
 
 impl<C: PixelColor> Frame<C> {
+    /// A frame of `size`, every pixel `background`.
     pub fn filled(size: Size, background: C) -> Self {
         Self {
             size,
@@ -39,6 +41,7 @@ impl<C: PixelColor> Frame<C> {
 pub type Bitmap = Frame<BinaryColor>;
 
 impl Bitmap {
+    /// A bitmap of `width`×`height`, all off.
     pub fn new(width: u32, height: u32) -> Self {
         Self::filled(Size::new(width, height), BinaryColor::Off)
     }
@@ -48,6 +51,7 @@ impl Bitmap {
         self.pixel(x, y).is_some_and(|c| c.is_on())
     }
 
+    /// How many pixels are on.
     pub fn lit(&self) -> usize {
         self.pixels.iter().filter(|c| c.is_on()).count()
     }

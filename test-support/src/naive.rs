@@ -1,5 +1,5 @@
 //! The naive escape-time loop a user writes on an FPU: `f32`, separate multiply and add
-//! (as on the Cortex-M4F), for the tests and the tier calibration (`#[path]`-included).
+//! (as on the Cortex-M4F), for the tests and the tier calibration.
 
 /// The dwell of the point `p` in `f32`: the smallest n ≥ 1 with |zₙ|² > 4, capped at `max`.
 /// For a Julia set (`julia: Some(k)`) z₀ = p and c = k; for the Mandelbrot set z₀ = 0 and

@@ -1,15 +1,17 @@
-//! What the QEMU tests share (`#[path]`-included by each): the Cortex-M targets, installed by
-//! rustup when they are missing, and QEMU itself. Whether a test runs at all is decided at
-//! build time (`detect.rs`): here a missing piece is a failure that says what to install.
-
-#![allow(dead_code)]
+//! What the QEMU tests share.
+//!
+//! The Cortex-M targets, installed by rustup when they are missing, and QEMU itself. Whether a
+//! test runs at all is decided at build time (`detect.rs`): here a missing piece is a failure
+//! that says what to install.
 
 use std::path::Path;
 use std::process::Command;
 
 /// Makes sure `target`'s standard library is installed for the toolchain that builds the
-/// firmware in `folder` (its `rust-toolchain.toml` applies): rustup adds a missing one,
-/// since it does not add the file's targets to a toolchain that is already installed.
+/// firmware in `folder` (its `rust-toolchain.toml` applies).
+///
+/// Rustup adds a missing one, since it does not add the file's targets to a toolchain that is
+/// already installed.
 pub fn ensure_target(folder: &Path, target: &str) {
     let libdir = Command::new("rustc")
         .current_dir(folder)

@@ -1,13 +1,17 @@
-//! Double-double numbers (about 106 bits) from f64 pairs and the escape-time dwell in them,
-//! for the escape-time tests and the tier calibration (`#[path]`-included): the reference
-//! where f64 runs out of bits (at the deep zoom a pixel is 2^-41.5, and f64 keeps 2^-53).
-
-#![allow(dead_code)]
+//! Double-double numbers (about 106 bits) and the escape-time dwell in them.
+//!
+//! For the escape-time tests and the tier calibration.
+//!
+//! The reference where f64 runs out of bits (at the deep zoom a pixel is 2^-41.5, and f64 keeps
+//! 2^-53).
 
 /// A value as the sum of two f64s, the second below half an ulp of the first.
-#[derive(Clone, Copy)]
+#[derive(Debug, Clone, Copy)]
 pub struct Dd(pub f64, pub f64);
 
+// Named like the operators, and called by name, so that a formula reads in the order of
+// its rounding.
+#[allow(clippy::should_implement_trait)]
 impl Dd {
     /// From Q60 bits.
     pub fn from_q60(bits: i128) -> Self {
@@ -20,20 +24,24 @@ impl Dd {
         let s = a + b;
         Dd(s, b - (s - a))
     }
+    /// The sum.
     pub fn add(self, o: Dd) -> Dd {
         let s = self.0 + o.0;
         let v = s - self.0;
         let e = (self.0 - (s - v)) + (o.0 - v) + self.1 + o.1;
         Dd::quick(s, e)
     }
+    /// The negation.
     pub fn neg(self) -> Dd {
         Dd(-self.0, -self.1)
     }
+    /// The product.
     pub fn mul(self, o: Dd) -> Dd {
         let p = self.0 * o.0;
         let e = self.0.mul_add(o.0, -p) + self.0 * o.1 + self.1 * o.0;
         Dd::quick(p, e)
     }
+    /// The product with `k`.
     pub fn scale(self, k: f64) -> Dd {
         self.mul(Dd(k, 0.0))
     }
