@@ -1,7 +1,7 @@
 //! Firmware for the Raspberry Pi Pico (RP2040, Cortex-M0+) with an ST7789 320×240 display on
 //! SPI1, driven by `mipidsi`: shows the shared scenes one after another in RGB565. The
 //! button on GP15 moves on to the next scene; without a press it moves on after
-//! [`SHOW_FOR_MS`]. The defmt log (RTT, through the probe) says what each scene cost.
+//! [`SHOW_FOR_MS`](tinyfractal_scenes::SHOW_FOR_MS). The defmt log (RTT, through the probe) says what each scene cost.
 //!
 //! Wiring (the Waveshare Pico-LCD-2 module's, so it plugs straight on): see README.md.
 #![no_std]
@@ -26,7 +26,7 @@ use rp2040_hal::{
     gpio::{FunctionSpi, Pins},
     pac, Sio, Spi, Timer, Watchdog,
 };
-use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES, ZOOM_SCENES};
+use tinyfractal_scenes::{show_scenes, Work, COLOUR};
 
 /// The second-stage bootloader for the Pico's W25Q080 flash, first in the image.
 // SAFETY: `.boot2` is the 256 bytes memory.x reserves at the start of the flash for it.
@@ -39,10 +39,6 @@ pub static BOOT2: [u8; 256] = rp2040_boot2::BOOT_LOADER_W25Q080;
 const XTAL_HZ: u32 = 12_000_000;
 /// The RP2040's fastest SPI clock (the peripheral clock / 2); lower it for long wires.
 const SPI_HZ: u32 = 62_500_000;
-/// How long a scene stays up without a button press.
-const SHOW_FOR_MS: u64 = 10_000;
-/// Between the frames of an animated scene.
-const FRAME_MS: u64 = 60;
 /// Most IPS ST7789 panels (the Pico-LCD-2's among them) show inverted colours without this.
 const INVERSION: ColorInversion = ColorInversion::Inverted;
 
@@ -103,34 +99,18 @@ fn main() -> ! {
     let Ok(()) = embedded_hal::digital::OutputPin::set_high(&mut backlight);
     info!("ST7789 320x240 ready; GP15 shows the next scene");
 
-    loop {
-        for entry in SCENES.iter().chain(&DEEP_SCENES).chain(&ZOOM_SCENES) {
-            let (name, scene) = (entry.name, entry.scene);
-            let start = timer.get_counter();
-            // An animated scene (the walking figure, the zoom) waits FRAME_MS between frames.
-            let result = scene.draw_frames(&mut display, &COLOUR, || {
-                let since = timer.get_counter();
-                wait_for_press_or(
-                    FRAME_MS,
-                    || (timer.get_counter() - since).to_millis(),
-                    || false,
-                );
-            });
-            let ms = (timer.get_counter() - start).to_millis();
-            match result {
-                Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", name, n, ms),
-                Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
-                Ok(Work::Points(n)) => info!("{}: {} points in {} ms", name, n, ms),
-                Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", name, n, ms),
-                Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", name, n, ms),
-                Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
-            }
-            let shown = timer.get_counter();
-            wait_for_press_or(
-                SHOW_FOR_MS,
-                || (timer.get_counter() - shown).to_millis(),
-                || button.is_low().unwrap_or(false), // active low
-            );
-        }
-    }
+    show_scenes(
+        &mut display,
+        &COLOUR,
+        || timer.get_counter().ticks() / 1000,
+        || button.is_low().unwrap_or(false), // active low
+        |entry, result, ms| match result {
+            Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", entry.name, n, ms),
+            Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", entry.name, n, ms),
+            Ok(Work::Points(n)) => info!("{}: {} points in {} ms", entry.name, n, ms),
+            Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", entry.name, n, ms),
+            Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", entry.name, n, ms),
+            Err(error) => error!("{} failed: {}", entry.name, Display2Format(&error)),
+        },
+    )
 }

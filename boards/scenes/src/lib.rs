@@ -22,4 +22,4 @@ pub use catalogue::{
 pub use look::{
     Look, Work, COLOUR, GREY, LSYSTEM_CELLS, MAX_BOARD_MAP_CELLS, MAX_BOARD_REFERENCE_POINTS,
 };
-pub use wait::wait_for_press_or;
+pub use wait::{show_scenes, wait_for_press_or, FRAME_MS, SHOW_FOR_MS};

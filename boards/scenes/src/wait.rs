@@ -1,4 +1,48 @@
-//! How a board moves from one scene to the next.
+//! How a board moves from one scene to the next, and the slideshow the real boards run.
+
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
+use tinyfractal::error::DrawError;
+
+use crate::catalogue::{Entry, DEEP_SCENES, SCENES, ZOOM_SCENES};
+use crate::look::{Look, Work};
+
+/// How long an animated scene waits between its frames, in milliseconds.
+pub const FRAME_MS: u64 = 60;
+
+/// How long a real board shows a scene before the next, in milliseconds.
+pub const SHOW_FOR_MS: u64 = 10_000;
+
+/// Shows every scene of the catalogue in turn, forever: the real boards' main loop.
+///
+/// `now_ms` reads a free-running millisecond clock, `pressed` the board's button (its
+/// polarity is the board's business), and `report` hears each scene's name, outcome and
+/// drawing time, for the board's log. An animated scene waits [`FRAME_MS`] between
+/// frames; each scene shows for [`SHOW_FOR_MS`] or until the button is pressed and
+/// released.
+pub fn show_scenes<D>(
+    display: &mut D,
+    look: &Look<'_, D::Color>,
+    mut now_ms: impl FnMut() -> u64,
+    mut pressed: impl FnMut() -> bool,
+    mut report: impl FnMut(&Entry, Result<Work, DrawError<D::Error>>, u64),
+) -> !
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    loop {
+        for entry in SCENES.iter().chain(&DEEP_SCENES).chain(&ZOOM_SCENES) {
+            let start = now_ms();
+            let result = entry.scene.draw_frames(display, look, || {
+                let since = now_ms();
+                wait_for_press_or(FRAME_MS, || now_ms().wrapping_sub(since), || false);
+            });
+            report(entry, result, now_ms().wrapping_sub(start));
+            let shown = now_ms();
+            wait_for_press_or(SHOW_FOR_MS, || now_ms().wrapping_sub(shown), &mut pressed);
+        }
+    }
+}
 
 /// How a board moves to the next scene.
 ///

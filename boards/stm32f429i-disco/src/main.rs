@@ -1,7 +1,7 @@
 //! Firmware for the STM32F429I-DISCO (Cortex-M4F at 180 MHz): shows the shared scenes on the
 //! board's built-in 240×320 ILI9341, driven over SPI5 by `mipidsi` (the panel's serial
 //! interface; the LTDC and the SDRAM stay off). The blue user button (B1, PA0) moves on to
-//! the next scene; without a press it moves on after [`SHOW_FOR_MS`]. The defmt log (RTT,
+//! the next scene; without a press it moves on after [`SHOW_FOR_MS`](tinyfractal_scenes::SHOW_FOR_MS). The defmt log (RTT,
 //! through the on-board ST-LINK) says what each scene cost.
 #![no_std]
 #![no_main]
@@ -25,16 +25,12 @@ use stm32f4xx_hal::{
     spi::{Mode, Phase, Polarity},
     timer::Counter,
 };
-use tinyfractal_scenes::{wait_for_press_or, Work, COLOUR, DEEP_SCENES, SCENES, ZOOM_SCENES};
+use tinyfractal_scenes::{show_scenes, Work, COLOUR};
 
 /// The board's 8 MHz HSE clock.
 const HSE_MHZ: u32 = 8;
 /// The ILI9341's serial interface is specified to 10 MHz writes; it is commonly run faster.
 const SPI_MHZ: u32 = 22;
-/// How long a scene stays up without a button press.
-const SHOW_FOR_MS: u64 = 10_000;
-/// Between the frames of an animated scene.
-const FRAME_MS: u64 = 60;
 /// The timer that measures scenes and timeouts counts at 10 kHz (a 16-bit prescaler cannot
 /// reach 1 kHz from 90 MHz); TIM2 is 32 bits, so it wraps after five days.
 const TICK_HZ: u32 = 10_000;
@@ -114,34 +110,18 @@ fn main() -> ! {
     }
     info!("ILI9341 240x320 ready; the user button shows the next scene");
 
-    loop {
-        for entry in SCENES.iter().chain(&DEEP_SCENES).chain(&ZOOM_SCENES) {
-            let (name, scene) = (entry.name, entry.scene);
-            let start = clock.now();
-            // An animated scene (the walking figure, the zoom) waits FRAME_MS between frames.
-            let result = scene.draw_frames(&mut display, &COLOUR, || {
-                let since = clock.now();
-                wait_for_press_or(
-                    FRAME_MS,
-                    || u64::from((clock.now() - since).to_millis()),
-                    || false,
-                );
-            });
-            let ms = (clock.now() - start).to_millis();
-            match result {
-                Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", name, n, ms),
-                Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", name, n, ms),
-                Ok(Work::Points(n)) => info!("{}: {} points in {} ms", name, n, ms),
-                Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", name, n, ms),
-                Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", name, n, ms),
-                Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
-            }
-            let shown = clock.now();
-            wait_for_press_or(
-                SHOW_FOR_MS,
-                || u64::from((clock.now() - shown).to_millis()),
-                || button.is_high(), // active high
-            );
-        }
-    }
+    show_scenes(
+        &mut display,
+        &COLOUR,
+        || u64::from(clock.now().ticks()) / u64::from(TICK_HZ / 1000),
+        || button.is_high(), // active high
+        |entry, result, ms| match result {
+            Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", entry.name, n, ms),
+            Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", entry.name, n, ms),
+            Ok(Work::Points(n)) => info!("{}: {} points in {} ms", entry.name, n, ms),
+            Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", entry.name, n, ms),
+            Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", entry.name, n, ms),
+            Err(error) => error!("{} failed: {}", entry.name, Display2Format(&error)),
+        },
+    )
 }
