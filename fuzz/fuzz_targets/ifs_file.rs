@@ -5,7 +5,7 @@
 
 use embedded_graphics::prelude::*;
 use libfuzzer_sys::fuzz_target;
-use tinyfractal::{IfsFile, ifs::IfsPicture};
+use tinyfractal::{ifs::IfsPicture, IfsFile};
 use tinyfractal_fuzz::{StrictTarget, PALETTE};
 
 fuzz_target!(|data: &[u8]| {

@@ -7,7 +7,10 @@
 use arbitrary::Arbitrary;
 use embedded_graphics::prelude::*;
 use libfuzzer_sys::fuzz_target;
-use tinyfractal::{Coord, Fractal, View, escape::{Algorithm, Render, Shading, Tier}};
+use tinyfractal::{
+    escape::{Algorithm, Render, Shading, Tier},
+    Coord, Fractal, View,
+};
 use tinyfractal_fuzz::StrictDwells;
 
 #[derive(Debug, Arbitrary)]

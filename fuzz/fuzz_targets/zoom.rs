@@ -9,7 +9,11 @@
 use arbitrary::Arbitrary;
 use embedded_graphics::prelude::*;
 use libfuzzer_sys::fuzz_target;
-use tinyfractal::{Coord, Fractal, View, escape::{Algorithm, Render, ZoomFrame, ZoomLine, ZoomValue}, render::DwellBuffer};
+use tinyfractal::{
+    escape::{Algorithm, Render, ZoomFrame, ZoomLine, ZoomValue},
+    render::DwellBuffer,
+    Coord, Fractal, View,
+};
 
 #[derive(Debug, Arbitrary)]
 struct Move {

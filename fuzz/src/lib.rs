@@ -5,7 +5,11 @@
 use core::convert::Infallible;
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
-use tinyfractal::{Grammar, LSystem, ParametricGrammar, ParametricLSystem, lsystem::{cells_needed, Cell, Walker, DEFAULT_DEPTH, DEFAULT_STACK}, render::{Colors, DwellSink}};
+use tinyfractal::{
+    lsystem::{cells_needed, Cell, Walker, DEFAULT_DEPTH, DEFAULT_STACK},
+    render::{Colors, DwellSink},
+    Grammar, LSystem, ParametricGrammar, ParametricLSystem,
+};
 
 /// Symbols a walk may read per input: a fuzz input must stay well under a second.
 pub const BUDGET: u64 = 20_000;
