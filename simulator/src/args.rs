@@ -36,13 +36,21 @@ pub enum Command {
     /// `render terrain2d ...`
     RenderTerrain2d(crate::shape_scene::Terrain2dOptions),
     /// `dimension FILE.png [--background RRGGBB]`
-    Dimension { file: PathBuf, background: u32 },
+    Dimension {
+        /// The picture.
+        file: PathBuf,
+        /// The background colour, 0xRRGGBB.
+        background: u32,
+    },
     /// `derive ...`
     Derive(DeriveArgs),
     /// `list PATH.l`
     List(PathBuf),
     /// `gallery [--out DIR]`, and no arguments at all
-    Gallery { out: PathBuf },
+    Gallery {
+        /// The folder the pictures go into.
+        out: PathBuf,
+    },
     /// `completions SHELL`
     Completions(clap_complete::Shell),
     /// `animate zoom|palette|growth|figure ...`
@@ -58,16 +66,22 @@ pub struct ExploreArgs {
     pub file: Option<PathBuf>,
     /// A gallery scene to start from, paging through the gallery.
     pub scene: Option<String>,
+    /// The Julia parameter to start with (`--c`), if any.
     pub julia: Option<(String, String)>,
+    /// The first view's centre (`--center`), as text.
     pub centre: (String, String),
+    /// The first view's width (`--width`), as text.
     pub width: String,
+    /// The first view's iteration cap (`--max-iter`).
     pub max_iterations: u32,
+    /// The picture's size (`--size`), a status line below it.
     pub size: (u32, u32),
 }
 
 /// `animate`'s arguments.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AnimateArgs {
+    /// What is animated.
     pub kind: Animation,
     /// Frames (for `growth`, orders 0 to `--order`, one frame each).
     pub frames: u32,
@@ -75,7 +89,9 @@ pub struct AnimateArgs {
     pub out: PathBuf,
     /// Milliseconds a frame shows in a GIF or APNG.
     pub delay_ms: u32,
+    /// Each frame's size (`--size`).
     pub size: (u32, u32),
+    /// Whether to print a line of statistics (`--stats`).
     pub stats: bool,
 }
 
@@ -85,27 +101,48 @@ pub enum Animation {
     /// A zoom from `view`'s width to `end_width` (or by `factor` a frame), reusing frames
     /// within `tolerance` % of a pixel unless `exact`.
     Zoom {
+        /// The view zoomed into, and its first width.
         view: EscapeArgs,
+        /// The last frame's width (`--end-width`), if given.
         end_width: Option<String>,
+        /// How much each frame zooms in (`--factor`).
         factor: f64,
+        /// How close a reused line must be, in percent of a pixel (`--tolerance`).
         tolerance: u32,
+        /// Whether every pixel of every frame is computed (`--exact`).
         exact: bool,
     },
     /// One view, its gradient turned by `step` entries a frame.
-    Palette { view: EscapeArgs, step: u16 },
+    Palette {
+        /// The view.
+        view: EscapeArgs,
+        /// Gradient entries the colours move a frame (`--step`).
+        step: u16,
+    },
     /// An L-system, one order a frame.
-    Growth { source: Source, seed: Option<u32> },
+    Growth {
+        /// The system.
+        source: Source,
+        /// The seed of stochastic productions (`--seed`), if given.
+        seed: Option<u32>,
+    },
     /// The walking (or waving) figure.
-    Figure { pose: crate::figure_scene::PoseName },
+    Figure {
+        /// The movement (`--pose`).
+        pose: crate::figure_scene::PoseName,
+    },
 }
 
 /// `derive`'s arguments.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DeriveArgs {
+    /// The system.
     pub source: Source,
+    /// The order (`--order`).
     pub order: u32,
     /// `--seed`, overriding the system's.
     pub seed: Option<u32>,
+    /// The longest string printed (`--max-length`).
     pub max_length: u64,
 }
 
@@ -113,13 +150,23 @@ pub struct DeriveArgs {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Source {
     /// `--file PATH --name NAME`
-    File { path: PathBuf, name: String },
+    File {
+        /// The file.
+        path: PathBuf,
+        /// The system's name in it.
+        name: String,
+    },
     /// `--axiom STR --rule C=STR ... (--angle N | --angle-deg DEG)`
     Inline {
+        /// The axiom (`--axiom`).
         axiom: String,
+        /// The rules (`--rule C=STR`), in order.
         rules: Vec<(char, String)>,
+        /// The angle (`--angle` or `--angle-deg`).
         angle: tinyfractal::Angle,
+        /// More symbols that draw (`--draw-symbols`).
         draw_symbols: String,
+        /// The notation (`--dialect`).
         dialect: tinyfractal::Dialect,
     },
 }
@@ -127,11 +174,15 @@ pub enum Source {
 /// `render lsystem`'s arguments.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LSystemArgs {
+    /// The system.
     pub source: Source,
+    /// The order (`--order`).
     pub order: u32,
     /// `--seed`, overriding the system's.
     pub seed: Option<u32>,
+    /// The options every render takes.
     pub common: Common,
+    /// Where to write the segments (`--segments`), if anywhere.
     pub segments: Option<PathBuf>,
     /// `--view`: the window drawn, as fractions of the picture fitted to the whole target.
     pub view: Option<View>,
@@ -148,14 +199,21 @@ pub struct LSystemArgs {
 pub struct EscapeArgs {
     /// `None` for the Mandelbrot set, the parameter `(re, im)` for a Julia set.
     pub julia: Option<(String, String)>,
+    /// The view's centre (`--center`), as text.
     pub centre: (String, String),
+    /// The view's width (`--width`), as text.
     pub width: String,
+    /// The iteration cap (`--max-iter`).
     pub max_iterations: u32,
+    /// How the pixels are scheduled (`--algorithm`).
     pub algorithm: tinyfractal::escape::Algorithm,
     /// `None` for automatic.
     pub tier: Option<tinyfractal::escape::Tier>,
+    /// The palette's name (`--palette`).
     pub palette: String,
+    /// The options every render takes.
     pub common: Common,
+    /// Where to write the dwells (`--dwell`), if anywhere.
     pub dwell: Option<PathBuf>,
 }
 

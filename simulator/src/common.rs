@@ -29,10 +29,12 @@ pub struct Common {
 }
 
 impl Common {
+    /// The picture's width in pixels.
     pub fn width(&self) -> u32 {
         self.size.0
     }
 
+    /// The picture's height in pixels.
     pub fn height(&self) -> u32 {
         self.size.1
     }
@@ -57,9 +59,13 @@ impl Common {
 /// (0,0 top left, 1,1 bottom right; `0,0,1,1` is the whole picture).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct View {
+    /// Left edge, a fraction of the target's width.
     pub x0: f64,
+    /// Top edge, a fraction of the target's height.
     pub y0: f64,
+    /// Right edge, a fraction of the target's width.
     pub x1: f64,
+    /// Bottom edge, a fraction of the target's height.
     pub y1: f64,
 }
 

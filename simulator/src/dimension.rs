@@ -41,7 +41,7 @@ pub fn dimension(path: &Path, background: u32) -> Result<(), String> {
         .map_err(|e| format!("dimension {}: {e}", path.display()))?
         .to_rgb8();
     let (width, height) = picture.dimensions();
-    let mut display = SimulatorDisplay::new(embedded_graphics::prelude::Size::new(width, height));
+    let mut display = SimulatorDisplay::new(Size::new(width, height));
     for (x, y, pixel) in picture.enumerate_pixels() {
         let [r, g, b] = pixel.0;
         let _ = Pixel(Point::new(x as i32, y as i32), Rgb888::new(r, g, b)).draw(&mut display);

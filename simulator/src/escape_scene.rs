@@ -14,25 +14,40 @@ use tinyfractal::{
 };
 
 /// A rendered view.
+#[derive(Debug)]
 pub struct Rendered {
+    /// The view drawn.
     pub view: View,
     /// The pixels' values (dwells, or smooth values as the view's shading says), row by row.
     pub values: Vec<u16>,
+    /// How its pixels were scheduled.
     pub algorithm: Algorithm,
+    /// The picture.
     pub display: SimulatorDisplay<Rgb888>,
+    /// What the render did.
     pub stats: RenderStats,
+    /// The time it took.
     pub elapsed: Duration,
 }
 
 /// What to render, as the user wrote it.
+#[derive(Debug)]
 pub struct Request<'a> {
+    /// The Julia parameter as text, or `None` for the Mandelbrot set.
     pub julia: Option<(&'a str, &'a str)>,
+    /// The centre as text.
     pub centre: (&'a str, &'a str),
+    /// The width as text.
     pub width: &'a str,
+    /// The picture's size.
     pub size: Size,
+    /// The iteration cap.
     pub max_iterations: u32,
+    /// How the pixels are scheduled.
     pub algorithm: Algorithm,
+    /// A forced tier, or `None` for the automatic one.
     pub tier: Option<Tier>,
+    /// The palette's name.
     pub palette: &'a str,
 }
 
@@ -288,12 +303,16 @@ impl TierWarning {
 }
 
 /// The palettes by name.
+#[derive(Debug)]
 pub enum HostPalette {
+    /// A gradient over dwells or smooth values.
     Gradient(Box<Gradient<Rgb888, 256>>),
     /// A gradient over smooth values: 16 entries (sixteenths) for each of the dwell
     /// gradient's, so the same colours at whole dwells, and every shade between.
     Smooth(Box<Gradient<Rgb888, 4096>>),
+    /// Alternating bands.
     Bands(Bands<'static, Rgb888>),
+    /// Inside and outside, two colours.
     TwoColor(TwoColor<Rgb888>),
 }
 
@@ -393,7 +412,7 @@ pub fn render_escape(arguments: &crate::args::EscapeArgs) -> Result<(), String> 
     } else {
         "mandelbrot"
     };
-    let size = embedded_graphics::geometry::Size::new(common.width(), common.height());
+    let size = Size::new(common.width(), common.height());
     let request = request(arguments, size);
     crate::delivery::window_available(common.window)?;
     // Everything is computed and every output checked before anything is written.

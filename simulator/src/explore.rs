@@ -55,6 +55,7 @@ pub enum Input {
     Pan(i32, i32),
     /// `+` / `-`: double or halve the iteration cap (escape time), or the order ± 1.
     More,
+    /// Halves the iteration cap (or lowers the order).
     Fewer,
     /// `p`: the next palette.
     NextPalette,
@@ -68,18 +69,26 @@ pub enum Input {
     Reset,
     /// Page down / page up: the next or previous system of an L-system file.
     NextSystem,
+    /// The file's previous system, or the gallery's previous scene.
     PreviousSystem,
 }
 
 /// An escape-time view being explored.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EscapeState {
+    /// The Julia parameter, or `None` for the Mandelbrot set.
     pub julia: Option<(Coord, Coord)>,
+    /// The centre.
     pub centre: (f64, f64),
+    /// The width along the real axis.
     pub width: f64,
+    /// The iteration cap.
     pub max_iterations: u32,
+    /// The palette, an index into [`PALETTES`].
     pub palette: usize,
+    /// Whether the colours cycle.
     pub cycling: bool,
+    /// How far the colours have cycled.
     pub offset: u16,
 }
 
@@ -98,21 +107,29 @@ impl Default for EscapeState {
 }
 
 /// What is explored.
+#[derive(Debug)]
 pub enum Subject {
+    /// An escape-time view.
     Escape(EscapeState),
     /// An L-system file's systems (text, names), the one shown and its order.
     LSystems {
+        /// The file's text.
         text: String,
         /// An `.lsys` file (else Fractint's `.l`).
         lsys: bool,
+        /// The names of its systems.
         names: Vec<String>,
+        /// Which system is shown.
         index: usize,
+        /// The order it is drawn at.
         order: u32,
     },
     /// The gallery's scenes: the one shown (at the explorer's size), with its parameter
     /// moved by `+`/`-`.
     Gallery {
+        /// Which scene is shown.
         index: usize,
+        /// The scene, with its own parameter as the user moved it.
         entry: Entry,
     },
 }
@@ -240,7 +257,9 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
 }
 
 /// The explorer: what is shown, the render under way, and the status line's facts.
+#[derive(Debug)]
 pub struct Explorer {
+    /// What is shown.
     pub subject: Subject,
     start: EscapeState,
     size: Size,
@@ -248,11 +267,13 @@ pub struct Explorer {
     /// The values computed so far (colour cycling repaints from them).
     values: Vec<u16>,
     started: Instant,
+    /// How long the last complete picture took.
     pub elapsed: Duration,
     /// Where `s` saves, numbered.
     saves: u32,
     /// `s` was pressed: save once the picture is complete.
     save_pending: bool,
+    /// The status line's last message (a save, an error).
     pub message: String,
     /// What a gallery scene's picture reports (its order, tier, ...).
     detail: String,

@@ -29,12 +29,17 @@ pub const MAX_CELLS: usize = 1 << 20;
 pub type HostSystem<'g, 'a> = LSystem<'g, 'a, DEPTH, STACK>;
 
 /// A rendered picture and what it took.
+#[derive(Debug)]
 pub struct Rendered {
+    /// The picture.
     pub display: SimulatorDisplay<Rgb888>,
+    /// What the walk did.
     pub stats: WalkStats,
     /// Fitting (measuring and checking) and drawing.
     pub fit: Duration,
+    /// The time the drawing took.
     pub draw: Duration,
+    /// The time everything took.
     pub elapsed: Duration,
 }
 
@@ -126,8 +131,11 @@ fn drawn<T>(
 /// How a system of the general engine is drawn: its 3D view, depth cue, environment.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct GeneralLook<'e> {
+    /// How a 3D system is seen, if given.
     pub projection: Option<tinyfractal::render::Projection>,
+    /// Whether 3D lines are coloured by depth.
     pub depth_cue: bool,
+    /// The world an open system grows in, if any.
     pub environment: Option<&'e crate::environment::Shape>,
 }
 
