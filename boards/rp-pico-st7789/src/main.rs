@@ -26,7 +26,7 @@ use rp2040_hal::{
     gpio::{FunctionSpi, Pins},
     pac, Sio, Spi, Timer, Watchdog,
 };
-use tinyfractal_scenes::{show_scenes, Work, COLOUR};
+use tinyfractal_scenes::{show_scenes, COLOUR};
 
 /// The second-stage bootloader for the Pico's W25Q080 flash, first in the image.
 // SAFETY: `.boot2` is the 256 bytes memory.x reserves at the start of the flash for it.
@@ -105,11 +105,13 @@ fn main() -> ! {
         || timer.get_counter().ticks() / 1000,
         || button.is_low().unwrap_or(false), // active low
         |entry, result, ms| match result {
-            Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", entry.name, n, ms),
-            Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", entry.name, n, ms),
-            Ok(Work::Points(n)) => info!("{}: {} points in {} ms", entry.name, n, ms),
-            Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", entry.name, n, ms),
-            Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", entry.name, n, ms),
+            Ok(work) => info!(
+                "{}: {} {} in {} ms",
+                entry.name,
+                work.count(),
+                work.unit(),
+                ms
+            ),
             Err(error) => error!("{} failed: {}", entry.name, Display2Format(&error)),
         },
     )

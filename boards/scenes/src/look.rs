@@ -104,6 +104,17 @@ impl Work {
             | Self::Frames(n) => n,
         }
     }
+
+    /// What it counts, in the plural, for a board's log (`segments`, `iterations`, ...).
+    pub const fn unit(self) -> &'static str {
+        match self {
+            Self::Segments(_) => "segments",
+            Self::Iterations(_) => "iterations",
+            Self::Points(_) => "points",
+            Self::Cells(_) => "cells",
+            Self::Frames(_) => "frames",
+        }
+    }
 }
 
 impl Scene {

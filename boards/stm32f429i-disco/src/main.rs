@@ -25,7 +25,7 @@ use stm32f4xx_hal::{
     spi::{Mode, Phase, Polarity},
     timer::Counter,
 };
-use tinyfractal_scenes::{show_scenes, Work, COLOUR};
+use tinyfractal_scenes::{show_scenes, COLOUR};
 
 /// The board's 8 MHz HSE clock.
 const HSE_MHZ: u32 = 8;
@@ -116,11 +116,13 @@ fn main() -> ! {
         || u64::from(clock.now().ticks()) / u64::from(TICK_HZ / 1000),
         || button.is_high(), // active high
         |entry, result, ms| match result {
-            Ok(Work::Segments(n)) => info!("{}: {} segments in {} ms", entry.name, n, ms),
-            Ok(Work::Iterations(n)) => info!("{}: {} iterations in {} ms", entry.name, n, ms),
-            Ok(Work::Points(n)) => info!("{}: {} points in {} ms", entry.name, n, ms),
-            Ok(Work::Cells(n)) => info!("{}: {} cells in {} ms", entry.name, n, ms),
-            Ok(Work::Frames(n)) => info!("{}: {} frames in {} ms", entry.name, n, ms),
+            Ok(work) => info!(
+                "{}: {} {} in {} ms",
+                entry.name,
+                work.count(),
+                work.unit(),
+                ms
+            ),
             Err(error) => error!("{} failed: {}", entry.name, Display2Format(&error)),
         },
     )
