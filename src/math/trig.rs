@@ -73,7 +73,7 @@ const fn octant_cos_sin(x: i128) -> (i32, i32) {
 }
 
 /// The next term of a Taylor series, `-term · x² / divisor` in Q62. Out of line: the
-/// compiler unrolls the series, and inlined 128-bit steps took 6.7 KiB of Cortex-M flash.
+/// compiler unrolls the series, and inlined 128-bit steps would fill Cortex-M flash.
 /// |term · x²| >> 62 is below |term| ≤ 2⁶², so the division is an i64 one (the same
 /// quotient, truncated toward zero; an i128 division is a slow library call on Cortex-M).
 #[inline(never)]
