@@ -9,8 +9,8 @@ use std::path::PathBuf;
 use clap::builder::NonEmptyStringValueParser;
 use clap::{error::ErrorKind, Args, CommandFactory, Parser, Subcommand, ValueEnum};
 
-pub use crate::common::{parse_projection, Common, View, MAX_PIXELS, MAX_SIDE};
-use crate::common::{parse_size, parse_view};
+use crate::common::{parse_projection, parse_size, parse_view};
+pub use crate::common::{Common, View};
 
 /// What the user asked for.
 #[derive(Debug, Clone, PartialEq)]

@@ -121,8 +121,8 @@ pub(super) type Medium = HighWord<false>;
 /// `Medium` for Julia sets: each product's high word rounded half up, and 2xy as the
 /// high word of x·2y (one bit more). Truncated products bias a long orbit; rounded, the
 /// 320×240 Julia views at 100 iterations keep as many dwells as a naive `f32` loop
-/// (docs/tiers.md), at one instruction a product on Cortex-M4 as truncated (`smmulr`, and
-/// `smmlar` for the escape test's sum). Elsewhere rounding costs an add a product, which
+/// (docs/tiers.md), at no cost on Cortex-M4, whose `smmulr` (and `smmlar` for the escape
+/// test's sum) round within the product (docs/performance.md). Elsewhere rounding costs an add a product, which
 /// the Mandelbrot set's `Medium` views (already exact) are spared.
 pub(super) type RoundedMedium = HighWord<true>;
 /// Q28 in i32 with exact 64-bit products (Q56).
@@ -176,7 +176,7 @@ impl<const ROUNDED: bool> Arithmetic for HighWord<ROUNDED> {
         d << 4
     }
     /// Rounded: the high word of x·2y (|y| ≤ 2 here, so 2y fits), one bit more than
-    /// doubling xy's. Truncated: xy's doubled, one instruction fewer.
+    /// doubling xy's. Truncated: xy's doubled, which is cheaper.
     #[inline(always)]
     fn twice_xy(x: i32, y: i32, _: i32, _: i32) -> i32 {
         if ROUNDED {
@@ -211,8 +211,8 @@ impl Arithmetic for Standard {
     /// On Cortex-M3/M4: x² − y² as (x + y)(x − y), the same exact value, so the squares
     /// are only summed for the escape test (`smull` and `smlal`, neither kept); and each
     /// product's two words added to c apart (`add` with a shifted operand, twice) instead
-    /// of being joined first: the same bits as `(p >> 28) + c`, one instruction fewer a
-    /// product. Not on a 64-bit host, where the plain form is faster.
+    /// of being joined first: the same bits as `(p >> 28) + c`, and cheaper there
+    /// (docs/performance.md). Not on a 64-bit host, where the plain form is faster.
     #[cfg(all(target_arch = "arm", not(tinyfractal_no_long_multiply)))]
     #[inline(always)]
     fn square_plus((x, y): (i32, i32), _: (i64, i64), (cr, ci): (i32, i32)) -> (i32, i32) {
@@ -348,8 +348,8 @@ pub(super) fn high_word(a: i32, b: i32) -> i32 {
 }
 
 /// The high word of the exact product of two i32, rounded half up (Q28 × Q28 → Q24):
-/// `smmulr` on Cortex-M4; elsewhere the high word plus the low word's top bit, one add
-/// after `smull` (LLVM makes three more instructions of the 64-bit sum there).
+/// `smmulr` on Cortex-M4; elsewhere the high word plus the low word's top bit, added after
+/// `smull`: cheaper than the 64-bit sum LLVM makes there (docs/performance.md).
 #[inline(always)]
 pub(super) fn rounded_high_word(a: i32, b: i32) -> i32 {
     let product = mul_i32_wide(a, b);

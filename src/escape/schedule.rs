@@ -253,7 +253,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         self.stats.iterations += u64::from(orbit.iterations);
         self.stats.pixels += 1;
         // A dwell is at most the view's inside value, a u16 (the view checks the cap): the
-        // cast keeps it whole, one instruction fewer a pixel than a checked conversion.
+        // cast keeps it whole, and costs less a pixel than a checked conversion.
         orbit.dwell as u16
     }
 
