@@ -32,12 +32,15 @@ pub(crate) mod fractint;
 pub(crate) mod grammar;
 pub(crate) mod lsys;
 pub(crate) mod parametric;
+pub(crate) mod pen;
+pub(crate) mod segments;
+pub(crate) mod sizing;
 pub(crate) mod table;
 pub(crate) mod turtle;
 pub(crate) mod walker;
 
 pub use alphabet::{DerivedSymbol, Dialect};
-pub use drawing::{Bounds, LSystem, LSystemDrawing, Placement};
+pub use drawing::{LSystem, LSystemDrawing, Placement};
 pub use fractint::{Entries, Entry, LFile, Warnings};
 pub use grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
 pub use lsys::{LsysEntries, LsysEntry, LsysFile};
@@ -50,6 +53,8 @@ pub use parametric::grammar::{
 pub use parametric::space::{Segment3, Segments3};
 pub use parametric::values::{DerivedModule, Values, MAX_PARAMS};
 pub use parametric::walker::ParametricWalker;
+pub use segments::{Segments, WalkStats};
+pub use sizing::Bounds;
 pub use table::{cells_needed, Cell, MAX_BODY_NESTING};
-pub use turtle::{Segment, Segments, Start, TurtlePoint, WalkStats, DEFAULT_STACK};
+pub use turtle::{Segment, Start, TurtlePoint, DEFAULT_STACK};
 pub use walker::{Walker, DEFAULT_BUDGET, DEFAULT_DEPTH};

@@ -14,10 +14,11 @@ use super::space::{draw_segments, Segments3};
 use super::walker::ParametricWalker;
 use crate::error::{DrawError, Error, FitError};
 use crate::lsystem::alphabet::Dialect;
-use crate::lsystem::drawing::{
-    colors, fitted_start, measure, only_target_errors, pixel_box, Bounds, Pen,
-};
-use crate::lsystem::turtle::{next_segment, Segment, Start, Turtle, WalkStats, DEFAULT_STACK};
+use crate::lsystem::drawing::{colors, only_target_errors};
+use crate::lsystem::pen::Pen;
+use crate::lsystem::segments::{next_segment, WalkStats};
+use crate::lsystem::sizing::{fitted_start, measure, pixel_box, Bounds};
+use crate::lsystem::turtle::{Segment, Start, Turtle, DEFAULT_STACK};
 use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
 use crate::render::fit::{Orientation, DEFAULT_MARGIN};
 use crate::render::palette::{Colors, Palette};
