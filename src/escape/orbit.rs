@@ -204,208 +204,271 @@ fn orbit<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64
 /// compile away.
 #[inline(always)]
 fn orbit_in_line<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
-    let max = kernel.max;
-    let (re, im) = (A::Value::from_units(re), A::Value::from_units(im));
-    let julia = if TRACEABLE { None } else { kernel.julia };
-    let ((cr, ci), (x, y), steps) = match julia {
-        None => {
-            if in_cardioid_or_bulb(A::q28(re), A::q28(im)) {
-                return Orbit::inside_after(kernel, 0);
-            }
-            // The upper half-plane twin: the same dwell, exactly (see the module docs). The
-            // first step is free: z₁ = c.
-            let c = (re, im.abs());
-            (c, c, 1)
-        }
-        Some((kr, ki)) => (
-            (A::Value::from_units(kr), A::Value::from_units(ki)),
-            (re, im),
-            0,
-        ),
-    };
-    let mut z = Z::<A>::new(x, y);
-    // The value of an orbit that escaped at step n (c passed by value: a closure that
-    // captured it kept it in memory, stored on every pixel's way in).
-    let escaped_at = |n: u32, z: &Z<A>| escaped::<A, TRACEABLE>(kernel, n, (z.x, z.y), (cr, ci));
-    if z.escaped() {
-        return escaped_at(steps, &z);
+    match Orbiting::<A, TRACEABLE>::start(kernel, re, im) {
+        Ok(orbiting) => orbiting.run(),
+        Err(orbit) => orbit,
     }
-    let tolerance = A::Value::from_units(kernel.tolerance);
-    // Orbit points compared have |x|, |y| ≤ 2, so nothing wraps.
-    let span = tolerance.twice();
-    // Most points escape within the first few steps: they run without repeat tests.
-    let plain = kernel.plain;
-    let mut n = steps;
-    if A::COMPACT {
-        // The same steps and tests as below, one step a turn.
-        while n < plain {
-            n += 1;
-            if z.step(cr, ci) {
-                return escaped_at(n, &z);
+}
+
+/// What a stretch of an orbit comes to: `Ok` goes on; `Err` is the orbit's value, found
+/// when it escaped or repeated, so that `?` ends the orbit.
+type Stretch = Result<(), Orbit>;
+
+/// An orbit under way: z, its c and the steps taken, with the kernel's rules. Its methods
+/// are the stretches of [`orbit`]; all are taken in line, so the fields live in registers.
+struct Orbiting<'k, A: Arithmetic, const TRACEABLE: bool> {
+    kernel: &'k Kernel,
+    z: Z<A>,
+    /// Passed by value to the escape's valuation: held by reference, it was kept in
+    /// memory and stored on every pixel's way in.
+    c: (A::Value, A::Value),
+    /// The steps taken.
+    n: u32,
+    /// How close a repeat comes to a saved point, and twice that: orbit points compared
+    /// have |x|, |y| ≤ 2, so nothing wraps.
+    tolerance: A::Value,
+    span: A::Value,
+}
+
+impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
+    /// The orbit of (`re`, `im`) in the kernel's units, or its value where that is known
+    /// before any step: inside the main cardioid or the period-2 bulb, or escaped at once.
+    #[inline(always)]
+    fn start(kernel: &'k Kernel, re: i64, im: i64) -> Result<Self, Orbit> {
+        let (re, im) = (A::Value::from_units(re), A::Value::from_units(im));
+        let julia = if TRACEABLE { None } else { kernel.julia };
+        let (c, (x, y), n) = match julia {
+            None => {
+                if in_cardioid_or_bulb(A::q28(re), A::q28(im)) {
+                    return Err(Orbit::inside_after(kernel, 0));
+                }
+                // The upper half-plane twin: the same dwell, exactly (see the module docs).
+                // The first step is free: z₁ = c.
+                let c = (re, im.abs());
+                (c, c, 1)
             }
+            Some((kr, ki)) => (
+                (A::Value::from_units(kr), A::Value::from_units(ki)),
+                (re, im),
+                0,
+            ),
+        };
+        let tolerance = A::Value::from_units(kernel.tolerance);
+        let orbiting = Self {
+            kernel,
+            z: Z::new(x, y),
+            c,
+            n,
+            tolerance,
+            span: tolerance.twice(),
+        };
+        if orbiting.z.escaped() {
+            return Err(orbiting.escaped_at(n));
         }
-        let (mut saved, mut next_save) = ((z.x, z.y), plain);
-        while n < max {
-            if n == next_save {
-                saved = (z.x.wrapping_sub(tolerance), z.y.wrapping_sub(tolerance));
+        Ok(orbiting)
+    }
+
+    /// The orbit to its end: escaped, repeated, or inside after `max` steps.
+    #[inline(always)]
+    fn run(mut self) -> Orbit {
+        let ended = if A::COMPACT {
+            self.one_step_a_turn()
+        } else {
+            self.stretches()
+        };
+        match ended {
+            Ok(()) => Orbit::inside_after(self.kernel, self.kernel.max),
+            Err(orbit) => orbit,
+        }
+    }
+
+    /// The value of the orbit, escaped at step `n`.
+    #[inline(always)]
+    fn escaped_at(&self, n: u32) -> Orbit {
+        escaped::<A, TRACEABLE>(self.kernel, n, (self.z.x, self.z.y), self.c)
+    }
+
+    /// Takes step `n`; the orbit ends if it escapes.
+    #[inline(always)]
+    fn step(&mut self, n: u32) -> Stretch {
+        if self.z.step(self.c.0, self.c.1) {
+            return Err(self.escaped_at(n));
+        }
+        Ok(())
+    }
+
+    /// Tests the orbit after step `n` against `saved`; it ends inside if it came back.
+    #[inline(always)]
+    fn repeat_test(&self, saved: (A::Value, A::Value), n: u32) -> Stretch {
+        if self.z.repeats(saved, self.span) {
+            return Err(Orbit::inside_after(self.kernel, n));
+        }
+        Ok(())
+    }
+
+    /// The point saved for the repeat tests, less the tolerance: x − saved + tolerance is
+    /// then one subtraction.
+    #[inline(always)]
+    fn saved(&self) -> (A::Value, A::Value) {
+        (
+            self.z.x.wrapping_sub(self.tolerance),
+            self.z.y.wrapping_sub(self.tolerance),
+        )
+    }
+
+    /// The compact tiers' orbit: the same steps and tests as [`stretches`](Self::stretches),
+    /// one step a turn.
+    #[inline(always)]
+    fn one_step_a_turn(&mut self) -> Stretch {
+        let (plain, max) = (self.kernel.plain, self.kernel.max);
+        while self.n < plain {
+            self.n += 1;
+            self.step(self.n)?;
+        }
+        let (mut saved, mut next_save) = ((self.z.x, self.z.y), plain);
+        while self.n < max {
+            if self.n == next_save {
+                saved = self.saved();
                 next_save *= 2;
             }
-            n += 1;
-            if z.step(cr, ci) {
-                return escaped_at(n, &z);
-            }
-            if z.repeats(saved, span) {
-                return Orbit::inside_after(kernel, n);
-            }
+            self.n += 1;
+            self.step(self.n)?;
+            self.repeat_test(saved, self.n)?;
         }
-        return Orbit::inside_after(kernel, max);
+        Ok(())
     }
-    // Where there is a long multiply, turns of the loops are counted down (one
-    // subtraction and branch a turn; n found again on leaving), four steps a turn before
-    // the repeat tests start. On Cortex-M0 (eight low registers, products from halves)
-    // the extra counter spills, so it keeps two a turn counted by n (docs/performance.md).
-    // Turns of four steps up to `stop`, counted down, each step tested for escape and
-    // each turn ended by `$after` (given the steps done before the turn).
-    #[cfg(not(tinyfractal_no_long_multiply))]
-    macro_rules! fours_until {
-        ($stop:expr, |$done:ident| $after:block) => {{
-            let fours = $stop.saturating_sub(n) / 4;
-            let mut left = fours;
-            while left > 0 {
-                let $done = n + 4 * (fours - left);
-                for k in 1..=4 {
-                    if z.step(cr, ci) {
-                        return escaped_at($done + k, &z);
-                    }
-                }
-                $after
-                left -= 1;
-            }
-            n += 4 * fours;
-        }};
+
+    /// The orbit in stretches: the first `plain` steps test only escape (most points
+    /// escape within them); then each stretch between saves tests escape and repeat.
+    #[inline(always)]
+    fn stretches(&mut self) -> Stretch {
+        let (plain, max) = (self.kernel.plain, self.kernel.max);
+        self.first_stretch(plain)?;
+        // At most 2·max ≤ 2^17 (the view caps max at u16::MAX): it cannot overflow.
+        let mut next_save = 2 * plain;
+        while self.n < max {
+            let saved = self.saved();
+            self.stretch(saved, next_save.min(max))?;
+            next_save *= 2;
+        }
+        Ok(())
     }
+
+    // Where there is a long multiply, turns of the loops are counted down (one subtraction
+    // and branch a turn; n found again on leaving), four steps a turn before the repeat
+    // tests start. On Cortex-M0 (eight low registers, products from halves) the extra
+    // counter spills, so it keeps two a turn counted by n (docs/performance.md).
+
+    /// Steps up to `plain`, testing only escape.
     #[cfg(not(tinyfractal_no_long_multiply))]
-    {
-        fours_until!(plain, |_done| {});
+    #[inline(always)]
+    fn first_stretch(&mut self, plain: u32) -> Stretch {
+        self.fours_until(plain, |_, _| Ok(()))?;
         // At most three more, each tested and unrolled: a counted loop here cost the
         // Mandelbrot set's first stretch (then 15 steps) more than the fours saved.
         for _ in 0..3 {
-            if n < plain {
-                n += 1;
-                if z.step(cr, ci) {
-                    return escaped_at(n, &z);
-                }
+            if self.n < plain {
+                self.n += 1;
+                self.step(self.n)?;
             }
         }
+        Ok(())
     }
+
+    /// Steps up to `plain`, testing only escape, two a turn counted by n.
     #[cfg(tinyfractal_no_long_multiply)]
-    {
-        while n + 1 < plain {
-            if z.step(cr, ci) {
-                return escaped_at(n + 1, &z);
-            }
-            n += 2;
-            if z.step(cr, ci) {
-                return escaped_at(n, &z);
-            }
+    #[inline(always)]
+    fn first_stretch(&mut self, plain: u32) -> Stretch {
+        while self.n + 1 < plain {
+            self.step(self.n + 1)?;
+            self.n += 2;
+            self.step(self.n)?;
         }
-        if n < plain {
-            n += 1;
-            if z.step(cr, ci) {
-                return escaped_at(n, &z);
-            }
+        if self.n < plain {
+            self.n += 1;
+            self.step(self.n)?;
         }
+        Ok(())
     }
-    // At most 2·max ≤ 2^17 (the view caps max at u16::MAX): it cannot overflow.
-    let mut next_save = 2 * plain;
-    while n < max {
-        // The saved point, less the tolerance: x − saved + tolerance in one step.
-        let saved = (z.x.wrapping_sub(tolerance), z.y.wrapping_sub(tolerance));
-        let stop = next_save.min(max);
-        // Counted as above.
-        #[cfg(not(tinyfractal_no_long_multiply))]
-        {
-            if A::WORD_STEPS {
-                // Four steps a turn and one repeat test, at 4k steps after the save: a
-                // cycle of period p is still found, at most 3p steps later.
-                fours_until!(stop, |done| {
-                    if z.repeats(saved, span) {
-                        return Orbit::inside_after(kernel, done + 4);
-                    }
-                });
-            } else {
-                // Two steps a turn, each tested.
-                let pairs = stop.saturating_sub(n) / 2;
-                let mut left = pairs;
-                while left > 0 {
-                    let done = n + 2 * (pairs - left);
-                    if z.step(cr, ci) {
-                        return escaped_at(done + 1, &z);
-                    }
-                    if z.repeats(saved, span) {
-                        return Orbit::inside_after(kernel, done + 1);
-                    }
-                    if z.step(cr, ci) {
-                        return escaped_at(done + 2, &z);
-                    }
-                    if z.repeats(saved, span) {
-                        return Orbit::inside_after(kernel, done + 2);
-                    }
-                    left -= 1;
-                }
-                n += 2 * pairs;
+
+    /// Turns of four steps up to `stop`, counted down, each step tested for escape and
+    /// each turn ended by `after` (given the steps done before the turn).
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    #[inline(always)]
+    fn fours_until(&mut self, stop: u32, after: impl Fn(&Self, u32) -> Stretch) -> Stretch {
+        let fours = stop.saturating_sub(self.n) / 4;
+        let mut left = fours;
+        while left > 0 {
+            let done = self.n + 4 * (fours - left);
+            for k in 1..=4 {
+                self.step(done + k)?;
             }
+            after(self, done)?;
+            left -= 1;
         }
-        // The same turns as above, counted by n (see the first stretch).
-        #[cfg(tinyfractal_no_long_multiply)]
+        self.n += 4 * fours;
+        Ok(())
+    }
+
+    /// The steps up to `stop`, tested for escape and for a repeat of `saved`.
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    #[inline(always)]
+    fn stretch(&mut self, saved: (A::Value, A::Value), stop: u32) -> Stretch {
         if A::WORD_STEPS {
-            while n + 3 < stop {
-                if z.step(cr, ci) {
-                    return escaped_at(n + 1, &z);
-                }
-                if z.step(cr, ci) {
-                    return escaped_at(n + 2, &z);
-                }
-                if z.step(cr, ci) {
-                    return escaped_at(n + 3, &z);
-                }
-                n += 4;
-                if z.step(cr, ci) {
-                    return escaped_at(n, &z);
-                }
-                if z.repeats(saved, span) {
-                    return Orbit::inside_after(kernel, n);
-                }
+            // Four steps a turn and one repeat test, at 4k steps after the save: a cycle
+            // of period p is still found, at most 3p steps later.
+            self.fours_until(stop, |orbiting, done| orbiting.repeat_test(saved, done + 4))?;
+        } else {
+            // Two steps a turn, each tested.
+            let pairs = stop.saturating_sub(self.n) / 2;
+            let mut left = pairs;
+            while left > 0 {
+                let done = self.n + 2 * (pairs - left);
+                self.step(done + 1)?;
+                self.repeat_test(saved, done + 1)?;
+                self.step(done + 2)?;
+                self.repeat_test(saved, done + 2)?;
+                left -= 1;
             }
+            self.n += 2 * pairs;
         }
-        #[cfg(tinyfractal_no_long_multiply)]
-        while !A::WORD_STEPS && n + 1 < stop {
-            if z.step(cr, ci) {
-                return escaped_at(n + 1, &z);
-            }
-            if z.repeats(saved, span) {
-                return Orbit::inside_after(kernel, n + 1);
-            }
-            n += 2;
-            if z.step(cr, ci) {
-                return escaped_at(n, &z);
-            }
-            if z.repeats(saved, span) {
-                return Orbit::inside_after(kernel, n);
-            }
-        }
-        if n < stop {
-            n += 1;
-            if z.step(cr, ci) {
-                return escaped_at(n, &z);
-            }
-            if z.repeats(saved, span) {
-                return Orbit::inside_after(kernel, n);
-            }
-        }
-        next_save *= 2;
+        self.last_step(saved, stop)
     }
-    Orbit::inside_after(kernel, max)
+
+    /// The steps up to `stop`, tested for escape and for a repeat of `saved`, counted by n.
+    #[cfg(tinyfractal_no_long_multiply)]
+    #[inline(always)]
+    fn stretch(&mut self, saved: (A::Value, A::Value), stop: u32) -> Stretch {
+        if A::WORD_STEPS {
+            while self.n + 3 < stop {
+                self.step(self.n + 1)?;
+                self.step(self.n + 2)?;
+                self.step(self.n + 3)?;
+                self.n += 4;
+                self.step(self.n)?;
+                self.repeat_test(saved, self.n)?;
+            }
+        }
+        while !A::WORD_STEPS && self.n + 1 < stop {
+            self.step(self.n + 1)?;
+            self.repeat_test(saved, self.n + 1)?;
+            self.n += 2;
+            self.step(self.n)?;
+            self.repeat_test(saved, self.n)?;
+        }
+        self.last_step(saved, stop)
+    }
+
+    /// One more step if the stretch's turns left one before `stop`.
+    #[inline(always)]
+    fn last_step(&mut self, saved: (A::Value, A::Value), stop: u32) -> Stretch {
+        if self.n < stop {
+            self.n += 1;
+            self.step(self.n)?;
+            self.repeat_test(saved, self.n)?;
+        }
+        Ok(())
+    }
 }
 
 /// The value of an orbit of c that escaped at step `n` at z.
