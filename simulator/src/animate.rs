@@ -5,10 +5,11 @@
 //! progress bar on a terminal.
 
 use std::io::{self, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
 use std::time::Instant;
 
+use clap::{Args, Subcommand};
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
@@ -21,8 +22,269 @@ use tinyfractal::{
     View,
 };
 
-use crate::args::{AnimateArgs, Animation};
-use crate::escape_scene::{self, Request};
+use crate::console::Failure;
+use crate::escape_scene::{self, Escape, Request};
+use crate::palette::PaletteName;
+use crate::systems::{Purpose, Source};
+
+/// `animate`'s options: what is animated, and its own options.
+#[derive(Debug, Args)]
+pub struct AnimateOptions {
+    #[command(subcommand)]
+    kind: Box<AnimationKind>,
+}
+
+impl AnimateOptions {
+    /// `animate ...`: the frames are made on a thread of their own and written as they
+    /// come (numbered PNGs, a GIF or an APNG), all or nothing.
+    pub fn run(self) -> Result<(), Failure> {
+        Ok(animate(&animation(*self.kind)?)?)
+    }
+}
+
+#[derive(Debug, Args)]
+struct FrameOptions {
+    /// Frames to write [default: 100]
+    #[arg(long, value_name = "N")]
+    frames: Option<u32>,
+    /// NAME.gif (animated GIF), NAME.png (APNG), or a folder for frame-0000.png, ...
+    #[arg(long, value_name = "PATH", default_value = "animation.gif")]
+    out: PathBuf,
+    /// How long a frame shows in a GIF or APNG, in milliseconds
+    #[arg(long = "delay", value_name = "MS", default_value_t = 40)]
+    delay_ms: u32,
+    /// Picture size in pixels, WxH
+    #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = crate::common::parse_size)]
+    size: (u32, u32),
+    /// Print one line of statistics
+    #[arg(long)]
+    stats: bool,
+}
+
+#[derive(Debug, Subcommand)]
+enum AnimationKind {
+    /// A zoom into the Mandelbrot set (or a Julia set with --c), reusing each frame's
+    /// columns and rows for the next
+    Zoom(ZoomOptions),
+    /// Colour cycling: one view, its gradient turned a step each frame
+    Palette(PaletteOptions),
+    /// An L-system growing, one order a frame
+    Growth(GrowthOptions),
+    /// The lecture's figure walking (or waving), one cycle
+    Figure(FigureAnimationOptions),
+}
+
+#[derive(Debug, Args)]
+struct ZoomOptions {
+    /// The Julia parameter k, RE,IM (a Julia set instead of the Mandelbrot set)
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    c: Option<(String, String)>,
+    /// The width of the last frame (default: --width shrunk by --factor a frame)
+    #[arg(long = "end-width", value_name = "W", allow_hyphen_values = true)]
+    end_width: Option<String>,
+    /// How much each frame zooms in
+    #[arg(long, value_name = "F", default_value_t = 1.05)]
+    factor: f64,
+    /// Reuse a line of the previous frame within this share of a pixel, in percent
+    #[arg(long, value_name = "PERCENT", default_value_t = 100)]
+    tolerance: u32,
+    /// Compute every pixel of every frame
+    #[arg(long)]
+    exact: bool,
+    #[command(flatten)]
+    view: AnimatedView,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+/// The view options an animation shares with `render mandelbrot`.
+#[derive(Debug, Args)]
+struct AnimatedView {
+    /// Centre of the view (the point zoomed into), RE,IM
+    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", default_value = "-0.743643887037151,0.131825904205330", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    centre: (String, String),
+    /// Width along the real axis (of the first frame)
+    #[arg(
+        long,
+        value_name = "W",
+        default_value = "3",
+        allow_hyphen_values = true
+    )]
+    width: String,
+    /// Iteration cap, 1 to 65535
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=65535))]
+    max_iterations: u32,
+    /// The colours
+    #[arg(long, value_enum, default_value = "classic")]
+    palette: PaletteName,
+}
+
+#[derive(Debug, Args)]
+struct PaletteOptions {
+    /// The Julia parameter k, RE,IM (a Julia set instead of the Mandelbrot set)
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    c: Option<(String, String)>,
+    /// Gradient entries the colours move a frame
+    #[arg(long, value_name = "N", default_value_t = 4)]
+    step: u16,
+    #[command(flatten)]
+    view: AnimatedView,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+#[derive(Debug, Args)]
+struct GrowthOptions {
+    #[command(flatten)]
+    system: crate::systems::SystemOptions,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+#[derive(Debug, Args)]
+struct FigureAnimationOptions {
+    /// The movement
+    #[arg(long, value_enum, default_value = "walk")]
+    pose: crate::figure_scene::PoseName,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+/// Frames an animation writes without `--frames`.
+const DEFAULT_FRAMES: u32 = 100;
+
+/// An animation as asked for: what moves, and its frames.
+#[derive(Debug, Clone, PartialEq)]
+struct AnimationPlan {
+    /// What is animated.
+    kind: Animation,
+    /// Frames (for `growth`, orders 0 to `--order`, one frame each).
+    frames: u32,
+    /// `NAME.gif`, `NAME.png` (APNG), or a folder of numbered PNGs.
+    out: PathBuf,
+    /// Milliseconds a frame shows in a GIF or APNG.
+    delay_ms: u32,
+    /// Each frame's size (`--size`).
+    size: (u32, u32),
+    /// Whether to print a line of statistics (`--stats`).
+    stats: bool,
+}
+
+/// What `animate` animates.
+#[derive(Debug, Clone, PartialEq)]
+enum Animation {
+    /// A zoom from `view`'s width to `end_width` (or by `factor` a frame), reusing frames
+    /// within `tolerance` % of a pixel unless `exact`.
+    Zoom {
+        /// The view zoomed into, and its first width.
+        view: Escape,
+        /// The last frame's width (`--end-width`), if given.
+        end_width: Option<String>,
+        /// How much each frame zooms in (`--factor`).
+        factor: f64,
+        /// How close a reused line must be, in percent of a pixel (`--tolerance`).
+        tolerance: u32,
+        /// Whether every pixel of every frame is computed (`--exact`).
+        exact: bool,
+    },
+    /// One view, its gradient turned by `step` entries a frame.
+    Palette {
+        /// The view.
+        view: Escape,
+        /// Gradient entries the colours move a frame (`--step`).
+        step: u16,
+    },
+    /// An L-system, one order a frame.
+    Growth {
+        /// The system.
+        source: Source,
+        /// The seed of stochastic productions (`--seed`), if given.
+        seed: Option<u32>,
+    },
+    /// The walking (or waving) figure.
+    Figure {
+        /// The movement (`--pose`).
+        pose: crate::figure_scene::PoseName,
+    },
+}
+
+/// The animation `kind` asks for; a usage error where its options do not fit together.
+fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
+    let animated = |julia: Option<(String, String)>, view: AnimatedView| Escape {
+        julia,
+        centre: view.centre,
+        width: view.width,
+        max_iterations: view.max_iterations,
+        algorithm: Algorithm::Exact,
+        tier: None,
+        palette: view.palette,
+        common: crate::common::Common {
+            size: (0, 0),
+            out: None,
+            stats: false,
+            window: false,
+            dimension: false,
+        },
+        dwell: None,
+    };
+    let (kind, frames) = match kind {
+        AnimationKind::Zoom(options) => (
+            Animation::Zoom {
+                view: animated(options.c, options.view),
+                end_width: options.end_width,
+                factor: options.factor,
+                tolerance: options.tolerance,
+                exact: options.exact,
+            },
+            options.frames,
+        ),
+        AnimationKind::Palette(options) => (
+            Animation::Palette {
+                view: animated(options.c, options.view),
+                step: options.step,
+            },
+            options.frames,
+        ),
+        AnimationKind::Growth(options) => {
+            if options.frames.frames.is_some() {
+                return Err(Failure::Usage(
+                    "--frames does not apply to growth: it writes one frame an order, 0 to \
+                     --order (leave out --frames)"
+                        .to_string(),
+                ));
+            }
+            let mut frames = options.frames;
+            // Orders 0 to N: N + 1 frames.
+            frames.frames = Some(options.system.order.saturating_add(1));
+            let seed = options.system.seed;
+            (
+                Animation::Growth {
+                    source: options.system.source(Purpose::Draw)?,
+                    seed,
+                },
+                frames,
+            )
+        }
+        AnimationKind::Figure(options) => {
+            (Animation::Figure { pose: options.pose }, options.frames)
+        }
+    };
+    let count = frames.frames.unwrap_or(DEFAULT_FRAMES);
+    if count == 0 {
+        return Err(Failure::Usage(
+            "--frames 0: give at least one frame".to_string(),
+        ));
+    }
+    Ok(AnimationPlan {
+        kind,
+        frames: count,
+        out: frames.out,
+        delay_ms: frames.delay_ms,
+        size: frames.size,
+        stats: frames.stats,
+    })
+}
 
 /// A finished frame, handed from the animation to the encoder as it is made.
 type Picture = SimulatorDisplay<Rgb888>;
@@ -55,9 +317,8 @@ impl Emit<'_> {
 /// reported).
 const WRITER_STOPPED: &str = "the writer stopped";
 
-/// `animate ...`: the frames are made on a thread of their own and written as they come
-/// (numbered PNGs, a GIF or an APNG), all or nothing.
-pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
+/// Makes and writes `arguments`' frames (see [`AnimateOptions::run`]).
+fn animate(arguments: &AnimationPlan) -> Result<(), String> {
     let started = Instant::now();
     let size = Size::new(arguments.size.0, arguments.size.1);
     let bar = crate::progress::bar(u64::from(arguments.frames), "frames");
@@ -96,7 +357,7 @@ pub fn animate(arguments: &AnimateArgs) -> Result<(), String> {
 }
 
 /// Makes the animation's frames into `emit`; the `--stats` detail.
-fn make(arguments: &AnimateArgs, size: Size, emit: &Emit<'_>) -> Result<String, String> {
+fn make(arguments: &AnimationPlan, size: Size, emit: &Emit<'_>) -> Result<String, String> {
     match &arguments.kind {
         Animation::Zoom {
             view,
@@ -286,7 +547,7 @@ fn palette_cycle(
 
 /// An L-system at orders 0 to `frames` − 1, each fitted to the picture.
 fn growth(
-    source: &crate::args::Source,
+    source: &Source,
     seed: Option<u32>,
     frames: u32,
     size: Size,
@@ -317,7 +578,7 @@ fn growth(
 /// are removed once these are in place.
 fn write(
     receiver: &Receiver<Message>,
-    arguments: &AnimateArgs,
+    arguments: &AnimationPlan,
     stats: impl FnOnce(String) -> String,
 ) -> Result<(), String> {
     let (out, delay_ms, count) = (&arguments.out, arguments.delay_ms, arguments.frames);

@@ -129,3 +129,11 @@ pub fn parse_projection(text: &str) -> Result<tinyfractal::render::Projection, S
         )),
     }
 }
+
+/// A `RE,IM` value (`--c`, `--center`), each part as text the core checks.
+pub fn parse_pair(text: &str) -> Result<(String, String), String> {
+    let (re, im) = text
+        .split_once(',')
+        .ok_or_else(|| format!("`{text}` is not RE,IM, e.g. -0.75,0"))?;
+    Ok((re.trim().to_string(), im.trim().to_string()))
+}

@@ -33,19 +33,39 @@ pub fn complain(text: &str) {
     let _ = err.write_all(text.as_bytes()).and_then(|()| err.flush());
 }
 
-/// Why a command failed, and so its exit status: a run's error (1), or a usage error
-/// found only once the input was read (2), such as an option the file's system does not
-/// take.
+/// Why a command failed, and so its exit status.
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Failure {
+    /// A run's error (exit status 1): the message names the cause and what to do.
     Run(String),
+    /// A usage error found after parsing (exit status 2), such as an option the file's
+    /// system does not take, or options that do not fit together.
     Usage(String),
+    /// Standard output was closed (`| head`): a quiet stop, nothing printed (exit status 1).
+    Quiet,
 }
 
 impl From<String> for Failure {
+    /// A run's error; [`QUIET`], what [`failed`] says of a closed pipe, is [`Failure::Quiet`].
     fn from(message: String) -> Self {
-        Self::Run(message)
+        if message == QUIET {
+            Self::Quiet
+        } else {
+            Self::Run(message)
+        }
     }
 }
+
+impl core::fmt::Display for Failure {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Run(message) | Self::Usage(message) => f.write_str(message),
+            Self::Quiet => f.write_str("standard output was closed"),
+        }
+    }
+}
+
+impl std::error::Error for Failure {}
 
 /// Says something the user should know on stderr; the run goes on.
 pub fn warn(message: &str) {

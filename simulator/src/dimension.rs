@@ -1,12 +1,44 @@
 //! The box-counting dimension of a picture: the `--dimension` line of a render, and
 //! `tinyfractal dimension FILE.png`.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics_simulator::SimulatorDisplay;
 
-use crate::console;
+use crate::console::{self, Failure};
+
+/// `dimension`'s options.
+#[derive(Debug, Args)]
+pub struct DimensionOptions {
+    /// The picture
+    #[arg(value_name = "FILE.png")]
+    pub file: PathBuf,
+    /// The background colour, RRGGBB in hex
+    #[arg(long, value_name = "RRGGBB", default_value = "000000", value_parser = parse_rgb)]
+    pub background: u32,
+}
+
+impl DimensionOptions {
+    /// `dimension FILE.png`: the box-counting dimension of the picture's pixels that are not
+    /// the background.
+    pub fn run(&self) -> Result<(), Failure> {
+        Ok(dimension(&self.file, self.background)?)
+    }
+}
+
+/// `--background`'s value.
+fn parse_rgb(text: &str) -> Result<u32, String> {
+    let hex = text.trim().trim_start_matches('#');
+    match u32::from_str_radix(hex, 16) {
+        Ok(value) if hex.len() == 6 => Ok(value),
+        _ => Err(format!(
+            "`{text}` is not a colour RRGGBB in hex, e.g. 000000 or ffffff"
+        )),
+    }
+}
 
 /// The box-counting dimension of `display`'s pixels other than `background`, as
 /// `dimension=D.DDD residual=R.RRR boxes=S..L` (box sides in pixels).
@@ -35,7 +67,7 @@ pub fn dimension_line(
 }
 
 /// `tinyfractal dimension FILE.png`: the picture's box-counting dimension.
-pub fn dimension(path: &Path, background: u32) -> Result<(), String> {
+fn dimension(path: &Path, background: u32) -> Result<(), String> {
     use embedded_graphics::prelude::*;
     let picture = image::open(path)
         .map_err(|e| format!("dimension {}: {e}", path.display()))?

@@ -2,8 +2,10 @@
 //! coloured into a simulator display.
 
 use std::io::{self, Write};
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
@@ -12,6 +14,157 @@ use tinyfractal::{
     render::{Bands, DwellBuffer, Gradient, Palette, TwoColor},
     Coord, Error, Fractal, View,
 };
+
+use crate::common::Common;
+use crate::console::Failure;
+use crate::palette::PaletteName;
+
+/// `render mandelbrot`'s options, and a Julia set's view.
+#[derive(Debug, Args)]
+pub struct EscapeOptions {
+    /// Centre of the view, RE,IM [default: -0.75,0 for the Mandelbrot set, 0,0 for a Julia
+    /// set]
+    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    pub(crate) centre: Option<(String, String)>,
+    /// Width along the real axis [default: 3.5 for the Mandelbrot set, 3.2 for a Julia set]
+    #[arg(long, value_name = "W", allow_hyphen_values = true)]
+    pub(crate) width: Option<String>,
+    /// Iteration cap, 1 to 65535
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=65535))]
+    pub(crate) max_iterations: u32,
+    /// How pixels are scheduled
+    #[arg(long, value_enum, default_value = "fast")]
+    pub(crate) algorithm: AlgorithmName,
+    /// The fixed-point tier (auto chooses per view)
+    #[arg(long, value_enum, default_value = "auto")]
+    pub(crate) precision: Precision,
+    /// The colours
+    #[arg(long, value_enum, default_value = "classic")]
+    pub(crate) palette: PaletteName,
+    /// Write `W H MAXITER`, then H lines of W dwells
+    #[arg(long, value_name = "TXT")]
+    pub(crate) dwell: Option<PathBuf>,
+    #[command(flatten)]
+    pub(crate) common: Common,
+}
+
+/// `render julia`'s options.
+#[derive(Debug, Args)]
+pub struct JuliaOptions {
+    /// The Julia parameter k, RE,IM
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    pub(crate) c: (String, String),
+    #[command(flatten)]
+    pub(crate) view: EscapeOptions,
+}
+
+/// `--algorithm`: how the pixels are scheduled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AlgorithmName {
+    /// Every pixel computed
+    Exact,
+    /// Boundary tracing and subdivision: far fewer pixels computed
+    Fast,
+}
+
+/// `--precision`: the fixed-point tier, or `auto`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Precision {
+    /// The tier the view needs (the calibrated rule)
+    Auto,
+    /// Q12 in 32 bits: fast and coarse, for Cortex-M0
+    Narrow,
+    /// Q28 keeping products' high 32 bits: shallow views
+    Medium,
+    /// Q28 with 64-bit products: the full views
+    Standard,
+    /// Q60 with 128-bit products: zooms to a spacing of 2^-54
+    Deep,
+    /// Q124 with 256-bit products: deep views with long orbits
+    Wide,
+    /// Differences from one reference orbit: the deepest zooms
+    Perturbation,
+}
+
+impl Precision {
+    /// The tier forced, `None` for automatic.
+    pub fn tier(self) -> Option<Tier> {
+        match self {
+            Self::Auto => None,
+            Self::Narrow => Some(Tier::Narrow),
+            Self::Medium => Some(Tier::Medium),
+            Self::Standard => Some(Tier::Standard),
+            Self::Deep => Some(Tier::Deep),
+            Self::Wide => Some(Tier::Wide),
+            Self::Perturbation => Some(Tier::Perturbation),
+        }
+    }
+}
+
+/// An escape-time picture as asked for, its numbers as text checked by the core: what
+/// `render mandelbrot|julia` and an animation's view resolve to.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Escape {
+    /// `None` for the Mandelbrot set, the parameter `(re, im)` for a Julia set.
+    pub julia: Option<(String, String)>,
+    /// The view's centre (`--center`), as text.
+    pub centre: (String, String),
+    /// The view's width (`--width`), as text.
+    pub width: String,
+    /// The iteration cap (`--max-iter`).
+    pub max_iterations: u32,
+    /// How the pixels are scheduled (`--algorithm`).
+    pub algorithm: Algorithm,
+    /// `None` for automatic.
+    pub tier: Option<Tier>,
+    /// The colours (`--palette`).
+    pub palette: PaletteName,
+    /// The options every render takes.
+    pub common: Common,
+    /// Where to write the dwells (`--dwell`), if anywhere.
+    pub dwell: Option<PathBuf>,
+}
+
+impl EscapeOptions {
+    /// `render mandelbrot`: the Mandelbrot set's view drawn, with `--dwell`.
+    pub fn run(self) -> Result<(), Failure> {
+        Ok(render_escape(&self.escape(None))?)
+    }
+
+    /// The picture these options ask for, of the Julia set of `julia` or else the
+    /// Mandelbrot set; each set's whole picture by default.
+    fn escape(self, julia: Option<(String, String)>) -> Escape {
+        let options = self;
+        let (centre, width) = match julia {
+            None => (("-0.75", "0"), "3.5"),
+            Some(_) => (("0", "0"), "3.2"),
+        };
+        Escape {
+            julia,
+            centre: options
+                .centre
+                .unwrap_or_else(|| (centre.0.to_string(), centre.1.to_string())),
+            width: options.width.unwrap_or_else(|| width.to_string()),
+            max_iterations: options.max_iterations,
+            algorithm: match options.algorithm {
+                AlgorithmName::Exact => Algorithm::Exact,
+                AlgorithmName::Fast => Algorithm::Fast,
+            },
+            tier: options.precision.tier(),
+            palette: options.palette,
+            common: options.common,
+            dwell: options.dwell,
+        }
+    }
+}
+
+impl JuliaOptions {
+    /// `render julia`: the Julia set's view drawn, with `--dwell`.
+    pub fn run(self) -> Result<(), Failure> {
+        Ok(render_escape(&self.view.escape(Some(self.c)))?)
+    }
+}
 
 /// A rendered view.
 #[derive(Debug)]
@@ -52,7 +205,7 @@ pub struct Request<'a> {
 }
 
 /// What `render mandelbrot|julia` (or an animation's view) asked for, at `size`.
-pub fn request(arguments: &crate::args::EscapeArgs, size: Size) -> Request<'_> {
+pub fn request(arguments: &Escape, size: Size) -> Request<'_> {
     Request {
         julia: arguments
             .julia
@@ -64,7 +217,7 @@ pub fn request(arguments: &crate::args::EscapeArgs, size: Size) -> Request<'_> {
         max_iterations: arguments.max_iterations,
         algorithm: arguments.algorithm,
         tier: arguments.tier,
-        palette: &arguments.palette,
+        palette: arguments.palette.name(),
     }
 }
 
@@ -405,7 +558,7 @@ fn gradient_keys(name: &str) -> Option<&'static [Rgb888]> {
 }
 
 /// `render mandelbrot` and `render julia`: the view drawn, with `--dwell`.
-pub fn render_escape(arguments: &crate::args::EscapeArgs) -> Result<(), String> {
+fn render_escape(arguments: &Escape) -> Result<(), String> {
     let common = &arguments.common;
     let name = if arguments.julia.is_some() {
         "julia"

@@ -1,23 +1,26 @@
 //! `render lsystem`: a plain or parametric system drawn at an order, with `--segments`.
 
+use std::path::PathBuf;
+
+use clap::Args;
 use tinyfractal::ParametricGrammar;
 
-use crate::args::LSystemArgs;
+use crate::common::{Common, View};
 use crate::console::{self, Failure};
 use crate::delivery::{deliver, window_available};
 use crate::scene;
-use crate::systems::{load, seed_applies, Loaded};
+use crate::systems::{load, seed_applies, Loaded, Purpose, SystemOptions};
 
 /// `render lsystem` of a parametric `.lsys` system. `--view` fits the whole picture to the
 /// enlarged area and lets the target clip the rest (no expansion table here).
 fn render_parametric(
-    arguments: &LSystemArgs,
+    arguments: &LSystemOptions,
     grammar: &ParametricGrammar,
     name: &str,
 ) -> Result<(), String> {
     let common = &arguments.common;
     window_available(common.window)?;
-    let order = arguments.order;
+    let order = arguments.system.order;
     let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
     let look = scene::GeneralLook {
         projection: arguments.projection,
@@ -57,10 +60,44 @@ fn render_parametric(
     )
 }
 
-/// `render lsystem`: the system a source names, drawn at `--order`.
-pub fn render_lsystem(arguments: &LSystemArgs) -> Result<(), Failure> {
+/// `render lsystem`'s options.
+#[derive(Debug, Args)]
+pub struct LSystemOptions {
+    #[command(flatten)]
+    pub system: SystemOptions,
+    /// Write every drawn segment, `x0 y0 x1 y1` in turtle units
+    #[arg(long, value_name = "TXT")]
+    pub segments: Option<PathBuf>,
+    /// Draw only this window of the picture: fractions of the target the whole picture
+    /// fills (0,0 top left, 1,1 bottom right), e.g. 0.4,0.4,0.6,0.6 to zoom 5 times
+    #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = crate::common::parse_view, allow_hyphen_values = true)]
+    pub view: Option<View>,
+    /// Draw an .lsys system with the 3D turtle, seen from the front, isometric, or in
+    /// perspective (systems using & ^ \ / $ are drawn in 3D anyway, isometric by default)
+    #[arg(long, value_name = "VIEW", value_parser = crate::common::parse_projection)]
+    pub projection: Option<tinyfractal::render::Projection>,
+    /// In 3D, colour each line by its depth, nearer brighter
+    #[arg(long = "depth-cue")]
+    pub depth_cue: bool,
+    /// The world an open system (env(k) in its productions) grows in: circle:R or heart:R,
+    /// R in turtle units, the shape standing on the turtle's start; env(0) is 1 inside
+    #[arg(long, value_name = "SHAPE:R", value_parser = crate::environment::Shape::parse)]
+    pub environment: Option<crate::environment::Shape>,
+    #[command(flatten)]
+    pub common: Common,
+}
+
+impl LSystemOptions {
+    /// `render lsystem`: the system the options name, drawn at `--order`.
+    pub fn run(&self) -> Result<(), Failure> {
+        render_lsystem(self)
+    }
+}
+
+fn render_lsystem(arguments: &LSystemOptions) -> Result<(), Failure> {
+    let source = arguments.system.source(Purpose::Draw)?;
     let mut file_text = String::new();
-    let (loaded, name, kind) = load(&arguments.source, &mut file_text)?;
+    let (loaded, name, kind) = load(&source, &mut file_text)?;
     let three_d = [
         ("--projection", arguments.projection.is_some()),
         ("--depth-cue", arguments.depth_cue),
@@ -75,26 +112,26 @@ pub fn render_lsystem(arguments: &LSystemArgs) -> Result<(), Failure> {
              plane (leave out {option})"
         )));
     }
-    seed_applies(kind, arguments.seed, &name)?;
+    seed_applies(kind, arguments.system.seed, &name)?;
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
         Loaded::Parametric(mut grammar) => {
-            if let Some(seed) = arguments.seed {
+            if let Some(seed) = arguments.system.seed {
                 grammar.set_seed(seed);
             }
             return Ok(render_parametric(arguments, &grammar, &name)?);
         }
     };
-    if let Some(seed) = arguments.seed {
+    if let Some(seed) = arguments.system.seed {
         grammar.set_seed(seed);
     }
     let common = &arguments.common;
     window_available(common.window)?;
-    let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.order);
+    let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.system.order);
     // Everything is computed and every output checked before anything is written.
     let rendered = scene::render(
         &grammar,
-        arguments.order,
+        arguments.system.order,
         common.width(),
         common.height(),
         arguments.view,
@@ -103,10 +140,10 @@ pub fn render_lsystem(arguments: &LSystemArgs) -> Result<(), Failure> {
     if rendered.stats.segments == 0 {
         console::complain(&format!(
             "tinyfractal: note: {name} draws nothing at order {}: the picture is empty\n",
-            arguments.order
+            arguments.system.order
         ));
     }
-    let (grammar, order) = (&grammar, arguments.order);
+    let (grammar, order) = (&grammar, arguments.system.order);
     Ok(deliver(
         common,
         &name.to_lowercase(),

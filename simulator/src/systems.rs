@@ -1,11 +1,13 @@
 //! The systems a command names: read from a file (`.l` or `.lsys`, by content) or given
 //! inline, with the file's warnings; and `list`, the names a file holds.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+use clap::builder::NonEmptyStringValueParser;
+use clap::{Args, ValueEnum};
 
 use tinyfractal::{Grammar, LFile, LsysFile, ParametricGrammar};
 
-use crate::args::Source;
 use crate::console::{self, warn, Failure};
 use crate::files::{entry_names, is_lsys, read_text, FileKind};
 
@@ -121,4 +123,155 @@ pub fn seed_applies(kind: Option<FileKind>, seed: Option<u32>, name: &str) -> Re
         )));
     }
     Ok(())
+}
+
+/// The highest order an L-system command takes (the walkers' depth is one more).
+const MAX_ORDER: i64 = crate::scene::DEPTH as i64 - 1;
+
+/// A system, from a file or inline, and its order: what `render lsystem`, `derive` and
+/// `animate growth` share.
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct SystemOptions {
+    /// A Fractint .l file, or an .lsys file (with --name)
+    #[arg(
+        long,
+        value_name = "PATH.l",
+        conflicts_with = "axiom",
+        requires = "name"
+    )]
+    pub file: Option<PathBuf>,
+    /// The system in the file (case-insensitive)
+    #[arg(long, value_name = "NAME", requires = "file", value_parser = NonEmptyStringValueParser::new())]
+    pub name: Option<String>,
+    /// An inline system's axiom
+    #[arg(long, value_name = "STR", allow_hyphen_values = true)]
+    pub axiom: Option<String>,
+    /// An inline rule, C=STR (repeat for more)
+    #[arg(long = "rule", value_name = "C=STR", allow_hyphen_values = true, conflicts_with = "file", value_parser = parse_rule)]
+    pub rules: Vec<(char, String)>,
+    /// Divisions of a full turn
+    #[arg(long, value_name = "N", conflicts_with_all = ["angle_deg", "file"])]
+    pub angle: Option<u16>,
+    /// A free angle in degrees, e.g. 22.5 or -90
+    #[arg(
+        long = "angle-deg",
+        value_name = "DEG",
+        allow_hyphen_values = true,
+        conflicts_with = "file",
+        value_parser = parse_degrees
+    )]
+    pub angle_deg: Option<tinyfractal::Angle>,
+    /// More symbols that draw (ABOP edge rewriting)
+    #[arg(
+        long = "draw-symbols",
+        value_name = "CHARS",
+        default_value = "",
+        conflicts_with = "file"
+    )]
+    pub draw_symbols: String,
+    /// The inline system's notation (default abop; .l files are Fractint's)
+    #[arg(long, value_enum, conflicts_with = "file")]
+    pub dialect: Option<DialectName>,
+    /// The order (derivation steps), 0 to 256
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(0..=MAX_ORDER))]
+    pub order: u32,
+    /// The seed of stochastic productions (overrides the file's `seed:`)
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u32>,
+}
+
+/// `--dialect`: the notation of an inline system.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DialectName {
+    /// Fractint's .l notation
+    Fractint,
+    /// The Algorithmic Beauty of Plants' notation
+    Abop,
+}
+
+impl SystemOptions {
+    /// The system the options name. An inline system needs an angle to be drawn; to be
+    /// derived it does not (a quarter turn stands in).
+    pub fn source(&self, purpose: Purpose) -> Result<Source, Failure> {
+        let options = self.clone();
+        let angle_required = purpose == Purpose::Draw;
+        Ok(match (options.file, options.axiom) {
+            (Some(path), None) => Source::File {
+                path,
+                // `requires = "name"` makes it present.
+                name: options.name.unwrap_or_default(),
+            },
+            (None, Some(axiom)) => {
+                let angle = match (options.angle, options.angle_deg) {
+                    (Some(n), _) => tinyfractal::Angle::Divisions(n),
+                    (None, Some(degrees)) => degrees,
+                    (None, None) if !angle_required => tinyfractal::Angle::Divisions(4),
+                    (None, None) => {
+                        return Err(Failure::Usage(
+                            "an inline system needs --angle N or --angle-deg DEG".to_string(),
+                        ))
+                    }
+                };
+                Source::Inline {
+                    axiom,
+                    rules: options.rules,
+                    angle,
+                    draw_symbols: options.draw_symbols,
+                    dialect: match options.dialect {
+                        Some(DialectName::Fractint) => tinyfractal::Dialect::Fractint,
+                        Some(DialectName::Abop) | None => tinyfractal::Dialect::Abop,
+                    },
+                }
+            }
+            _ => {
+                return Err(Failure::Usage(
+                    "give a system: --file PATH --name NAME, or --axiom STR".to_string(),
+                ))
+            }
+        })
+    }
+}
+
+/// Where the system comes from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Source {
+    /// `--file PATH --name NAME`
+    File {
+        /// The file.
+        path: PathBuf,
+        /// The system's name in it.
+        name: String,
+    },
+    /// `--axiom STR --rule C=STR ... (--angle N | --angle-deg DEG)`
+    Inline {
+        /// The axiom (`--axiom`).
+        axiom: String,
+        /// The rules (`--rule C=STR`), in order.
+        rules: Vec<(char, String)>,
+        /// The angle (`--angle` or `--angle-deg`).
+        angle: tinyfractal::Angle,
+        /// More symbols that draw (`--draw-symbols`).
+        draw_symbols: String,
+        /// The notation (`--dialect`).
+        dialect: tinyfractal::Dialect,
+    },
+}
+
+/// `--angle-deg`'s value.
+fn parse_degrees(text: &str) -> Result<tinyfractal::Angle, String> {
+    tinyfractal::Angle::parse_degrees(text)
+        .ok_or_else(|| format!("`{text}` is not a number of degrees, e.g. 22.5 or -90"))
+}
+
+/// `--rule`'s value.
+fn parse_rule(text: &str) -> Result<(char, String), String> {
+    let (symbol, body) = text
+        .split_once('=')
+        .ok_or_else(|| format!("`{text}` is not C=STR"))?;
+    let mut chars = symbol.chars();
+    match (chars.next(), chars.next()) {
+        (Some(c), None) => Ok((c, body.to_string())),
+        _ => Err(format!("`{symbol}` must be exactly one symbol before `=`")),
+    }
 }

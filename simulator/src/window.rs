@@ -6,15 +6,60 @@ use embedded_graphics::pixelcolor::Rgb888;
 #[cfg(feature = "window")]
 use embedded_graphics_simulator::SimulatorDisplay;
 
-use crate::args::ExploreArgs;
+use std::path::PathBuf;
+
+use clap::Args;
+
+use crate::console::Failure;
 #[cfg(not(feature = "window"))]
 use crate::delivery::window_available;
 use crate::escape_scene;
 use crate::explore;
 use crate::files::{entry_names, read_text, FileKind};
 
+/// `explore`'s options.
+#[derive(Debug, Args)]
+pub struct ExploreOptions {
+    /// Page through the systems of this .l or .lsys file instead
+    #[arg(long, value_name = "PATH", conflicts_with = "scene")]
+    pub file: Option<PathBuf>,
+    /// Page through the gallery's scenes instead, starting at this one (+/- its order,
+    /// points, seed or iteration cap)
+    #[arg(long, value_name = "NAME")]
+    pub scene: Option<String>,
+    /// Start with the Julia set of k = RE,IM
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    pub c: Option<(String, String)>,
+    /// Centre of the first view, RE,IM
+    #[arg(long = "center", visible_alias = "centre", value_name = "RE,IM", default_value = "-0.75,0", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    pub centre: (String, String),
+    /// Width of the first view
+    #[arg(
+        long,
+        value_name = "W",
+        default_value = "3.5",
+        allow_hyphen_values = true
+    )]
+    pub width: String,
+    /// Iteration cap of the first view, 1 to 65535
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=65535))]
+    pub max_iterations: u32,
+    /// Picture size in pixels, WxH (a status line goes below it)
+    #[arg(long = "size", value_name = "WxH", default_value = "320x240", value_parser = crate::common::parse_size)]
+    pub size: (u32, u32),
+}
+
+impl ExploreOptions {
+    /// `explore`: the explorer in a window (with the `window` feature; without it the
+    /// options are checked and the run refused).
+    pub fn run(&self) -> Result<(), Failure> {
+        Ok(explore_window(self)?)
+    }
+}
+
 /// The explorer a command starts.
-fn explorer(arguments: &ExploreArgs) -> Result<explore::Explorer, String> {
+fn explorer(arguments: &ExploreOptions) -> Result<explore::Explorer, String> {
     let size = embedded_graphics::geometry::Size::new(arguments.size.0, arguments.size.1);
     if let Some(name) = &arguments.scene {
         return explore::Explorer::gallery(name, size);
@@ -35,7 +80,7 @@ fn explorer(arguments: &ExploreArgs) -> Result<explore::Explorer, String> {
     let number = |option: &str, text: &str| {
         escape_scene::coordinate(option, text).map(tinyfractal::Coord::to_f64)
     };
-    let julia = match &arguments.julia {
+    let julia = match &arguments.c {
         Some((re, im)) => Some((
             escape_scene::coordinate("--c", re)?,
             escape_scene::coordinate("--c", im)?,
@@ -56,7 +101,7 @@ fn explorer(arguments: &ExploreArgs) -> Result<explore::Explorer, String> {
 }
 
 #[cfg(feature = "window")]
-pub fn explore_window(arguments: &ExploreArgs) -> Result<(), String> {
+fn explore_window(arguments: &ExploreOptions) -> Result<(), String> {
     use embedded_graphics_simulator::sdl2::{Keycode, MouseButton};
     use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorEvent, Window};
     use explore::Input;
@@ -127,7 +172,7 @@ pub fn explore_window(arguments: &ExploreArgs) -> Result<(), String> {
 }
 
 #[cfg(not(feature = "window"))]
-pub fn explore_window(arguments: &ExploreArgs) -> Result<(), String> {
+fn explore_window(arguments: &ExploreOptions) -> Result<(), String> {
     // The arguments are still checked, so a mistake is reported as such.
     explorer(arguments)?;
     window_available(true)

@@ -78,6 +78,18 @@ fn options_that_do_not_apply_are_usage_errors() {
         ],
         &["--frames does not apply to growth"],
     );
+    // Found after parsing, by the command that draws: still a usage error, naming the fix.
+    usage_error(
+        &["render", "lsystem", "--axiom", "F", "--order", "2"],
+        &[
+            "an inline system needs --angle N or --angle-deg DEG",
+            "tinyfractal help",
+        ],
+    );
+    usage_error(
+        &["animate", "zoom", "--frames", "0", "--out", out],
+        &["--frames 0: give at least one frame"],
+    );
     assert!(!Path::new(out).exists());
 }
 
