@@ -220,21 +220,9 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
                 map,
             }
         }
-        Scene::Escape {
-            julia,
-            centre,
-            width,
-            max_iterations,
-            shading,
-            tier,
-        } => Scene::Escape {
-            julia,
-            centre,
-            width,
-            max_iterations: stepped_cap(max_iterations, up),
-            shading,
-            tier,
-        },
+        Scene::Escape(escape) => {
+            Scene::Escape(escape.with_max_iterations(stepped_cap(escape.max_iterations, up)))
+        }
         Scene::Zoom {
             centre,
             width,

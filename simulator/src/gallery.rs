@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::time::Duration;
 
-use tinyfractal_scenes::{Entry, Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY};
+use tinyfractal_scenes::{Entry, EscapeScene, Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY};
 
 fn row(scene: &str, detail: &str, work: &str, elapsed: Duration, file: &Path) -> String {
     format!(
@@ -170,14 +170,14 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
         | Scene::Terrain { .. }
         | Scene::Walk { .. }
         | Scene::Zoom { .. } => crate::shape_scene::render_entry(&entry.scene, size),
-        Scene::Escape {
+        Scene::Escape(EscapeScene {
             julia,
             centre,
             width,
             max_iterations,
             shading,
             tier,
-        } => {
+        }) => {
             let request = crate::escape_scene::Request {
                 julia,
                 centre,

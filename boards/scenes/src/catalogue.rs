@@ -110,23 +110,8 @@ pub enum Scene {
         /// Frames in the cycle.
         frames: u32,
     },
-    /// A Mandelbrot (`julia: None`) or Julia view, as decimal text: the catalogue's
-    /// entries are checked when compiled; in a scene built by hand, a number that does not
-    /// parse counts as 0.
-    Escape {
-        /// The Julia parameter, or `None` for the Mandelbrot set.
-        julia: Option<(&'static str, &'static str)>,
-        /// Centre.
-        centre: (&'static str, &'static str),
-        /// Width along the real axis.
-        width: &'static str,
-        /// Iteration cap.
-        max_iterations: u32,
-        /// Dwells or smooth values (a `smooth-*` palette on the host).
-        shading: Shading,
-        /// The tier forced on the view, or `None` for its own (the calibrated rule's).
-        tier: Option<Tier>,
-    },
+    /// A Mandelbrot or Julia view.
+    Escape(EscapeScene),
     /// A zoom into the Mandelbrot set, `frames` frames in one frame of storage: each frame
     /// takes the last one's columns and rows within `tolerance_percent` % of a pixel
     /// (`ZoomFrame::advance`) and computes the rest; the last is exact.
@@ -179,8 +164,8 @@ impl Scene {
             Self::Terrain { map: false, .. } => "terrain",
             Self::Terrain { map: true, .. } => "terrain2d",
             Self::Walk { .. } => "figure",
-            Self::Escape { julia: None, .. } => "mandelbrot",
-            Self::Escape { julia: Some(_), .. } => "julia",
+            Self::Escape(EscapeScene { julia: None, .. }) => "mandelbrot",
+            Self::Escape(EscapeScene { julia: Some(_), .. }) => "julia",
             Self::Zoom { .. } => "zoom",
         }
     }
@@ -188,57 +173,83 @@ impl Scene {
     /// The escape-time view of this scene at `size`; `None` for any other scene (a zoom
     /// has many).
     pub fn view(&self, size: Size) -> Option<Result<View, Error>> {
-        let Self::Escape {
-            julia,
-            centre,
-            width,
-            max_iterations,
-            shading,
-            tier,
-        } = *self
-        else {
-            return None;
-        };
-        Some(escape_view(
-            julia,
-            centre,
-            width,
-            (max_iterations, shading, tier),
-            size,
-        ))
+        match self {
+            Self::Escape(escape) => Some(escape.view(size)),
+            _ => None,
+        }
     }
 }
 
-/// The view of an escape-time scene's numbers at `size`.
-pub(crate) fn escape_view(
-    julia: Option<(&str, &str)>,
-    centre: (&str, &str),
-    width: &str,
-    (max_iterations, shading, tier): (u32, Shading, Option<Tier>),
-    size: Size,
-) -> Result<View, Error> {
-    // Every catalogue number parses: `escape()` asserts it when the tables compile.
-    let coord = |text: &str| Coord::parse(text).unwrap_or_default();
-    let deep = |text: &str| DeepCoord::parse(text).unwrap_or_default();
-    let fractal = match julia {
-        None => Fractal::Mandelbrot,
-        Some((re, im)) => Fractal::Julia {
-            re: coord(re),
-            im: coord(im),
-        },
-    };
-    View::deep(
-        fractal,
-        (deep(centre.0), deep(centre.1)),
-        deep(width),
-        size,
-        max_iterations,
-    )
-    .map(|view| match tier {
-        Some(tier) => view.with_tier(tier),
-        None => view,
-    })
-    .and_then(|view| view.with_shading(shading))
+/// A Mandelbrot (`julia: None`) or Julia view, as decimal text: the catalogue's entries
+/// are checked when compiled; in a scene built by hand, a number that does not parse
+/// counts as 0.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct EscapeScene {
+    /// The Julia parameter, or `None` for the Mandelbrot set.
+    pub julia: Option<(&'static str, &'static str)>,
+    /// Centre.
+    pub centre: (&'static str, &'static str),
+    /// Width along the real axis.
+    pub width: &'static str,
+    /// Iteration cap.
+    pub max_iterations: u32,
+    /// Dwells or smooth values (a `smooth-*` palette on the host).
+    pub shading: Shading,
+    /// The tier forced on the view, or `None` for its own (the calibrated rule's).
+    pub tier: Option<Tier>,
+}
+
+impl EscapeScene {
+    /// The view of these numbers at `size`.
+    pub fn view(&self, size: Size) -> Result<View, Error> {
+        // Every catalogue number parses: `escape()` asserts it when the tables compile.
+        let coord = |text: &str| Coord::parse(text).unwrap_or_default();
+        let deep = |text: &str| DeepCoord::parse(text).unwrap_or_default();
+        let fractal = match self.julia {
+            None => Fractal::Mandelbrot,
+            Some((re, im)) => Fractal::Julia {
+                re: coord(re),
+                im: coord(im),
+            },
+        };
+        View::deep(
+            fractal,
+            (deep(self.centre.0), deep(self.centre.1)),
+            deep(self.width),
+            size,
+            self.max_iterations,
+        )
+        .map(|view| match self.tier {
+            Some(tier) => view.with_tier(tier),
+            None => view,
+        })
+        .and_then(|view| view.with_shading(self.shading))
+    }
+
+    /// The same view with `shading` (smooth shading keeps the cap within
+    /// [`MAX_SMOOTH_ITERATIONS`](tinyfractal::escape::MAX_SMOOTH_ITERATIONS)).
+    pub const fn with_shading(self, shading: Shading) -> Self {
+        if let Shading::Smooth = shading {
+            assert!(self.max_iterations <= tinyfractal::escape::MAX_SMOOTH_ITERATIONS);
+        }
+        Self { shading, ..self }
+    }
+
+    /// The same view computed in `tier` whatever its own.
+    pub const fn with_tier(self, tier: Tier) -> Self {
+        Self {
+            tier: Some(tier),
+            ..self
+        }
+    }
+
+    /// The same view with an iteration cap of `max_iterations`.
+    pub const fn with_max_iterations(self, max_iterations: u32) -> Self {
+        Self {
+            max_iterations,
+            ..self
+        }
+    }
 }
 
 /// A scene as a front end shows it: its name, its default size in pixels, and the host
@@ -399,14 +410,14 @@ const fn escape(
     assert!(Coord::parse(width).is_some());
     Entry {
         name,
-        scene: Scene::Escape {
+        scene: Scene::Escape(EscapeScene {
             julia,
             centre,
             width,
             max_iterations,
             shading: Shading::Dwell,
             tier: None,
-        },
+        }),
         size,
         palette,
     }
@@ -417,7 +428,7 @@ const fn escape(
 const fn smooth(entry: Entry, palette: &'static str) -> Entry {
     Entry {
         palette,
-        ..adjusted(entry, Some(Shading::Smooth), None)
+        ..adjusted(entry, escape_of(entry).with_shading(Shading::Smooth))
     }
 }
 
@@ -426,49 +437,28 @@ const fn smooth(entry: Entry, palette: &'static str) -> Entry {
 const fn perturbed(name: &'static str, entry: Entry) -> Entry {
     Entry {
         name,
-        ..adjusted(entry, None, Some(Tier::Perturbation))
+        ..adjusted(entry, escape_of(entry).with_tier(Tier::Perturbation))
     }
 }
 
 /// `entry`, an escape-time view, computed in `tier` (a cheaper tier than the rule's, where
 /// it keeps the same dwells: checked in tests/tiers.rs).
 const fn in_tier(tier: Tier, entry: Entry) -> Entry {
-    adjusted(entry, None, Some(tier))
+    adjusted(entry, escape_of(entry).with_tier(tier))
 }
 
-/// `entry`, an escape-time view, with the shading and the forced tier given (the others
-/// kept).
-const fn adjusted(entry: Entry, shading: Option<Shading>, tier: Option<Tier>) -> Entry {
-    let Scene::Escape {
-        julia,
-        centre,
-        width,
-        max_iterations,
-        shading: own_shading,
-        tier: own_tier,
-    } = entry.scene
-    else {
-        panic!("only an escape-time view can be adjusted");
-    };
-    let shading = match shading {
-        Some(shading) => shading,
-        None => own_shading,
-    };
-    if let Shading::Smooth = shading {
-        assert!(max_iterations <= tinyfractal::escape::MAX_SMOOTH_ITERATIONS);
+/// The escape-time view of `entry`, which must be one.
+const fn escape_of(entry: Entry) -> EscapeScene {
+    match entry.scene {
+        Scene::Escape(escape) => escape,
+        _ => panic!("only an escape-time view can be adjusted"),
     }
+}
+
+/// `entry` showing `escape` instead.
+const fn adjusted(entry: Entry, escape: EscapeScene) -> Entry {
     Entry {
-        scene: Scene::Escape {
-            julia,
-            centre,
-            width,
-            max_iterations,
-            shading,
-            tier: match tier {
-                Some(tier) => Some(tier),
-                None => own_tier,
-            },
-        },
+        scene: Scene::Escape(escape),
         ..entry
     }
 }

@@ -19,7 +19,7 @@ use tinyfractal::{
     ParametricGrammar, ParametricLSystem, Real, SierpinskiCube, Terrain, TerrainMap, View,
 };
 
-use crate::catalogue::{escape_view, GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
+use crate::catalogue::{GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
 
 /// Expansion-table cells an L-system scene is measured with (96 bytes each, on the stack while
 /// it draws: 3.75 KiB).
@@ -176,18 +176,9 @@ impl Scene {
             } => draw_terrain(target, look, displacement, samples, map),
             Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
             Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
-            Scene::Escape {
-                julia,
-                centre,
-                width,
-                max_iterations,
-                shading,
-                tier,
-            } => {
-                let size = target.bounding_box().size;
-                let view =
-                    escape_view(julia, centre, width, (max_iterations, shading, tier), size)?;
-                match (shading, view.tier()) {
+            Scene::Escape(escape) => {
+                let view = escape.view(target.bounding_box().size)?;
+                match (escape.shading, view.tier()) {
                     (_, Tier::Perturbation) => draw_perturbed(target, look, view),
                     (Shading::Dwell, _) => draw_escape::<D, 16>(target, look, view),
                     // 16 entries a dwell: the same colours at whole dwells.

@@ -10,7 +10,7 @@ use embedded_graphics::{pixelcolor::Gray4, prelude::*, primitives::Rectangle};
 
 use tinyfractal::{escape::Shading, Coord};
 
-use crate::catalogue::Scene;
+use crate::catalogue::{EscapeScene, Scene};
 
 /// A target with no memory (128×64 unless made larger).
 ///
@@ -239,14 +239,14 @@ impl BaselineView {
     #[inline(never)]
     pub fn of(scene: &Scene) -> Option<Self> {
         // A naive loop computes dwells: it is no baseline for smooth values.
-        let Scene::Escape {
+        let Scene::Escape(EscapeScene {
             julia,
             centre,
             width,
             max_iterations,
             shading: Shading::Dwell,
             ..
-        } = *scene
+        }) = *scene
         else {
             return None;
         };
@@ -276,12 +276,12 @@ mod tests {
     fn baseline_numbers_are_the_nearest_f32() {
         let with_baseline = SCENES.iter().chain(&GALLERY);
         for entry in with_baseline.filter(|entry| BaselineView::of(&entry.scene).is_some()) {
-            let Scene::Escape {
+            let Scene::Escape(EscapeScene {
                 julia,
                 centre,
                 width,
                 ..
-            } = entry.scene
+            }) = entry.scene
             else {
                 continue;
             };

@@ -136,7 +136,7 @@ fn max_iterations(scene: &str, size: &str) -> u32 {
         .filter(|entry| entry.name == scene)
         .filter(|entry| format!("{}x{}", entry.size.width, entry.size.height) == size)
         .find_map(|entry| match entry.scene {
-            tinyfractal_scenes::Scene::Escape { max_iterations, .. } => Some(max_iterations),
+            tinyfractal_scenes::Scene::Escape(escape) => Some(escape.max_iterations),
             _ => None,
         })
         .unwrap_or(0)
