@@ -8,7 +8,7 @@ use embedded_graphics::{
 use tinyfractal::error::{FitError, ReadError, ReadWarning, WalkError};
 use tinyfractal::{
     error::{DrawError, Location},
-    lsystem::{Placement, Segments, MAX_RULES},
+    lsystem::{Placement, Segments},
     Angle, Dialect, Error, Grammar, LFile, LSystem, Real,
 };
 
@@ -277,12 +277,15 @@ fn inline_grammar_errors() {
     ));
     // One more rule line than fits.
     let mut many = Ok(grammar);
-    for _ in 0..=MAX_RULES {
+    for _ in 0..=Grammar::MAX_RULES {
         many = many.and_then(|g| g.with_rule('X', "F"));
     }
     assert!(matches!(
         many,
-        Err(Error::Read(ReadError::TooManyRules { max: MAX_RULES, .. }))
+        Err(Error::Read(ReadError::TooManyRules {
+            max: Grammar::MAX_RULES,
+            ..
+        }))
     ));
 }
 

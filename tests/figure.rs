@@ -7,7 +7,7 @@ use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::{mock_display::MockDisplay, pixelcolor::BinaryColor, prelude::*};
 use proptest::prelude::*;
 use tinyfractal::{
-    figure::{walk as walk_pose, Pose, Shape, BODY, MAX_JOINTS},
+    figure::{walk as walk_pose, Pose, Shape, BODY},
     Figure, Real,
 };
 
@@ -91,7 +91,7 @@ fn poses_and_drawing() {
     let step = lines(walk_pose(Real::from_ratio(1, 4).unwrap()));
     let (left, right) = (step["left foot"][0].0, step["right foot"][0].0);
     assert!((left[0] - right[0]).abs() > 1.0, "{left:?} {right:?}");
-    assert_eq!(MAX_JOINTS, 16);
+    assert_eq!(Figure::MAX_JOINTS, 16);
     let drawing = Figure::new(&BODY, walk_pose(Real::ZERO))
         .fit(
             Rectangle::new(Point::zero(), Size::new(48, 64)),

@@ -7,7 +7,7 @@
 
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
-    escape::{Algorithm, ReferenceOrbit, ReferencePoint, Render, Tier, MAX_ITERATIONS},
+    escape::{Algorithm, ReferenceOrbit, ReferencePoint, Render, Tier},
     math::DeepCoord,
     render::DwellBuffer,
     Fractal, View,
@@ -41,7 +41,14 @@ fn dwell(c: (&str, &str), tier: Option<Tier>) -> (u32, Tier) {
     // One pixel 2⁻³⁰ wide: the point is all that matters.
     let width = DeepCoord::parse("0.000000000931322574615478515625").unwrap();
     let size = Size::new(1, 1);
-    let view = View::deep(Fractal::Mandelbrot, centre, width, size, MAX_ITERATIONS).unwrap();
+    let view = View::deep(
+        Fractal::Mandelbrot,
+        centre,
+        width,
+        size,
+        View::MAX_ITERATIONS,
+    )
+    .unwrap();
     let view = tier.map_or(view, |tier| view.with_tier(tier));
     let mut value = [0u16];
     let mut sink = DwellBuffer::new(&mut value, 1);

@@ -4,7 +4,7 @@
 
 use tinyfractal::{
     error::ViewError,
-    escape::{Algorithm, Render, Shading, MAX_SMOOTH_ITERATIONS},
+    escape::{Algorithm, Render, Shading},
     render::DwellBuffer,
     Coord, Error, Fractal, View,
 };
@@ -221,7 +221,7 @@ fn the_cap_is_a_typed_limit() {
         deep.with_shading(Shading::Smooth),
         Err(Error::View(ViewError::SmoothIterationsOutOfRange {
             value: 5000,
-            max: MAX_SMOOTH_ITERATIONS,
+            max: View::MAX_SMOOTH_ITERATIONS,
         }))
     );
     let message = deep.with_shading(Shading::Smooth).unwrap_err().to_string();

@@ -17,7 +17,7 @@ use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    escape::{Algorithm, Painter, Render, MAX_SMOOTH_ITERATIONS},
+    escape::{Algorithm, Painter, Render},
     render::{DwellBuffer, DwellSink},
     Coord, View,
 };
@@ -150,7 +150,7 @@ fn stepped(value: u32, up: bool, low: u32, high: u32) -> u32 {
 /// palette can show it).
 fn stepped_cap(cap: u32, up: bool) -> u32 {
     if up {
-        cap.saturating_mul(2).min(MAX_SMOOTH_ITERATIONS)
+        cap.saturating_mul(2).min(View::MAX_SMOOTH_ITERATIONS)
     } else {
         (cap / 2).max(16)
     }

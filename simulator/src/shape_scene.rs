@@ -249,7 +249,7 @@ pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
         TerrainMap::new(options.samples, options.displacement.displacement()).wrapped(options.wrap);
     // The buffer is the only limit: never more than the core's largest landscape, so a
     // size beyond it is refused by the core's own check, not by a failed allocation.
-    let largest = (1usize << tinyfractal::terrain::MAX_MAP_LEVELS) + 1;
+    let largest = (1usize << TerrainMap::MAX_LEVELS) + 1;
     let mut heights = vec![0i32; map.cells().min(largest * largest)];
     let mut target = options.common.display();
     let started = Instant::now();

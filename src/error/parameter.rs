@@ -26,14 +26,14 @@ pub enum ParameterError {
     SigmaOutOfRange {
         /// The value given.
         sigma: Real,
-        /// The largest accepted ([`MAX_SIGMA`](crate::terrain::MAX_SIGMA)).
+        /// The largest accepted ([`Displacement::MAX_SIGMA`](crate::terrain::Displacement::MAX_SIGMA)).
         max: Real,
     },
     /// A terrain's fixed end height is beyond ±`max`.
     EndOutOfRange {
         /// The value given.
         end: Real,
-        /// The largest magnitude accepted ([`MAX_END`](crate::terrain::MAX_END)).
+        /// The largest magnitude accepted ([`Terrain::MAX_END`](crate::terrain::Terrain::MAX_END)).
         max: Real,
     },
     /// Midpoint displacement needs 2ᵏ + 1 samples.

@@ -36,7 +36,7 @@ pub enum ReadError {
     },
     /// More rule lines than a grammar holds.
     TooManyRules {
-        /// The capacity ([`MAX_RULES`](crate::lsystem::MAX_RULES)).
+        /// The capacity ([`Grammar::MAX_RULES`](crate::lsystem::Grammar::MAX_RULES)).
         max: usize,
         /// Where the rule that did not fit starts.
         at: Location,
@@ -68,14 +68,14 @@ pub enum ReadError {
     },
     /// The axiom and the rules hold more symbols than a grammar can.
     TooManySymbols {
-        /// The capacity ([`MAX_SYMBOLS`](crate::lsystem::MAX_SYMBOLS)).
+        /// The capacity ([`Grammar::MAX_SYMBOLS`](crate::lsystem::Grammar::MAX_SYMBOLS)).
         max: usize,
         /// The first symbol that did not fit.
         at: Location,
     },
     /// More distinct numeric commands (`@0.5`, `\30`, `C12`, ...) than a grammar can hold.
     TooManyNumericCommands {
-        /// The capacity ([`MAX_NUMERIC_COMMANDS`](crate::lsystem::MAX_NUMERIC_COMMANDS)).
+        /// The capacity ([`Grammar::MAX_NUMERIC_COMMANDS`](crate::lsystem::Grammar::MAX_NUMERIC_COMMANDS)).
         max: usize,
         /// The first one that did not fit.
         at: Location,
@@ -155,7 +155,7 @@ pub enum ReadError {
     },
     /// An IFS has more maps than it can hold.
     TooManyMaps {
-        /// The capacity ([`MAX_MAPS`](crate::ifs::MAX_MAPS)).
+        /// The capacity ([`Ifs::MAX_MAPS`](crate::ifs::Ifs::MAX_MAPS)).
         max: usize,
         /// Where the map that did not fit is.
         at: Location,

@@ -13,7 +13,7 @@ pub enum ViewError {
     IterationsOutOfRange {
         /// The value given.
         value: u32,
-        /// The highest cap ([`MAX_ITERATIONS`](crate::escape::MAX_ITERATIONS)).
+        /// The highest cap ([`View::MAX_ITERATIONS`](crate::escape::View::MAX_ITERATIONS)).
         max: u32,
     },
     /// Smooth shading asked of a view whose cap is above `max`.
@@ -21,7 +21,7 @@ pub enum ViewError {
         /// The view's cap.
         value: u32,
         /// The highest cap for smooth shading
-        /// ([`MAX_SMOOTH_ITERATIONS`](crate::escape::MAX_SMOOTH_ITERATIONS)).
+        /// ([`View::MAX_SMOOTH_ITERATIONS`](crate::escape::View::MAX_SMOOTH_ITERATIONS)).
         max: u32,
     },
     /// The width is zero or negative.

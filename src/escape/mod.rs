@@ -50,7 +50,5 @@ pub use kernel::MAX_FAST_TOLERANCE;
 pub use perturbation::{ReferenceOrbit, REFERENCE_POINT_BYTES};
 pub use render::{Algorithm, Progress, Render, RenderStats, TILE, TILE_CELLS, TILE_ROWS};
 pub use scaled::ReferencePoint;
-pub use view::{
-    Fractal, Shading, Tier, View, MAX_ITERATIONS, MAX_SMOOTH_ITERATIONS, SMOOTH_FRACTION_BITS,
-};
+pub use view::{Fractal, Shading, Tier, View, SMOOTH_FRACTION_BITS};
 pub use zoom::{ReuseStats, ZoomFrame, ZoomLine, ZoomValue};

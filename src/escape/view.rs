@@ -7,12 +7,11 @@ use crate::error::{Error, FitError, ViewError};
 use crate::math::wide::{div_round, mul_wide, shift_round};
 use crate::math::{Coord, DeepCoord};
 
-/// Most iterations a view may ask for (dwells are kept in 16 bits).
-pub const MAX_ITERATIONS: u32 = u16::MAX as u32;
+/// [`View::MAX_ITERATIONS`], for the crate's own types and arrays.
+pub(crate) const MAX_ITERATIONS: u32 = u16::MAX as u32;
 
-/// Most iterations a smooth view may ask for: its values are sixteenths of an iteration in
-/// 16 bits.
-pub const MAX_SMOOTH_ITERATIONS: u32 = (u16::MAX as u32) >> SMOOTH_FRACTION_BITS;
+/// [`View::MAX_SMOOTH_ITERATIONS`], for the crate's own types and arrays.
+pub(crate) const MAX_SMOOTH_ITERATIONS: u32 = (u16::MAX as u32) >> SMOOTH_FRACTION_BITS;
 
 /// Fractional bits of a smooth value: sixteenths of an iteration.
 pub const SMOOTH_FRACTION_BITS: u32 = 4;
@@ -203,6 +202,13 @@ pub struct View {
 }
 
 impl View {
+    /// Most iterations a smooth view may ask for: its values are sixteenths of an iteration in
+    /// 16 bits.
+    pub const MAX_SMOOTH_ITERATIONS: u32 = MAX_SMOOTH_ITERATIONS;
+
+    /// Most iterations a view may ask for (dwells are kept in 16 bits).
+    pub const MAX_ITERATIONS: u32 = MAX_ITERATIONS;
+
     /// Checks a view and picks its tier.
     ///
     /// The tier is the cheapest that keeps at least 99.9 % of dwells identical to an exact
@@ -388,7 +394,7 @@ impl View {
 
     /// Gives each pixel the value `shading` says (dwells by default). Smooth values are
     /// sixteenths of an iteration in 16 bits, so a smooth view's cap is at most
-    /// [`MAX_SMOOTH_ITERATIONS`].
+    /// [`View::MAX_SMOOTH_ITERATIONS`].
     pub fn with_shading(mut self, shading: Shading) -> Result<Self, Error> {
         if shading == Shading::Smooth && self.max_iterations > MAX_SMOOTH_ITERATIONS {
             return Err(Error::View(ViewError::SmoothIterationsOutOfRange {

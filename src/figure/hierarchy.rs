@@ -13,11 +13,11 @@ use crate::render::palette::{Colors, Palette};
 use crate::render::raster::draw_line;
 use crate::render::space::{Segment3, SpaceFit};
 
-/// Deepest hierarchy a figure walk holds (the body is 5 deep).
-pub const MAX_FIGURE_DEPTH: usize = 8;
+/// [`Figure::MAX_DEPTH`], for the crate's own types and arrays.
+pub(crate) const MAX_FIGURE_DEPTH: usize = 8;
 
-/// Most joints a pose names.
-pub const MAX_JOINTS: usize = 16;
+/// [`Figure::MAX_JOINTS`], for the crate's own types and arrays.
+pub(crate) const MAX_JOINTS: usize = 16;
 
 /// What a part looks like, in its own units along +x from its joint.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -130,13 +130,19 @@ pub struct Figure {
 }
 
 impl Figure {
+    /// Deepest hierarchy a figure walk holds (the body is 5 deep).
+    pub const MAX_DEPTH: usize = MAX_FIGURE_DEPTH;
+
+    /// Most joints a pose names.
+    pub const MAX_JOINTS: usize = MAX_JOINTS;
+
     /// `root` and everything attached to it, in `pose`.
     pub const fn new(root: &'static Part, pose: Pose) -> Self {
         Self { root, pose }
     }
 
     /// Every line, in world units, depth first; `visit` sees each with its part's name.
-    /// The walk holds one map a level ([`MAX_FIGURE_DEPTH`]): deeper is
+    /// The walk holds one map a level ([`Figure::MAX_DEPTH`]): deeper is
     /// [`WalkError::StackTooDeep`].
     pub fn for_each_line(
         &self,

@@ -28,6 +28,4 @@ pub(crate) mod body;
 pub(crate) mod hierarchy;
 
 pub use body::{walk, wave, Joint, BODY};
-pub use hierarchy::{
-    Figure, FigureDrawing, FigureLine, Part, Pose, Shape, MAX_FIGURE_DEPTH, MAX_JOINTS,
-};
+pub use hierarchy::{Figure, FigureDrawing, FigureLine, Part, Pose, Shape};

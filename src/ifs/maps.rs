@@ -6,8 +6,8 @@ use crate::error::{Error, Location, ReadError};
 use crate::math::affine::Affine3;
 use crate::math::Real;
 
-/// Most maps an IFS holds (Fractint's own `fractint.ifs` has an entry of 22).
-pub const MAX_MAPS: usize = 32;
+/// [`Ifs::MAX_MAPS`], for the crate's own types and arrays.
+pub(crate) const MAX_MAPS: usize = 32;
 
 /// One map of an IFS: an [`Affine3`] (a 2D map has z rows of 0).
 pub type AffineMap = Affine3;
@@ -22,6 +22,9 @@ pub struct Ifs {
 }
 
 impl Ifs {
+    /// Most maps an IFS holds (Fractint's own `fractint.ifs` has an entry of 22).
+    pub const MAX_MAPS: usize = MAX_MAPS;
+
     /// No maps yet.
     pub fn new() -> Self {
         Self::default()

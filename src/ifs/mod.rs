@@ -33,4 +33,4 @@ pub use chaos::{
 };
 pub use file::{IfsEntry, IfsFile};
 pub use gingerbread::{Cycle, Gingerbread, GingerbreadDrawing, GingerbreadPoints, MapPoint};
-pub use maps::{AffineMap, Ifs, MAX_MAPS};
+pub use maps::{AffineMap, Ifs};

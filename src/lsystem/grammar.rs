@@ -15,15 +15,14 @@ use crate::math::angle::Headings;
 use crate::math::wide::shift_round;
 use crate::math::{Angle, Real};
 
-/// Most rule lines a grammar holds (Fractint allowed 25); lines for one symbol append.
-pub const MAX_RULES: usize = 32;
+/// [`Grammar::MAX_RULES`], for the crate's own types and arrays.
+pub(crate) const MAX_RULES: usize = 32;
 
-/// Most symbols a grammar holds, the axiom and every rule body together (a numeric command
-/// with its number counts one). Fractint's own files need at most 412.
-pub const MAX_SYMBOLS: usize = 512;
+/// [`Grammar::MAX_SYMBOLS`], for the crate's own types and arrays.
+pub(crate) const MAX_SYMBOLS: usize = 512;
 
-/// Most distinct numeric commands (`@0.5`, `\\30`, `C12`, ...) a grammar holds.
-pub const MAX_NUMERIC_COMMANDS: usize = 32;
+/// [`Grammar::MAX_NUMERIC_COMMANDS`], for the crate's own types and arrays.
+pub(crate) const MAX_NUMERIC_COMMANDS: usize = 32;
 
 const NO_RULE: u8 = u8::MAX;
 
@@ -98,8 +97,8 @@ impl Ops {
 
 /// A system's axiom and rules, compiled into symbols and tables.
 ///
-/// Worst-case RAM: the ops ([`MAX_SYMBOLS`] bytes), the numeric commands
-/// ([`MAX_NUMERIC_COMMANDS`] × 16 bytes), [`MAX_RULES`] rule spans (5 bytes each), a
+/// Worst-case RAM: the ops ([`Grammar::MAX_SYMBOLS`] bytes), the numeric commands
+/// ([`Grammar::MAX_NUMERIC_COMMANDS`] × 16 bytes), [`Grammar::MAX_RULES`] rule spans (5 bytes each), a
 /// 128-byte rule lookup table, a 128-byte table of what each symbol does, and the
 /// sine/cosine table for up to `MAX_ANGLE_DIVISIONS / 2 + 1` headings (264 bytes): about
 /// 1.9 KiB. On a small MCU, build it in place
@@ -124,6 +123,16 @@ pub struct Grammar<'a> {
 }
 
 impl<'a> Grammar<'a> {
+    /// Most distinct numeric commands (`@0.5`, `\\30`, `C12`, ...) a grammar holds.
+    pub const MAX_NUMERIC_COMMANDS: usize = MAX_NUMERIC_COMMANDS;
+
+    /// Most symbols a grammar holds, the axiom and every rule body together (a numeric command
+    /// with its number counts one). Fractint's own files need at most 412.
+    pub const MAX_SYMBOLS: usize = MAX_SYMBOLS;
+
+    /// Most rule lines a grammar holds (Fractint allowed 25); lines for one symbol append.
+    pub const MAX_RULES: usize = MAX_RULES;
+
     /// A grammar with an axiom and an angle, and no rules yet.
     pub fn new(dialect: Dialect, axiom: &'a str, angle: Angle) -> Result<Self, Error> {
         Self::new_at(dialect, axiom, angle, Location::column(1))
@@ -348,7 +357,7 @@ impl<'a> Grammar<'a> {
         self.rules.len()
     }
 
-    /// Symbols held, the axiom and all rule bodies together (at most [`MAX_SYMBOLS`]).
+    /// Symbols held, the axiom and all rule bodies together (at most [`Grammar::MAX_SYMBOLS`]).
     pub fn symbol_count(&self) -> usize {
         self.ops.len()
     }

@@ -42,14 +42,12 @@ pub(crate) mod walker;
 pub use alphabet::{DerivedSymbol, Dialect};
 pub use drawing::{LSystem, LSystemDrawing, Placement};
 pub use fractint::{Entries, Entry, LFile, Warnings};
-pub use grammar::{Grammar, MAX_NUMERIC_COMMANDS, MAX_RULES, MAX_SYMBOLS};
+pub use grammar::Grammar;
 pub use lsys::{LsysEntries, LsysEntry, LsysFile};
 pub use parametric::context::MAX_CONTEXT_SLOTS;
 pub use parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
 pub use parametric::environment::{Environment, TurtleState};
-pub use parametric::grammar::{
-    ParametricGrammar, MAX_ARGUMENTS, MAX_CONSTANTS, MAX_MODULES, MAX_PRODUCTIONS,
-};
+pub use parametric::grammar::ParametricGrammar;
 pub use parametric::space::{Segment3, Segments3};
 pub use parametric::values::{DerivedModule, Values, MAX_PARAMS};
 pub use parametric::walker::ParametricWalker;

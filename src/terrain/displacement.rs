@@ -4,28 +4,34 @@
 use crate::error::{Error, ParameterError};
 use crate::math::Real;
 
-/// Most levels of midpoint displacement: 2¹⁶ + 1 samples in a profile.
-pub const MAX_TERRAIN_LEVELS: u32 = 16;
+/// [`Terrain::MAX_LEVELS`], for the crate's own types and arrays.
+pub(crate) const MAX_TERRAIN_LEVELS: u32 = 16;
 
-/// The largest standard deviation: with the end heights below [`MAX_END`], every height
-/// stays within ±2¹⁵ units (6σ·(levels + 1) + an end), the range of the Q16.16 heights.
-pub const MAX_SIGMA: Real = Real::from_int(256);
+/// [`Displacement::MAX_SIGMA`], for the crate's own types and arrays.
+pub(crate) const MAX_SIGMA: Real = Real::from_int(256);
 
-/// The largest magnitude of a fixed end height.
-pub const MAX_END: Real = Real::from_int(4096);
+/// [`Terrain::MAX_END`], for the crate's own types and arrays.
+pub(crate) const MAX_END: Real = Real::from_int(4096);
 
 /// The parameters every midpoint displacement shares.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Displacement {
     /// σ is multiplied by this at each level, in (0, 1].
     pub roughness: Real,
-    /// The first level's standard deviation, 0 to [`MAX_SIGMA`].
+    /// The first level's standard deviation, 0 to [`Displacement::MAX_SIGMA`].
     pub sigma: Real,
     /// The seed of the variates.
     pub seed: u64,
 }
 
 impl Displacement {
+    /// The largest standard deviation.
+    ///
+    /// With the end heights below [`Terrain::MAX_END`](super::Terrain::MAX_END), every
+    /// height stays within ±2¹⁵ units (6σ·(levels + 1) + an end), the range of the Q16.16
+    /// heights.
+    pub const MAX_SIGMA: Real = MAX_SIGMA;
+
     /// Checks the roughness and σ.
     pub fn check(&self) -> Result<(), Error> {
         if self.roughness <= Real::ZERO || self.roughness > Real::ONE {

@@ -20,9 +20,8 @@ use crate::error::{Error, FitError};
 use crate::math::random::normal_q16;
 use crate::math::Real;
 
-/// Most levels of a landscape: (2¹² + 1)² heights (64 MiB of buffer; the buffer limits
-/// it first).
-pub const MAX_MAP_LEVELS: u32 = 12;
+/// [`TerrainMap::MAX_LEVELS`], for the crate's own types and arrays.
+pub(crate) const MAX_MAP_LEVELS: u32 = 12;
 
 /// A landscape of (2ᵏ + 1)² heights by diamond-square.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -36,6 +35,10 @@ pub struct TerrainMap {
 }
 
 impl TerrainMap {
+    /// Most levels of a landscape: (2¹² + 1)² heights (64 MiB of buffer; the buffer limits
+    /// it first).
+    pub const MAX_LEVELS: u32 = MAX_MAP_LEVELS;
+
     /// A landscape of `samples`² heights, not wrapped.
     pub const fn new(samples: u32, displacement: Displacement) -> Self {
         Self {

@@ -34,6 +34,6 @@ pub(crate) mod displacement;
 pub(crate) mod map;
 pub(crate) mod profile;
 
-pub use displacement::{Displacement, MAX_END, MAX_SIGMA, MAX_TERRAIN_LEVELS};
-pub use map::{MapDrawing, TerrainMap, MAX_MAP_LEVELS};
+pub use displacement::Displacement;
+pub use map::{MapDrawing, TerrainMap};
 pub use profile::{Heights, ProfileDrawing, Terrain};

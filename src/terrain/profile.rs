@@ -19,11 +19,17 @@ pub struct Terrain {
     pub displacement: Displacement,
     /// Heights: 2ᵏ + 1, up to 2¹⁶ + 1.
     pub samples: u32,
-    /// The first and last heights (fixed), within ±[`MAX_END`].
+    /// The first and last heights (fixed), within ±[`Terrain::MAX_END`].
     pub ends: (Real, Real),
 }
 
 impl Terrain {
+    /// The largest magnitude of a fixed end height.
+    pub const MAX_END: Real = MAX_END;
+
+    /// Most levels of midpoint displacement: 2¹⁶ + 1 samples in a profile.
+    pub const MAX_LEVELS: u32 = MAX_TERRAIN_LEVELS;
+
     /// A profile of `samples` heights with ends at 0.
     pub const fn new(samples: u32, displacement: Displacement) -> Self {
         Self {

@@ -227,10 +227,10 @@ impl EscapeScene {
     }
 
     /// The same view with `shading` (smooth shading keeps the cap within
-    /// [`MAX_SMOOTH_ITERATIONS`](tinyfractal::escape::MAX_SMOOTH_ITERATIONS)).
+    /// [`View::MAX_SMOOTH_ITERATIONS`]).
     pub const fn with_shading(self, shading: Shading) -> Self {
         if let Shading::Smooth = shading {
-            assert!(self.max_iterations <= tinyfractal::escape::MAX_SMOOTH_ITERATIONS);
+            assert!(self.max_iterations <= View::MAX_SMOOTH_ITERATIONS);
         }
         Self { shading, ..self }
     }

@@ -11,17 +11,17 @@ use crate::math::angle::Headings;
 use crate::math::wide::shift_round;
 use crate::math::{Angle, Real};
 
-/// Most modules of the axiom and all successors together.
-pub const MAX_MODULES: usize = 256;
+/// [`ParametricGrammar::MAX_MODULES`], for the crate's own types and arrays.
+pub(crate) const MAX_MODULES: usize = 256;
 
-/// Most parameter expressions of all modules together.
-pub const MAX_ARGUMENTS: usize = 256;
+/// [`ParametricGrammar::MAX_ARGUMENTS`], for the crate's own types and arrays.
+pub(crate) const MAX_ARGUMENTS: usize = 256;
 
-/// Most productions.
-pub const MAX_PRODUCTIONS: usize = 32;
+/// [`ParametricGrammar::MAX_PRODUCTIONS`], for the crate's own types and arrays.
+pub(crate) const MAX_PRODUCTIONS: usize = 32;
 
-/// Most named constants (`define:`).
-pub const MAX_CONSTANTS: usize = 16;
+/// [`ParametricGrammar::MAX_CONSTANTS`], for the crate's own types and arrays.
+pub(crate) const MAX_CONSTANTS: usize = 16;
 
 /// A module of the axiom or a successor: a symbol and its parameter expressions.
 #[derive(Debug, Clone, Copy)]
@@ -168,6 +168,18 @@ pub(super) fn closing(bytes: &[u8], open: usize) -> Option<usize> {
 }
 
 impl ParametricGrammar {
+    /// Most named constants (`define:`).
+    pub const MAX_CONSTANTS: usize = MAX_CONSTANTS;
+
+    /// Most productions.
+    pub const MAX_PRODUCTIONS: usize = MAX_PRODUCTIONS;
+
+    /// Most parameter expressions of all modules together.
+    pub const MAX_ARGUMENTS: usize = MAX_ARGUMENTS;
+
+    /// Most modules of the axiom and all successors together.
+    pub const MAX_MODULES: usize = MAX_MODULES;
+
     /// An empty system.
     pub fn new() -> Self {
         Self {
