@@ -126,6 +126,7 @@ pub mod figure;
 pub mod ifs;
 pub mod lsystem;
 pub mod math;
+pub mod noise;
 pub mod prelude;
 pub mod render;
 pub mod subdivision;

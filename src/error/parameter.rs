@@ -17,6 +17,23 @@ pub enum ParameterError {
         /// The highest order this target (and capacity) allows.
         max: u32,
     },
+    /// A fractal sum of noise takes 1 to `max` octaves.
+    OctavesOutOfRange {
+        /// The count given.
+        octaves: u32,
+        /// The most accepted ([`MAX_OCTAVES`](crate::noise::MAX_OCTAVES)).
+        max: u32,
+    },
+    /// A fractal sum's persistence (gain) is outside [0, 1].
+    PersistenceOutOfRange {
+        /// The value given.
+        persistence: Real,
+    },
+    /// A fractal sum's lacunarity is outside [1, 4].
+    LacunarityOutOfRange {
+        /// The value given.
+        lacunarity: Real,
+    },
     /// The roughness is outside (0, 1].
     RoughnessOutOfRange {
         /// The value given.
@@ -74,6 +91,20 @@ impl fmt::Display for ParameterError {
                 "order {order} is too high: on this target (and within the generator's \
                  capacity) every cell is at least a pixel up to order {max}; lower the order \
                  or draw larger"
+            ),
+            Self::OctavesOutOfRange { octaves, max } => write!(
+                f,
+                "{octaves} octaves is out of range: use 1 to {max} (6 is the classic fBm)"
+            ),
+            Self::PersistenceOutOfRange { persistence } => write!(
+                f,
+                "persistence {persistence} is outside [0, 1]: each octave's amplitude over the \
+                 last one's, e.g. 0.5"
+            ),
+            Self::LacunarityOutOfRange { lacunarity } => write!(
+                f,
+                "lacunarity {lacunarity} is outside [1, 4]: each octave's frequency over the \
+                 last one's, e.g. 2"
             ),
             Self::RoughnessOutOfRange { roughness } => write!(
                 f,

@@ -1,0 +1,290 @@
+//! Ken Perlin's improved noise (2002) in fixed point: his permutation, fade and gradients.
+
+use crate::math::random::Generator;
+use crate::math::Real;
+
+/// Fraction bits of a noise value ([`Sample`]): values lie in about ±1.04, and 29 bits keep
+/// every value the f64 reference computes exactly (see [`Perlin`]).
+pub const SAMPLE_FRAC_BITS: u32 = 29;
+
+/// Fraction bits of a coordinate inside the lattice cell: inputs are taken to 2⁻²⁴, which
+/// moves a value by less than 2⁻²² (the noise's slope is below 3 per unit).
+const CELL_FRAC_BITS: u32 = 24;
+
+/// Fraction bits of a fade weight.
+const FADE_FRAC_BITS: u32 = 30;
+
+/// Perlin's reference permutation of 0..=255, from his 2002 Java implementation.
+const REFERENCE: [u8; 256] = [
+    151, 160, 137, 91, 90, 15, 131, 13, 201, 95, 96, 53, 194, 233, 7, 225, 140, 36, 103, 30, 69,
+    142, 8, 99, 37, 240, 21, 10, 23, 190, 6, 148, 247, 120, 234, 75, 0, 26, 197, 62, 94, 252, 219,
+    203, 117, 35, 11, 32, 57, 177, 33, 88, 237, 149, 56, 87, 174, 20, 125, 136, 171, 168, 68, 175,
+    74, 165, 71, 134, 139, 48, 27, 166, 77, 146, 158, 231, 83, 111, 229, 122, 60, 211, 133, 230,
+    220, 105, 92, 41, 55, 46, 245, 40, 244, 102, 143, 54, 65, 25, 63, 161, 1, 216, 80, 73, 209, 76,
+    132, 187, 208, 89, 18, 169, 200, 196, 135, 130, 116, 188, 159, 86, 164, 100, 109, 198, 173,
+    186, 3, 64, 52, 217, 226, 250, 124, 123, 5, 202, 38, 147, 118, 126, 255, 82, 85, 212, 207, 206,
+    59, 227, 47, 16, 58, 17, 182, 189, 28, 42, 223, 183, 170, 213, 119, 248, 152, 2, 44, 154, 163,
+    70, 221, 153, 101, 155, 167, 43, 172, 9, 129, 22, 39, 253, 19, 98, 108, 110, 79, 113, 224, 232,
+    178, 185, 112, 104, 218, 246, 97, 228, 251, 34, 242, 193, 238, 210, 144, 12, 191, 179, 162,
+    241, 81, 51, 145, 235, 249, 14, 239, 107, 49, 192, 214, 31, 181, 199, 106, 157, 184, 84, 204,
+    176, 115, 121, 50, 45, 127, 4, 150, 254, 138, 236, 205, 93, 222, 114, 67, 29, 24, 72, 243, 141,
+    128, 195, 78, 66, 215, 61, 156, 180,
+];
+
+/// Perlin's twelve gradients, the midpoints of a cube's edges, padded to sixteen by
+/// repeating four (his `grad` with `h = hash & 15`): `(gx, gy, gz)` in −1, 0, 1.
+const GRADIENTS: [(i8, i8, i8); 16] = [
+    (1, 1, 0),
+    (-1, 1, 0),
+    (1, -1, 0),
+    (-1, -1, 0),
+    (1, 0, 1),
+    (-1, 0, 1),
+    (1, 0, -1),
+    (-1, 0, -1),
+    (0, 1, 1),
+    (0, -1, 1),
+    (0, 1, -1),
+    (0, -1, -1),
+    (1, 1, 0),
+    (0, -1, 1),
+    (-1, 1, 0),
+    (0, -1, -1),
+];
+
+/// A noise value: [`SAMPLE_FRAC_BITS`] fraction bits in an `i32`, about ±1.04 at most.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
+pub struct Sample(pub i32);
+
+impl Sample {
+    /// The value as a [`Real`], exactly.
+    pub const fn to_real(self) -> Real {
+        Real::from_bits((self.0 as i64) << (Real::FRAC_BITS - SAMPLE_FRAC_BITS))
+    }
+
+    /// The value as an `f64`, exactly.
+    pub fn to_f64(self) -> f64 {
+        f64::from(self.0) / f64::from(1u32 << SAMPLE_FRAC_BITS)
+    }
+
+    /// Writes every digit of the value: a sample is a multiple of 2⁻²⁹, so its decimal
+    /// expansion ends within 29 places (`-0.25`, `0.136919975280761718750`).
+    pub fn write_exact(self, out: &mut impl core::fmt::Write) -> core::fmt::Result {
+        let magnitude = self.0.unsigned_abs();
+        if self.0 < 0 {
+            out.write_char('-')?;
+        }
+        let whole = magnitude >> SAMPLE_FRAC_BITS;
+        write!(out, "{whole}")?;
+        // The fraction times 10 each place: below 2²⁹ · 10 < 2³³, so it needs 64 bits.
+        let mut fraction = u64::from(magnitude & ((1 << SAMPLE_FRAC_BITS) - 1));
+        if fraction != 0 {
+            out.write_char('.')?;
+        }
+        while fraction != 0 {
+            fraction *= 10;
+            let digit = (fraction >> SAMPLE_FRAC_BITS) as u8;
+            out.write_char(char::from(b'0' + digit))?;
+            fraction &= (1 << SAMPLE_FRAC_BITS) - 1;
+        }
+        Ok(())
+    }
+}
+
+/// Ken Perlin's improved noise: his permutation (seed 0) or a seeded shuffle of it, 256
+/// bytes.
+///
+/// The value is his, computed in fixed point: inputs are taken to 2⁻²⁴, each fade weight
+/// carries 30 fraction bits and each interpolated value 29, with every product taken in 64
+/// bits. Where 29 fraction bits hold his value, the samples are the f64 reference's values
+/// exactly: at multiples of ¼ in 2D and of ½ in 3D (noise(0.5, 0.5, 0.5) = −0.25); elsewhere
+/// they are within 2⁻²⁰ of the reference (`tests/noise.rs` checks both against an f64 model
+/// written there).
+// 256 bytes: a copy should be asked for (`clone`), not made by a move.
+#[allow(missing_copy_implementations)]
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Perlin {
+    permutation: [u8; 256],
+}
+
+impl Default for Perlin {
+    fn default() -> Self {
+        Self::reference()
+    }
+}
+
+impl Perlin {
+    /// Perlin's own permutation: the reference values.
+    pub const fn reference() -> Self {
+        Self {
+            permutation: REFERENCE,
+        }
+    }
+
+    /// The permutation for `seed`: Perlin's own for 0, otherwise his shuffled by the seeded
+    /// generator (Fisher–Yates), the same on every target.
+    pub fn seeded(seed: u32) -> Self {
+        let mut permutation = REFERENCE;
+        if seed != 0 {
+            let mut generator = Generator::new(u64::from(seed));
+            for i in (1..permutation.len()).rev() {
+                // A draw below 2³² mapped onto 0..=i by a multiply: unbiased enough for a
+                // shuffle, and the same on every target.
+                let j = ((u64::from(generator.next_u32()) * (i as u64 + 1)) >> 32) as usize;
+                permutation.swap(i, j);
+            }
+        }
+        Self { permutation }
+    }
+
+    /// The permutation: a lattice point's hash is looked up here, as in Perlin's code.
+    pub const fn permutation(&self) -> &[u8; 256] {
+        &self.permutation
+    }
+
+    /// The permutation's entry for a lattice index (taken modulo 256, as Perlin's doubled
+    /// table does).
+    #[inline(always)]
+    fn hash(&self, index: i32) -> i32 {
+        // Masked to the table's length, so the lookup always finds its entry.
+        let entry = self.permutation.get((index & 255) as usize);
+        i32::from(entry.copied().unwrap_or(0))
+    }
+
+    /// The noise at (`x`, `y`, `z`).
+    pub fn noise3(&self, x: Real, y: Real, z: Real) -> Sample {
+        let (xi, xf) = cell(x);
+        let (yi, yf) = cell(y);
+        let (zi, zf) = cell(z);
+        let (u, v, w) = (fade(xf), fade(yf), fade(zf));
+        let a = self.hash(xi) + yi;
+        let (aa, ab) = (self.hash(a) + zi, self.hash(a + 1) + zi);
+        let b = self.hash(xi + 1) + yi;
+        let (ba, bb) = (self.hash(b) + zi, self.hash(b + 1) + zi);
+        let one = 1 << CELL_FRAC_BITS;
+        let corner = |hash: i32, dx: i32, dy: i32, dz: i32| gradient(self.hash(hash), dx, dy, dz);
+        let near = lerp(
+            v,
+            lerp(u, corner(aa, xf, yf, zf), corner(ba, xf - one, yf, zf)),
+            lerp(
+                u,
+                corner(ab, xf, yf - one, zf),
+                corner(bb, xf - one, yf - one, zf),
+            ),
+        );
+        let far = lerp(
+            v,
+            lerp(
+                u,
+                corner(aa + 1, xf, yf, zf - one),
+                corner(ba + 1, xf - one, yf, zf - one),
+            ),
+            lerp(
+                u,
+                corner(ab + 1, xf, yf - one, zf - one),
+                corner(bb + 1, xf - one, yf - one, zf - one),
+            ),
+        );
+        Sample(lerp(w, near, far))
+    }
+
+    /// The noise at (`x`, `y`): Perlin's noise at z = 0, where the far layer of the cell has
+    /// no weight, computed from the near layer's four corners.
+    pub fn noise2(&self, x: Real, y: Real) -> Sample {
+        let (xi, xf) = cell(x);
+        let (yi, yf) = cell(y);
+        let (u, v) = (fade(xf), fade(yf));
+        let a = self.hash(xi) + yi;
+        let b = self.hash(xi + 1) + yi;
+        let one = 1 << CELL_FRAC_BITS;
+        // z = 0: the corner's hash is the permutation of its (x, y) hash plus 0.
+        let corner = |hash: i32, dx: i32, dy: i32| gradient(self.hash(self.hash(hash)), dx, dy, 0);
+        Sample(lerp(
+            v,
+            lerp(u, corner(a, xf, yf), corner(b, xf - one, yf)),
+            lerp(
+                u,
+                corner(a + 1, xf, yf - one),
+                corner(b + 1, xf - one, yf - one),
+            ),
+        ))
+    }
+}
+
+/// A coordinate's lattice cell and its place in the cell in 2⁻²⁴ (rounded to nearest).
+#[inline(always)]
+fn cell(value: Real) -> (i32, i32) {
+    let shift = Real::FRAC_BITS - CELL_FRAC_BITS;
+    let bits = (value.to_bits() + (1 << (shift - 1))) >> shift;
+    // The floor's low bits are all a hash needs; the wrap above 2³¹ cells keeps them.
+    (
+        (bits >> CELL_FRAC_BITS) as i32,
+        (bits & ((1 << CELL_FRAC_BITS) - 1)) as i32,
+    )
+}
+
+/// Perlin's fade 6t⁵ − 15t⁴ + 10t³ of `t` (2⁻²⁴ units, 0 ≤ t < 1), in 2⁻³⁰, by Horner's rule.
+/// Each product is exact while t has at most 6 fraction bits; past that each rounds down by
+/// less than 2⁻³⁰.
+#[inline(always)]
+pub(crate) fn fade(t: i32) -> i32 {
+    let t = i64::from(t);
+    // 6t² − 15t + 10 in 2⁻⁴⁸ (below 2⁵²), taken to 2⁻³⁰.
+    let inner = (t * (6 * t - (15 << CELL_FRAC_BITS)) + (10 << (2 * CELL_FRAC_BITS)))
+        >> (2 * CELL_FRAC_BITS - FADE_FRAC_BITS);
+    // Times t three times, each product below 2⁵⁸ and taken back to 2⁻³⁰.
+    let cubic = (t * inner) >> CELL_FRAC_BITS;
+    let quartic = (t * cubic) >> CELL_FRAC_BITS;
+    ((t * quartic) >> CELL_FRAC_BITS) as i32
+}
+
+/// The dot product of the gradient `hash` picks with the offset (`dx`, `dy`, `dz`) (2⁻²⁴
+/// units) in 2⁻²⁹.
+#[inline(always)]
+fn gradient(hash: i32, dx: i32, dy: i32, dz: i32) -> i32 {
+    let (gx, gy, gz) = GRADIENTS
+        .get((hash & 15) as usize)
+        .copied()
+        .unwrap_or_default();
+    // Two of the three are nonzero, each offset within ±1: the dot is within ±2.
+    let dot = i32::from(gx) * dx + i32::from(gy) * dy + i32::from(gz) * dz;
+    dot << (SAMPLE_FRAC_BITS - CELL_FRAC_BITS)
+}
+
+/// `a + t(b − a)`, `t` in 2⁻³⁰, `a` and `b` in 2⁻²⁹ within ±2, rounded to nearest.
+#[inline(always)]
+fn lerp(t: i32, a: i32, b: i32) -> i32 {
+    let step = i64::from(t) * (i64::from(b) - i64::from(a));
+    a + ((step + (1 << (FADE_FRAC_BITS - 1))) >> FADE_FRAC_BITS) as i32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Perlin's fade at ¾, as published: 0.896484375, exactly.
+    #[test]
+    fn fade_is_perlins_quintic() {
+        let three_quarters = 3 << (CELL_FRAC_BITS - 2);
+        assert_eq!(
+            f64::from(fade(three_quarters)) / f64::from(1u32 << FADE_FRAC_BITS),
+            0.896484375
+        );
+        assert_eq!(fade(0), 0);
+        assert_eq!(fade(1 << (CELL_FRAC_BITS - 1)), 1 << (FADE_FRAC_BITS - 1));
+    }
+
+    /// The exact digits of a sample end where its bits do.
+    #[test]
+    fn samples_print_every_digit() {
+        let text = |bits: i32| {
+            let mut out = heapless::String::<48>::new();
+            Sample(bits).write_exact(&mut out).unwrap();
+            out
+        };
+        assert_eq!(text(-(1 << (SAMPLE_FRAC_BITS - 2))), "-0.25");
+        assert_eq!(text(1 << SAMPLE_FRAC_BITS), "1");
+        assert_eq!(text(1), "0.00000000186264514923095703125");
+        assert_eq!(text(0), "0");
+    }
+}

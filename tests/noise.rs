@@ -1,0 +1,278 @@
+//! Perlin noise against his published values and an f64 model of his 2002 code written
+//! here: exact where f64 computes exactly, within 2⁻²⁰ elsewhere; the fractal sums against
+//! f64 sums of the model.
+
+use tinyfractal::{
+    error::ParameterError,
+    noise::{Octaves, Perlin, Sum, MAX_OCTAVES},
+    Error, Real,
+};
+
+/// Perlin's improved noise as he wrote it (Java, 2002), in f64, over a permutation `p`.
+fn model(p: &[u8; 256], x: f64, y: f64, z: f64) -> f64 {
+    let perm = |i: i64| i64::from(p[(i & 255) as usize]);
+    let fade = |t: f64| t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    let lerp = |t: f64, a: f64, b: f64| a + t * (b - a);
+    let grad = |hash: i64, x: f64, y: f64, z: f64| {
+        let h = hash & 15;
+        let u = if h < 8 { x } else { y };
+        let v = if h < 4 {
+            y
+        } else if h == 12 || h == 14 {
+            x
+        } else {
+            z
+        };
+        (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
+    };
+    let (fx, fy, fz) = (x.floor(), y.floor(), z.floor());
+    let (xi, yi, zi) = (fx as i64, fy as i64, fz as i64);
+    let (x, y, z) = (x - fx, y - fy, z - fz);
+    let (u, v, w) = (fade(x), fade(y), fade(z));
+    let a = perm(xi) + yi;
+    let (aa, ab) = (perm(a) + zi, perm(a + 1) + zi);
+    let b = perm(xi + 1) + yi;
+    let (ba, bb) = (perm(b) + zi, perm(b + 1) + zi);
+    lerp(
+        w,
+        lerp(
+            v,
+            lerp(u, grad(perm(aa), x, y, z), grad(perm(ba), x - 1.0, y, z)),
+            lerp(
+                u,
+                grad(perm(ab), x, y - 1.0, z),
+                grad(perm(bb), x - 1.0, y - 1.0, z),
+            ),
+        ),
+        lerp(
+            v,
+            lerp(
+                u,
+                grad(perm(aa + 1), x, y, z - 1.0),
+                grad(perm(ba + 1), x - 1.0, y, z - 1.0),
+            ),
+            lerp(
+                u,
+                grad(perm(ab + 1), x, y - 1.0, z - 1.0),
+                grad(perm(bb + 1), x - 1.0, y - 1.0, z - 1.0),
+            ),
+        ),
+    )
+}
+
+fn real(value: f64) -> Real {
+    Real::from_f64(value).unwrap()
+}
+
+/// How far from the model a sample may be where f64 rounds: 2⁻²⁰.
+const TOLERANCE: f64 = 1.0 / (1u32 << 20) as f64;
+
+/// A small deterministic stream of points (xorshift64), independent of the crate's.
+fn points(count: usize, span: f64) -> impl Iterator<Item = (f64, f64, f64)> {
+    let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 * span - span
+    };
+    (0..count).map(move |_| (next(), next(), next()))
+}
+
+#[test]
+fn the_published_values() {
+    let noise = Perlin::reference();
+    let close = |got: f64, published: f64| {
+        assert!(
+            (got - published).abs() <= TOLERANCE,
+            "{got} is not {published}"
+        )
+    };
+    // 3.14 as Perlin's example writes it, not π.
+    let x = Real::parse_signed("3.14").unwrap();
+    close(
+        noise.noise3(x, real(42.0), real(7.0)).to_f64(),
+        0.136_919_958_784_000_12,
+    );
+    close(
+        noise.noise3(real(-4.2), real(10.0), real(6.0)).to_f64(),
+        0.142_08,
+    );
+    assert_eq!(
+        noise.noise3(real(0.5), real(0.5), real(0.5)).to_f64(),
+        -0.25
+    );
+}
+
+#[test]
+fn exact_where_f64_is_exact() {
+    let noise = Perlin::reference();
+    let p = noise.permutation();
+    // 2D at multiples of ¼ and 3D at multiples of ½, across cells and signs.
+    for i in -40..40 {
+        for j in -40..40 {
+            let (x, y) = (f64::from(i) / 4.0, f64::from(j) / 4.0);
+            assert_eq!(
+                noise.noise2(real(x), real(y)).to_f64(),
+                model(p, x, y, 0.0),
+                "({x}, {y})"
+            );
+        }
+    }
+    for i in -12..12 {
+        for j in -12..12 {
+            for k in -12..12 {
+                let (x, y, z) = (f64::from(i) / 2.0, f64::from(j) / 2.0, f64::from(k) / 2.0);
+                assert_eq!(
+                    noise.noise3(real(x), real(y), real(z)).to_f64(),
+                    model(p, x, y, z),
+                    "({x}, {y}, {z})"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn within_two_to_the_minus_twenty_everywhere() {
+    for seed in [0, 1, 7] {
+        let noise = Perlin::seeded(seed);
+        let p = noise.permutation();
+        let mut worst: f64 = 0.0;
+        for (x, y, z) in points(20_000, 300.0) {
+            let three = noise.noise3(real(x), real(y), real(z)).to_f64();
+            let two = noise.noise2(real(x), real(y)).to_f64();
+            worst = worst
+                .max((three - model(p, x, y, z)).abs())
+                .max((two - model(p, x, y, 0.0)).abs());
+        }
+        assert!(worst <= TOLERANCE, "seed {seed}: off by {worst}");
+    }
+}
+
+#[test]
+fn seeds_shuffle_perlins_permutation() {
+    assert_eq!(Perlin::seeded(0), Perlin::reference());
+    let mut seen = [false; 256];
+    for &value in Perlin::reference().permutation() {
+        seen[usize::from(value)] = true;
+    }
+    assert!(
+        seen.iter().all(|&seen| seen),
+        "the reference is a permutation"
+    );
+    for seed in [1, 2, 0xFFFF_FFFF] {
+        let shuffled = Perlin::seeded(seed);
+        let mut sorted = *shuffled.permutation();
+        sorted.sort_unstable();
+        assert!(sorted.iter().enumerate().all(|(i, &v)| usize::from(v) == i));
+        assert_ne!(shuffled, Perlin::reference(), "seed {seed}");
+        assert_eq!(
+            shuffled,
+            Perlin::seeded(seed),
+            "seed {seed} is deterministic"
+        );
+    }
+    assert_ne!(Perlin::seeded(1), Perlin::seeded(2));
+}
+
+/// The f64 sum of the model's octaves, as `Octaves::sum` documents it.
+fn model_sum(p: &[u8; 256], octaves: &Octaves, sum: Sum, (x, y, z): (f64, f64, f64)) -> f64 {
+    let (persistence, lacunarity) = (octaves.persistence.to_f64(), octaves.lacunarity.to_f64());
+    let (mut total, mut amplitude, mut frequency, mut weight) = (0.0, 1.0, 1.0, 1.0);
+    for _ in 0..octaves.octaves {
+        let value = model(p, x * frequency, y * frequency, z * frequency);
+        total += amplitude
+            * match sum {
+                Sum::Fbm => value,
+                Sum::Turbulence => value.abs(),
+                Sum::Ridged => {
+                    let signal = (1.0 - value.abs()).powi(2);
+                    let term = signal * weight;
+                    weight = (signal * 2.0).clamp(0.0, 1.0);
+                    term
+                }
+            };
+        amplitude *= persistence;
+        frequency *= lacunarity;
+    }
+    total
+}
+
+#[test]
+fn fractal_sums_follow_an_f64_sum() {
+    let noise = Perlin::seeded(3);
+    let p = noise.permutation();
+    let octaves = Octaves::default();
+    for sum in [Sum::Fbm, Sum::Turbulence, Sum::Ridged] {
+        for (x, y, z) in points(2_000, 4.0) {
+            let got = octaves
+                .sum(&noise, sum, (real(x), real(y), Some(real(z))))
+                .unwrap()
+                .to_f64();
+            let flat = octaves
+                .sum(&noise, sum, (real(x), real(y), None))
+                .unwrap()
+                .to_f64();
+            let want = model_sum(p, &octaves, sum, (x, y, z));
+            let want_flat = model_sum(p, &octaves, sum, (x, y, 0.0));
+            // Six octaves of 2⁻²⁰ each (the ridge squares: twice), and Real's rounding.
+            let tolerance = 16.0 * TOLERANCE;
+            assert!(
+                (got - want).abs() <= tolerance,
+                "{sum:?} at ({x}, {y}, {z})"
+            );
+            assert!(
+                (flat - want_flat).abs() <= tolerance,
+                "{sum:?} at ({x}, {y})"
+            );
+        }
+    }
+}
+
+#[test]
+fn octaves_out_of_range_are_typed_errors() {
+    let noise = Perlin::reference();
+    let at = (Real::ZERO, Real::ZERO, None);
+    let with = |octaves: u32, persistence: f64, lacunarity: f64| {
+        Octaves {
+            octaves,
+            persistence: real(persistence),
+            lacunarity: real(lacunarity),
+        }
+        .sum(&noise, Sum::Fbm, at)
+    };
+    assert_eq!(
+        with(0, 0.5, 2.0),
+        Err(Error::Parameter(ParameterError::OctavesOutOfRange {
+            octaves: 0,
+            max: MAX_OCTAVES
+        }))
+    );
+    assert!(matches!(
+        with(MAX_OCTAVES + 1, 0.5, 2.0),
+        Err(Error::Parameter(ParameterError::OctavesOutOfRange { .. }))
+    ));
+    assert!(matches!(
+        with(4, 1.5, 2.0),
+        Err(Error::Parameter(
+            ParameterError::PersistenceOutOfRange { .. }
+        ))
+    ));
+    assert!(matches!(
+        with(4, 0.5, 0.5),
+        Err(Error::Parameter(
+            ParameterError::LacunarityOutOfRange { .. }
+        ))
+    ));
+    assert!(with(MAX_OCTAVES, 1.0, 4.0).is_ok());
+    // Coordinates a fine octave takes past Real's range: an overflow, not a wrapped value.
+    let far = Octaves {
+        octaves: MAX_OCTAVES,
+        persistence: real(0.5),
+        lacunarity: real(4.0),
+    };
+    assert!(far
+        .sum(&noise, Sum::Fbm, (real(1.0e6), Real::ZERO, None))
+        .is_err());
+}
