@@ -18,6 +18,7 @@ use crate::escape_scene::{EscapeOptions, JuliaOptions};
 use crate::figure_scene::{render_figure, FigureOptions};
 use crate::ifs_scene::{render_gingerbread, render_ifs, GingerbreadOptions, IfsOptions};
 use crate::lsystem_scene::LSystemOptions;
+use crate::noise_scene::NoiseOptions;
 use crate::shape_scene::{
     render_carpet, render_cube, render_gasket, render_terrain, render_terrain2d, CubeOptions,
     OrderOptions, Terrain2dOptions, TerrainOptions,
@@ -49,6 +50,8 @@ enum Commands {
     Derive(DeriveOptions),
     /// The box-counting dimension of a PNG's pixels that are not the background
     Dimension(DimensionOptions),
+    /// Perlin noise at points, one a line: every digit of the engine's value
+    Noise(NoiseOptions),
     /// The systems in a .l or .lsys file, one name a line
     List {
         /// The .l file
@@ -132,6 +135,7 @@ impl Commands {
             Self::Render { scene } => scene.run(),
             Self::Derive(options) => options.run(),
             Self::Dimension(options) => options.run(),
+            Self::Noise(options) => options.run(),
             Self::List { file } => Ok(crate::systems::list(&file)?),
             Self::Gallery { out } => Ok(crate::gallery::run(&out)?),
             Self::Animate(options) => options.run(),

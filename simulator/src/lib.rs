@@ -17,6 +17,7 @@ pub mod files;
 pub mod gallery;
 pub(crate) mod ifs_scene;
 pub(crate) mod lsystem_scene;
+pub(crate) mod noise_scene;
 pub(crate) mod output;
 pub(crate) mod palette;
 pub(crate) mod progress;

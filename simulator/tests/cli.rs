@@ -1927,3 +1927,46 @@ fn animate_writes_its_frames_first_and_last_as_headless_renders() {
     let zero = run(&["animate", "figure", "--frames", "0"]);
     assert_eq!(zero.status.code(), Some(2));
 }
+
+/// `noise --at` prints Perlin's published values, one a line in the order given, with every
+/// digit of the engine's value (his exact one where f64 has it).
+#[test]
+fn noise_prints_perlins_values_at_each_point() {
+    let output = run(&[
+        "noise",
+        "--at",
+        "3.14,42,7",
+        "--at",
+        "-4.2,10,6",
+        "--at",
+        "0.5,0.5,0.5",
+        "--at",
+        "0.5,0.5",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 4, "{text}");
+    let value = |line: &str| line.parse::<f64>().unwrap();
+    assert!(
+        (value(lines[0]) - 0.136_919_958_784_000_12).abs() < 1e-6,
+        "{text}"
+    );
+    assert!((value(lines[1]) - 0.142_08).abs() < 1e-6, "{text}");
+    assert_eq!(lines[2], "-0.25");
+    // 2D is Perlin's noise at z = 0.
+    let flat = stdout(&run(&["noise", "--at", "0.5,0.5,0"]));
+    assert_eq!(format!("{}\n", lines[3]), flat);
+    // A seed changes the permutation, and so the values (at a point inside a cell: on its
+    // edges few gradients count, and two permutations often agree there).
+    let inside = |seed: &str| stdout(&run(&["noise", "--at", "0.3,0.7,0.1", "--seed", seed]));
+    assert_ne!(inside("5"), inside("0"));
+    assert_eq!(inside("5"), inside("5"));
+    for bad in [["--at", "1,2,3,4"], ["--at", "x,1"]] {
+        let mut args = vec!["noise"];
+        args.extend(bad);
+        let output = run(&args);
+        assert_eq!(output.status.code(), Some(2), "{bad:?}");
+        assert!(stderr(&output).contains("--at"), "{bad:?}");
+    }
+}
