@@ -276,3 +276,141 @@ fn octaves_out_of_range_are_typed_errors() {
         .sum(&noise, Sum::Fbm, (real(1.0e6), Real::ZERO, None))
         .is_err());
 }
+
+mod textures {
+    use super::{model, model_sum, points, real};
+    use embedded_graphics::{
+        mock_display::MockDisplay, pixelcolor::Gray8, prelude::*, primitives::Rectangle,
+    };
+    use tinyfractal::{
+        error::{FitError, ParameterError},
+        noise::{NoiseTexture, Octaves, Perlin, Sum, Texture},
+        render::Palette,
+        Error, Real,
+    };
+
+    /// Each texture's value in [0, 1] as its documentation states it, from the f64 model.
+    fn model_value(p: &[u8; 256], texture: Texture, octaves: &Octaves, (x, y): (f64, f64)) -> f64 {
+        let amplitudes: f64 = (0..octaves.octaves)
+            .map(|i| octaves.persistence.to_f64().powi(i as i32))
+            .sum();
+        let sum = |sum: Sum| model_sum(p, octaves, sum, (x, y, 0.0)) / amplitudes;
+        let centred = |value: f64| ((value + 1.0) / 2.0).clamp(0.0, 1.0);
+        match texture {
+            Texture::Perlin => centred(model(p, x, y, 0.0)),
+            Texture::Fbm | Texture::Clouds => centred(sum(Sum::Fbm)),
+            Texture::Turbulence => sum(Sum::Turbulence).clamp(0.0, 1.0),
+            Texture::Ridged => sum(Sum::Ridged).clamp(0.0, 1.0),
+            Texture::Marble => {
+                let turbulence = model_sum(p, octaves, Sum::Turbulence, (x, y, 0.0));
+                (1.0 + (2.0 * std::f64::consts::PI * (x + turbulence)).sin()) / 2.0
+            }
+            Texture::Wood => (8.0 * (model(p, x, y, 0.0) + 1.0)).fract(),
+        }
+    }
+
+    #[test]
+    fn values_follow_the_documented_formulas() {
+        let noise = Perlin::seeded(11);
+        let p = noise.permutation();
+        let octaves = Octaves::default();
+        for texture in [
+            Texture::Perlin,
+            Texture::Fbm,
+            Texture::Clouds,
+            Texture::Turbulence,
+            Texture::Ridged,
+            Texture::Marble,
+            Texture::Wood,
+        ] {
+            for (x, y, _) in points(1_000, 6.0) {
+                let got = texture
+                    .value(&noise, &octaves, (real(x), real(y), None))
+                    .unwrap()
+                    .to_f64();
+                let want = model_value(p, texture, &octaves, (x, y));
+                // Wood's fraction wraps: compare around the circle.
+                let off = (got - want).abs();
+                let off = if texture == Texture::Wood {
+                    off.min(1.0 - off)
+                } else {
+                    off
+                };
+                assert!(
+                    off < 1e-5,
+                    "{texture:?} at ({x}, {y}): {got} against {want}"
+                );
+                assert!((0.0..=1.0).contains(&got), "{texture:?}: {got}");
+            }
+        }
+    }
+
+    /// Level `l` in grey `l`.
+    struct Levels;
+
+    impl Palette for Levels {
+        type Color = Gray8;
+
+        fn color(&self, value: u16, _max: u16) -> Gray8 {
+            Gray8::new(value as u8)
+        }
+    }
+
+    #[test]
+    fn a_drawing_covers_its_area_once_with_each_pixels_level() {
+        let noise = Perlin::reference();
+        let texture = NoiseTexture::new(&noise, Texture::Marble).with_scale(real(3.0));
+        let area = Rectangle::new(Point::zero(), Size::new(48, 32));
+        let drawing = texture.fit(area, Levels).unwrap();
+        let mut display = MockDisplay::<Gray8>::new();
+        drawing.draw(&mut display).unwrap();
+        let p = noise.permutation();
+        for y in 0..32 {
+            for x in 0..48 {
+                let level = drawing.level_at(x, y);
+                assert_eq!(
+                    display.get_pixel(Point::new(x as i32, y as i32)),
+                    Some(Gray8::new(level))
+                );
+                // Pixel (x, y) samples its top-left corner, scale / width units a pixel.
+                let at = (3.0 * f64::from(x) / 48.0, 3.0 * f64::from(y) / 48.0);
+                let want = model_value(p, Texture::Marble, &Octaves::default(), at) * 255.0;
+                assert!((f64::from(level) - want).abs() <= 0.51, "({x}, {y})");
+            }
+        }
+    }
+
+    #[test]
+    fn bad_textures_are_typed_errors() {
+        let noise = Perlin::reference();
+        let area = Rectangle::new(Point::zero(), Size::new(16, 16));
+        let texture = NoiseTexture::new(&noise, Texture::Fbm);
+        assert!(matches!(
+            texture.clone().with_scale(Real::ZERO).fit(area, Levels),
+            Err(Error::Parameter(ParameterError::ScaleNotPositive { .. }))
+        ));
+        assert!(matches!(
+            texture.clone().fit(Rectangle::zero(), Levels),
+            Err(Error::Fit(FitError::ZeroSizeTarget))
+        ));
+        let too_many = Octaves {
+            octaves: 40,
+            ..Octaves::default()
+        };
+        assert!(matches!(
+            texture.clone().with_octaves(too_many).fit(area, Levels),
+            Err(Error::Parameter(ParameterError::OctavesOutOfRange { .. }))
+        ));
+        // A picture whose finest octave leaves Real's range is refused before drawing.
+        let fine = Octaves {
+            octaves: 16,
+            persistence: real(0.5),
+            lacunarity: real(4.0),
+        };
+        assert!(texture
+            .with_octaves(fine)
+            .with_scale(real(1000.0))
+            .fit(area, Levels)
+            .is_err());
+    }
+}

@@ -34,6 +34,11 @@ pub enum ParameterError {
         /// The value given.
         lacunarity: Real,
     },
+    /// A texture's scale (lattice cells across the picture) is not positive.
+    ScaleNotPositive {
+        /// The value given.
+        scale: Real,
+    },
     /// The roughness is outside (0, 1].
     RoughnessOutOfRange {
         /// The value given.
@@ -105,6 +110,10 @@ impl fmt::Display for ParameterError {
                 f,
                 "lacunarity {lacunarity} is outside [1, 4]: each octave's frequency over the \
                  last one's, e.g. 2"
+            ),
+            Self::ScaleNotPositive { scale } => write!(
+                f,
+                "scale {scale} is not positive: give the lattice cells across the picture, e.g. 4"
             ),
             Self::RoughnessOutOfRange { roughness } => write!(
                 f,

@@ -23,6 +23,8 @@
 
 mod fractal;
 mod perlin;
+mod texture;
 
 pub use fractal::{Octaves, Sum, MAX_OCTAVES};
 pub use perlin::{Perlin, Sample, SAMPLE_FRAC_BITS};
+pub use texture::{NoiseDrawing, NoiseTexture, Texture, LEVELS};

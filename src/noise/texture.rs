@@ -1,0 +1,255 @@
+//! Perlin's textures: noise and its sums turned into a level of a palette, and drawn.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::fractal::{Octaves, Sum};
+use super::perlin::Perlin;
+use crate::error::{Error, FitError, ParameterError};
+use crate::math::trig::BinaryAngle;
+use crate::math::{Overflow, Real};
+use crate::render::palette::Palette;
+
+/// Levels a texture takes, 0 to 255: a palette of 256 entries shows each one.
+pub const LEVELS: u16 = 256;
+
+/// How a texture turns noise into a value in [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Texture {
+    /// One octave: (noise + 1) / 2.
+    Perlin,
+    /// Fractional Brownian motion: (fBm / Σaⁱ + 1) / 2.
+    Fbm,
+    /// Turbulence: Σaⁱ·|noise| / Σaⁱ.
+    Turbulence,
+    /// Musgrave's ridged multifractal, over Σaⁱ.
+    Ridged,
+    /// fBm as the sky: the same values as [`Fbm`](Self::Fbm), for a sky palette.
+    Clouds,
+    /// Perlin's marble: (1 + sin 2π(x + turbulence)) / 2, veins along y bent by turbulence.
+    Marble,
+    /// Perlin's wood: the fraction of 8·(noise + 1), rings of grain.
+    Wood,
+}
+
+impl Texture {
+    /// The texture's value at `point` (2D where z is `None`), in [0, 1].
+    pub fn value(
+        self,
+        noise: &Perlin,
+        octaves: &Octaves,
+        point: (Real, Real, Option<Real>),
+    ) -> Result<Real, Error> {
+        let half = Real::from_bits(1 << (Real::FRAC_BITS - 1));
+        let sample = || match point.2 {
+            Some(z) => noise.noise3(point.0, point.1, z),
+            None => noise.noise2(point.0, point.1),
+        };
+        let sum = |sum: Sum| -> Result<Real, Error> {
+            let total = octaves.sum(noise, sum, point)?;
+            total
+                .checked_div(amplitudes(octaves)?)
+                .ok_or(Error::from(Overflow))
+        };
+        let unit = |value: Real| value.clamp(Real::ZERO, Real::ONE);
+        let centred = |value: Real| -> Result<Real, Error> {
+            let shifted = value.checked_add(Real::ONE).ok_or(Overflow)?;
+            Ok(unit(shifted.checked_mul(half).ok_or(Overflow)?))
+        };
+        match self {
+            Self::Perlin => centred(sample().to_real()),
+            Self::Fbm | Self::Clouds => centred(sum(Sum::Fbm)?),
+            Self::Turbulence => Ok(unit(sum(Sum::Turbulence)?)),
+            Self::Ridged => Ok(unit(sum(Sum::Ridged)?)),
+            Self::Marble => {
+                let turbulence = octaves.sum(noise, Sum::Turbulence, point)?;
+                // Turns of the sine: its fraction is a binary angle.
+                let turns = point.0.checked_add(turbulence).ok_or(Overflow)?;
+                let angle = BinaryAngle(turns.to_bits() as u32);
+                let (_, sin) = angle.cos_sin();
+                // sin in 2⁻³⁰: (1 + sin) / 2 in 2⁻³¹, to 2⁻³².
+                let level = ((1_i64 << 30) + i64::from(sin)) << 1;
+                Ok(unit(Real::from_bits(level)))
+            }
+            Self::Wood => {
+                let grain = sample()
+                    .to_real()
+                    .checked_add(Real::ONE)
+                    .and_then(|value| value.checked_mul(Real::from_int(8)))
+                    .ok_or(Overflow)?;
+                Ok(Real::from_bits(
+                    grain.to_bits() & ((1 << Real::FRAC_BITS) - 1),
+                ))
+            }
+        }
+    }
+
+    /// The texture's level at `point`, 0 to 255: its value times 255, rounded.
+    pub fn level(
+        self,
+        noise: &Perlin,
+        octaves: &Octaves,
+        point: (Real, Real, Option<Real>),
+    ) -> Result<u8, Error> {
+        let value = self.value(noise, octaves, point)?;
+        Ok(level_of(value))
+    }
+}
+
+/// A value in [0, 1] as a level 0 to 255, rounded to nearest.
+fn level_of(value: Real) -> u8 {
+    let scaled = i128::from(value.to_bits()) * i128::from(LEVELS - 1);
+    let rounded = (scaled + (1 << (Real::FRAC_BITS - 1))) >> Real::FRAC_BITS;
+    rounded.clamp(0, i128::from(LEVELS - 1)) as u8
+}
+
+/// Σaⁱ over the octaves: what a sum is divided by to stay within [−1, 1].
+fn amplitudes(octaves: &Octaves) -> Result<Real, Error> {
+    let (mut total, mut amplitude) = (Real::ZERO, Real::ONE);
+    for _ in 0..octaves.octaves {
+        total = total.checked_add(amplitude).ok_or(Overflow)?;
+        amplitude = amplitude.checked_mul(octaves.persistence).ok_or(Overflow)?;
+    }
+    Ok(total)
+}
+
+/// A texture over a picture: `scale` lattice cells across its width, at depth `z` (3D
+/// noise) or in the plane.
+#[derive(Debug, Clone)]
+pub struct NoiseTexture<'a> {
+    noise: &'a Perlin,
+    texture: Texture,
+    octaves: Octaves,
+    scale: Real,
+    z: Option<Real>,
+}
+
+impl<'a> NoiseTexture<'a> {
+    /// `texture` of `noise`, four lattice cells across, in the plane, six octaves.
+    pub fn new(noise: &'a Perlin, texture: Texture) -> Self {
+        Self {
+            noise,
+            texture,
+            octaves: Octaves::default(),
+            scale: Real::from_int(4),
+            z: None,
+        }
+    }
+
+    /// The same with these octaves (for the sums, marble's turbulence).
+    #[must_use]
+    pub fn with_octaves(self, octaves: Octaves) -> Self {
+        Self { octaves, ..self }
+    }
+
+    /// The same with `scale` lattice cells across the picture's width.
+    #[must_use]
+    pub fn with_scale(self, scale: Real) -> Self {
+        Self { scale, ..self }
+    }
+
+    /// The same at depth `z` of 3D noise (an animation moves it).
+    #[must_use]
+    pub fn with_z(self, z: Real) -> Self {
+        Self { z: Some(z), ..self }
+    }
+
+    /// The point pixel (`x`, `y`) of a picture of `width` pixels samples: its top-left
+    /// corner, `scale / width` lattice units a pixel, y down.
+    pub fn point(&self, (x, y): (u32, u32), width: u32) -> (Real, Real, Option<Real>) {
+        let step = |pixels: u32| {
+            let bits =
+                i128::from(self.scale.to_bits()) * i128::from(pixels) / i128::from(width.max(1));
+            Real::from_bits(bits as i64)
+        };
+        (step(x), step(y), self.z)
+    }
+
+    /// The texture fitted to `area` with `palette`: level `l` is drawn as
+    /// `palette.color(l, u16::MAX)`. Refuses octaves out of range, a scale that is not
+    /// positive, and a picture whose finest octave would leave `Real`'s range (so that
+    /// drawing cannot fail).
+    pub fn fit<P: Palette>(
+        &self,
+        area: Rectangle,
+        palette: P,
+    ) -> Result<NoiseDrawing<'a, P>, Error> {
+        self.octaves.check()?;
+        if self.scale <= Real::ZERO {
+            return Err(Error::Parameter(ParameterError::ScaleNotPositive {
+                scale: self.scale,
+            }));
+        }
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        // The farthest corner, times the finest octave's frequency, must stay in range.
+        let size = area.size;
+        let (x, y, z) = self.point((size.width, size.height), size.width);
+        let mut reach = x.max(y).max(z.map_or(Real::ZERO, Real::abs));
+        for _ in 1..self.octaves.octaves {
+            reach = reach.checked_mul(self.octaves.lacunarity).ok_or(Overflow)?;
+        }
+        // Marble adds the turbulence (at most Σaⁱ ≤ 16) to x.
+        reach.checked_add(Real::from_int(16)).ok_or(Overflow)?;
+        Ok(NoiseDrawing {
+            texture: self.clone(),
+            area,
+            palette,
+        })
+    }
+}
+
+/// A texture fitted to an area with a palette: an embedded-graphics [`Drawable`], sent as
+/// one `fill_contiguous` over the area.
+#[derive(Debug, Clone)]
+pub struct NoiseDrawing<'a, P> {
+    texture: NoiseTexture<'a>,
+    area: Rectangle,
+    palette: P,
+}
+
+impl<P> NoiseDrawing<'_, P> {
+    /// The level of pixel (`x`, `y`) of the area, 0 to 255.
+    pub fn level_at(&self, x: u32, y: u32) -> u8 {
+        let texture = &self.texture;
+        let point = texture.point((x, y), self.area.size.width);
+        // `fit` checked every point's range: a sample cannot fail here.
+        texture
+            .texture
+            .level(texture.noise, &texture.octaves, point)
+            .unwrap_or(0)
+    }
+
+    /// The value of pixel (`x`, `y`) of the area, in [0, 1] (what its level rounds).
+    pub fn value_at(&self, x: u32, y: u32) -> Real {
+        let texture = &self.texture;
+        let point = texture.point((x, y), self.area.size.width);
+        texture
+            .texture
+            .value(texture.noise, &texture.octaves, point)
+            .unwrap_or(Real::ZERO)
+    }
+}
+
+impl<P> Dimensions for NoiseDrawing<'_, P> {
+    fn bounding_box(&self) -> Rectangle {
+        self.area
+    }
+}
+
+impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
+    type Color = P::Color;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = Self::Color>,
+    {
+        let (w, h) = (self.area.size.width, self.area.size.height);
+        let colors = (0..h).flat_map(|y| {
+            (0..w).map(move |x| self.palette.color(u16::from(self.level_at(x, y)), u16::MAX))
+        });
+        target.fill_contiguous(&self.area, colors)
+    }
+}
