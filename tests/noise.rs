@@ -303,7 +303,7 @@ mod textures {
             Texture::Ridged => sum(Sum::Ridged).clamp(0.0, 1.0),
             Texture::Marble => {
                 let turbulence = model_sum(p, octaves, Sum::Turbulence, (x, y, 0.0));
-                (1.0 + (2.0 * std::f64::consts::PI * (x + turbulence)).sin()) / 2.0
+                (1.0 + (2.0 * std::f64::consts::PI * (x + turbulence / 4.0)).sin()) / 2.0
             }
             Texture::Wood => (8.0 * (model(p, x, y, 0.0) + 1.0)).fract(),
         }

@@ -18,7 +18,7 @@ use crate::escape_scene::{EscapeOptions, JuliaOptions};
 use crate::figure_scene::{render_figure, FigureOptions};
 use crate::ifs_scene::{render_gingerbread, render_ifs, GingerbreadOptions, IfsOptions};
 use crate::lsystem_scene::LSystemOptions;
-use crate::noise_scene::NoiseOptions;
+use crate::noise_scene::{NoiseOptions, RenderNoiseOptions};
 use crate::shape_scene::{
     render_carpet, render_cube, render_gasket, render_terrain, render_terrain2d, CubeOptions,
     OrderOptions, Terrain2dOptions, TerrainOptions,
@@ -101,6 +101,8 @@ enum Scene {
     Cube(CubeOptions),
     /// A mountain profile by 1D midpoint displacement
     Terrain(TerrainOptions),
+    /// Perlin noise as a texture: fBm, turbulence, ridged, clouds, marble, wood
+    Noise(RenderNoiseOptions),
     /// A landscape by diamond-square (2D midpoint displacement)
     #[command(name = "terrain2d")]
     Terrain2d(Terrain2dOptions),
@@ -159,6 +161,7 @@ impl Scene {
             Self::Cube(options) => Ok(render_cube(&options)?),
             Self::Terrain(options) => Ok(render_terrain(&options)?),
             Self::Terrain2d(options) => Ok(render_terrain2d(&options)?),
+            Self::Noise(options) => options.run(),
         }
     }
 }

@@ -1,11 +1,17 @@
-//! `tinyfractal noise`: Perlin noise at points, every digit of the engine's value.
+//! `tinyfractal noise`: Perlin noise at points, every digit of the engine's value; and
+//! `render noise`, Perlin's textures as pictures.
 
 use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
 
-use clap::Args;
-use tinyfractal::noise::Perlin;
+use clap::{Args, ValueEnum};
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
+use tinyfractal::noise::{NoiseTexture, Octaves, Perlin, Texture, MAX_OCTAVES};
+use tinyfractal::render::Gradient;
 use tinyfractal::Real;
 
+use crate::common::Common;
 use crate::console::{self, Failure};
 
 /// A point of `--at`: 2D without a z.
@@ -75,4 +81,156 @@ fn parse_point(text: &str) -> Result<NoisePoint, String> {
             "`{text}` is not X,Y or X,Y,Z: two or three numbers, e.g. 3.14,42,7"
         )),
     }
+}
+
+/// `--texture`: what the noise becomes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum TextureName {
+    /// One octave of noise, in greys
+    Perlin,
+    /// Fractional Brownian motion, in greys
+    Fbm,
+    /// Turbulence (the sum of |noise|), in greys
+    Turbulence,
+    /// Musgrave's ridged multifractal, in greys
+    Ridged,
+    /// fBm as a sky: blue to white
+    Clouds,
+    /// Perlin's marble: white veins bent by turbulence
+    Marble,
+    /// Perlin's wood: rings of grain in browns
+    Wood,
+}
+
+impl TextureName {
+    /// The core's texture.
+    fn texture(self) -> Texture {
+        match self {
+            Self::Perlin => Texture::Perlin,
+            Self::Fbm => Texture::Fbm,
+            Self::Turbulence => Texture::Turbulence,
+            Self::Ridged => Texture::Ridged,
+            Self::Clouds => Texture::Clouds,
+            Self::Marble => Texture::Marble,
+            Self::Wood => Texture::Wood,
+        }
+    }
+
+    /// The key colours the texture's levels run through, 0 to 255.
+    fn keys(self) -> &'static [Rgb888] {
+        const GREYS: [Rgb888; 2] = [Rgb888::BLACK, Rgb888::WHITE];
+        const SKY: [Rgb888; 3] = [
+            Rgb888::new(0x1E, 0x50, 0xB4),
+            Rgb888::new(0x6E, 0xA0, 0xE6),
+            Rgb888::WHITE,
+        ];
+        const MARBLE: [Rgb888; 3] = [
+            Rgb888::new(0x30, 0x30, 0x38),
+            Rgb888::new(0xB0, 0xB0, 0xB8),
+            Rgb888::WHITE,
+        ];
+        const WOOD: [Rgb888; 3] = [
+            Rgb888::new(0x5A, 0x32, 0x14),
+            Rgb888::new(0xA0, 0x64, 0x28),
+            Rgb888::new(0xD2, 0x96, 0x50),
+        ];
+        match self {
+            Self::Perlin | Self::Fbm | Self::Turbulence | Self::Ridged => &GREYS,
+            Self::Clouds => &SKY,
+            Self::Marble => &MARBLE,
+            Self::Wood => &WOOD,
+        }
+    }
+}
+
+/// `render noise`'s options.
+#[derive(Debug, Args)]
+pub struct RenderNoiseOptions {
+    /// What the noise becomes
+    #[arg(long, value_enum, default_value = "fbm")]
+    texture: TextureName,
+    /// Octaves the sums take, 1 to 16
+    #[arg(long, value_name = "N", default_value_t = 6,
+          value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_OCTAVES)))]
+    octaves: u32,
+    /// Each octave's amplitude over the last one's, 0 to 1
+    #[arg(long, value_name = "P", default_value = "0.5", value_parser = parse_real)]
+    persistence: Real,
+    /// Each octave's frequency over the last one's, 1 to 4
+    #[arg(long, value_name = "L", default_value = "2", value_parser = parse_real)]
+    lacunarity: Real,
+    /// Lattice cells across the picture's width
+    #[arg(long, value_name = "S", default_value = "4", value_parser = parse_real)]
+    scale: Real,
+    /// Depth in 3D noise (default: the plane, 2D noise)
+    #[arg(long, value_name = "Z", allow_hyphen_values = true, value_parser = parse_real)]
+    z: Option<Real>,
+    /// The permutation: 0 is Perlin's own, any other a seeded shuffle of it
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    seed: u32,
+    /// Write `W H`, then H lines of W values in [0, 1] (each pixel's, before the palette)
+    #[arg(long, value_name = "TXT")]
+    values: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+impl RenderNoiseOptions {
+    /// `render noise`: the texture over the picture, with `--values`.
+    pub fn run(&self) -> Result<(), Failure> {
+        let common = &self.common;
+        crate::delivery::window_available(common.window)?;
+        let noise = Perlin::seeded(self.seed);
+        let octaves = Octaves {
+            octaves: self.octaves,
+            persistence: self.persistence,
+            lacunarity: self.lacunarity,
+        };
+        let mut texture = NoiseTexture::new(&noise, self.texture.texture())
+            .with_octaves(octaves)
+            .with_scale(self.scale);
+        if let Some(z) = self.z {
+            texture = texture.with_z(z);
+        }
+        let palette = Gradient::<Rgb888, 256>::new(self.texture.keys(), Rgb888::BLACK)
+            .ok_or_else(|| "noise: the texture has no colours".to_string())?;
+        let failed = |e: tinyfractal::Error| format!("noise: {e}");
+        let started = Instant::now();
+        let drawing = texture.fit(common.area(), palette).map_err(failed)?;
+        let mut display = common.display();
+        let Ok(()) = drawing.draw(&mut display);
+        let (width, height) = (common.width(), common.height());
+        let line = format!(
+            "samples={} elapsed_ms={:.3}",
+            u64::from(width) * u64::from(height),
+            started.elapsed().as_secs_f64() * 1e3
+        );
+        let drawing = &drawing;
+        Ok(crate::delivery::deliver(
+            common,
+            "noise",
+            &display,
+            |plan| {
+                if let Some(path) = &self.values {
+                    plan.add("--values", path, move |w| {
+                        writeln!(w, "{width} {height}")?;
+                        for y in 0..height {
+                            let row: Vec<String> = (0..width)
+                                .map(|x| drawing.value_at(x, y).to_string())
+                                .collect();
+                            writeln!(w, "{}", row.join(" "))?;
+                        }
+                        Ok(())
+                    });
+                }
+            },
+            &line,
+        )?)
+    }
+}
+
+/// A decimal number option (`--persistence`, `--scale`, ...).
+fn parse_real(text: &str) -> Result<Real, String> {
+    Real::parse_signed(text.trim())
+        .ok_or_else(|| format!("`{text}` is not a decimal number, e.g. 0.5 or -3"))
 }

@@ -1970,3 +1970,83 @@ fn noise_prints_perlins_values_at_each_point() {
         assert!(stderr(&output).contains("--at"), "{bad:?}");
     }
 }
+
+/// `render noise` draws a texture and writes each pixel's value: Perlin noise is 0 at every
+/// lattice point, so where each pixel's corner is one (a lattice cell a pixel), fBm is ½
+/// everywhere.
+#[test]
+fn render_noise_writes_the_picture_and_its_values() {
+    let dir = scratch("render-noise");
+    let (png, values) = (dir.join("clouds.png"), dir.join("values.txt"));
+    let output = run(&[
+        "render",
+        "noise",
+        "--texture",
+        "clouds",
+        "--size",
+        "16x8",
+        "--scale",
+        "16",
+        "--out",
+        png.to_str().unwrap(),
+        "--values",
+        values.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let picture = image::open(&png).unwrap();
+    assert_eq!((picture.width(), picture.height()), (16, 8));
+    let text = std::fs::read_to_string(&values).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("16 8"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(' ').collect()).collect();
+    assert_eq!(rows.len(), 8);
+    assert!(rows
+        .iter()
+        .all(|row| row.len() == 16 && row.iter().all(|v| *v == "0.5")));
+    // Off the lattice, values spread over [0, 1].
+    let spread = dir.join("spread.txt");
+    let output = run(&[
+        "render",
+        "noise",
+        "--texture",
+        "marble",
+        "--size",
+        "32x16",
+        "--out",
+        png.to_str().unwrap(),
+        "--values",
+        spread.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let values: Vec<f64> = std::fs::read_to_string(&spread)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .flat_map(|l| {
+            l.split(' ')
+                .map(|v| v.parse::<f64>().unwrap())
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    assert_eq!(values.len(), 32 * 16);
+    assert!(values.iter().all(|v| (0.0..=1.0).contains(v)));
+    assert!(values.iter().any(|&v| v < 0.2) && values.iter().any(|&v| v > 0.8));
+    // Bad parameters are refused, and nothing is written.
+    let never = dir.join("never.png");
+    for bad in [
+        ["--scale", "0"],
+        ["--persistence", "2"],
+        ["--lacunarity", "0.5"],
+    ] {
+        let mut args = vec!["render", "noise", "--out", never.to_str().unwrap()];
+        args.extend(bad);
+        let output = run(&args);
+        assert!(!output.status.success(), "{bad:?}");
+        assert!(
+            stderr(&output).contains(&bad[0][2..]),
+            "{bad:?}: {}",
+            stderr(&output)
+        );
+    }
+    assert!(!never.exists());
+}

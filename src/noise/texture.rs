@@ -26,7 +26,8 @@ pub enum Texture {
     Ridged,
     /// fBm as the sky: the same values as [`Fbm`](Self::Fbm), for a sky palette.
     Clouds,
-    /// Perlin's marble: (1 + sin 2π(x + turbulence)) / 2, veins along y bent by turbulence.
+    /// Perlin's marble: (1 + sin 2π(x + turbulence / 4)) / 2, veins along y bent by
+    /// turbulence.
     Marble,
     /// Perlin's wood: the fraction of 8·(noise + 1), rings of grain.
     Wood,
@@ -63,8 +64,10 @@ impl Texture {
             Self::Ridged => Ok(unit(sum(Sum::Ridged)?)),
             Self::Marble => {
                 let turbulence = octaves.sum(noise, Sum::Turbulence, point)?;
-                // Turns of the sine: its fraction is a binary angle.
-                let turns = point.0.checked_add(turbulence).ok_or(Overflow)?;
+                // Turns of the sine: its fraction is a binary angle. A quarter of the
+                // turbulence bends the veins about as much as Perlin's radians do.
+                let bend = Real::from_bits(turbulence.to_bits() >> 2);
+                let turns = point.0.checked_add(bend).ok_or(Overflow)?;
                 let angle = BinaryAngle(turns.to_bits() as u32);
                 let (_, sin) = angle.cos_sin();
                 // sin in 2⁻³⁰: (1 + sin) / 2 in 2⁻³¹, to 2⁻³².
