@@ -3,13 +3,15 @@
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
+use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::noise::{NoiseTexture, Octaves, Perlin, Texture, MAX_OCTAVES};
 use tinyfractal::render::Gradient;
 use tinyfractal::Real;
+use tinyfractal_scenes::{Look, Scene};
 
 use crate::common::Common;
 use crate::console::{self, Failure};
@@ -115,32 +117,6 @@ impl TextureName {
             Self::Wood => Texture::Wood,
         }
     }
-
-    /// The key colours the texture's levels run through, 0 to 255.
-    fn keys(self) -> &'static [Rgb888] {
-        const GREYS: [Rgb888; 2] = [Rgb888::BLACK, Rgb888::WHITE];
-        const SKY: [Rgb888; 3] = [
-            Rgb888::new(0x1E, 0x50, 0xB4),
-            Rgb888::new(0x6E, 0xA0, 0xE6),
-            Rgb888::WHITE,
-        ];
-        const MARBLE: [Rgb888; 3] = [
-            Rgb888::new(0x30, 0x30, 0x38),
-            Rgb888::new(0xB0, 0xB0, 0xB8),
-            Rgb888::WHITE,
-        ];
-        const WOOD: [Rgb888; 3] = [
-            Rgb888::new(0x5A, 0x32, 0x14),
-            Rgb888::new(0xA0, 0x64, 0x28),
-            Rgb888::new(0xD2, 0x96, 0x50),
-        ];
-        match self {
-            Self::Perlin | Self::Fbm | Self::Turbulence | Self::Ridged => &GREYS,
-            Self::Clouds => &SKY,
-            Self::Marble => &MARBLE,
-            Self::Wood => &WOOD,
-        }
-    }
 }
 
 /// `render noise`'s options.
@@ -192,7 +168,7 @@ impl RenderNoiseOptions {
         if let Some(z) = self.z {
             texture = texture.with_z(z);
         }
-        let palette = Gradient::<Rgb888, 256>::new(self.texture.keys(), Rgb888::BLACK)
+        let palette = Gradient::<Rgb888, 256>::new(keys(self.texture.texture()), Rgb888::BLACK)
             .ok_or_else(|| "noise: the texture has no colours".to_string())?;
         let failed = |e: tinyfractal::Error| format!("noise: {e}");
         let started = Instant::now();
@@ -233,4 +209,68 @@ impl RenderNoiseOptions {
 fn parse_real(text: &str) -> Result<Real, String> {
     Real::parse_signed(text.trim())
         .ok_or_else(|| format!("`{text}` is not a decimal number, e.g. 0.5 or -3"))
+}
+
+/// The key colours a texture's levels run through on the host, 0 to 255.
+fn keys(texture: Texture) -> &'static [Rgb888] {
+    const GREYS: [Rgb888; 2] = [Rgb888::BLACK, Rgb888::WHITE];
+    const SKY: [Rgb888; 3] = [
+        Rgb888::new(0x1E, 0x50, 0xB4),
+        Rgb888::new(0x6E, 0xA0, 0xE6),
+        Rgb888::WHITE,
+    ];
+    const MARBLE: [Rgb888; 3] = [
+        Rgb888::new(0x30, 0x30, 0x38),
+        Rgb888::new(0xB0, 0xB0, 0xB8),
+        Rgb888::WHITE,
+    ];
+    const WOOD: [Rgb888; 3] = [
+        Rgb888::new(0x5A, 0x32, 0x14),
+        Rgb888::new(0xA0, 0x64, 0x28),
+        Rgb888::new(0xD2, 0x96, 0x50),
+    ];
+    match texture {
+        Texture::Perlin | Texture::Fbm | Texture::Turbulence | Texture::Ridged => &GREYS,
+        Texture::Clouds => &SKY,
+        Texture::Marble => &MARBLE,
+        Texture::Wood => &WOOD,
+    }
+}
+
+/// A catalogue texture at `size`, for the gallery, in its host colours: the picture, its
+/// detail and work columns, and the time it took.
+pub fn render_entry(
+    scene: &Scene,
+    size: Size,
+) -> Result<(SimulatorDisplay<Rgb888>, String, String, Duration), String> {
+    let Scene::Noise {
+        texture,
+        octaves,
+        scale,
+        seed,
+    } = *scene
+    else {
+        return Err("not a noise scene".to_string());
+    };
+    let look = Look {
+        background: Rgb888::BLACK,
+        ink: Rgb888::WHITE,
+        keys: keys(texture),
+        inside: Rgb888::BLACK,
+    };
+    let scene = Scene::Noise {
+        texture,
+        octaves,
+        scale,
+        seed,
+    };
+    let mut display = SimulatorDisplay::new(size);
+    let started = Instant::now();
+    let work = scene
+        .draw(&mut display, &look)
+        .map_err(crate::scene::engine_error)
+        .map_err(|e| e.to_string())?;
+    let detail = format!("{} octaves, seed {seed}", octaves.octaves);
+    let work = format!("{} {}s", work.count(), scene.work_unit());
+    Ok((display, detail, work, started.elapsed()))
 }

@@ -6,6 +6,7 @@ use embedded_graphics::geometry::Size;
 use tinyfractal::{
     escape::{Shading, Tier},
     math::DeepCoord,
+    noise::{Octaves, Texture},
     render::Orientation,
     subdivision::CubeVariant,
     terrain::Displacement,
@@ -112,6 +113,17 @@ pub enum Scene {
     },
     /// A Mandelbrot or Julia view.
     Escape(EscapeScene),
+    /// One of Perlin's textures over the picture, `scale` lattice cells across it.
+    Noise {
+        /// Which texture.
+        texture: Texture,
+        /// The octaves of its sums.
+        octaves: Octaves,
+        /// Lattice cells across the picture's width.
+        scale: Real,
+        /// The permutation's seed (0: Perlin's own).
+        seed: u32,
+    },
     /// A zoom into the Mandelbrot set, `frames` frames in one frame of storage: each frame
     /// takes the last one's columns and rows within `tolerance_percent` % of a pixel
     /// (`ZoomFrame::advance`) and computes the rest; the last is exact.
@@ -133,7 +145,7 @@ pub enum Scene {
 
 impl Scene {
     /// What the scene's [`Work`](crate::Work) counts, singular: `segment`, `point`,
-    /// `iteration`, `frame`, `square`, `triangle`, `cube`, `height` or `line`.
+    /// `iteration`, `frame`, `square`, `triangle`, `cube`, `height`, `line` or `sample`.
     pub const fn work_unit(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "segment",
@@ -147,6 +159,7 @@ impl Scene {
             },
             Self::Terrain { .. } => "height",
             Self::Walk { .. } => "line",
+            Self::Noise { .. } => "sample",
         }
     }
 
@@ -167,6 +180,7 @@ impl Scene {
             Self::Escape(EscapeScene { julia: None, .. }) => "mandelbrot",
             Self::Escape(EscapeScene { julia: Some(_), .. }) => "julia",
             Self::Zoom { .. } => "zoom",
+            Self::Noise { .. } => "noise",
         }
     }
 
@@ -514,10 +528,30 @@ const fn terrain(
     }
 }
 
+/// Perlin's `texture` of the permutation `seed`, six octaves of persistence ½ and
+/// lacunarity 2, four lattice cells across.
+const fn noise(name: &'static str, texture: Texture, seed: u32, size: Size) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Noise {
+            texture,
+            octaves: Octaves {
+                octaves: 6,
+                persistence: ratio(1, 2),
+                lacunarity: Real::from_int(2),
+            },
+            scale: Real::from_int(4),
+            seed,
+        },
+        size,
+        palette: "",
+    }
+}
+
 /// The gallery (`cargo run --release`): classic L-systems, escape-time views, the
-/// Sierpiński family and midpoint-displacement terrain, 320×240.
+/// Sierpiński family, midpoint-displacement terrain and Perlin's textures, 320×240.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 21] = [
+pub const GALLERY: [Entry; 23] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -542,6 +576,8 @@ pub const GALLERY: [Entry; 21] = [
     subdivision("menger-sponge", Shape::Cube(CubeVariant::Axes), 3, GALLERY_SIZE),
     terrain("terrain", (70, 40, 7), 1025, false, GALLERY_SIZE),
     terrain("terrain2d", (60, 40, 3), 257, true, GALLERY_SIZE),
+    noise("noise-clouds", Texture::Clouds, 0, GALLERY_SIZE),
+    noise("noise-marble", Texture::Marble, 0, GALLERY_SIZE),
 ];
 
 /// The systems of ABOP's `data/abop.lsys`, drawn by the general engine.
@@ -672,6 +708,10 @@ pub const SCENES: [Entry; 14] = [
     // (tests/tiers.rs), the tier a board would pick by hand.
     in_tier(Tier::Deep, escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire")),
 ];
+
+/// Perlin's textures on the OLED: measured on every core and shown by the boards built with
+/// the scenes' `noise` feature (not the LM3S6965, whose flash it would overflow).
+pub const NOISE_SCENES: [Entry; 1] = [noise("noise-fbm", Texture::Fbm, 0, OLED)];
 
 /// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the stack
 /// ([`MAX_BOARD_REFERENCE_POINTS`](crate::MAX_BOARD_REFERENCE_POINTS), 24 KiB).

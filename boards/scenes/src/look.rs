@@ -13,6 +13,7 @@ use tinyfractal::{
     ifs::IfsPicture,
     lsystem::{Cell, DEFAULT_DEPTH, DEFAULT_STACK},
     math::DeepCoord,
+    noise::{Octaves, Texture},
     render::{Colors, Gradient, Orientation},
     terrain::Displacement,
     Carpet, Coord, Error, EscapeTime, Figure, Fractal, Gasket, Ifs, IfsFile, LSystem, LsysFile,
@@ -91,6 +92,8 @@ pub enum Work {
     Cells(u64),
     /// Frames drawn (a zoom).
     Frames(u64),
+    /// Noise samples taken, one a pixel (a texture).
+    Samples(u64),
 }
 
 impl Work {
@@ -101,7 +104,8 @@ impl Work {
             | Self::Iterations(n)
             | Self::Points(n)
             | Self::Cells(n)
-            | Self::Frames(n) => n,
+            | Self::Frames(n)
+            | Self::Samples(n) => n,
         }
     }
 
@@ -113,6 +117,7 @@ impl Work {
             Self::Points(_) => "points",
             Self::Cells(_) => "cells",
             Self::Frames(_) => "frames",
+            Self::Samples(_) => "samples",
         }
     }
 }
@@ -176,6 +181,12 @@ impl Scene {
             } => draw_terrain(target, look, displacement, samples, map),
             Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
             Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
+            Scene::Noise {
+                texture,
+                octaves,
+                scale,
+                seed,
+            } => draw_noise(target, look, (texture, octaves), scale, seed),
             Scene::Escape(escape) => {
                 let view = escape.view(target.bounding_box().size)?;
                 match (escape.shading, view.tier()) {
@@ -407,6 +418,53 @@ where
         .draw(target)
         .map_err(DrawError::Target)?;
     Ok(Work::Iterations(stats.iterations))
+}
+
+/// One of Perlin's textures over the whole of `target`, its 256 levels spread over the
+/// look's gradient keys. Out of line: its 256-entry gradient is on the stack only while a
+/// texture draws.
+#[cfg(feature = "noise")]
+#[inline(never)]
+fn draw_noise<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    (texture, octaves): (Texture, Octaves),
+    scale: Real,
+    seed: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    use tinyfractal::noise::{NoiseTexture, Perlin};
+    let noise = Perlin::seeded(seed);
+    let area = target.bounding_box();
+    NoiseTexture::new(&noise, texture)
+        .with_octaves(octaves)
+        .with_scale(scale)
+        .fit(area, look.gradient::<256>()?)?
+        .draw(target)
+        .map_err(DrawError::Target)?;
+    Ok(Work::Samples(
+        u64::from(area.size.width) * u64::from(area.size.height),
+    ))
+}
+
+/// Without the `noise` feature a texture is the background: no samples taken.
+#[cfg(not(feature = "noise"))]
+fn draw_noise<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    _: (Texture, Octaves),
+    _: Real,
+    _: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    target.clear(look.background).map_err(DrawError::Target)?;
+    Ok(Work::Samples(0))
 }
 
 /// A zoom over the whole of `target`, one frame of storage on the stack, a byte a pixel:

@@ -29,6 +29,9 @@ fn marks<C: PixelColor + From<Rgb888>>(
         Work::Iterations(_) | Work::Frames(_) => {
             frame.pixels.iter().map(|&p| p == look.inside).collect()
         }
+        // A texture's 256 levels show as gradient colours, which a 16-grey panel merges:
+        // nothing to compare pixel for pixel (the core's tests check the levels).
+        Work::Samples(_) => Vec::new(),
     };
     (work, marked)
 }

@@ -23,7 +23,7 @@ use tinyfractal::escape::{Render, REFERENCE_POINT_BYTES};
 use tinyfractal_scenes::measure::Checksum;
 use tinyfractal_scenes::{
     Entry, Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, MAX_BOARD_REFERENCE_POINTS,
-    SCENES, ZOOM_SCENES,
+    NOISE_SCENES, SCENES, ZOOM_SCENES,
 };
 
 struct Core {
@@ -247,7 +247,11 @@ fn every_core_draws_the_host_picture_and_fits() {
             work,
         )
     };
-    let every_core_scenes = SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES);
+    let every_core_scenes = SCENES
+        .iter()
+        .chain(&NOISE_SCENES)
+        .chain(&DISPLAY_SCENES)
+        .chain(&ZOOM_SCENES);
     let mut host: Vec<Expected> = every_core_scenes.map(expected).collect();
     let every_core = host.len();
     for entry in &GENERAL_SCENES {
