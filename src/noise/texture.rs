@@ -215,19 +215,14 @@ pub struct NoiseDrawing<'a, P> {
 impl<P> NoiseDrawing<'_, P> {
     /// The level of pixel (`x`, `y`) of the area, 0 to 255.
     pub fn level_at(&self, x: u32, y: u32) -> u8 {
-        let texture = &self.texture;
-        let point = texture.point((x, y), self.area.size.width);
-        // `fit` checked every point's range: a sample cannot fail here.
-        texture
-            .texture
-            .level(texture.noise, &texture.octaves, point)
-            .unwrap_or(0)
+        level_of(self.value_at(x, y))
     }
 
     /// The value of pixel (`x`, `y`) of the area, in [0, 1] (what its level rounds).
     pub fn value_at(&self, x: u32, y: u32) -> Real {
         let texture = &self.texture;
         let point = texture.point((x, y), self.area.size.width);
+        // `fit` checked every point's range: a sample cannot fail here.
         texture
             .texture
             .value(texture.noise, &texture.octaves, point)
