@@ -19,11 +19,12 @@ use indicatif::ProgressBar;
 use tinyfractal::{
     escape::{Algorithm, Tier, ZoomFrame, ZoomLine},
     math::{DeepCoord, MAX_DECIMAL_PLACES},
-    View,
+    Real, View,
 };
 
 use crate::console::Failure;
 use crate::escape_scene::{self, Escape, Request};
+use crate::noise_scene::TextureOptions;
 use crate::palette::PaletteName;
 use crate::systems::{Purpose, Source};
 
@@ -72,6 +73,8 @@ enum AnimationKind {
     Growth(GrowthOptions),
     /// The lecture's figure walking (or waving), one cycle
     Figure(FigureAnimationOptions),
+    /// Perlin noise moving: each frame a step deeper in its third dimension
+    Noise(NoiseAnimationOptions),
 }
 
 #[derive(Debug, Args)]
@@ -151,6 +154,22 @@ struct FigureAnimationOptions {
     frames: FrameOptions,
 }
 
+#[derive(Debug, Args)]
+struct NoiseAnimationOptions {
+    #[command(flatten)]
+    texture: TextureOptions,
+    /// The first frame's depth in 3D noise
+    #[arg(long, value_name = "Z", default_value = "0", allow_hyphen_values = true,
+          value_parser = crate::noise_scene::parse_real)]
+    z: Real,
+    /// How much deeper each frame is, in lattice cells
+    #[arg(long = "z-step", value_name = "DZ", default_value = "0.05", allow_hyphen_values = true,
+          value_parser = crate::noise_scene::parse_real)]
+    z_step: Real,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
 /// Frames an animation writes without `--frames`.
 const DEFAULT_FRAMES: u32 = 100;
 
@@ -206,6 +225,15 @@ enum Animation {
     Figure {
         /// The movement (`--pose`).
         pose: crate::figure_scene::PoseName,
+    },
+    /// A texture at depths `z`, `z + step`, ... of 3D noise.
+    Noise {
+        /// What the texture is made of.
+        texture: TextureOptions,
+        /// The first frame's depth (`--z`).
+        z: Real,
+        /// Each frame's step deeper (`--z-step`).
+        step: Real,
     },
 }
 
@@ -269,6 +297,14 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
         AnimationKind::Figure(options) => {
             (Animation::Figure { pose: options.pose }, options.frames)
         }
+        AnimationKind::Noise(options) => (
+            Animation::Noise {
+                texture: options.texture,
+                z: options.z,
+                step: options.z_step,
+            },
+            options.frames,
+        ),
     };
     let count = frames.frames.unwrap_or(DEFAULT_FRAMES);
     if count == 0 {
@@ -388,7 +424,33 @@ fn make(arguments: &AnimationPlan, size: Size, emit: &Emit<'_>) -> Result<String
             crate::figure_scene::cycle(*pose, arguments.frames, size, |frame| emit.frame(frame))?;
             Ok(String::new())
         }
+        Animation::Noise { texture, z, step } => {
+            noise_frames(texture, (*z, *step), arguments.frames, size, emit)
+        }
     }
+}
+
+/// A texture at `frames` depths of 3D noise, `z` then a `step` deeper each frame.
+fn noise_frames(
+    texture: &TextureOptions,
+    (z, step): (Real, Real),
+    frames: u32,
+    size: Size,
+    emit: &Emit<'_>,
+) -> Result<String, String> {
+    let noise = texture.noise();
+    let area = embedded_graphics::primitives::Rectangle::new(Point::zero(), size);
+    for frame in 0..frames {
+        let depth = step
+            .checked_mul(Real::from_int(i32::try_from(frame).unwrap_or(i32::MAX)))
+            .and_then(|offset| z.checked_add(offset))
+            .ok_or_else(|| format!("noise: frame {frame}'s depth is past the noise's range"))?;
+        let drawing = texture.drawing(&noise, Some(depth), area)?;
+        let mut picture = Picture::new(size);
+        let Ok(()) = drawing.draw(&mut picture);
+        emit.frame(picture)?;
+    }
+    Ok(String::new())
 }
 
 /// The widths of a zoom's frames, as text: the first is `--width`, the last `end_width`

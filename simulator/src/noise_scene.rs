@@ -6,9 +6,9 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::{Args, ValueEnum};
-use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
+use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
-use tinyfractal::noise::{NoiseTexture, Octaves, Perlin, Texture, MAX_OCTAVES};
+use tinyfractal::noise::{NoiseDrawing, NoiseTexture, Octaves, Perlin, Texture, MAX_OCTAVES};
 use tinyfractal::render::Gradient;
 use tinyfractal::Real;
 use tinyfractal_scenes::{Look, Scene};
@@ -87,7 +87,7 @@ fn parse_point(text: &str) -> Result<NoisePoint, String> {
 
 /// `--texture`: what the noise becomes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum TextureName {
+pub enum TextureName {
     /// One octave of noise, in greys
     Perlin,
     /// Fractional Brownian motion, in greys
@@ -119,9 +119,9 @@ impl TextureName {
     }
 }
 
-/// `render noise`'s options.
-#[derive(Debug, Args)]
-pub struct RenderNoiseOptions {
+/// What a texture is made of: `render noise` and `animate noise` share it.
+#[derive(Debug, Clone, PartialEq, Args)]
+pub struct TextureOptions {
     /// What the noise becomes
     #[arg(long, value_enum, default_value = "fbm")]
     texture: TextureName,
@@ -138,12 +138,55 @@ pub struct RenderNoiseOptions {
     /// Lattice cells across the picture's width
     #[arg(long, value_name = "S", default_value = "4", value_parser = parse_real)]
     scale: Real,
-    /// Depth in 3D noise (default: the plane, 2D noise)
-    #[arg(long, value_name = "Z", allow_hyphen_values = true, value_parser = parse_real)]
-    z: Option<Real>,
     /// The permutation: 0 is Perlin's own, any other a seeded shuffle of it
     #[arg(long, value_name = "N", default_value_t = 0)]
     seed: u32,
+}
+
+/// A texture as drawn on the host: its permutation and its colours.
+type HostDrawing<'a> = NoiseDrawing<'a, Gradient<Rgb888, 256>>;
+
+impl TextureOptions {
+    /// The permutation the options name.
+    pub fn noise(&self) -> Perlin {
+        Perlin::seeded(self.seed)
+    }
+
+    /// The texture of `noise` over `area` at depth `z` (the plane if `None`), in its host
+    /// colours; a message naming the bad parameter otherwise.
+    pub fn drawing<'a>(
+        &self,
+        noise: &'a Perlin,
+        z: Option<Real>,
+        area: Rectangle,
+    ) -> Result<HostDrawing<'a>, String> {
+        let octaves = Octaves {
+            octaves: self.octaves,
+            persistence: self.persistence,
+            lacunarity: self.lacunarity,
+        };
+        let mut texture = NoiseTexture::new(noise, self.texture.texture())
+            .with_octaves(octaves)
+            .with_scale(self.scale);
+        if let Some(z) = z {
+            texture = texture.with_z(z);
+        }
+        let palette = Gradient::<Rgb888, 256>::new(keys(self.texture.texture()), Rgb888::BLACK)
+            .ok_or_else(|| "noise: the texture has no colours".to_string())?;
+        texture
+            .fit(area, palette)
+            .map_err(|e| format!("noise: {e}"))
+    }
+}
+
+/// `render noise`'s options.
+#[derive(Debug, Args)]
+pub struct RenderNoiseOptions {
+    #[command(flatten)]
+    texture: TextureOptions,
+    /// Depth in 3D noise (default: the plane, 2D noise)
+    #[arg(long, value_name = "Z", allow_hyphen_values = true, value_parser = parse_real)]
+    z: Option<Real>,
     /// Write `W H`, then H lines of W values in [0, 1] (each pixel's, before the palette)
     #[arg(long, value_name = "TXT")]
     values: Option<PathBuf>,
@@ -156,23 +199,9 @@ impl RenderNoiseOptions {
     pub fn run(&self) -> Result<(), Failure> {
         let common = &self.common;
         crate::delivery::window_available(common.window)?;
-        let noise = Perlin::seeded(self.seed);
-        let octaves = Octaves {
-            octaves: self.octaves,
-            persistence: self.persistence,
-            lacunarity: self.lacunarity,
-        };
-        let mut texture = NoiseTexture::new(&noise, self.texture.texture())
-            .with_octaves(octaves)
-            .with_scale(self.scale);
-        if let Some(z) = self.z {
-            texture = texture.with_z(z);
-        }
-        let palette = Gradient::<Rgb888, 256>::new(keys(self.texture.texture()), Rgb888::BLACK)
-            .ok_or_else(|| "noise: the texture has no colours".to_string())?;
-        let failed = |e: tinyfractal::Error| format!("noise: {e}");
+        let noise = self.texture.noise();
         let started = Instant::now();
-        let drawing = texture.fit(common.area(), palette).map_err(failed)?;
+        let drawing = self.texture.drawing(&noise, self.z, common.area())?;
         let mut display = common.display();
         let Ok(()) = drawing.draw(&mut display);
         let (width, height) = (common.width(), common.height());
@@ -206,7 +235,7 @@ impl RenderNoiseOptions {
 }
 
 /// A decimal number option (`--persistence`, `--scale`, ...).
-fn parse_real(text: &str) -> Result<Real, String> {
+pub(crate) fn parse_real(text: &str) -> Result<Real, String> {
     Real::parse_signed(text.trim())
         .ok_or_else(|| format!("`{text}` is not a decimal number, e.g. 0.5 or -3"))
 }

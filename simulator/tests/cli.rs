@@ -2050,3 +2050,59 @@ fn render_noise_writes_the_picture_and_its_values() {
     }
     assert!(!never.exists());
 }
+
+/// `animate noise` moves through 3D noise: frame k is the texture `render noise` draws at
+/// depth z + k·z-step.
+#[test]
+fn animate_noise_steps_through_the_third_dimension() {
+    let dir = scratch("animate-noise");
+    let frames = dir.join("frames");
+    let output = run(&[
+        "animate",
+        "noise",
+        "--texture",
+        "marble",
+        "--z",
+        "0.25",
+        "--z-step",
+        "0.5",
+        "--frames",
+        "3",
+        "--size",
+        "40x30",
+        "--out",
+        frames.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for (frame, depth) in [(0, "0.25"), (2, "1.25")] {
+        let still = dir.join(format!("still-{frame}.png"));
+        let output = run(&[
+            "render",
+            "noise",
+            "--texture",
+            "marble",
+            "--z",
+            depth,
+            "--size",
+            "40x30",
+            "--out",
+            still.to_str().unwrap(),
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        let animated = image::open(frames.join(format!("frame-{frame:04}.png")))
+            .unwrap()
+            .to_rgb8();
+        assert_eq!(
+            animated,
+            image::open(&still).unwrap().to_rgb8(),
+            "frame {frame}"
+        );
+    }
+    let first = image::open(frames.join("frame-0000.png"))
+        .unwrap()
+        .to_rgb8();
+    let second = image::open(frames.join("frame-0001.png"))
+        .unwrap()
+        .to_rgb8();
+    assert_ne!(first, second, "the texture moves");
+}
