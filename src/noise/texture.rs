@@ -34,12 +34,25 @@ pub enum Texture {
 }
 
 impl Texture {
-    /// The texture's value at `point` (2D where z is `None`), in [0, 1].
+    /// The texture's value at `point` (2D where z is `None`), in [0, 1]. A sum is
+    /// normalised by 1/Σaⁱ rounded to 2⁻³², the same for every point.
     pub fn value(
         self,
         noise: &Perlin,
         octaves: &Octaves,
         point: (Real, Real, Option<Real>),
+    ) -> Result<Real, Error> {
+        self.value_normalised(noise, octaves, point, normaliser(octaves)?)
+    }
+
+    /// [`value`](Self::value) with the sums' normaliser given, so that a drawing computes
+    /// it once rather than a division a pixel.
+    fn value_normalised(
+        self,
+        noise: &Perlin,
+        octaves: &Octaves,
+        point: (Real, Real, Option<Real>),
+        normaliser: Real,
     ) -> Result<Real, Error> {
         let half = Real::from_bits(1 << (Real::FRAC_BITS - 1));
         let sample = || match point.2 {
@@ -48,9 +61,7 @@ impl Texture {
         };
         let sum = |sum: Sum| -> Result<Real, Error> {
             let total = octaves.sum(noise, sum, point)?;
-            total
-                .checked_div(amplitudes(octaves)?)
-                .ok_or(Error::from(Overflow))
+            total.checked_mul(normaliser).ok_or(Error::from(Overflow))
         };
         let unit = |value: Real| value.clamp(Real::ZERO, Real::ONE);
         let centred = |value: Real| -> Result<Real, Error> {
@@ -106,14 +117,15 @@ fn level_of(value: Real) -> u8 {
     rounded.clamp(0, i128::from(LEVELS - 1)) as u8
 }
 
-/// Σaⁱ over the octaves: what a sum is divided by to stay within [−1, 1].
-fn amplitudes(octaves: &Octaves) -> Result<Real, Error> {
+/// 1/Σaⁱ over the octaves, rounded to 2⁻³²: what a sum is multiplied by to stay within
+/// [−1, 1].
+fn normaliser(octaves: &Octaves) -> Result<Real, Error> {
     let (mut total, mut amplitude) = (Real::ZERO, Real::ONE);
     for _ in 0..octaves.octaves {
         total = total.checked_add(amplitude).ok_or(Overflow)?;
         amplitude = amplitude.checked_mul(octaves.persistence).ok_or(Overflow)?;
     }
-    Ok(total)
+    Real::ONE.checked_div(total).ok_or(Error::from(Overflow))
 }
 
 /// A texture over a picture: `scale` lattice cells across its width, at depth `z` (3D
@@ -203,6 +215,7 @@ impl<'a> NoiseTexture<'a> {
         reach.checked_add(Real::from_int(16)).ok_or(Overflow)?;
         Ok(NoiseDrawing {
             texture: self.clone(),
+            normaliser: normaliser(&self.octaves)?,
             area,
             palette,
         })
@@ -214,6 +227,8 @@ impl<'a> NoiseTexture<'a> {
 #[derive(Debug, Clone)]
 pub struct NoiseDrawing<'a, P> {
     texture: NoiseTexture<'a>,
+    /// 1/Σaⁱ, once for every pixel.
+    normaliser: Real,
     area: Rectangle,
     palette: P,
 }
@@ -231,7 +246,7 @@ impl<P> NoiseDrawing<'_, P> {
         // `fit` checked every point's range: a sample cannot fail here.
         texture
             .texture
-            .value(texture.noise, &texture.octaves, point)
+            .value_normalised(texture.noise, &texture.octaves, point, self.normaliser)
             .unwrap_or(Real::ZERO)
     }
 }
