@@ -150,6 +150,21 @@ fn within_two_to_the_minus_twenty_everywhere() {
     }
 }
 
+/// Noise repeats every 256 cells (the permutation sees a cell modulo 256), so the ends of
+/// `Real`'s range sample as cells 255 and 0 do, with no overflow on the way.
+#[test]
+fn the_ends_of_the_range_wrap_as_the_lattice_does() {
+    let noise = Perlin::seeded(9);
+    let (top, bottom) = (real(2_147_483_647.5), real(-2_147_483_647.75));
+    let (y, z) = (real(0.3), real(0.6));
+    assert_eq!(noise.noise2(top, y), noise.noise2(real(255.5), y));
+    assert_eq!(noise.noise3(y, top, z), noise.noise3(y, real(255.5), z));
+    assert_eq!(noise.noise3(y, z, bottom), noise.noise3(y, z, real(0.25)));
+    // Rounding to 2⁻²⁴ past the largest coordinate wraps to cell 0 (2³¹ is 0 modulo 256).
+    let last = Real::from_bits(i64::MAX);
+    assert_eq!(noise.noise2(last, y), noise.noise2(Real::ZERO, y));
+}
+
 #[test]
 fn seeds_shuffle_perlins_permutation() {
     assert_eq!(Perlin::seeded(0), Perlin::reference());

@@ -142,8 +142,8 @@ impl Perlin {
         &self.permutation
     }
 
-    /// The permutation's entry for a lattice index (taken modulo 256, as Perlin's doubled
-    /// table does).
+    /// The permutation's entry for a lattice index (below 512: taken modulo 256, as Perlin's
+    /// doubled table does).
     #[inline(always)]
     fn hash(&self, index: i32) -> i32 {
         // Masked to the table's length, so the lookup always finds its entry.
@@ -211,14 +211,16 @@ impl Perlin {
     }
 }
 
-/// A coordinate's lattice cell and its place in the cell in 2⁻²⁴ (rounded to nearest).
+/// A coordinate's lattice cell modulo 256 and its place in the cell in 2⁻²⁴ (rounded to
+/// nearest). The permutation sees a cell modulo 256 only, so the index sums that hash a
+/// corner stay small at any coordinate: no overflow at the ends of `Real`'s range.
 #[inline(always)]
 fn cell(value: Real) -> (i32, i32) {
     let shift = Real::FRAC_BITS - CELL_FRAC_BITS;
-    let bits = (value.to_bits() + (1 << (shift - 1))) >> shift;
-    // The floor's low bits are all a hash needs; the wrap above 2³¹ cells keeps them.
+    // Rounding may wrap past the largest coordinate; the low bits the cell keeps are right.
+    let bits = value.to_bits().wrapping_add(1 << (shift - 1)) >> shift;
     (
-        (bits >> CELL_FRAC_BITS) as i32,
+        ((bits >> CELL_FRAC_BITS) & 255) as i32,
         (bits & ((1 << CELL_FRAC_BITS) - 1)) as i32,
     )
 }
