@@ -1,7 +1,6 @@
 //! `tinyfractal noise`: Perlin noise at points, every digit of the engine's value; and
 //! `render noise`, Perlin's textures as pictures.
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
@@ -17,12 +16,7 @@ use crate::common::Common;
 use crate::console::{self, Failure};
 
 /// A point of `--at`: 2D without a z.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct NoisePoint {
-    x: Real,
-    y: Real,
-    z: Option<Real>,
-}
+type NoisePoint = (Real, Real, Option<Real>);
 
 /// `noise`'s options.
 #[derive(Debug, Args)]
@@ -42,13 +36,9 @@ impl NoiseOptions {
     pub fn run(&self) -> Result<(), Failure> {
         let noise = Perlin::seeded(self.seed);
         let mut text = String::new();
-        for point in &self.at {
-            let sample = match point.z {
-                Some(z) => noise.noise3(point.x, point.y, z),
-                None => noise.noise2(point.x, point.y),
-            };
+        for &point in &self.at {
             // Writing into a String cannot fail.
-            let _ = sample.write_exact(&mut text);
+            let _ = noise.sample(point).write_exact(&mut text);
             text.push('\n');
         }
         Ok(console::print(&text)?)
@@ -58,27 +48,10 @@ impl NoiseOptions {
 /// `--at`'s value: two or three decimal numbers separated by commas.
 fn parse_point(text: &str) -> Result<NoisePoint, String> {
     let numbers: Vec<&str> = text.split(',').map(str::trim).collect();
-    let number = |part: &str| {
-        Real::parse_signed(part).ok_or_else(|| {
-            let mut message = String::new();
-            let _ = write!(
-                message,
-                "`{part}` in `{text}` is not a decimal number within ±2147483647 (e.g. -4.2)"
-            );
-            message
-        })
-    };
+    let number = |part: &str| parse_real(part).map_err(|e| format!("{e} (in `{text}`)"));
     match numbers.as_slice() {
-        [x, y] => Ok(NoisePoint {
-            x: number(x)?,
-            y: number(y)?,
-            z: None,
-        }),
-        [x, y, z] => Ok(NoisePoint {
-            x: number(x)?,
-            y: number(y)?,
-            z: Some(number(z)?),
-        }),
+        [x, y] => Ok((number(x)?, number(y)?, None)),
+        [x, y, z] => Ok((number(x)?, number(y)?, Some(number(z)?))),
         _ => Err(format!(
             "`{text}` is not X,Y or X,Y,Z: two or three numbers, e.g. 3.14,42,7"
         )),
@@ -236,8 +209,9 @@ impl RenderNoiseOptions {
 
 /// A decimal number option (`--persistence`, `--scale`, ...).
 pub(crate) fn parse_real(text: &str) -> Result<Real, String> {
-    Real::parse_signed(text.trim())
-        .ok_or_else(|| format!("`{text}` is not a decimal number, e.g. 0.5 or -3"))
+    Real::parse_signed(text.trim()).ok_or_else(|| {
+        format!("`{text}` is not a decimal number within ±2147483647, e.g. 0.5 or -4.2")
+    })
 }
 
 /// The key colours a texture's levels run through on the host, 0 to 255.
@@ -275,8 +249,8 @@ pub fn render_entry(
     let Scene::Noise {
         texture,
         octaves,
-        scale,
         seed,
+        ..
     } = *scene
     else {
         return Err("not a noise scene".to_string());
@@ -286,12 +260,6 @@ pub fn render_entry(
         ink: Rgb888::WHITE,
         keys: keys(texture),
         inside: Rgb888::BLACK,
-    };
-    let scene = Scene::Noise {
-        texture,
-        octaves,
-        scale,
-        seed,
     };
     let mut display = SimulatorDisplay::new(size);
     let started = Instant::now();

@@ -78,10 +78,6 @@ impl Octaves {
     ) -> Result<Real, Error> {
         self.check()?;
         let overflow = Error::from(crate::math::Overflow);
-        let sample = |(x, y, z): (Real, Real, Option<Real>)| match z {
-            Some(z) => noise.noise3(x, y, z),
-            None => noise.noise2(x, y),
-        };
         let (mut point, mut amplitude) = ((x, y, z), Real::ONE);
         let (mut total, mut weight) = (Real::ZERO, Real::ONE);
         for octave in 0..self.octaves {
@@ -94,7 +90,7 @@ impl Octaves {
                 );
                 amplitude = amplitude.checked_mul(self.persistence).ok_or(overflow)?;
             }
-            let value = sample(point).to_real();
+            let value = noise.sample(point).to_real();
             let term = match sum {
                 Sum::Fbm => value,
                 Sum::Turbulence => value.abs(),

@@ -151,6 +151,15 @@ impl Perlin {
         i32::from(entry.copied().unwrap_or(0))
     }
 
+    /// The noise at a point: 3D where it has a z, 2D (Perlin's at z = 0) where it has none.
+    #[inline]
+    pub fn sample(&self, (x, y, z): (Real, Real, Option<Real>)) -> Sample {
+        match z {
+            Some(z) => self.noise3(x, y, z),
+            None => self.noise2(x, y),
+        }
+    }
+
     /// The noise at (`x`, `y`, `z`).
     pub fn noise3(&self, x: Real, y: Real, z: Real) -> Sample {
         let (xi, xf) = cell(x);

@@ -55,10 +55,7 @@ impl Texture {
         normaliser: Real,
     ) -> Result<Real, Error> {
         let half = Real::from_bits(1 << (Real::FRAC_BITS - 1));
-        let sample = || match point.2 {
-            Some(z) => noise.noise3(point.0, point.1, z),
-            None => noise.noise2(point.0, point.1),
-        };
+        let sample = || noise.sample(point);
         let sum = |sum: Sum| -> Result<Real, Error> {
             let total = octaves.sum(noise, sum, point)?;
             total.checked_mul(normaliser).ok_or(Error::from(Overflow))
@@ -110,11 +107,12 @@ impl Texture {
     }
 }
 
-/// A value in [0, 1] as a level 0 to 255, rounded to nearest.
+/// A value in [0, 1] as a level 0 to 255, rounded to nearest (clamped first, so the
+/// product fits 64 bits).
 fn level_of(value: Real) -> u8 {
-    let scaled = i128::from(value.to_bits()) * i128::from(LEVELS - 1);
-    let rounded = (scaled + (1 << (Real::FRAC_BITS - 1))) >> Real::FRAC_BITS;
-    rounded.clamp(0, i128::from(LEVELS - 1)) as u8
+    let unit = value.clamp(Real::ZERO, Real::ONE).to_bits();
+    let scaled = unit * i64::from(LEVELS - 1);
+    ((scaled + (1 << (Real::FRAC_BITS - 1))) >> Real::FRAC_BITS) as u8
 }
 
 /// 1/Σaⁱ over the octaves, rounded to 2⁻³²: what a sum is multiplied by to stay within
