@@ -68,6 +68,8 @@
 //! | [`figure`] | the articulated figure, a hierarchy of parts drawn with a stack of maps |
 //! | [`subdivision`] | the Sierpiński carpet, gasket and cube |
 //! | [`terrain`] | profiles and landscapes by midpoint displacement |
+//! | [`noise`] | Perlin's improved noise, its fractal sums and textures |
+//! | [`reaction`] | reaction–diffusion: the Gray–Scott model on the caller's grid |
 //! | [`dimension`] | the box-counting dimension of any picture |
 //!
 //! Beneath them, [`math`] holds the numbers (fixed-point [`Real`] and [`Coord`], angles,
@@ -128,6 +130,7 @@ pub mod lsystem;
 pub mod math;
 pub mod noise;
 pub mod prelude;
+pub mod reaction;
 pub mod render;
 pub mod subdivision;
 pub mod terrain;

@@ -39,6 +39,38 @@ pub enum ParameterError {
         /// The value given.
         scale: Real,
     },
+    /// A reaction's time step is outside (0, 1].
+    TimeStepOutOfRange {
+        /// The value given.
+        dt: Real,
+    },
+    /// A reaction's feed or kill rate is outside [0, 1], or (feed + kill)·Δt exceeds 1
+    /// (a step would take more B than there is).
+    FeedKillOutOfRange {
+        /// The feed rate given.
+        feed: Real,
+        /// The kill rate given.
+        kill: Real,
+    },
+    /// A diffusion rate is negative, or its D·Δt exceeds 1: the explicit step would
+    /// overshoot the neighbours' mean and oscillate (and diverge beyond 1.25).
+    DiffusionUnstable {
+        /// The diffusion rate given.
+        diffusion: Real,
+        /// The time step given.
+        dt: Real,
+    },
+    /// A reaction's grid side is outside [`min`, `max`].
+    GridOutOfRange {
+        /// The width given.
+        width: u32,
+        /// The height given.
+        height: u32,
+        /// The smallest side accepted.
+        min: u32,
+        /// The largest side accepted.
+        max: u32,
+    },
     /// The roughness is outside (0, 1].
     RoughnessOutOfRange {
         /// The value given.
@@ -114,6 +146,31 @@ impl fmt::Display for ParameterError {
             Self::ScaleNotPositive { scale } => write!(
                 f,
                 "scale {scale} is not positive: give the lattice cells across the picture, e.g. 4"
+            ),
+            Self::TimeStepOutOfRange { dt } => write!(
+                f,
+                "the time step {dt} is outside (0, 1]: give a positive Δt of at most 1"
+            ),
+            Self::FeedKillOutOfRange { feed, kill } => write!(
+                f,
+                "feed {feed} and kill {kill} are out of range: each must be in [0, 1] and \
+                 (feed + kill)·Δt at most 1 (patterns live near feed 0.01–0.08, kill \
+                 0.045–0.07)"
+            ),
+            Self::DiffusionUnstable { diffusion, dt } => write!(
+                f,
+                "diffusion {diffusion} with time step {dt} is unstable: D·Δt must be in [0, 1] \
+                 (the step would overshoot and oscillate); lower the rate or Δt"
+            ),
+            Self::GridOutOfRange {
+                width,
+                height,
+                min,
+                max,
+            } => write!(
+                f,
+                "the grid {width}x{height} is out of range: each side must be {min} to {max} \
+                 cells"
             ),
             Self::RoughnessOutOfRange { roughness } => write!(
                 f,

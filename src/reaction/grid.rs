@@ -1,0 +1,323 @@
+//! The grid a reaction runs on: the caller's cells, a ring of three rows, and the step.
+
+use crate::error::{Error, FitError, ParameterError};
+use crate::math::Generator;
+
+use super::model::{Coefficients, GrayScott, COEFFICIENT_BITS, DT_BITS, ONE};
+
+/// One cell of the grid: the concentrations of A and B, each a multiple of 2⁻¹⁵ in [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Cell {
+    /// Chemical A (the substrate), 1.0 = [`ONE`].
+    pub a: u16,
+    /// Chemical B (the catalyst), 1.0 = [`ONE`].
+    pub b: u16,
+}
+
+impl Cell {
+    /// The homogeneous state, A = 1 and B = 0: a fixed point of every step.
+    pub const REST: Self = Self { a: ONE, b: 0 };
+}
+
+impl Default for Cell {
+    fn default() -> Self {
+        Self::REST
+    }
+}
+
+/// How a reaction starts: A = 1 everywhere and B = 0, except where B is seeded to 1.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Start {
+    /// B = 1 in a centred square of side ⌊min(W, H)/8⌋ (at least 1 cell).
+    Square,
+    /// B = 1 in max(1, ⌊W·H/2048⌋) squares of side max(1, ⌊min(W, H)/16⌋), each placed at a
+    /// seeded position (its top-left cell at (r₁ mod W, r₂ mod H) for two numbers of the
+    /// seeded generator, wrapping at the edges).
+    Spots {
+        /// The generator's seed.
+        seed: u64,
+    },
+}
+
+/// A Gray–Scott reaction on the caller's grid of `width × height` [`Cell`]s, stepped in
+/// place from a main loop.
+///
+/// Memory: the caller gives the cells (4 bytes each) and a ring of three rows
+/// ([`Reaction::ring_len`] cells, 12 bytes a column); the reaction itself is under 100
+/// bytes. A step reads each cell's old neighbours from the ring, so it needs no second copy
+/// of the grid.
+///
+/// Arithmetic: every cell changes by an integer sum in units of 2⁻⁴⁵ (exact products of
+/// the cells and the rates, each rate rounded once to 2⁻³⁰), rounded down to the cell's
+/// 2⁻¹⁵ with the remainder carried to the next cell in row order (error diffusion), then
+/// clamped to [0, 1] as the [model](GrayScott) says. The carry makes a step keep any total
+/// the equations keep: a pure-diffusion step leaves the grid's sum of A (and of B) exactly
+/// as it was (rounding towards the neighbours' range never leaves it, so the clamp never
+/// acts there).
+#[derive(Debug)]
+pub struct Reaction<'a> {
+    width: u32,
+    height: u32,
+    cells: &'a mut [Cell],
+    ring: &'a mut [Cell],
+    coefficients: Coefficients,
+    steps: u64,
+}
+
+impl<'a> Reaction<'a> {
+    /// The narrowest and lowest grid: the kernel reaches one cell each way.
+    pub const MIN_SIDE: u32 = 3;
+    /// The widest and highest grid.
+    pub const MAX_SIDE: u32 = 4096;
+
+    /// Cells the ring of rows needs for a grid `width` cells wide: three rows.
+    pub const fn ring_len(width: u32) -> usize {
+        3 * width as usize
+    }
+
+    /// A reaction of `model` on `cells` (row by row, the first `width × height` used),
+    /// with `ring` for the rows a step keeps. The cells are set to the rest state (A = 1,
+    /// B = 0); seed B with [`start`](Self::start). Refuses rates the step cannot take
+    /// stably, a side out of range and buffers too small.
+    pub fn new(
+        model: &GrayScott,
+        (width, height): (u32, u32),
+        cells: &'a mut [Cell],
+        ring: &'a mut [Cell],
+    ) -> Result<Self, Error> {
+        let coefficients = model.coefficients()?;
+        let side = Self::MIN_SIDE..=Self::MAX_SIDE;
+        if !side.contains(&width) || !side.contains(&height) {
+            return Err(Error::Parameter(ParameterError::GridOutOfRange {
+                width,
+                height,
+                min: Self::MIN_SIDE,
+                max: Self::MAX_SIDE,
+            }));
+        }
+        let needed = width as usize * height as usize;
+        let too_small = |needed, given| Error::Fit(FitError::BufferTooSmall { needed, given });
+        let (given, ring_len, ring_given) = (cells.len(), Self::ring_len(width), ring.len());
+        let cells = cells.get_mut(..needed).ok_or(too_small(needed, given))?;
+        let ring = ring
+            .get_mut(..ring_len)
+            .ok_or(too_small(ring_len, ring_given))?;
+        cells.fill(Cell::REST);
+        Ok(Self {
+            width,
+            height,
+            cells,
+            ring,
+            coefficients,
+            steps: 0,
+        })
+    }
+
+    /// The grid's width and height in cells.
+    pub const fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// Steps taken since the reaction was made.
+    pub const fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// The cells, row by row.
+    pub fn cells(&self) -> &[Cell] {
+        self.cells
+    }
+
+    /// The cells, row by row, to set a state of one's own.
+    pub fn cells_mut(&mut self) -> &mut [Cell] {
+        self.cells
+    }
+
+    /// The cell at column `x`, row `y`; `None` outside the grid.
+    pub fn cell(&self, x: u32, y: u32) -> Option<Cell> {
+        if x >= self.width || y >= self.height {
+            return None;
+        }
+        self.cells
+            .get(y as usize * self.width as usize + x as usize)
+            .copied()
+    }
+
+    /// Resets the grid to rest and seeds B as `start` says.
+    pub fn start(&mut self, start: Start) {
+        self.cells.fill(Cell::REST);
+        let (w, h) = (self.width, self.height);
+        match start {
+            Start::Square => {
+                let side = (w.min(h) / 8).max(1);
+                self.seed_square((w - side) / 2, (h - side) / 2, side);
+            }
+            Start::Spots { seed } => {
+                let mut random = Generator::new(seed);
+                let count = (w as usize * h as usize / 2048).max(1);
+                let side = (w.min(h) / 16).max(1);
+                for _ in 0..count {
+                    let x = random.next_u32() % w;
+                    let y = random.next_u32() % h;
+                    self.seed_square(x, y, side);
+                }
+            }
+        }
+    }
+
+    /// B = 1 in the square of `side` cells with top-left cell (`x`, `y`), wrapping.
+    fn seed_square(&mut self, x: u32, y: u32, side: u32) {
+        let (w, h) = (self.width, self.height);
+        for dy in 0..side {
+            for dx in 0..side {
+                let index = ((y + dy) % h) as usize * w as usize + ((x + dx) % w) as usize;
+                if let Some(cell) = self.cells.get_mut(index) {
+                    cell.b = ONE;
+                }
+            }
+        }
+    }
+
+    /// Takes `steps` steps of the model.
+    pub fn step(&mut self, steps: u32) {
+        for _ in 0..steps {
+            self.one_step();
+        }
+    }
+
+    fn one_step(&mut self) {
+        let w = self.width as usize;
+        let h = self.height as usize;
+        let mut ring = self.ring.chunks_exact_mut(w);
+        let (Some(first), Some(mut above), Some(mut centre)) =
+            (ring.next(), ring.next(), ring.next())
+        else {
+            return;
+        };
+        // The rows the first and last rows see across the edge, before they change.
+        let (Some(top), Some(bottom)) = (self.cells.get(..w), self.cells.get((h - 1) * w..)) else {
+            return;
+        };
+        first.copy_from_slice(top);
+        above.copy_from_slice(bottom);
+        let mut carry = Carry::default();
+        for y in 0..h {
+            let (head, tail) = self.cells.split_at_mut((y + 1) * w);
+            let (Some(out), Some(below)) = (head.get_mut(y * w..), tail.get(..w)) else {
+                // The last row: the first row below it, as it was.
+                if let Some(out) = head.get_mut(y * w..) {
+                    centre.copy_from_slice(out);
+                    update_row(above, centre, first, out, &self.coefficients, &mut carry);
+                }
+                break;
+            };
+            centre.copy_from_slice(out);
+            update_row(above, centre, below, out, &self.coefficients, &mut carry);
+            core::mem::swap(&mut above, &mut centre);
+        }
+        self.steps += 1;
+    }
+}
+
+/// The remainders (below a cell's 2⁻¹⁵) carried to the next cell, one for each chemical.
+#[derive(Debug, Default, Clone, Copy)]
+struct Carry {
+    a: i64,
+    b: i64,
+}
+
+/// A column of the 3×3 window: the sums above + below and the centre row's values.
+#[derive(Debug, Clone, Copy)]
+struct Column {
+    /// A above plus A below.
+    outer_a: i32,
+    /// B above plus B below.
+    outer_b: i32,
+    /// A in the centre row.
+    a: i32,
+    /// B in the centre row.
+    b: i32,
+}
+
+impl Column {
+    #[inline(always)]
+    fn of(above: Cell, centre: Cell, below: Cell) -> Self {
+        Self {
+            outer_a: i32::from(above.a) + i32::from(below.a),
+            outer_b: i32::from(above.b) + i32::from(below.b),
+            a: i32::from(centre.a),
+            b: i32::from(centre.b),
+        }
+    }
+}
+
+/// Writes the next state of a row into `out` from the old rows `above`, `centre` and
+/// `below` (all one width long), wrapping at the row's ends.
+#[inline(never)]
+fn update_row(
+    above: &[Cell],
+    centre: &[Cell],
+    below: &[Cell],
+    out: &mut [Cell],
+    coefficients: &Coefficients,
+    carry: &mut Carry,
+) {
+    let column = |((&a, &c), &b): ((&Cell, &Cell), &Cell)| Column::of(a, c, b);
+    let columns = above.iter().zip(centre).zip(below).map(column);
+    let last = match (above.last(), centre.last(), below.last()) {
+        (Some(&a), Some(&c), Some(&b)) => Column::of(a, c, b),
+        _ => return,
+    };
+    let mut ahead = columns.clone();
+    let Some(first) = ahead.next() else {
+        return;
+    };
+    let mut left = last;
+    let mut here = first;
+    for (cell, right) in out.iter_mut().zip(ahead.chain(core::iter::once(first))) {
+        *cell = next_cell(left, here, right, coefficients, carry);
+        left = here;
+        here = right;
+    }
+}
+
+/// One cell's next state from its column and the columns left and right of it.
+#[inline(always)]
+fn next_cell(
+    left: Column,
+    here: Column,
+    right: Column,
+    c: &Coefficients,
+    carry: &mut Carry,
+) -> Cell {
+    // 20·∇² exactly: 4 × (the four edges) + (the four corners) − 20 × the centre.
+    let laplacian_a =
+        4 * (here.outer_a + left.a + right.a) + left.outer_a + right.outer_a - 20 * here.a;
+    let laplacian_b =
+        4 * (here.outer_b + left.b + right.b) + left.outer_b + right.outer_b - 20 * here.b;
+    // Each product below is of two 32-bit numbers: A, B ≤ 2¹⁵, every rate ≤ 2³⁰.
+    let wide = |x: i32, y: i32| i64::from(x) * i64::from(y);
+    // AB²·Δt in Q45: A·B and B·Δt are at most 2³⁰.
+    let reaction =
+        wide(here.a * here.b, here.b * c.dt) >> (2 * CELL_BITS + DT_BITS - COEFFICIENT_BITS);
+    let change_a =
+        wide(c.diffusion_a, laplacian_a) - reaction + wide(c.feed, i32::from(ONE) - here.a);
+    let change_b = wide(c.diffusion_b, laplacian_b) + reaction - wide(c.decay, here.b);
+    Cell {
+        a: settle(here.a, change_a, &mut carry.a),
+        b: settle(here.b, change_b, &mut carry.b),
+    }
+}
+
+/// `value` plus `change` (in units of 2⁻⁴⁵), rounded down to 2⁻¹⁵ with the remainder
+/// carried on, clamped to [0, 1].
+#[inline(always)]
+fn settle(value: i32, change: i64, carry: &mut i64) -> u16 {
+    let total = change + *carry;
+    *carry = total & ((1 << COEFFICIENT_BITS) - 1);
+    let next = i64::from(value) + (total >> COEFFICIENT_BITS);
+    next.clamp(0, i64::from(ONE)) as u16
+}
+
+/// Fraction bits of a cell.
+const CELL_BITS: u32 = super::model::CELL_FRAC_BITS;

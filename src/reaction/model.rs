@@ -1,0 +1,225 @@
+//! The Gray–Scott model's parameters, checked once and turned into the step's integer
+//! coefficients, and the named presets.
+
+use crate::error::{Error, ParameterError};
+use crate::math::wide::div_round;
+use crate::math::Real;
+
+/// Fraction bits of the step's coefficients: `D·Δt/20`, `f·Δt` and `(k + f)·Δt` are
+/// multiples of 2⁻³⁰, and a cell's increment, before it is rounded to the cell's 2⁻¹⁵, a
+/// multiple of 2⁻⁴⁵.
+pub(super) const COEFFICIENT_BITS: u32 = 30;
+
+/// Fraction bits of a cell: 1.0 is 2¹⁵, in a `u16`.
+pub const CELL_FRAC_BITS: u32 = 15;
+
+/// Fraction bits of Δt in the reaction term AB²·Δt.
+pub(super) const DT_BITS: u32 = 15;
+
+/// A concentration of 1 in a cell.
+pub const ONE: u16 = 1 << CELL_FRAC_BITS;
+
+/// The Gray–Scott model as Karl Sims states it: feed `f`, kill `k`, diffusion rates `D_A`
+/// and `D_B`, and the time step `Δt`.
+///
+/// A step is A′ = A + (D_A ∇²A − AB² + f(1 − A))·Δt and
+/// B′ = B + (D_B ∇²B + AB² − (k + f)B)·Δt, with ∇² the 3×3 kernel (centre −1, edges 0.2,
+/// corners 0.05) on a grid whose edges wrap, each concentration then clamped to [0, 1].
+///
+/// The clamp is what the usual implementations do, and what keeps Sims's start stable:
+/// with Δt = 1, a seeded cell (A = B = 1) goes to A = −0.22 and B = 1.68 in two steps, and
+/// the unclamped explicit step then diverges for some rates (waves, mitosis from spots),
+/// in f64 as in any arithmetic. It never acts on diffusion alone: with D·Δt ≤ 1 a cell
+/// moves towards its neighbours' mean and stays within their range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct GrayScott {
+    /// The feed rate `f`: how fast A is replenished towards 1.
+    pub feed: Real,
+    /// The kill rate `k`: how fast B is removed (beyond the feed).
+    pub kill: Real,
+    /// A's diffusion rate, `D_A` (Sims: 1).
+    pub diffusion_a: Real,
+    /// B's diffusion rate, `D_B` (Sims: 0.5).
+    pub diffusion_b: Real,
+    /// The time step `Δt` (Sims: 1).
+    pub dt: Real,
+}
+
+impl Default for GrayScott {
+    /// Sims's coral: f = 0.0545, k = 0.062.
+    fn default() -> Self {
+        Preset::Coral.model()
+    }
+}
+
+impl GrayScott {
+    /// The model with feed `f` and kill `k`, Sims's diffusion rates (1 and 0.5) and Δt = 1.
+    pub fn new(feed: Real, kill: Real) -> Self {
+        Self {
+            feed,
+            kill,
+            diffusion_a: Real::ONE,
+            diffusion_b: Real::from_bits(1 << 31),
+            dt: Real::ONE,
+        }
+    }
+
+    /// The step's integer coefficients; an error if a rate is out of range or would make
+    /// the step unstable.
+    ///
+    /// Accepted: 0 < Δt ≤ 1; f and k in [0, 1] with (f + k)·Δt ≤ 1, so a step never takes
+    /// more B than there is; 0 ≤ D·Δt ≤ 1 for each diffusion rate, so diffusion moves a cell
+    /// towards the weighted mean of its neighbours and never past it (with this kernel the
+    /// explicit step oscillates from D·Δt > 1 and diverges beyond 1.25).
+    pub(super) fn coefficients(&self) -> Result<Coefficients, Error> {
+        let parameter = |error| Err(Error::Parameter(error));
+        let one = Real::ONE;
+        if self.dt <= Real::ZERO || self.dt > one {
+            return parameter(ParameterError::TimeStepOutOfRange { dt: self.dt });
+        }
+        let in_unit = |rate: Real| rate >= Real::ZERO && rate <= one;
+        let decay = self
+            .feed
+            .checked_add(self.kill)
+            .unwrap_or(Real::from_int(2));
+        if !in_unit(self.feed)
+            || !in_unit(self.kill)
+            || times(decay, self.dt, 1) > times(one, one, 1)
+        {
+            return parameter(ParameterError::FeedKillOutOfRange {
+                feed: self.feed,
+                kill: self.kill,
+            });
+        }
+        for diffusion in [self.diffusion_a, self.diffusion_b] {
+            if diffusion < Real::ZERO || times(diffusion, self.dt, 1) > times(one, one, 1) {
+                return parameter(ParameterError::DiffusionUnstable {
+                    diffusion,
+                    dt: self.dt,
+                });
+            }
+        }
+        // Every rate is now at most 1 (D·Δt/20 at most 1/20): each fits 31 bits in Q30.
+        let q30 = |value: i64| value as i32;
+        Ok(Coefficients {
+            diffusion_a: q30(times(self.diffusion_a, self.dt, 20)),
+            diffusion_b: q30(times(self.diffusion_b, self.dt, 20)),
+            feed: q30(times(self.feed, self.dt, 1)),
+            decay: q30(times(decay, self.dt, 1)),
+            dt: div_round(i128::from(self.dt.to_bits()), 1 << (32 - DT_BITS)) as i32,
+        })
+    }
+}
+
+/// `a·b/divisor` in Q30, rounded to nearest once from the exact product; saturated to
+/// 64 bits (the checks compare such values, and keep only those up to 2³⁰).
+fn times(a: Real, b: Real, divisor: i128) -> i64 {
+    let product = i128::from(a.to_bits()) * i128::from(b.to_bits());
+    let shift = 2 * Real::FRAC_BITS - COEFFICIENT_BITS;
+    div_round(product, divisor << shift).clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64
+}
+
+/// What a step multiplies by, each rounded once from the model's exact values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Coefficients {
+    /// `D_A·Δt/20` in Q30: the kernel's weights are 4/20 and 1/20.
+    pub diffusion_a: i32,
+    /// `D_B·Δt/20` in Q30.
+    pub diffusion_b: i32,
+    /// `f·Δt` in Q30.
+    pub feed: i32,
+    /// `(k + f)·Δt` in Q30.
+    pub decay: i32,
+    /// `Δt` in Q15, for the reaction AB²·Δt (exact when Δt is 1).
+    pub dt: i32,
+}
+
+/// Named (f, k) pairs: the patterns every Gray–Scott demo names, and Pearson's classes.
+///
+/// Pearson's classes (1993) are here where a source places one at a point. Each preset has
+/// D_A = 1, D_B = 0.5, Δt = 1 (Sims's scaling, in which these f and k give Pearson's
+/// patterns). Sources in `docs/families.md`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Preset {
+    /// Sims's default, coral growth: f = 0.0545, k = 0.062.
+    Coral,
+    /// Sims's mitosis, spots that divide: f = 0.0367, k = 0.0649.
+    Mitosis,
+    /// Worms (stripes that grow and fill): f = 0.078, k = 0.061.
+    Worms,
+    /// A maze of stripes: f = 0.029, k = 0.057.
+    Maze,
+    /// Holes in a B sheet: f = 0.039, k = 0.058.
+    Holes,
+    /// Travelling waves: f = 0.014, k = 0.045.
+    Waves,
+    /// Solitons, spots that stay: f = 0.03, k = 0.062.
+    Solitons,
+    /// The U-skate world (Munafo): f = 0.062, k = 0.06093.
+    UskateWorld,
+    /// Pearson's γ: stripes and spots that keep oscillating, f = 0.022, k = 0.051.
+    PearsonGamma,
+    /// Pearson's θ: a field of negative worms, f = 0.046, k = 0.061.
+    PearsonTheta,
+    /// Pearson's μ: solitons that multiply into worms, f = 0.046, k = 0.065.
+    PearsonMu,
+}
+
+impl Preset {
+    /// Every preset, in the order `--help` lists them.
+    pub const ALL: [Self; 11] = [
+        Self::Coral,
+        Self::Mitosis,
+        Self::Worms,
+        Self::Maze,
+        Self::Holes,
+        Self::Waves,
+        Self::Solitons,
+        Self::UskateWorld,
+        Self::PearsonGamma,
+        Self::PearsonTheta,
+        Self::PearsonMu,
+    ];
+
+    /// The preset's name, as the CLI spells it.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Coral => "coral",
+            Self::Mitosis => "mitosis",
+            Self::Worms => "worms",
+            Self::Maze => "maze",
+            Self::Holes => "holes",
+            Self::Waves => "waves",
+            Self::Solitons => "solitons",
+            Self::UskateWorld => "u-skate",
+            Self::PearsonGamma => "gamma",
+            Self::PearsonTheta => "theta",
+            Self::PearsonMu => "mu",
+        }
+    }
+
+    /// (f, k) in units of 10⁻⁵, as published.
+    const fn feed_kill(self) -> (i64, i64) {
+        match self {
+            Self::Coral => (5450, 6200),
+            Self::Mitosis => (3670, 6490),
+            Self::Worms => (7800, 6100),
+            Self::Maze => (2900, 5700),
+            Self::Holes => (3900, 5800),
+            Self::Waves => (1400, 4500),
+            Self::Solitons => (3000, 6200),
+            Self::UskateWorld => (6200, 6093),
+            Self::PearsonGamma => (2200, 5100),
+            Self::PearsonTheta => (4600, 6100),
+            Self::PearsonMu => (4600, 6500),
+        }
+    }
+
+    /// The preset's model, with Sims's diffusion rates and Δt = 1.
+    pub fn model(self) -> GrayScott {
+        let (feed, kill) = self.feed_kill();
+        let rate = |n| Real::from_ratio(n, 100_000).unwrap_or(Real::ZERO);
+        GrayScott::new(rate(feed), rate(kill))
+    }
+}
