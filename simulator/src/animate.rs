@@ -26,6 +26,7 @@ use crate::console::Failure;
 use crate::escape_scene::{self, Escape, Request};
 use crate::noise_scene::TextureOptions;
 use crate::palette::PaletteName;
+use crate::reaction_scene::ReactionOptions;
 use crate::systems::{Purpose, Source};
 
 /// `animate`'s options: what is animated, and its own options.
@@ -75,6 +76,8 @@ enum AnimationKind {
     Figure(FigureAnimationOptions),
     /// Perlin noise moving: each frame a step deeper in its third dimension
     Noise(NoiseAnimationOptions),
+    /// Reaction–diffusion unfolding: each frame --steps-per-frame steps later
+    Reaction(ReactionAnimationOptions),
 }
 
 #[derive(Debug, Args)]
@@ -170,6 +173,18 @@ struct NoiseAnimationOptions {
     frames: FrameOptions,
 }
 
+#[derive(Debug, Args)]
+struct ReactionAnimationOptions {
+    #[command(flatten)]
+    reaction: ReactionOptions,
+    /// Steps of the model between frames (the first frame is the start)
+    #[arg(long = "steps-per-frame", value_name = "N", default_value_t = 50,
+          value_parser = clap::value_parser!(u32).range(1..))]
+    steps_per_frame: u32,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
 /// Frames an animation writes without `--frames`.
 const DEFAULT_FRAMES: u32 = 100;
 
@@ -234,6 +249,13 @@ enum Animation {
         z: Real,
         /// Each frame's step deeper (`--z-step`).
         step: Real,
+    },
+    /// A reaction, `steps` steps a frame.
+    Reaction {
+        /// The model, grid and start.
+        reaction: ReactionOptions,
+        /// Steps between frames (`--steps-per-frame`).
+        steps: u32,
     },
 }
 
@@ -302,6 +324,13 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
                 texture: options.texture,
                 z: options.z,
                 step: options.z_step,
+            },
+            options.frames,
+        ),
+        AnimationKind::Reaction(options) => (
+            Animation::Reaction {
+                reaction: options.reaction,
+                steps: options.steps_per_frame,
             },
             options.frames,
         ),
@@ -427,7 +456,37 @@ fn make(arguments: &AnimationPlan, size: Size, emit: &Emit<'_>) -> Result<String
         Animation::Noise { texture, z, step } => {
             noise_frames(texture, (*z, *step), arguments.frames, size, emit)
         }
+        Animation::Reaction { reaction, steps } => {
+            reaction_frames(reaction, *steps, arguments.frames, size, emit)
+        }
     }
+}
+
+/// A reaction's `frames` frames: the start, then `steps` steps later each frame.
+fn reaction_frames(
+    options: &ReactionOptions,
+    steps: u32,
+    frames: u32,
+    size: Size,
+    emit: &Emit<'_>,
+) -> Result<String, String> {
+    let mut grid = options.grid();
+    let mut reaction = grid.reaction(options)?;
+    let area = embedded_graphics::primitives::Rectangle::new(Point::zero(), size);
+    for frame in 0..frames {
+        if frame > 0 {
+            reaction.step(steps);
+        }
+        let mut picture = Picture::new(size);
+        let Ok(()) = crate::reaction_scene::drawing(&reaction, area)?.draw(&mut picture);
+        emit.frame(picture)?;
+    }
+    let (w, h) = reaction.size();
+    Ok(format!(
+        " steps={} cell_steps={}",
+        reaction.steps(),
+        reaction.steps() * u64::from(w) * u64::from(h)
+    ))
 }
 
 /// A texture at `frames` depths of 3D noise, `z` then a `step` deeper each frame.

@@ -19,6 +19,7 @@ use crate::figure_scene::{render_figure, FigureOptions};
 use crate::ifs_scene::{render_gingerbread, render_ifs, GingerbreadOptions, IfsOptions};
 use crate::lsystem_scene::LSystemOptions;
 use crate::noise_scene::{NoiseOptions, RenderNoiseOptions};
+use crate::reaction_scene::RenderReactionOptions;
 use crate::shape_scene::{
     render_carpet, render_cube, render_gasket, render_terrain, render_terrain2d, CubeOptions,
     OrderOptions, Terrain2dOptions, TerrainOptions,
@@ -103,6 +104,8 @@ enum Scene {
     Terrain(TerrainOptions),
     /// Perlin noise as a texture: fBm, turbulence, ridged, clouds, marble, wood
     Noise(RenderNoiseOptions),
+    /// Reaction–diffusion (Gray–Scott): spots, stripes, mazes and coral on a grid
+    Reaction(RenderReactionOptions),
     /// A landscape by diamond-square (2D midpoint displacement)
     #[command(name = "terrain2d")]
     Terrain2d(Terrain2dOptions),
@@ -162,6 +165,7 @@ impl Scene {
             Self::Terrain(options) => Ok(render_terrain(&options)?),
             Self::Terrain2d(options) => Ok(render_terrain2d(&options)?),
             Self::Noise(options) => options.run(),
+            Self::Reaction(options) => options.run(),
         }
     }
 }

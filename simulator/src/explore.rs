@@ -223,6 +223,19 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
         Scene::Escape(escape) => {
             Scene::Escape(escape.with_max_iterations(stepped_cap(escape.max_iterations, up)))
         }
+        Scene::Reaction {
+            preset,
+            grid,
+            steps,
+        } => Scene::Reaction {
+            preset,
+            grid,
+            steps: if up {
+                steps.saturating_mul(2).min(64_000)
+            } else {
+                (steps / 2).max(100)
+            },
+        },
         Scene::Noise {
             texture,
             octaves,

@@ -21,6 +21,7 @@ pub(crate) mod noise_scene;
 pub(crate) mod output;
 pub(crate) mod palette;
 pub(crate) mod progress;
+pub(crate) mod reaction_scene;
 pub mod scene;
 pub(crate) mod shape_scene;
 pub(crate) mod systems;

@@ -2106,3 +2106,155 @@ fn animate_noise_steps_through_the_third_dimension() {
         .to_rgb8();
     assert_ne!(first, second, "the texture moves");
 }
+
+/// `render reaction`: the grid after `--steps` steps, its B field in `--values` (`W H`, then
+/// H rows of W values, each a multiple of 2⁻¹⁵ in [0, 1]), the same whatever `--size`.
+#[test]
+fn render_reaction_writes_the_b_field() {
+    let dir = scratch("render-reaction");
+    let png = dir.join("reaction.png");
+    let values = dir.join("values.txt");
+    let render = |steps: &str, size: &str, values: &Path| {
+        run(&[
+            "render",
+            "reaction",
+            "--preset",
+            "mitosis",
+            "--grid",
+            "24x16",
+            "--steps",
+            steps,
+            "--size",
+            size,
+            "--out",
+            png.to_str().unwrap(),
+            "--values",
+            values.to_str().unwrap(),
+            "--stats",
+        ])
+    };
+    // Step 0 is Sims's start: B = 1 in the centred 2×2 square (⌊16/8⌋ = 2), 0 elsewhere.
+    let output = render("0", "48x32", &values);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        stdout(&output).starts_with("cells=384 steps=0 cell_steps=0 "),
+        "{}",
+        stdout(&output)
+    );
+    let text = std::fs::read_to_string(&values).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("24 16"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(' ').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 16);
+    for (y, row) in rows.iter().enumerate() {
+        assert_eq!(row.len(), 24);
+        for (x, &b) in row.iter().enumerate() {
+            let seeded = (11..13).contains(&x) && (7..9).contains(&y);
+            assert_eq!(b, if seeded { 1.0 } else { 0.0 }, "({x}, {y})");
+        }
+    }
+    assert_eq!(image::open(&png).unwrap().to_rgb8().dimensions(), (48, 32));
+    // After 50 steps, B has spread and every value is a multiple of 2⁻¹⁵ in [0, 1]; the
+    // picture's size does not change the grid.
+    let later = dir.join("later.txt");
+    assert!(render("50", "48x32", &later).status.success());
+    let other = dir.join("other.txt");
+    assert!(render("50", "100x70", &other).status.success());
+    let text = std::fs::read_to_string(&later).unwrap();
+    assert_eq!(text, std::fs::read_to_string(&other).unwrap());
+    let values: Vec<f64> = text
+        .lines()
+        .skip(1)
+        .flat_map(|l| {
+            l.split(' ')
+                .map(|v| v.parse::<f64>().unwrap())
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    assert!(values
+        .iter()
+        .all(|&b| (0.0..=1.0).contains(&b) && (b * 32768.0).fract() == 0.0));
+    assert!(values.iter().filter(|&&b| b > 0.0).count() > 4);
+}
+
+/// Bad rates, grids and presets are refused with the cause, and nothing is written.
+#[test]
+fn render_reaction_refuses_bad_parameters() {
+    let dir = scratch("reaction-bad");
+    let never = dir.join("never.png");
+    for (bad, says) in [
+        (&["--feed", "0.5", "--kill", "0.6"][..], "feed"),
+        (&["--dt", "2"][..], "time step"),
+        (&["--diffusion-a", "1.2"][..], "unstable"),
+        (&["--grid", "2x8"][..], "grid"),
+        (&["--preset", "zebra"][..], "unknown preset"),
+        (&["--feed", "0.05"][..], "--kill"),
+        (
+            &["--preset", "coral", "--feed", "0.05", "--kill", "0.06"][..],
+            "cannot be used",
+        ),
+    ] {
+        let mut args = vec![
+            "render",
+            "reaction",
+            "--steps",
+            "1",
+            "--out",
+            never.to_str().unwrap(),
+        ];
+        args.extend(bad);
+        let output = run(&args);
+        assert!(!output.status.success(), "{bad:?}");
+        assert!(
+            stderr(&output).contains(says),
+            "{bad:?}: {}",
+            stderr(&output)
+        );
+    }
+    assert!(!never.exists());
+}
+
+/// `animate reaction`: frame k is the picture `render reaction` draws after k times
+/// `--steps-per-frame` steps.
+#[test]
+fn animate_reaction_frames_are_renders_at_their_steps() {
+    let dir = scratch("animate-reaction");
+    let frames = dir.join("frames");
+    let common = [
+        "--preset", "coral", "--grid", "20x20", "--init", "spots", "--seed", "3",
+    ];
+    let mut args = vec!["animate", "reaction"];
+    args.extend(common);
+    args.extend([
+        "--steps-per-frame",
+        "30",
+        "--frames",
+        "3",
+        "--size",
+        "40x40",
+        "--out",
+    ]);
+    args.push(frames.to_str().unwrap());
+    let output = run(&args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for (frame, steps) in [(0, "0"), (2, "60")] {
+        let still = dir.join(format!("still-{frame}.png"));
+        let mut args = vec![
+            "render", "reaction", "--steps", steps, "--size", "40x40", "--out",
+        ];
+        args.push(still.to_str().unwrap());
+        args.extend(common);
+        let output = run(&args);
+        assert!(output.status.success(), "{}", stderr(&output));
+        let animated = image::open(frames.join(format!("frame-{frame:04}.png")))
+            .unwrap()
+            .to_rgb8();
+        assert_eq!(
+            animated,
+            image::open(&still).unwrap().to_rgb8(),
+            "frame {frame}"
+        );
+    }
+}

@@ -48,7 +48,7 @@ pub enum Start {
 /// of the grid.
 ///
 /// Arithmetic: every cell changes by an integer sum in units of 2⁻⁴⁵ (exact products of
-/// the cells and the rates, each rate rounded once to 2⁻³⁰), rounded down to the cell's
+/// the cells and the rates, each rate rounded to 2⁻³⁰), rounded down to the cell's
 /// 2⁻¹⁵ with the remainder carried to the next cell in row order (error diffusion), then
 /// clamped to [0, 1] as the [model](GrayScott) says. The carry makes a step keep any total
 /// the equations keep: a pure-diffusion step leaves the grid's sum of A (and of B) exactly

@@ -2,7 +2,6 @@
 //! coefficients, and the named presets.
 
 use crate::error::{Error, ParameterError};
-use crate::math::wide::div_round;
 use crate::math::Real;
 
 /// Fraction bits of the step's coefficients: `D·Δt/20`, `f·Δt` and `(k + f)·Δt` are
@@ -70,53 +69,54 @@ impl GrayScott {
     /// Accepted: 0 < Δt ≤ 1; f and k in [0, 1] with (f + k)·Δt ≤ 1, so a step never takes
     /// more B than there is; 0 ≤ D·Δt ≤ 1 for each diffusion rate, so diffusion moves a cell
     /// towards the weighted mean of its neighbours and never past it (with this kernel the
-    /// explicit step oscillates from D·Δt > 1 and diverges beyond 1.25).
+    /// explicit step oscillates from D·Δt > 1 and diverges beyond 1.25). Each coefficient
+    /// is the product rounded to 2⁻³² (as `Real` multiplies), then to 2⁻³⁰.
+    #[inline(never)]
     pub(super) fn coefficients(&self) -> Result<Coefficients, Error> {
         let parameter = |error| Err(Error::Parameter(error));
-        let one = Real::ONE;
-        if self.dt <= Real::ZERO || self.dt > one {
+        let (zero, one) = (Real::ZERO, Real::ONE);
+        if self.dt <= zero || self.dt > one {
             return parameter(ParameterError::TimeStepOutOfRange { dt: self.dt });
         }
-        let in_unit = |rate: Real| rate >= Real::ZERO && rate <= one;
-        let decay = self
-            .feed
-            .checked_add(self.kill)
-            .unwrap_or(Real::from_int(2));
-        if !in_unit(self.feed)
-            || !in_unit(self.kill)
-            || times(decay, self.dt, 1) > times(one, one, 1)
-        {
+        let in_unit = |rate: Real| rate >= zero && rate <= one;
+        let times_dt = |rate: Real| rate.checked_mul(self.dt).unwrap_or(Real::from_int(2));
+        let decay = times_dt(
+            self.feed
+                .checked_add(self.kill)
+                .unwrap_or(Real::from_int(2)),
+        );
+        if !in_unit(self.feed) || !in_unit(self.kill) || decay > one {
             return parameter(ParameterError::FeedKillOutOfRange {
                 feed: self.feed,
                 kill: self.kill,
             });
         }
-        for diffusion in [self.diffusion_a, self.diffusion_b] {
-            if diffusion < Real::ZERO || times(diffusion, self.dt, 1) > times(one, one, 1) {
+        let (diffusion_a, diffusion_b) = (times_dt(self.diffusion_a), times_dt(self.diffusion_b));
+        for (diffusion, rate) in [
+            (self.diffusion_a, diffusion_a),
+            (self.diffusion_b, diffusion_b),
+        ] {
+            if diffusion < zero || rate > one {
                 return parameter(ParameterError::DiffusionUnstable {
                     diffusion,
                     dt: self.dt,
                 });
             }
         }
-        // Every rate is now at most 1 (D·Δt/20 at most 1/20): each fits 31 bits in Q30.
-        let q30 = |value: i64| value as i32;
+        // Every rate is now in [0, 1]: each fits 31 bits in Q30.
+        let q30 = |rate: Real, divisor: i64| {
+            let shift = Real::FRAC_BITS - COEFFICIENT_BITS;
+            let bits = rate.to_bits() / divisor;
+            ((bits + (1 << (shift - 1))) >> shift) as i32
+        };
         Ok(Coefficients {
-            diffusion_a: q30(times(self.diffusion_a, self.dt, 20)),
-            diffusion_b: q30(times(self.diffusion_b, self.dt, 20)),
-            feed: q30(times(self.feed, self.dt, 1)),
-            decay: q30(times(decay, self.dt, 1)),
-            dt: div_round(i128::from(self.dt.to_bits()), 1 << (32 - DT_BITS)) as i32,
+            diffusion_a: q30(diffusion_a, 20),
+            diffusion_b: q30(diffusion_b, 20),
+            feed: q30(times_dt(self.feed), 1),
+            decay: q30(decay, 1),
+            dt: ((self.dt.to_bits() + (1 << 16)) >> (Real::FRAC_BITS - DT_BITS)) as i32,
         })
     }
-}
-
-/// `a·b/divisor` in Q30, rounded to nearest once from the exact product; saturated to
-/// 64 bits (the checks compare such values, and keep only those up to 2³⁰).
-fn times(a: Real, b: Real, divisor: i128) -> i64 {
-    let product = i128::from(a.to_bits()) * i128::from(b.to_bits());
-    let shift = 2 * Real::FRAC_BITS - COEFFICIENT_BITS;
-    div_round(product, divisor << shift).clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64
 }
 
 /// What a step multiplies by, each rounded once from the model's exact values.
@@ -152,7 +152,7 @@ pub enum Preset {
     Maze,
     /// Holes in a B sheet: f = 0.039, k = 0.058.
     Holes,
-    /// Travelling waves: f = 0.014, k = 0.045.
+    /// Ring waves that travel out and wrap: f = 0.014, k = 0.041.
     Waves,
     /// Solitons, spots that stay: f = 0.03, k = 0.062.
     Solitons,
@@ -207,7 +207,7 @@ impl Preset {
             Self::Worms => (7800, 6100),
             Self::Maze => (2900, 5700),
             Self::Holes => (3900, 5800),
-            Self::Waves => (1400, 4500),
+            Self::Waves => (1400, 4100),
             Self::Solitons => (3000, 6200),
             Self::UskateWorld => (6200, 6093),
             Self::PearsonGamma => (2200, 5100),
@@ -219,7 +219,8 @@ impl Preset {
     /// The preset's model, with Sims's diffusion rates and Δt = 1.
     pub fn model(self) -> GrayScott {
         let (feed, kill) = self.feed_kill();
-        let rate = |n| Real::from_ratio(n, 100_000).unwrap_or(Real::ZERO);
+        // n·10⁻⁵ rounded to 2⁻³², in 64 bits (n < 10⁵).
+        let rate = |n: i64| Real::from_bits(((n << 32) + 50_000) / 100_000);
         GrayScott::new(rate(feed), rate(kill))
     }
 }

@@ -19,7 +19,7 @@ mod firmware {
     use embedded_graphics::prelude::Size;
     use panic_semihosting as _;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
-    use tinyfractal_scenes::{Work, DISPLAY_SCENES, GREY, NOISE_SCENES, SCENES, ZOOM_SCENES};
+    use tinyfractal_scenes::{Work, DISPLAY_SCENES, GREY, SCENES, TEXTURE_SCENES, ZOOM_SCENES};
 
     const RELOAD: u32 = 0x00FF_FFFF;
     /// Set at build time to measure one scene only, as `NAME` or `NAME:WIDTHxHEIGHT`,
@@ -138,7 +138,7 @@ mod firmware {
         let clock = Clock::calibrate();
         hprintln!("measure calibration scale={}", clock.scale);
         // Every core's scenes, with the baselines where they apply.
-        let every_core = SCENES.iter().chain(&NOISE_SCENES).chain(&DISPLAY_SCENES);
+        let every_core = SCENES.iter().chain(&TEXTURE_SCENES).chain(&DISPLAY_SCENES);
         for entry in every_core.chain(&ZOOM_SCENES) {
             // The baseline's view (parsed from decimal text) only for a scene measured.
             if !selected(entry.name, entry.size) {

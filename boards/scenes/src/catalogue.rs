@@ -7,6 +7,7 @@ use tinyfractal::{
     escape::{Shading, Tier},
     math::DeepCoord,
     noise::{Octaves, Texture},
+    reaction::Preset,
     render::Orientation,
     subdivision::CubeVariant,
     terrain::Displacement,
@@ -124,6 +125,16 @@ pub enum Scene {
         /// The permutation's seed (0: Perlin's own).
         seed: u32,
     },
+    /// Reaction–diffusion: `preset` on a `grid` of cells from Sims's square start, after
+    /// `steps` steps, stretched over the picture.
+    Reaction {
+        /// The (f, k) pair.
+        preset: Preset,
+        /// Cells across and down.
+        grid: (u32, u32),
+        /// Steps of the model.
+        steps: u32,
+    },
     /// A zoom into the Mandelbrot set, `frames` frames in one frame of storage: each frame
     /// takes the last one's columns and rows within `tolerance_percent` % of a pixel
     /// (`ZoomFrame::advance`) and computes the rest; the last is exact.
@@ -145,7 +156,8 @@ pub enum Scene {
 
 impl Scene {
     /// What the scene's [`Work`](crate::Work) counts, singular: `segment`, `point`,
-    /// `iteration`, `frame`, `square`, `triangle`, `cube`, `height`, `line` or `sample`.
+    /// `iteration`, `frame`, `square`, `triangle`, `cube`, `height`, `line`, `sample` or
+    /// `cell-step`.
     pub const fn work_unit(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "segment",
@@ -160,11 +172,13 @@ impl Scene {
             Self::Terrain { .. } => "height",
             Self::Walk { .. } => "line",
             Self::Noise { .. } => "sample",
+            Self::Reaction { .. } => "cell-step",
         }
     }
 
     /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
-    /// `terrain`, `terrain2d`, `figure`, `mandelbrot`, `julia` or `zoom` (`animate zoom`).
+    /// `terrain`, `terrain2d`, `figure`, `mandelbrot`, `julia`, `noise`, `reaction` or `zoom`
+    /// (`animate zoom`).
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
@@ -181,6 +195,7 @@ impl Scene {
             Self::Escape(EscapeScene { julia: Some(_), .. }) => "julia",
             Self::Zoom { .. } => "zoom",
             Self::Noise { .. } => "noise",
+            Self::Reaction { .. } => "reaction",
         }
     }
 
@@ -548,10 +563,31 @@ const fn noise(name: &'static str, texture: Texture, seed: u32, size: Size) -> E
     }
 }
 
+/// `preset` on a `grid` (Sims's square start), after `steps` steps.
+const fn reaction(
+    name: &'static str,
+    preset: Preset,
+    grid: (u32, u32),
+    steps: u32,
+    size: Size,
+) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Reaction {
+            preset,
+            grid,
+            steps,
+        },
+        size,
+        palette: "",
+    }
+}
+
 /// The gallery (`cargo run --release`): classic L-systems, escape-time views, the
-/// Sierpiński family, midpoint-displacement terrain and Perlin's textures, 320×240.
+/// Sierpiński family, midpoint-displacement terrain, Perlin's textures and
+/// reaction–diffusion, 320×240.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 23] = [
+pub const GALLERY: [Entry; 25] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -578,6 +614,8 @@ pub const GALLERY: [Entry; 23] = [
     terrain("terrain2d", (60, 40, 3), 257, true, GALLERY_SIZE),
     noise("noise-clouds", Texture::Clouds, 0, GALLERY_SIZE),
     noise("noise-marble", Texture::Marble, 0, GALLERY_SIZE),
+    reaction("reaction-mitosis", Preset::Mitosis, (128, 96), 8000, GALLERY_SIZE),
+    reaction("reaction-maze", Preset::Maze, (128, 96), 8000, GALLERY_SIZE),
 ];
 
 /// The systems of ABOP's `data/abop.lsys`, drawn by the general engine.
@@ -709,9 +747,17 @@ pub const SCENES: [Entry; 14] = [
     in_tier(Tier::Deep, escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire")),
 ];
 
-/// Perlin's textures on the OLED: measured on every core and shown by the boards built with
-/// the scenes' `noise` feature (not the LM3S6965, whose flash it would overflow).
-pub const NOISE_SCENES: [Entry; 1] = [noise("noise-fbm", Texture::Fbm, 0, OLED)];
+/// Perlin's textures and reaction–diffusion on the OLED, measured on every core.
+///
+/// Shown by the boards built with the scenes' `textures` feature (not the LM3S6965, whose
+/// flash they would overflow). The reaction's grid is [`MAX_BOARD_REACTION_CELLS`] (32×32,
+/// 4 KiB and a 384-byte ring on the stack), what the micro:bit's 16 KiB leaves.
+///
+/// [`MAX_BOARD_REACTION_CELLS`]: crate::MAX_BOARD_REACTION_CELLS
+pub const TEXTURE_SCENES: [Entry; 2] = [
+    noise("noise-fbm", Texture::Fbm, 0, OLED),
+    reaction("reaction-mitosis", Preset::Mitosis, (32, 32), 400, OLED),
+];
 
 /// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the stack
 /// ([`MAX_BOARD_REFERENCE_POINTS`](crate::MAX_BOARD_REFERENCE_POINTS), 24 KiB).

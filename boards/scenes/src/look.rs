@@ -94,6 +94,8 @@ pub enum Work {
     Frames(u64),
     /// Noise samples taken, one a pixel (a texture).
     Samples(u64),
+    /// Cells stepped, once a step (reaction–diffusion).
+    CellSteps(u64),
 }
 
 impl Work {
@@ -105,7 +107,8 @@ impl Work {
             | Self::Points(n)
             | Self::Cells(n)
             | Self::Frames(n)
-            | Self::Samples(n) => n,
+            | Self::Samples(n)
+            | Self::CellSteps(n) => n,
         }
     }
 
@@ -118,6 +121,7 @@ impl Work {
             Self::Cells(_) => "cells",
             Self::Frames(_) => "frames",
             Self::Samples(_) => "samples",
+            Self::CellSteps(_) => "cell_steps",
         }
     }
 }
@@ -187,6 +191,11 @@ impl Scene {
                 scale,
                 seed,
             } => draw_noise(target, look, (texture, octaves), scale, seed),
+            Scene::Reaction {
+                preset,
+                grid,
+                steps,
+            } => draw_reaction(target, look, preset, grid, steps),
             Scene::Escape(escape) => {
                 let view = escape.view(target.bounding_box().size)?;
                 match (escape.shading, view.tier()) {
@@ -423,7 +432,7 @@ where
 /// One of Perlin's textures over the whole of `target`, its 256 levels spread over the
 /// look's gradient keys. Out of line: its 256-entry gradient is on the stack only while a
 /// texture draws.
-#[cfg(feature = "noise")]
+#[cfg(feature = "textures")]
 #[inline(never)]
 fn draw_noise<D>(
     target: &mut D,
@@ -451,7 +460,7 @@ where
 }
 
 /// Without the `noise` feature a texture is the background: no samples taken.
-#[cfg(not(feature = "noise"))]
+#[cfg(not(feature = "textures"))]
 fn draw_noise<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
@@ -465,6 +474,86 @@ where
 {
     target.clear(look.background).map_err(DrawError::Target)?;
     Ok(Work::Samples(0))
+}
+
+/// The most cells a board's reaction grid has: 32×32, 4 KiB of cells and a 384-byte ring
+/// on the stack while it runs.
+pub const MAX_BOARD_REACTION_CELLS: usize = 32 * 32;
+
+/// The most cells the host's catalogue reactions have (128×128, 64 KiB on the stack).
+#[cfg(feature = "textures")]
+const MAX_HOST_REACTION_CELLS: usize = 128 * 128;
+
+/// A reaction over the whole of `target`: `preset` on a `grid` from Sims's square start,
+/// `steps` steps, B's 256 levels spread over the look's gradient keys. The grid is on the
+/// stack, in a buffer of [`MAX_BOARD_REACTION_CELLS`] when it fits (every board scene's:
+/// 32 wide at most), of 128×128 otherwise (the host's).
+#[cfg(feature = "textures")]
+fn draw_reaction<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    preset: tinyfractal::reaction::Preset,
+    grid: (u32, u32),
+    steps: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let cells = grid.0 as usize * grid.1 as usize;
+    // A board (a target without an OS) carries only its own buffer's code.
+    if cells <= MAX_BOARD_REACTION_CELLS || cfg!(target_os = "none") {
+        run_reaction::<D, MAX_BOARD_REACTION_CELLS, 96>(target, look, preset, grid, steps)
+    } else {
+        run_reaction::<D, MAX_HOST_REACTION_CELLS, 384>(target, look, preset, grid, steps)
+    }
+}
+
+/// [`draw_reaction`] with a grid of `N` cells at most and a ring of `RING` (three rows).
+/// Out of line, so its buffers are on the stack only while a reaction runs.
+#[cfg(feature = "textures")]
+#[inline(never)]
+fn run_reaction<D, const N: usize, const RING: usize>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    preset: tinyfractal::reaction::Preset,
+    grid: (u32, u32),
+    steps: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    use tinyfractal::reaction::{Cell, Reaction, Start};
+    let mut cells = [Cell::REST; N];
+    let mut ring = [Cell::REST; RING];
+    let mut reaction = Reaction::new(&preset.model(), grid, &mut cells, &mut ring)?;
+    reaction.start(Start::Square);
+    reaction.step(steps);
+    reaction
+        .fit(target.bounding_box(), look.gradient::<256>()?)?
+        .draw(target)
+        .map_err(DrawError::Target)?;
+    Ok(Work::CellSteps(
+        u64::from(steps) * u64::from(grid.0) * u64::from(grid.1),
+    ))
+}
+
+/// Without the `textures` feature a reaction is the background: no steps taken.
+#[cfg(not(feature = "textures"))]
+fn draw_reaction<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    _: tinyfractal::reaction::Preset,
+    _: (u32, u32),
+    _: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    target.clear(look.background).map_err(DrawError::Target)?;
+    Ok(Work::CellSteps(0))
 }
 
 /// A zoom over the whole of `target`, one frame of storage on the stack, a byte a pixel:
