@@ -3,7 +3,7 @@
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::Generator;
 
-use super::model::{Coefficients, GrayScott, COEFFICIENT_BITS, DT_BITS, ONE};
+use super::model::{Coefficients, GrayScott, COEFFICIENT_BITS, ONE};
 
 /// One cell of the grid: the concentrations of A and B, each a multiple of 2⁻¹⁵ in [0, 1].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -47,8 +47,8 @@ pub enum Start {
 /// bytes. A step reads each cell's old neighbours from the ring, so it needs no second copy
 /// of the grid.
 ///
-/// Arithmetic: every cell changes by an integer sum in units of 2⁻⁴⁵ (exact products of
-/// the cells and the rates, each rate rounded to 2⁻³⁰), rounded down to the cell's
+/// Arithmetic: every cell changes by an integer sum in units of 2⁻³⁰ (products of the
+/// cells and the rates, each rate rounded to 2⁻¹⁵, in 32 bits), rounded down to the cell's
 /// 2⁻¹⁵ with the remainder carried to the next cell in row order (error diffusion), then
 /// clamped to [0, 1] as the [model](GrayScott) says. The carry makes a step keep any total
 /// the equations keep: a pure-diffusion step leaves the grid's sum of A (and of B) exactly
@@ -219,20 +219,24 @@ impl<'a> Reaction<'a> {
     }
 }
 
-/// The remainders (below a cell's 2⁻¹⁵) carried to the next cell, one for each chemical.
+/// The remainders (below a cell's 2⁻¹⁵, in units of 2⁻³⁰) carried to the next cell, one
+/// for each chemical.
 #[derive(Debug, Default, Clone, Copy)]
 struct Carry {
-    a: i64,
-    b: i64,
+    a: i32,
+    b: i32,
 }
 
-/// A column of the 3×3 window: the sums above + below and the centre row's values.
+/// A column of a cell's 3×3 neighbourhood, as the step needs it.
+///
+/// The kernel is separable: 20·∇² = [1 4 1]ᵀ·[1 4 1] − 36·centre, so a column contributes
+/// its weighted sum `up + 4·centre + down` once, whichever neighbour it is.
 #[derive(Debug, Clone, Copy)]
 struct Column {
-    /// A above plus A below.
-    outer_a: i32,
-    /// B above plus B below.
-    outer_b: i32,
+    /// A above + 4 × A at the centre row + A below.
+    sum_a: i32,
+    /// The same for B.
+    sum_b: i32,
     /// A in the centre row.
     a: i32,
     /// B in the centre row.
@@ -242,11 +246,12 @@ struct Column {
 impl Column {
     #[inline(always)]
     fn of(above: Cell, centre: Cell, below: Cell) -> Self {
+        let (a, b) = (i32::from(centre.a), i32::from(centre.b));
         Self {
-            outer_a: i32::from(above.a) + i32::from(below.a),
-            outer_b: i32::from(above.b) + i32::from(below.b),
-            a: i32::from(centre.a),
-            b: i32::from(centre.b),
+            sum_a: i32::from(above.a) + 4 * a + i32::from(below.a),
+            sum_b: i32::from(above.b) + 4 * b + i32::from(below.b),
+            a,
+            b,
         }
     }
 }
@@ -262,61 +267,77 @@ fn update_row(
     coefficients: &Coefficients,
     carry: &mut Carry,
 ) {
-    let column = |((&a, &c), &b): ((&Cell, &Cell), &Cell)| Column::of(a, c, b);
-    let columns = above.iter().zip(centre).zip(below).map(column);
-    let last = match (above.last(), centre.last(), below.last()) {
-        (Some(&a), Some(&c), Some(&b)) => Column::of(a, c, b),
-        _ => return,
+    let column_at = |x: usize| {
+        let cell = |row: &[Cell]| row.get(x).copied().unwrap_or(Cell::REST);
+        Column::of(cell(above), cell(centre), cell(below))
     };
-    let mut ahead = columns.clone();
-    let Some(first) = ahead.next() else {
+    let width = out.len();
+    let first = column_at(0);
+    let mut left = column_at(width.wrapping_sub(1));
+    let mut here = first;
+    // In locals, so that they live in registers through the row.
+    let c = *coefficients;
+    let (mut carry_a, mut carry_b) = (carry.a, carry.b);
+    let Some((last, body)) = out.split_last_mut() else {
         return;
     };
-    let mut left = last;
-    let mut here = first;
-    for (cell, right) in out.iter_mut().zip(ahead.chain(core::iter::once(first))) {
-        *cell = next_cell(left, here, right, coefficients, carry);
+    let rights = above
+        .iter()
+        .skip(1)
+        .zip(centre.iter().skip(1))
+        .zip(below.iter().skip(1));
+    for (cell, ((&up, &mid), &down)) in body.iter_mut().zip(rights) {
+        let right = Column::of(up, mid, down);
+        *cell = next_cell(left, here, right, &c, (&mut carry_a, &mut carry_b));
         left = here;
         here = right;
     }
+    // The last cell's right neighbour is the first column.
+    *last = next_cell(left, here, first, &c, (&mut carry_a, &mut carry_b));
+    *carry = Carry {
+        a: carry_a,
+        b: carry_b,
+    };
 }
 
 /// One cell's next state from its column and the columns left and right of it.
+///
+/// Every product fits 32 bits: a cell is at most 2¹⁵ (1.0), each rate at most 2¹⁵ (D·Δt/20
+/// at most 1638), 20·∇² within ±20·2¹⁵; so each term is within ±2³⁰, and the sums for A
+/// and for B, with the carry, within ±2³¹ (the checks in [`GrayScott`] keep them there).
 #[inline(always)]
 fn next_cell(
     left: Column,
     here: Column,
     right: Column,
     c: &Coefficients,
-    carry: &mut Carry,
+    (carry_a, carry_b): (&mut i32, &mut i32),
 ) -> Cell {
     // 20·∇² exactly: 4 × (the four edges) + (the four corners) − 20 × the centre.
-    let laplacian_a =
-        4 * (here.outer_a + left.a + right.a) + left.outer_a + right.outer_a - 20 * here.a;
-    let laplacian_b =
-        4 * (here.outer_b + left.b + right.b) + left.outer_b + right.outer_b - 20 * here.b;
-    // Each product below is of two 32-bit numbers: A, B ≤ 2¹⁵, every rate ≤ 2³⁰.
-    let wide = |x: i32, y: i32| i64::from(x) * i64::from(y);
-    // AB²·Δt in Q45: A·B and B·Δt are at most 2³⁰.
-    let reaction =
-        wide(here.a * here.b, here.b * c.dt) >> (2 * CELL_BITS + DT_BITS - COEFFICIENT_BITS);
-    let change_a =
-        wide(c.diffusion_a, laplacian_a) - reaction + wide(c.feed, i32::from(ONE) - here.a);
-    let change_b = wide(c.diffusion_b, laplacian_b) + reaction - wide(c.decay, here.b);
+    let laplacian_a = left.sum_a + right.sum_a + 4 * here.sum_a - 36 * here.a;
+    let laplacian_b = left.sum_b + right.sum_b + 4 * here.sum_b - 36 * here.b;
+    let half = 1 << (CELL_BITS - 1);
+    // AB²·Δt in Q30: A·B rounded to Q15, times Δt rounded to Q15 (exact when Δt is 1),
+    // times B.
+    let ab = (here.a * here.b + half) >> CELL_BITS;
+    let reaction = ((ab * c.dt + half) >> COEFFICIENT_BITS) * here.b;
+    let change_a = c.diffusion_a * laplacian_a - reaction + c.feed * (i32::from(ONE) - here.a);
+    let change_b = c.diffusion_b * laplacian_b + reaction - c.decay * here.b;
     Cell {
-        a: settle(here.a, change_a, &mut carry.a),
-        b: settle(here.b, change_b, &mut carry.b),
+        a: settle(here.a, change_a, carry_a),
+        b: settle(here.b, change_b, carry_b),
     }
 }
 
-/// `value` plus `change` (in units of 2⁻⁴⁵), rounded down to 2⁻¹⁵ with the remainder
+/// `value` plus `change` (in units of 2⁻³⁰), rounded down to 2⁻¹⁵ with the remainder
 /// carried on, clamped to [0, 1].
 #[inline(always)]
-fn settle(value: i32, change: i64, carry: &mut i64) -> u16 {
+fn settle(value: i32, change: i32, carry: &mut i32) -> u16 {
+    // The change is within ±(2³¹ − 2¹⁵) (see `next_cell`) and the carry below 2¹⁵.
     let total = change + *carry;
     *carry = total & ((1 << COEFFICIENT_BITS) - 1);
-    let next = i64::from(value) + (total >> COEFFICIENT_BITS);
-    next.clamp(0, i64::from(ONE)) as u16
+    let next = value + (total >> COEFFICIENT_BITS);
+    next.clamp(0, i32::from(ONE)) as u16
 }
 
 /// Fraction bits of a cell.

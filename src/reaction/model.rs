@@ -4,16 +4,13 @@
 use crate::error::{Error, ParameterError};
 use crate::math::Real;
 
-/// Fraction bits of the step's coefficients: `D·Δt/20`, `f·Δt` and `(k + f)·Δt` are
-/// multiples of 2⁻³⁰, and a cell's increment, before it is rounded to the cell's 2⁻¹⁵, a
-/// multiple of 2⁻⁴⁵.
-pub(super) const COEFFICIENT_BITS: u32 = 30;
+/// Fraction bits of the step's rates: `D·Δt/20`, `f·Δt`, `(k + f)·Δt` and `Δt` are
+/// multiples of 2⁻¹⁵, like a cell, so a cell's change before it is rounded is a multiple
+/// of 2⁻³⁰ that fits 32 bits.
+pub(super) const COEFFICIENT_BITS: u32 = 15;
 
 /// Fraction bits of a cell: 1.0 is 2¹⁵, in a `u16`.
 pub const CELL_FRAC_BITS: u32 = 15;
-
-/// Fraction bits of Δt in the reaction term AB²·Δt.
-pub(super) const DT_BITS: u32 = 15;
 
 /// A concentration of 1 in a cell.
 pub const ONE: u16 = 1 << CELL_FRAC_BITS;
@@ -69,8 +66,8 @@ impl GrayScott {
     /// Accepted: 0 < Δt ≤ 1; f and k in [0, 1] with (f + k)·Δt ≤ 1, so a step never takes
     /// more B than there is; 0 ≤ D·Δt ≤ 1 for each diffusion rate, so diffusion moves a cell
     /// towards the weighted mean of its neighbours and never past it (with this kernel the
-    /// explicit step oscillates from D·Δt > 1 and diverges beyond 1.25). Each coefficient
-    /// is the product rounded to 2⁻³² (as `Real` multiplies), then to 2⁻³⁰.
+    /// explicit step oscillates from D·Δt > 1 and diverges beyond 1.25). Each rate is the
+    /// product rounded to 2⁻³² (as `Real` multiplies), then to 2⁻¹⁵.
     #[inline(never)]
     pub(super) fn coefficients(&self) -> Result<Coefficients, Error> {
         let parameter = |error| Err(Error::Parameter(error));
@@ -103,18 +100,18 @@ impl GrayScott {
                 });
             }
         }
-        // Every rate is now in [0, 1]: each fits 31 bits in Q30.
-        let q30 = |rate: Real, divisor: i64| {
+        // Every rate is now in [0, 1]: at most 2¹⁵ in Q15.
+        let q15 = |rate: Real, divisor: i64| {
             let shift = Real::FRAC_BITS - COEFFICIENT_BITS;
             let bits = rate.to_bits() / divisor;
             ((bits + (1 << (shift - 1))) >> shift) as i32
         };
         Ok(Coefficients {
-            diffusion_a: q30(diffusion_a, 20),
-            diffusion_b: q30(diffusion_b, 20),
-            feed: q30(times_dt(self.feed), 1),
-            decay: q30(decay, 1),
-            dt: ((self.dt.to_bits() + (1 << 16)) >> (Real::FRAC_BITS - DT_BITS)) as i32,
+            diffusion_a: q15(diffusion_a, 20),
+            diffusion_b: q15(diffusion_b, 20),
+            feed: q15(times_dt(self.feed), 1),
+            decay: q15(decay, 1),
+            dt: q15(self.dt, 1),
         })
     }
 }
@@ -122,13 +119,13 @@ impl GrayScott {
 /// What a step multiplies by, each rounded once from the model's exact values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Coefficients {
-    /// `D_A·Δt/20` in Q30: the kernel's weights are 4/20 and 1/20.
+    /// `D_A·Δt/20` in Q15: the kernel's weights are 4/20 and 1/20.
     pub diffusion_a: i32,
-    /// `D_B·Δt/20` in Q30.
+    /// `D_B·Δt/20` in Q15.
     pub diffusion_b: i32,
-    /// `f·Δt` in Q30.
+    /// `f·Δt` in Q15.
     pub feed: i32,
-    /// `(k + f)·Δt` in Q30.
+    /// `(k + f)·Δt` in Q15.
     pub decay: i32,
     /// `Δt` in Q15, for the reaction AB²·Δt (exact when Δt is 1).
     pub dt: i32,
