@@ -1,6 +1,9 @@
-//! Measuring firmware, one build per core: runs every scene (and, where they apply, the
+//! Measuring firmware, two builds per core: runs every scene (and, where they apply, the
 //! f32 and fixed-point baselines) into a checksum target and reports, over semihosting,
-//! one line per scene: instructions, work, checksum and stack high-water mark.
+//! one line per scene: instructions, work, checksum and stack high-water mark. The build
+//! with `--features textures` measures the texture scenes (noise, reaction–diffusion) and
+//! only them, the other build every other scene: together they would overflow the
+//! micro:bit's 256 KiB of flash.
 //!
 //! Under QEMU with `-icount shift=0` each instruction is one virtual nanosecond. SysTick
 //! runs from the core clock, so its ticks are proportional to instructions; the ratio is
@@ -18,8 +21,70 @@ mod firmware {
     use cortex_m_semihosting::{debug, hprintln};
     use embedded_graphics::prelude::Size;
     use panic_semihosting as _;
+    #[cfg(feature = "textures")]
+    use tinyfractal::noise::{Perlin, Texture};
+    #[cfg(feature = "textures")]
+    use tinyfractal::Real;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
-    use tinyfractal_scenes::{Work, DISPLAY_SCENES, GREY, SCENES, TEXTURE_SCENES, ZOOM_SCENES};
+    #[cfg(feature = "textures")]
+    use tinyfractal_scenes::naive::{gray_scott_f32, noise_f32};
+    #[cfg(feature = "textures")]
+    use tinyfractal_scenes::TEXTURE_SCENES;
+    use tinyfractal_scenes::{Scene, Work, GREY};
+    #[cfg(not(feature = "textures"))]
+    use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
+
+    /// The loops measured beside a scene: the escape time's f32 and fixed-point ones, or
+    /// a texture's naive f32 one.
+    #[derive(Clone, Copy)]
+    enum Baseline {
+        Escape(BaselineView),
+        /// fBm of Perlin's 2D noise: the permutation's seed, octaves, lattice cells across.
+        #[cfg(feature = "textures")]
+        Noise(u32, u32, f32),
+        /// Gray–Scott: (f, k), the grid, the steps.
+        #[cfg(feature = "textures")]
+        Reaction((f32, f32), (usize, usize), u32),
+    }
+
+    impl Baseline {
+        /// The baseline of `scene`, if it has one: a texture's only for fBm with
+        /// persistence ½ and lacunarity 2, what the naive loop computes.
+        fn of(scene: &Scene) -> Option<Self> {
+            #[cfg(feature = "textures")]
+            let f32_of = |r: Real| r.to_f64() as f32;
+            match *scene {
+                #[cfg(feature = "textures")]
+                Scene::Noise {
+                    texture: Texture::Fbm,
+                    octaves,
+                    scale,
+                    seed,
+                } if octaves.persistence == Real::from_bits(1 << 31)
+                    && octaves.lacunarity == Real::from_int(2) =>
+                {
+                    Some(Self::Noise(seed, octaves.octaves, f32_of(scale)))
+                }
+                #[cfg(feature = "textures")]
+                Scene::Noise { .. } => None,
+                #[cfg(feature = "textures")]
+                Scene::Reaction {
+                    preset,
+                    grid,
+                    steps,
+                } => {
+                    let model = preset.model();
+                    let rates = (f32_of(model.feed), f32_of(model.kill));
+                    Some(Self::Reaction(
+                        rates,
+                        (grid.0 as usize, grid.1 as usize),
+                        steps,
+                    ))
+                }
+                _ => BaselineView::of(scene).map(Self::Escape),
+            }
+        }
+    }
 
     const RELOAD: u32 = 0x00FF_FFFF;
     /// Set at build time to measure one scene only, as `NAME` or `NAME:WIDTHxHEIGHT`,
@@ -137,27 +202,38 @@ mod firmware {
         while SYST::get_current() == 0 {}
         let clock = Clock::calibrate();
         hprintln!("measure calibration scale={}", clock.scale);
-        // Every core's scenes, with the baselines where they apply.
-        let every_core = SCENES.iter().chain(&TEXTURE_SCENES).chain(&DISPLAY_SCENES);
-        for entry in every_core.chain(&ZOOM_SCENES) {
+        // Every core's scenes, with the baselines where they apply: the textures in their
+        // own build, the rest in the other.
+        #[cfg(feature = "textures")]
+        let every_core = TEXTURE_SCENES.iter();
+        #[cfg(not(feature = "textures"))]
+        let every_core = SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES);
+        for entry in every_core {
             // The baseline's view (parsed from decimal text) only for a scene measured.
             if !selected(entry.name, entry.size) {
                 continue;
             }
-            let view = BaselineView::of(&entry.scene);
-            measure(&clock, (entry.name, entry.size), view, |target| {
+            let baseline = Baseline::of(&entry.scene);
+            measure(&clock, (entry.name, entry.size), baseline, |target| {
+                // The textures' build reaches no other family's code.
+                #[cfg(feature = "textures")]
+                return entry
+                    .scene
+                    .draw_texture(target, &GREY)
+                    .unwrap_or(Ok(Work::Samples(0)));
+                #[cfg(not(feature = "textures"))]
                 entry.scene.draw(target, &GREY)
             });
         }
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
-        #[cfg(measure_general)]
+        #[cfg(all(measure_general, not(feature = "textures")))]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.draw(target, &GREY)
             });
         }
         // Perturbation's views, where the RAM holds a reference orbit (not the micro:bit's).
-        #[cfg(measure_general)]
+        #[cfg(all(measure_general, not(feature = "textures")))]
         for entry in tinyfractal_scenes::DEEP_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.scene.draw(target, &GREY)
@@ -175,7 +251,7 @@ mod firmware {
     fn measure<E>(
         clock: &Clock,
         (name, size): (&str, Size),
-        view: Option<BaselineView>,
+        baseline: Option<Baseline>,
         draw: impl FnOnce(&mut Checksum) -> Result<Work, E>,
     ) {
         if !selected(name, size) {
@@ -190,19 +266,38 @@ mod firmware {
         let stack = stack_used(bottom);
         let work = work.count();
         let (mut f32_cost, mut fixed_cost) = (None, None);
-        if let Some(view) = view.filter(|_| ONLY.is_none()) {
-            f32_cost = Some(clock.measure(|| {
+        // Each baseline's picture is kept (black_box), so the optimiser cannot drop a loop
+        // whose picture nobody reads.
+        let run = |loop_: &mut dyn FnMut(&mut Checksum)| {
+            Some(clock.measure(|| {
                 let mut baseline = Checksum::of_size(size);
-                baseline_f32(view, &mut baseline);
-                // Kept, so the optimiser cannot drop a loop whose picture nobody reads.
+                loop_(&mut baseline);
                 core::hint::black_box(baseline.value);
-            }));
-            fixed_cost = Some(clock.measure(|| {
-                let mut baseline = Checksum::of_size(size);
-                baseline_fixed20(view, &mut baseline);
-                // Kept, so the optimiser cannot drop a loop whose picture nobody reads.
-                core::hint::black_box(baseline.value);
-            }));
+            }))
+        };
+        match baseline.filter(|_| ONLY.is_none()) {
+            Some(Baseline::Escape(view)) => {
+                f32_cost = run(&mut |target| {
+                    baseline_f32(view, target);
+                });
+                fixed_cost = run(&mut |target| {
+                    baseline_fixed20(view, target);
+                });
+            }
+            #[cfg(feature = "textures")]
+            Some(Baseline::Noise(seed, octaves, scale)) => {
+                let permutation = *Perlin::seeded(seed).permutation();
+                f32_cost = run(&mut |target| {
+                    noise_f32(&permutation, octaves, scale, target);
+                });
+            }
+            #[cfg(feature = "textures")]
+            Some(Baseline::Reaction(rates, grid, steps)) => {
+                f32_cost = run(&mut |target| {
+                    gray_scott_f32(rates, grid, steps, target);
+                });
+            }
+            None => {}
         }
         hprintln!(
             "measure scene={} size={}x{} instructions={} work={} checksum={} pixels={} stack={} baseline_f32={} baseline_fixed20={}",

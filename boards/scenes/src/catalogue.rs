@@ -756,7 +756,9 @@ pub const SCENES: [Entry; 14] = [
 /// [`MAX_BOARD_REACTION_CELLS`]: crate::MAX_BOARD_REACTION_CELLS
 pub const TEXTURE_SCENES: [Entry; 2] = [
     noise("noise-fbm", Texture::Fbm, 0, OLED),
-    reaction("reaction-mitosis", Preset::Mitosis, (32, 32), 400, OLED),
+    // 24×24: the naive f32 loop measured beside it keeps two grids of floats (9 KiB), all
+    // the micro:bit has room for.
+    reaction("reaction-mitosis", Preset::Mitosis, (24, 24), 700, OLED),
 ];
 
 /// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the stack

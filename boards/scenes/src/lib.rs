@@ -11,6 +11,7 @@
 mod catalogue;
 mod look;
 pub mod measure;
+pub mod naive;
 mod wait;
 
 pub use catalogue::{

@@ -147,6 +147,35 @@ impl Scene {
         }
     }
 
+    /// Draws a texture scene (Perlin noise, reaction–diffusion) as [`Scene::draw`] does,
+    /// without reaching the other families' code; `None` for any other scene.
+    ///
+    /// A firmware that shows only textures calls this, so its flash holds only them.
+    pub fn draw_texture<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+    ) -> Option<Result<Work, DrawError<D::Error>>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
+        match *self {
+            Scene::Noise {
+                texture,
+                octaves,
+                scale,
+                seed,
+            } => Some(draw_noise(target, look, (texture, octaves), scale, seed)),
+            Scene::Reaction {
+                preset,
+                grid,
+                steps,
+            } => Some(draw_reaction(target, look, preset, grid, steps)),
+            _ => None,
+        }
+    }
+
     /// Draws the scene over the whole of `target`: an L-system clears it to
     /// `look.background` first; an escape-time view paints every pixel anyway, so clearing
     /// would only double the traffic to the display.
@@ -185,17 +214,9 @@ impl Scene {
             } => draw_terrain(target, look, displacement, samples, map),
             Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
             Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
-            Scene::Noise {
-                texture,
-                octaves,
-                scale,
-                seed,
-            } => draw_noise(target, look, (texture, octaves), scale, seed),
-            Scene::Reaction {
-                preset,
-                grid,
-                steps,
-            } => draw_reaction(target, look, preset, grid, steps),
+            Scene::Noise { .. } | Scene::Reaction { .. } => self
+                .draw_texture(target, look)
+                .unwrap_or(Ok(Work::Samples(0))),
             Scene::Escape(escape) => {
                 let view = escape.view(target.bounding_box().size)?;
                 match (escape.shading, view.tier()) {

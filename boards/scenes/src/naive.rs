@@ -1,0 +1,185 @@
+//! The loops a user would write for the textures, to measure the engine against.
+//!
+//! Perlin's reference code in `f32` as an Arduino sketch ports it, and a first Gray–Scott
+//! sketch in `f32`. Each draws its picture pixel by pixel into the target, as such
+//! sketches do.
+
+use embedded_graphics::{pixelcolor::Gray4, prelude::*};
+
+/// A grey for a value in [0, 1].
+fn grey(value: f32) -> Gray4 {
+    Gray4::new((value.clamp(0.0, 1.0) * 15.0 + 0.5) as u8)
+}
+
+/// `(int)floor(x)`, as the ports write it without a maths library.
+fn fast_floor(x: f32) -> i32 {
+    let i = x as i32;
+    if (i as f32) > x {
+        i - 1
+    } else {
+        i
+    }
+}
+
+/// Perlin's improved noise in 2D (his reference code at z = 0, the near layer), in `f32`:
+/// his `fade`, `lerp` and `grad`, over his permutation doubled.
+struct NaivePerlin {
+    p: [u8; 512],
+}
+
+impl NaivePerlin {
+    fn new(permutation: &[u8; 256]) -> Self {
+        let mut p = [0; 512];
+        for (i, slot) in p.iter_mut().enumerate() {
+            *slot = permutation[i % 256];
+        }
+        Self { p }
+    }
+
+    fn fade(t: f32) -> f32 {
+        t * t * t * (t * (t * 6.0 - 15.0) + 10.0)
+    }
+
+    fn lerp(t: f32, a: f32, b: f32) -> f32 {
+        a + t * (b - a)
+    }
+
+    fn grad(hash: u8, x: f32, y: f32) -> f32 {
+        let h = hash & 15;
+        let u = if h < 8 { x } else { y };
+        let v = if h < 4 {
+            y
+        } else if h == 12 || h == 14 {
+            x
+        } else {
+            0.0
+        };
+        (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
+    }
+
+    fn noise(&self, x: f32, y: f32) -> f32 {
+        let (fx, fy) = (fast_floor(x), fast_floor(y));
+        let (cx, cy) = ((fx & 255) as usize, (fy & 255) as usize);
+        let (x, y) = (x - fx as f32, y - fy as f32);
+        let (u, v) = (Self::fade(x), Self::fade(y));
+        let p = &self.p;
+        let a = p[cx] as usize + cy;
+        let (aa, ab) = (p[a] as usize, p[a + 1] as usize);
+        let b = p[cx + 1] as usize + cy;
+        let (ba, bb) = (p[b] as usize, p[b + 1] as usize);
+        Self::lerp(
+            v,
+            Self::lerp(u, Self::grad(p[aa], x, y), Self::grad(p[ba], x - 1.0, y)),
+            Self::lerp(
+                u,
+                Self::grad(p[ab], x, y - 1.0),
+                Self::grad(p[bb], x - 1.0, y - 1.0),
+            ),
+        )
+    }
+}
+
+/// fBm of `octaves` octaves (persistence ½, lacunarity 2) of Perlin's 2D noise over the
+/// target, `scale` lattice cells across it, in `f32`; returns the samples taken.
+pub fn noise_f32<D: DrawTarget<Color = Gray4>>(
+    permutation: &[u8; 256],
+    octaves: u32,
+    scale: f32,
+    target: &mut D,
+) -> u64 {
+    let noise = NaivePerlin::new(permutation);
+    let size = target.bounding_box().size;
+    let step = scale / size.width as f32;
+    let mut samples = 0;
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let (x, y) = (i as f32 * step, j as f32 * step);
+            let (mut sum, mut amplitude, mut frequency, mut total) = (0.0, 1.0, 1.0, 0.0);
+            for _ in 0..octaves {
+                sum += amplitude * noise.noise(x * frequency, y * frequency);
+                total += amplitude;
+                amplitude *= 0.5;
+                frequency *= 2.0;
+                samples += 1;
+            }
+            let value = (sum / total + 1.0) / 2.0;
+            let _ = target.draw_iter(core::iter::once(Pixel(
+                Point::new(i as i32, j as i32),
+                grey(value),
+            )));
+        }
+    }
+    samples
+}
+
+/// The most cells the naive Gray–Scott grid has: two copies of A and B in `f32`, 9 KiB.
+pub const NAIVE_REACTION_CELLS: usize = 24 * 24;
+
+/// Gray–Scott as a first sketch writes it, in `f32`; returns the cell-steps.
+///
+/// Two grids, the 3×3 kernel as a table walked with `%` at every neighbour, each value
+/// constrained to [0, 1], the grids swapped after each step; Sims's square start; then each
+/// pixel the cell under it. Nothing is done (0) if the grid is larger than
+/// [`NAIVE_REACTION_CELLS`].
+pub fn gray_scott_f32<D: DrawTarget<Color = Gray4>>(
+    (feed, kill): (f32, f32),
+    (w, h): (usize, usize),
+    steps: u32,
+    target: &mut D,
+) -> u64 {
+    const KERNEL: [[f32; 3]; 3] = [[0.05, 0.2, 0.05], [0.2, -1.0, 0.2], [0.05, 0.2, 0.05]];
+    const D_A: f32 = 1.0;
+    const D_B: f32 = 0.5;
+    if w * h > NAIVE_REACTION_CELLS || w == 0 || h == 0 {
+        return 0;
+    }
+    let mut grids = [[[1.0f32, 0.0]; NAIVE_REACTION_CELLS]; 2];
+    let side = (w.min(h) / 8).max(1);
+    let (x0, y0) = ((w - side) / 2, (h - side) / 2);
+    for y in y0..y0 + side {
+        for x in x0..x0 + side {
+            grids[0][y * w + x][1] = 1.0;
+        }
+    }
+    let mut current = 0;
+    for _ in 0..steps {
+        let (old, new) = if current == 0 {
+            let (a, b) = grids.split_at_mut(1);
+            (&a[0], &mut b[0])
+        } else {
+            let (a, b) = grids.split_at_mut(1);
+            (&b[0], &mut a[0])
+        };
+        for y in 0..h {
+            for x in 0..w {
+                let (mut la, mut lb) = (0.0, 0.0);
+                for (dy, row) in KERNEL.iter().enumerate() {
+                    for (dx, weight) in row.iter().enumerate() {
+                        let cell = old[((y + h + dy - 1) % h) * w + (x + w + dx - 1) % w];
+                        la += cell[0] * weight;
+                        lb += cell[1] * weight;
+                    }
+                }
+                let [a, b] = old[y * w + x];
+                let abb = a * b * b;
+                new[y * w + x] = [
+                    (a + D_A * la - abb + feed * (1.0 - a)).clamp(0.0, 1.0),
+                    (b + D_B * lb + abb - (kill + feed) * b).clamp(0.0, 1.0),
+                ];
+            }
+        }
+        current = 1 - current;
+    }
+    let size = target.bounding_box().size;
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let cell = grids[current][(j as usize * h / size.height as usize) * w
+                + i as usize * w / size.width as usize];
+            let _ = target.draw_iter(core::iter::once(Pixel(
+                Point::new(i as i32, j as i32),
+                grey(cell[1]),
+            )));
+        }
+    }
+    u64::from(steps) * (w * h) as u64
+}
