@@ -3,7 +3,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::fractal::{Octaves, Sum};
+use super::fractal::{Ladder, Octaves, Sum};
 use super::perlin::Perlin;
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::trig::BinaryAngle;
@@ -42,7 +42,8 @@ impl Texture {
         octaves: &Octaves,
         point: (Real, Real, Option<Real>),
     ) -> Result<Real, Error> {
-        self.value_normalised(noise, octaves, point, normaliser(octaves)?)
+        let ladder = octaves.ladder()?;
+        self.value_normalised(noise, &ladder, point, normaliser(&ladder)?)
     }
 
     /// [`value`](Self::value) with the sums' normaliser given, so that a drawing computes
@@ -50,7 +51,7 @@ impl Texture {
     fn value_normalised(
         self,
         noise: &Perlin,
-        octaves: &Octaves,
+        octaves: &Ladder,
         point: (Real, Real, Option<Real>),
         normaliser: Real,
     ) -> Result<Real, Error> {
@@ -117,13 +118,10 @@ fn level_of(value: Real) -> u8 {
 
 /// 1/Σaⁱ over the octaves, rounded to 2⁻³²: what a sum is multiplied by to stay within
 /// [−1, 1].
-fn normaliser(octaves: &Octaves) -> Result<Real, Error> {
-    let (mut total, mut amplitude) = (Real::ZERO, Real::ONE);
-    for _ in 0..octaves.octaves {
-        total = total.checked_add(amplitude).ok_or(Overflow)?;
-        amplitude = amplitude.checked_mul(octaves.persistence).ok_or(Overflow)?;
-    }
-    Real::ONE.checked_div(total).ok_or(Error::from(Overflow))
+fn normaliser(ladder: &Ladder) -> Result<Real, Error> {
+    Real::ONE
+        .checked_div(ladder.amplitude_total()?)
+        .ok_or(Error::from(Overflow))
 }
 
 /// A texture over a picture: `scale` lattice cells across its width, at depth `z` (3D
@@ -193,7 +191,7 @@ impl<'a> NoiseTexture<'a> {
         area: Rectangle,
         palette: P,
     ) -> Result<NoiseDrawing<'a, P>, Error> {
-        self.octaves.check()?;
+        let ladder = self.octaves.ladder()?;
         if self.scale <= Real::ZERO {
             return Err(Error::Parameter(ParameterError::ScaleNotPositive {
                 scale: self.scale,
@@ -213,7 +211,8 @@ impl<'a> NoiseTexture<'a> {
         reach.checked_add(Real::from_int(16)).ok_or(Overflow)?;
         Ok(NoiseDrawing {
             texture: self.clone(),
-            normaliser: normaliser(&self.octaves)?,
+            normaliser: normaliser(&ladder)?,
+            ladder,
             area,
             palette,
         })
@@ -227,6 +226,8 @@ pub struct NoiseDrawing<'a, P> {
     texture: NoiseTexture<'a>,
     /// 1/Σaⁱ, once for every pixel.
     normaliser: Real,
+    /// The octaves' amplitudes, once for every pixel.
+    ladder: Ladder,
     area: Rectangle,
     palette: P,
 }
@@ -239,13 +240,39 @@ impl<P> NoiseDrawing<'_, P> {
 
     /// The value of pixel (`x`, `y`) of the area, in [0, 1] (what its level rounds).
     pub fn value_at(&self, x: u32, y: u32) -> Real {
+        self.value_of(self.texture.point((x, y), self.area.size.width))
+    }
+
+    /// The value at a point of the texture (one of this drawing's pixels).
+    fn value_of(&self, point: (Real, Real, Option<Real>)) -> Real {
         let texture = &self.texture;
-        let point = texture.point((x, y), self.area.size.width);
         // `fit` checked every point's range: a sample cannot fail here.
         texture
             .texture
-            .value_normalised(texture.noise, &texture.octaves, point, self.normaliser)
+            .value_normalised(texture.noise, &self.ladder, point, self.normaliser)
             .unwrap_or(Real::ZERO)
+    }
+
+    /// The points of row `y`'s pixels, left to right: the same as
+    /// [`NoiseTexture::point`] gives, ⌊scale·x/width⌋ in 2⁻³², stepped by quotient and
+    /// remainder instead of dividing at every pixel.
+    fn row_points(&self, y: u32) -> impl Iterator<Item = (Real, Real, Option<Real>)> + '_ {
+        let width = self.area.size.width.max(1);
+        let (_, row, z) = self.texture.point((0, y), width);
+        // `fit` refused a scale that is not positive.
+        let scale = self.texture.scale.to_bits().max(0);
+        let (quotient, remainder) = (scale / i64::from(width), scale % i64::from(width));
+        let (mut x, mut carried) = (0_i64, 0_i64);
+        (0..self.area.size.width).map(move |_| {
+            let point = (Real::from_bits(x), row, z);
+            x += quotient;
+            carried += remainder;
+            if carried >= i64::from(width) {
+                carried -= i64::from(width);
+                x += 1;
+            }
+            point
+        })
     }
 }
 
@@ -263,10 +290,51 @@ impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
     where
         D: DrawTarget<Color = Self::Color>,
     {
-        let (w, h) = (self.area.size.width, self.area.size.height);
+        let h = self.area.size.height;
         let colors = (0..h).flat_map(|y| {
-            (0..w).map(move |x| self.palette.color(u16::from(self.level_at(x, y)), u16::MAX))
+            self.row_points(y).map(move |point| {
+                let level = level_of(self.value_of(point));
+                self.palette.color(u16::from(level), u16::MAX)
+            })
         });
         target.fill_contiguous(&self.area, colors)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics::pixelcolor::Gray8;
+
+    use super::*;
+    use crate::render::palette::TwoColor;
+
+    /// Stepping along a row by quotient and remainder gives the points dividing gives.
+    #[test]
+    fn row_points_are_the_divided_points() {
+        let noise = Perlin::reference();
+        let palette = TwoColor {
+            inside: Gray8::BLACK,
+            outside: Gray8::WHITE,
+        };
+        for (width, scale) in [
+            (1, "1"),
+            (7, "3.3"),
+            (128, "4"),
+            (333, "0.001"),
+            (97, "1000.77"),
+        ] {
+            let texture = NoiseTexture::new(&noise, Texture::Fbm)
+                .with_scale(Real::parse_decimal(scale).unwrap());
+            let area = Rectangle::new(Point::zero(), Size::new(width, 3));
+            let drawing = texture.fit(area, palette).unwrap();
+            for y in 0..3 {
+                let mut count = 0;
+                for (x, stepped) in (0..).zip(drawing.row_points(y)) {
+                    assert_eq!(stepped, texture.point((x, y), width), "{width} {scale} {x}");
+                    count += 1;
+                }
+                assert_eq!(count, width);
+            }
+        }
     }
 }
