@@ -218,8 +218,17 @@ fn model_sum(p: &[u8; 256], octaves: &Octaves, sum: Sum, (x, y, z): (f64, f64, f
 fn fractal_sums_follow_an_f64_sum() {
     let noise = Perlin::seeded(3);
     let p = noise.permutation();
-    let octaves = Octaves::default();
-    for sum in [Sum::Fbm, Sum::Turbulence, Sum::Ridged] {
+    // The usual octaves (summed in 64-bit integers in the plane), and others (the general
+    // path, in `Real`).
+    let other = Octaves {
+        octaves: 5,
+        persistence: real(0.625),
+        lacunarity: real(1.875),
+    };
+    for (octaves, sum) in [Octaves::default(), other]
+        .into_iter()
+        .flat_map(|o| [Sum::Fbm, Sum::Turbulence, Sum::Ridged].map(|s| (o, s)))
+    {
         for (x, y, z) in points(2_000, 4.0) {
             let got = octaves
                 .sum(&noise, sum, (real(x), real(y), Some(real(z))))
@@ -428,4 +437,44 @@ mod textures {
             .fit(area, Levels)
             .is_err());
     }
+}
+
+/// A noise landscape's heights are the fBm of the model at its grid points, (scale·i/n,
+/// scale·j/n), in Q16.16 rounded down.
+#[test]
+fn noise_terrain_heights_are_the_model_fbm() {
+    use tinyfractal::noise::NoiseTerrain;
+    let noise = Perlin::seeded(5);
+    let p = noise.permutation();
+    let n = 33;
+    let terrain = NoiseTerrain::new(&noise, n).with_scale(real(3.0));
+    let mut heights = vec![0i32; terrain.cells()];
+    terrain.generate(&mut heights).unwrap();
+    for j in 0..n {
+        for i in 0..n {
+            let at = |k: u32| f64::from(k) * 3.0 / f64::from(n);
+            let want = model_sum(p, &Octaves::default(), Sum::Fbm, (at(i), at(j), 0.0));
+            let got = f64::from(heights[(j * n + i) as usize]) / 65536.0;
+            assert!(
+                (got - want).abs() <= 2.0 / 65536.0,
+                "({i}, {j}): {got} against {want}"
+            );
+        }
+    }
+    // Too small a buffer, a side out of range, a scale not positive: typed errors.
+    assert!(matches!(
+        terrain.generate(&mut heights[..10]),
+        Err(Error::Fit(tinyfractal::error::FitError::BufferTooSmall {
+            needed: 1089,
+            given: 10
+        }))
+    ));
+    assert!(matches!(
+        NoiseTerrain::new(&noise, 1).generate(&mut heights),
+        Err(Error::Parameter(ParameterError::GridOutOfRange { .. }))
+    ));
+    assert!(matches!(
+        terrain.with_scale(Real::ZERO).generate(&mut heights),
+        Err(Error::Parameter(ParameterError::ScaleNotPositive { .. }))
+    ));
 }

@@ -223,6 +223,21 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
         Scene::Escape(escape) => {
             Scene::Escape(escape.with_max_iterations(stepped_cap(escape.max_iterations, up)))
         }
+        Scene::NoiseTerrain {
+            octaves,
+            scale,
+            seed,
+            samples,
+        } => Scene::NoiseTerrain {
+            octaves,
+            scale,
+            seed: if up {
+                seed.wrapping_add(1)
+            } else {
+                seed.wrapping_sub(1)
+            },
+            samples,
+        },
         Scene::Reaction {
             preset,
             grid,

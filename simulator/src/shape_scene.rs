@@ -1,5 +1,6 @@
 //! `render carpet`, `render gasket`, `render cube` (the Sierpiński family), `render terrain`
-//! and `render terrain2d` (midpoint displacement), and the gallery's entries of them.
+//! and `render terrain2d` (midpoint displacement, or noise), and the gallery's entries of
+//! them.
 //!
 //! Drawn on black, the carpet and gasket in the palette's first colour (white).
 
@@ -11,6 +12,7 @@ use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
+    noise::{NoiseTerrain, Octaves, Perlin},
     subdivision::{Camera, CubeVariant},
     terrain::Displacement,
     Carpet, Gasket, Real, SierpinskiCube, Terrain, TerrainMap,
@@ -106,8 +108,23 @@ pub struct TerrainOptions {
 
 #[derive(Debug, Clone, PartialEq, Args)]
 pub struct Terrain2dOptions {
+    /// How the heights are made
+    #[arg(long, value_enum, default_value = "displacement")]
+    method: TerrainMethod,
     #[command(flatten)]
     displacement: DisplacementOptions,
+    /// With --method noise: octaves of fBm, 1 to 16 [default: 6]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=16))]
+    octaves: Option<u32>,
+    /// With --method noise: each octave's amplitude over the last one's, 0 to 1 [default: 0.5]
+    #[arg(long, value_name = "P", value_parser = parse_real)]
+    persistence: Option<Real>,
+    /// With --method noise: each octave's frequency over the last one's, 1 to 4 [default: 2]
+    #[arg(long, value_name = "L", value_parser = parse_real)]
+    lacunarity: Option<Real>,
+    /// With --method noise: lattice cells across the landscape [default: 4]
+    #[arg(long, value_name = "S", value_parser = parse_real)]
+    scale: Option<Real>,
     /// Heights along a side: 2^k + 1
     #[arg(long, value_name = "N", default_value_t = 257)]
     samples: u32,
@@ -119,6 +136,15 @@ pub struct Terrain2dOptions {
     heights: Option<PathBuf>,
     #[command(flatten)]
     common: Common,
+}
+
+/// `render terrain2d --method`: where a landscape's heights come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TerrainMethod {
+    /// Midpoint displacement (diamond-square), the lecture's
+    Displacement,
+    /// fBm of Perlin noise (--octaves, --persistence, --lacunarity, --scale, --seed)
+    Noise,
 }
 
 fn parse_real(text: &str) -> Result<Real, String> {
@@ -241,21 +267,28 @@ pub fn render_terrain(options: &TerrainOptions) -> Result<(), String> {
     )
 }
 
-/// `render terrain2d`.
+/// `render terrain2d`: a landscape by midpoint displacement or of noise.
 pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
     crate::delivery::window_available(options.common.window)?;
     let failed = |e: tinyfractal::Error| format!("terrain2d: {e}");
     let map =
         TerrainMap::new(options.samples, options.displacement.displacement()).wrapped(options.wrap);
+    let noise = noise_of(options)?;
     // The buffer is the only limit: never more than the core's largest landscape, so a
     // size beyond it is refused by the core's own check, not by a failed allocation.
     let largest = (1usize << TerrainMap::MAX_LEVELS) + 1;
     let mut heights = vec![0i32; map.cells().min(largest * largest)];
     let mut target = options.common.display();
     let started = Instant::now();
-    let drawing = map
-        .fit::<Rgb888>(options.common.area(), &mut heights)
-        .map_err(failed)?;
+    let area = options.common.area();
+    let drawing = match &noise {
+        None => map.fit::<Rgb888>(area, &mut heights),
+        Some((noise, octaves, scale)) => NoiseTerrain::new(noise, options.samples)
+            .with_octaves(*octaves)
+            .with_scale(*scale)
+            .fit::<Rgb888>(area, &mut heights),
+    }
+    .map_err(failed)?;
     let Ok(samples) = drawing.draw(&mut target);
     let (low, high) = drawing.range();
     let line = format!(
@@ -285,6 +318,51 @@ pub fn render_terrain2d(options: &Terrain2dOptions) -> Result<(), String> {
     )
 }
 
+/// For `--method noise`, the permutation, octaves and scale the options name; `None` for
+/// midpoint displacement. Options of the other method are refused, not ignored.
+fn noise_of(options: &Terrain2dOptions) -> Result<Option<(Perlin, Octaves, Real)>, String> {
+    let noise_options = [
+        ("--octaves", options.octaves.is_some()),
+        ("--persistence", options.persistence.is_some()),
+        ("--lacunarity", options.lacunarity.is_some()),
+        ("--scale", options.scale.is_some()),
+    ];
+    match options.method {
+        TerrainMethod::Displacement => match noise_options.iter().find(|(_, given)| *given) {
+            Some((name, _)) => Err(format!(
+                "terrain2d: {name} applies to --method noise, not to midpoint displacement"
+            )),
+            None => Ok(None),
+        },
+        TerrainMethod::Noise => {
+            let displacement = &options.displacement;
+            let (roughness, sigma) = (Real::parse_decimal("0.7"), Real::parse_decimal("20"));
+            if Some(displacement.roughness) != roughness
+                || Some(displacement.sigma) != sigma
+                || options.wrap
+            {
+                return Err(
+                    "terrain2d: --roughness, --sigma and --wrap apply to midpoint \
+                            displacement, not to --method noise"
+                        .to_string(),
+                );
+            }
+            let seed = u32::try_from(displacement.seed).map_err(|_| {
+                "terrain2d: with --method noise, --seed is a permutation's, 0 to 4294967295"
+                    .to_string()
+            })?;
+            let defaults = Octaves::default();
+            let octaves = Octaves {
+                octaves: options.octaves.unwrap_or(defaults.octaves),
+                persistence: options.persistence.unwrap_or(defaults.persistence),
+                lacunarity: options.lacunarity.unwrap_or(defaults.lacunarity),
+            };
+            let scale = options.scale.unwrap_or(Real::from_int(4));
+            Ok(Some((Perlin::seeded(seed), octaves, scale)))
+        }
+    }
+}
+
 /// A catalogue scene of these families at `size`, for the gallery: the picture, its
 /// detail and work columns, and the time it took.
 pub fn render_entry(
@@ -294,7 +372,7 @@ pub fn render_entry(
     let mut target = SimulatorDisplay::new(size);
     let started = Instant::now();
     let work = match *scene {
-        // A landscape larger than a board's: its buffer on the heap.
+        // Landscapes larger than a board's: their buffers on the heap.
         Scene::Terrain {
             displacement,
             samples,
@@ -303,6 +381,23 @@ pub fn render_entry(
             let map = TerrainMap::new(samples, displacement);
             let mut heights = vec![0i32; map.cells()];
             let drawing = map
+                .fit::<Rgb888>(Rectangle::new(Point::zero(), size), &mut heights)
+                .map_err(|e| e.to_string())?;
+            let Ok(heights) = drawing.draw(&mut target);
+            Work::Cells(heights)
+        }
+        Scene::NoiseTerrain {
+            octaves,
+            scale,
+            seed,
+            samples,
+        } => {
+            let noise = Perlin::seeded(seed);
+            let terrain = NoiseTerrain::new(&noise, samples)
+                .with_octaves(octaves)
+                .with_scale(scale);
+            let mut heights = vec![0i32; terrain.cells()];
+            let drawing = terrain
                 .fit::<Rgb888>(Rectangle::new(Point::zero(), size), &mut heights)
                 .map_err(|e| e.to_string())?;
             let Ok(heights) = drawing.draw(&mut target);
@@ -317,6 +412,9 @@ pub fn render_entry(
     let detail = match *scene {
         Scene::Subdivision { order, .. } => format!("order {order}"),
         Scene::Terrain { samples, .. } => format!("{samples} samples"),
+        Scene::NoiseTerrain { samples, seed, .. } => {
+            format!("{samples} samples, noise seed {seed}")
+        }
         Scene::Walk { frames } | Scene::Zoom { frames, .. } => format!("{frames} frames"),
         _ => String::new(),
     };

@@ -221,6 +221,10 @@ fn gallery_renders_every_scene() {
         "menger-sponge",
         "terrain",
         "terrain2d",
+        "noise-clouds",
+        "noise-terrain",
+        "reaction-mitosis",
+        "reaction-maze",
     ] {
         assert!(table.contains(scene), "{table}");
         assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");
@@ -2257,4 +2261,97 @@ fn animate_reaction_frames_are_renders_at_their_steps() {
             "frame {frame}"
         );
     }
+}
+
+/// `render terrain2d --method noise`: each height is the fBm at its grid point, (scale·i/n,
+/// scale·j/n), in 2⁻¹⁶ rounded down; with one octave, the noise `noise --at` prints there.
+#[test]
+fn terrain2d_of_noise_has_the_noise_commands_heights() {
+    let dir = scratch("terrain2d-noise");
+    let heights = dir.join("heights.txt");
+    let png = dir.join("land.png");
+    let output = run(&[
+        "render",
+        "terrain2d",
+        "--method",
+        "noise",
+        "--octaves",
+        "1",
+        "--scale",
+        "2",
+        "--samples",
+        "4",
+        "--seed",
+        "0",
+        "--size",
+        "40x30",
+        "--out",
+        png.to_str().unwrap(),
+        "--heights",
+        heights.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let grid: Vec<Vec<f64>> = std::fs::read_to_string(&heights)
+        .unwrap()
+        .lines()
+        .map(|l| l.split(' ').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(grid.len(), 4);
+    // The points 0, 0.5, 1, 1.5 along each axis: dyadic, so both commands take them exactly.
+    let mut args = vec!["noise".to_string()];
+    for j in 0..4 {
+        for i in 0..4 {
+            args.push("--at".to_string());
+            args.push(format!("{},{}", f64::from(i) / 2.0, f64::from(j) / 2.0));
+        }
+    }
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let values: Vec<f64> = stdout(&run(&args))
+        .lines()
+        .map(|l| l.parse().unwrap())
+        .collect();
+    for j in 0..4 {
+        assert_eq!(grid[j].len(), 4);
+        for i in 0..4 {
+            let want = (values[j * 4 + i] * 65536.0).floor() / 65536.0;
+            assert!(
+                (grid[j][i] - want).abs() < 1e-9,
+                "({i}, {j}): {} against {want}",
+                grid[j][i]
+            );
+        }
+    }
+    assert!(values.iter().any(|&v| v != 0.0));
+    // Options of the other method are refused, and nothing is written.
+    let never = dir.join("never.png");
+    for (bad, says) in [
+        (
+            &["--method", "noise", "--roughness", "0.5"][..],
+            "--roughness",
+        ),
+        (&["--method", "noise", "--wrap"][..], "--wrap"),
+        (
+            &["--octaves", "3"][..],
+            "--octaves applies to --method noise",
+        ),
+        (&["--method", "noise", "--scale", "0"][..], "scale"),
+    ] {
+        let mut args = vec![
+            "render",
+            "terrain2d",
+            "--samples",
+            "9",
+            "--out",
+            never.to_str().unwrap(),
+        ];
+        args.extend(bad);
+        let output = run(&args);
+        assert!(!output.status.success(), "{bad:?}");
+        assert!(
+            stderr(&output).contains(says),
+            "{bad:?}: {}",
+            stderr(&output)
+        );
+    }
+    assert!(!never.exists());
 }

@@ -2,7 +2,8 @@
 //!
 //! [`Perlin`] holds a permutation (his own for seed 0, a seeded shuffle otherwise) and
 //! samples 2D and 3D noise bit for bit the same on every target; [`Octaves`] sums samples
-//! into fBm, turbulence or a ridged multifractal. The values are his: exact where his f64
+//! into fBm, turbulence or a ridged multifractal; [`NoiseTexture`] draws Perlin's textures
+//! and [`NoiseTerrain`] a landscape of fBm heights, shaded like midpoint displacement's. The values are his: exact where his f64
 //! code computes without rounding, within 2⁻²⁰ of it elsewhere.
 //!
 //! ```
@@ -23,8 +24,10 @@
 
 mod fractal;
 mod perlin;
+mod terrain;
 mod texture;
 
 pub use fractal::{Octaves, Sum, MAX_OCTAVES};
 pub use perlin::{Perlin, Sample, SAMPLE_FRAC_BITS};
+pub use terrain::NoiseTerrain;
 pub use texture::{NoiseDrawing, NoiseTexture, Texture, LEVELS};

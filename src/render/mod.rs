@@ -2,18 +2,20 @@
 //!
 //! The run rasteriser for lines, value sinks
 //! (the raw layer under colour), palettes, and fitting a picture into a target. This is
-//! also where 3D projection belongs.
+//! also where 3D projection belongs, and the relief drawing every height field shares.
 
 pub(crate) mod fit;
 pub(crate) mod palette;
 pub(crate) mod polygon;
 pub(crate) mod projection;
 pub(crate) mod raster;
+pub(crate) mod relief;
 pub(crate) mod sink;
 pub(crate) mod space;
 
 pub use fit::{Orientation, DEFAULT_MARGIN};
 pub use palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use projection::Projection;
+pub use relief::Relief;
 pub use sink::{DwellBuffer, DwellSink};
 pub use space::DEPTH_LEVELS;

@@ -125,6 +125,18 @@ pub enum Scene {
         /// The permutation's seed (0: Perlin's own).
         seed: u32,
     },
+    /// A landscape of noise: `samples`² heights of fBm, `scale` lattice cells across,
+    /// drawn as a relief (like a midpoint-displacement landscape).
+    NoiseTerrain {
+        /// The octaves of its fBm.
+        octaves: Octaves,
+        /// Lattice cells across.
+        scale: Real,
+        /// The permutation's seed.
+        seed: u32,
+        /// Heights along a side.
+        samples: u32,
+    },
     /// Reaction–diffusion: `preset` on a `grid` of cells from Sims's square start, after
     /// `steps` steps, stretched over the picture.
     Reaction {
@@ -173,6 +185,7 @@ impl Scene {
             Self::Walk { .. } => "line",
             Self::Noise { .. } => "sample",
             Self::Reaction { .. } => "cell-step",
+            Self::NoiseTerrain { .. } => "height",
         }
     }
 
@@ -196,6 +209,7 @@ impl Scene {
             Self::Zoom { .. } => "zoom",
             Self::Noise { .. } => "noise",
             Self::Reaction { .. } => "reaction",
+            Self::NoiseTerrain { .. } => "terrain2d",
         }
     }
 
@@ -563,6 +577,26 @@ const fn noise(name: &'static str, texture: Texture, seed: u32, size: Size) -> E
     }
 }
 
+/// A landscape of `samples`² heights of six octaves of fBm (persistence ½, lacunarity 2),
+/// four lattice cells across, of the permutation `seed`.
+const fn noise_terrain(name: &'static str, seed: u32, samples: u32, size: Size) -> Entry {
+    Entry {
+        name,
+        scene: Scene::NoiseTerrain {
+            octaves: Octaves {
+                octaves: 6,
+                persistence: ratio(1, 2),
+                lacunarity: Real::from_int(2),
+            },
+            scale: Real::from_int(4),
+            seed,
+            samples,
+        },
+        size,
+        palette: "",
+    }
+}
+
 /// `preset` on a `grid` (Sims's square start), after `steps` steps.
 const fn reaction(
     name: &'static str,
@@ -587,7 +621,7 @@ const fn reaction(
 /// Sierpiński family, midpoint-displacement terrain, Perlin's textures and
 /// reaction–diffusion, 320×240.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 25] = [
+pub const GALLERY: [Entry; 26] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -614,6 +648,7 @@ pub const GALLERY: [Entry; 25] = [
     terrain("terrain2d", (60, 40, 3), 257, true, GALLERY_SIZE),
     noise("noise-clouds", Texture::Clouds, 0, GALLERY_SIZE),
     noise("noise-marble", Texture::Marble, 0, GALLERY_SIZE),
+    noise_terrain("noise-terrain", 3, 257, GALLERY_SIZE),
     reaction("reaction-mitosis", Preset::Mitosis, (128, 96), 8000, GALLERY_SIZE),
     reaction("reaction-maze", Preset::Maze, (128, 96), 8000, GALLERY_SIZE),
 ];
@@ -754,8 +789,10 @@ pub const SCENES: [Entry; 14] = [
 /// 4 KiB and a 384-byte ring on the stack), what the micro:bit's 16 KiB leaves.
 ///
 /// [`MAX_BOARD_REACTION_CELLS`]: crate::MAX_BOARD_REACTION_CELLS
-pub const TEXTURE_SCENES: [Entry; 2] = [
+pub const TEXTURE_SCENES: [Entry; 3] = [
     noise("noise-fbm", Texture::Fbm, 0, OLED),
+    // The largest landscape a board holds (MAX_BOARD_MAP_CELLS).
+    noise_terrain("noise-terrain", 3, 33, OLED),
     // 24×24: the naive f32 loop measured beside it keeps two grids of floats (9 KiB), all
     // the micro:bit has room for.
     reaction("reaction-mitosis", Preset::Mitosis, (24, 24), 700, OLED),

@@ -172,6 +172,17 @@ impl Scene {
                 grid,
                 steps,
             } => Some(draw_reaction(target, look, preset, grid, steps)),
+            Scene::NoiseTerrain {
+                octaves,
+                scale,
+                seed,
+                samples,
+            } => Some(draw_noise_terrain(
+                target,
+                look,
+                (octaves, scale, seed),
+                samples,
+            )),
             _ => None,
         }
     }
@@ -214,7 +225,7 @@ impl Scene {
             } => draw_terrain(target, look, displacement, samples, map),
             Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
             Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
-            Scene::Noise { .. } | Scene::Reaction { .. } => self
+            Scene::Noise { .. } | Scene::Reaction { .. } | Scene::NoiseTerrain { .. } => self
                 .draw_texture(target, look)
                 .unwrap_or(Ok(Work::Samples(0))),
             Scene::Escape(escape) => {
@@ -480,7 +491,49 @@ where
     ))
 }
 
-/// Without the `noise` feature a texture is the background: no samples taken.
+/// A landscape of noise over the whole of `target`, its heights (at most
+/// [`MAX_BOARD_MAP_CELLS`], 4.3 KiB) on the stack while it draws.
+#[cfg(feature = "textures")]
+#[inline(never)]
+fn draw_noise_terrain<D>(
+    target: &mut D,
+    _: &Look<'_, D::Color>,
+    (octaves, scale, seed): (Octaves, Real, u32),
+    samples: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    use tinyfractal::noise::{NoiseTerrain, Perlin};
+    let noise = Perlin::seeded(seed);
+    let mut heights = [0i32; MAX_BOARD_MAP_CELLS];
+    let heights = NoiseTerrain::new(&noise, samples)
+        .with_octaves(octaves)
+        .with_scale(scale)
+        .fit(target.bounding_box(), &mut heights)?
+        .draw(target)
+        .map_err(DrawError::Target)?;
+    Ok(Work::Cells(heights))
+}
+
+/// Without the `textures` feature a landscape of noise is the background.
+#[cfg(not(feature = "textures"))]
+fn draw_noise_terrain<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    _: (Octaves, Real, u32),
+    _: u32,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    target.clear(look.background).map_err(DrawError::Target)?;
+    Ok(Work::Cells(0))
+}
+
+/// Without the `textures` feature a texture is the background: no samples taken.
 #[cfg(not(feature = "textures"))]
 fn draw_noise<D>(
     target: &mut D,

@@ -1,0 +1,116 @@
+//! A landscape of noise: fBm heights on a square grid, drawn as the shared relief.
+
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::fractal::{Octaves, Sum};
+use super::perlin::Perlin;
+use crate::error::{Error, FitError, ParameterError};
+use crate::math::{Overflow, Real};
+use crate::render::Relief;
+
+/// A landscape of `samples`² heights, each the fBm of 2D noise at its grid point: `scale`
+/// lattice cells across, the point (i, j) at (scale·i/samples, scale·j/samples).
+///
+/// A height is the sum as [`Octaves::sum`] gives it, in Q16.16 (its `Real` shifted right
+/// 16 bits, rounded down). Heights live in the caller's buffer, like a
+/// [`TerrainMap`](crate::terrain::TerrainMap)'s, and draw as the same [`Relief`].
+#[derive(Debug, Clone, Copy)]
+pub struct NoiseTerrain<'a> {
+    noise: &'a Perlin,
+    octaves: Octaves,
+    scale: Real,
+    samples: u32,
+}
+
+impl<'a> NoiseTerrain<'a> {
+    /// The largest side: 4097 heights, as a midpoint-displacement landscape's.
+    pub const MAX_SAMPLES: u32 = 4097;
+
+    /// `samples`² heights of `noise`, six octaves of fBm, four lattice cells across.
+    pub fn new(noise: &'a Perlin, samples: u32) -> Self {
+        Self {
+            noise,
+            octaves: Octaves::default(),
+            scale: Real::from_int(4),
+            samples,
+        }
+    }
+
+    /// The same with these octaves.
+    #[must_use]
+    pub fn with_octaves(self, octaves: Octaves) -> Self {
+        Self { octaves, ..self }
+    }
+
+    /// The same with `scale` lattice cells across.
+    #[must_use]
+    pub fn with_scale(self, scale: Real) -> Self {
+        Self { scale, ..self }
+    }
+
+    /// Heights needed in the buffer: `samples`².
+    pub const fn cells(&self) -> usize {
+        self.samples as usize * self.samples as usize
+    }
+
+    /// Fills `heights` (row by row, Q16.16) with the landscape. Refuses a side outside 2 to
+    /// [`MAX_SAMPLES`](Self::MAX_SAMPLES), octaves out of range, a scale that is not
+    /// positive, a buffer too small, and a finest octave past `Real`'s range.
+    pub fn generate(&self, heights: &mut [i32]) -> Result<(), Error> {
+        let ladder = self.octaves.ladder()?;
+        if self.scale <= Real::ZERO {
+            return Err(Error::Parameter(ParameterError::ScaleNotPositive {
+                scale: self.scale,
+            }));
+        }
+        if !(2..=Self::MAX_SAMPLES).contains(&self.samples) {
+            return Err(Error::Parameter(ParameterError::GridOutOfRange {
+                width: self.samples,
+                height: self.samples,
+                min: 2,
+                max: Self::MAX_SAMPLES,
+            }));
+        }
+        let given = heights.len();
+        let heights =
+            heights
+                .get_mut(..self.cells())
+                .ok_or(Error::Fit(FitError::BufferTooSmall {
+                    needed: self.cells(),
+                    given,
+                }))?;
+        let side = i64::from(self.samples);
+        let at = |index: i64| -> Result<Real, Error> {
+            let product = i128::from(self.scale.to_bits()) * i128::from(index);
+            i64::try_from(product / i128::from(side))
+                .map(Real::from_bits)
+                .map_err(|_| Error::from(Overflow))
+        };
+        for (j, row) in (0_i64..).zip(heights.chunks_mut(self.samples as usize)) {
+            let y = at(j)?;
+            for (i, height) in (0_i64..).zip(row.iter_mut()) {
+                let value = ladder.sum(self.noise, Sum::Fbm, (at(i)?, y, None))?;
+                *height = (value.to_bits() >> 16) as i32;
+            }
+        }
+        Ok(())
+    }
+
+    /// Generates the landscape into `heights` and fits it to `area` (stretched to fill it).
+    pub fn fit<'h, C>(
+        &self,
+        area: Rectangle,
+        heights: &'h mut [i32],
+    ) -> Result<Relief<'h, C>, Error>
+    where
+        C: PixelColor + From<Rgb888>,
+    {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        self.generate(heights)?;
+        Relief::new(heights, self.samples, area)
+    }
+}
