@@ -223,6 +223,25 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
         Scene::Escape(escape) => {
             Scene::Escape(escape.with_max_iterations(stepped_cap(escape.max_iterations, up)))
         }
+        Scene::NoiseFlight {
+            texture,
+            octaves,
+            scale,
+            seed,
+            frames,
+            z_step,
+        } => Scene::NoiseFlight {
+            texture,
+            octaves,
+            scale,
+            seed: if up {
+                seed.wrapping_add(1)
+            } else {
+                seed.wrapping_sub(1)
+            },
+            frames,
+            z_step,
+        },
         Scene::NoiseTerrain {
             octaves,
             scale,

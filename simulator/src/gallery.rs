@@ -170,7 +170,8 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
         | Scene::Terrain { .. }
         | Scene::Walk { .. }
         | Scene::Zoom { .. }
-        | Scene::NoiseTerrain { .. } => crate::shape_scene::render_entry(&entry.scene, size),
+        | Scene::NoiseTerrain { .. }
+        | Scene::NoiseFlight { .. } => crate::shape_scene::render_entry(&entry.scene, size),
         Scene::Noise { .. } => crate::noise_scene::render_entry(&entry.scene, size),
         Scene::Reaction { .. } => crate::reaction_scene::render_entry(&entry.scene, size),
         Scene::Escape(EscapeScene {

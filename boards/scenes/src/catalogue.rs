@@ -125,6 +125,22 @@ pub enum Scene {
         /// The permutation's seed (0: Perlin's own).
         seed: u32,
     },
+    /// One of Perlin's textures moving through 3D noise: `frames` frames, frame k at depth
+    /// k·`z_step`, each drawn over the last (an animation on a board).
+    NoiseFlight {
+        /// Which texture.
+        texture: Texture,
+        /// The octaves of its sums.
+        octaves: Octaves,
+        /// Lattice cells across the picture's width.
+        scale: Real,
+        /// The permutation's seed.
+        seed: u32,
+        /// Frames drawn.
+        frames: u32,
+        /// How much deeper each frame is, in lattice cells.
+        z_step: Real,
+    },
     /// A landscape of noise: `samples`² heights of fBm, `scale` lattice cells across,
     /// drawn as a relief (like a midpoint-displacement landscape).
     NoiseTerrain {
@@ -186,6 +202,7 @@ impl Scene {
             Self::Noise { .. } => "sample",
             Self::Reaction { .. } => "cell-step",
             Self::NoiseTerrain { .. } => "height",
+            Self::NoiseFlight { .. } => "sample",
         }
     }
 
@@ -210,6 +227,7 @@ impl Scene {
             Self::Noise { .. } => "noise",
             Self::Reaction { .. } => "reaction",
             Self::NoiseTerrain { .. } => "terrain2d",
+            Self::NoiseFlight { .. } => "noise",
         }
     }
 
@@ -577,6 +595,28 @@ const fn noise(name: &'static str, texture: Texture, seed: u32, size: Size) -> E
     }
 }
 
+/// Perlin's `texture` moving a quarter of a lattice cell deeper a frame, `frames` frames,
+/// six octaves, four lattice cells across.
+const fn noise_flight(name: &'static str, texture: Texture, frames: u32, size: Size) -> Entry {
+    Entry {
+        name,
+        scene: Scene::NoiseFlight {
+            texture,
+            octaves: Octaves {
+                octaves: 6,
+                persistence: ratio(1, 2),
+                lacunarity: Real::from_int(2),
+            },
+            scale: Real::from_int(4),
+            seed: 0,
+            frames,
+            z_step: ratio(1, 4),
+        },
+        size,
+        palette: "",
+    }
+}
+
 /// A landscape of `samples`² heights of six octaves of fBm (persistence ½, lacunarity 2),
 /// four lattice cells across, of the permutation `seed`.
 const fn noise_terrain(name: &'static str, seed: u32, samples: u32, size: Size) -> Entry {
@@ -789,8 +829,10 @@ pub const SCENES: [Entry; 14] = [
 /// 4 KiB and a 384-byte ring on the stack), what the micro:bit's 16 KiB leaves.
 ///
 /// [`MAX_BOARD_REACTION_CELLS`]: crate::MAX_BOARD_REACTION_CELLS
-pub const TEXTURE_SCENES: [Entry; 3] = [
+pub const TEXTURE_SCENES: [Entry; 4] = [
     noise("noise-fbm", Texture::Fbm, 0, OLED),
+    // Clouds drifting: 3D noise, four frames.
+    noise_flight("noise-flight", Texture::Clouds, 4, OLED),
     // The largest landscape a board holds (MAX_BOARD_MAP_CELLS).
     noise_terrain("noise-terrain", 3, 33, OLED),
     // 24×24: the naive f32 loop measured beside it keeps two grids of floats (9 KiB), all

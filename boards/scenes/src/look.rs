@@ -72,9 +72,9 @@ pub const COLOUR: Look<'static, Rgb565> = Look {
 };
 
 impl<C: PixelColor + From<Rgb888>> Look<'_, C> {
-    /// The escape-time gradient of `N` entries over the keys (16 for dwells, 256 for smooth
-    /// values).
-    fn gradient<const N: usize>(&self) -> Result<Gradient<C, N>, Error> {
+    /// The look's gradient of `N` entries over its keys (16 for dwells, 256 for smooth
+    /// values and textures): what the scenes colour with.
+    pub fn gradient<const N: usize>(&self) -> Result<Gradient<C, N>, Error> {
         Gradient::new(self.keys, self.inside).ok_or(Error::Fit(FitError::EmptyPalette))
     }
 }
@@ -143,6 +143,7 @@ impl Scene {
         match *self {
             Scene::Walk { frames } => draw_walk(target, look, frames, between_frames),
             Scene::Zoom { .. } => draw_zoom(target, look, self, between_frames),
+            Scene::NoiseFlight { .. } => draw_flight(target, look, self, between_frames),
             _ => self.draw(target, look),
         }
     }
@@ -225,7 +226,10 @@ impl Scene {
             } => draw_terrain(target, look, displacement, samples, map),
             Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
             Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
-            Scene::Noise { .. } | Scene::Reaction { .. } | Scene::NoiseTerrain { .. } => self
+            Scene::Noise { .. }
+            | Scene::Reaction { .. }
+            | Scene::NoiseTerrain { .. }
+            | Scene::NoiseFlight { .. } => self
                 .draw_texture(target, look)
                 .unwrap_or(Ok(Work::Samples(0))),
             Scene::Escape(escape) => {
@@ -515,6 +519,69 @@ where
         .draw(target)
         .map_err(DrawError::Target)?;
     Ok(Work::Cells(heights))
+}
+
+/// A texture's frames through 3D noise over the whole of `target`, frame k at depth
+/// k·`z_step`, calling `between_frames` after each; the samples taken.
+#[cfg(feature = "textures")]
+#[inline(never)]
+fn draw_flight<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    scene: &Scene,
+    mut between_frames: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    use tinyfractal::noise::{NoiseTexture, Perlin};
+    let Scene::NoiseFlight {
+        texture,
+        octaves,
+        scale,
+        seed,
+        frames,
+        z_step,
+    } = *scene
+    else {
+        return Ok(Work::Samples(0));
+    };
+    let noise = Perlin::seeded(seed);
+    let area = target.bounding_box();
+    let palette = look.gradient::<256>()?;
+    let mut depth = Real::ZERO;
+    for _ in 0..frames {
+        NoiseTexture::new(&noise, texture)
+            .with_octaves(octaves)
+            .with_scale(scale)
+            .with_z(depth)
+            .fit(area, &palette)?
+            .draw(target)
+            .map_err(DrawError::Target)?;
+        between_frames();
+        depth = depth
+            .checked_add(z_step)
+            .ok_or(DrawError::Fractal(Error::from(tinyfractal::math::Overflow)))?;
+    }
+    let pixels = u64::from(area.size.width) * u64::from(area.size.height);
+    Ok(Work::Samples(pixels * u64::from(frames)))
+}
+
+/// Without the `textures` feature a texture's frames are the background.
+#[cfg(not(feature = "textures"))]
+fn draw_flight<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    _: &Scene,
+    _: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    target.clear(look.background).map_err(DrawError::Target)?;
+    Ok(Work::Samples(0))
 }
 
 /// Without the `textures` feature a landscape of noise is the background.
