@@ -184,6 +184,7 @@ impl Scene {
                 (octaves, scale, seed),
                 samples,
             )),
+            Scene::NoiseFlight { .. } => Some(draw_flight(target, look, self, || {})),
             _ => None,
         }
     }
