@@ -383,23 +383,29 @@ mod textures {
     #[test]
     fn a_drawing_covers_its_area_once_with_each_pixels_level() {
         let noise = Perlin::reference();
-        let texture = NoiseTexture::new(&noise, Texture::Marble).with_scale(real(3.0));
-        let area = Rectangle::new(Point::zero(), Size::new(48, 32));
-        let drawing = texture.fit(area, Levels).unwrap();
-        let mut display = MockDisplay::<Gray8>::new();
-        drawing.draw(&mut display).unwrap();
         let p = noise.permutation();
-        for y in 0..32 {
-            for x in 0..48 {
-                let level = drawing.level_at(x, y);
-                assert_eq!(
-                    display.get_pixel(Point::new(x as i32, y as i32)),
-                    Some(Gray8::new(level))
-                );
-                // Pixel (x, y) samples its top-left corner, scale / width units a pixel.
-                let at = (3.0 * f64::from(x) / 48.0, 3.0 * f64::from(y) / 48.0);
-                let want = model_value(p, Texture::Marble, &Octaves::default(), at) * 255.0;
-                assert!((f64::from(level) - want).abs() <= 0.51, "({x}, {y})");
+        // Marble and fBm: the turbulence and fBm a drawing sums a row at a time.
+        for kind in [Texture::Marble, Texture::Fbm, Texture::Ridged] {
+            let texture = NoiseTexture::new(&noise, kind).with_scale(real(3.0));
+            let area = Rectangle::new(Point::zero(), Size::new(48, 32));
+            let drawing = texture.fit(area, Levels).unwrap();
+            let mut display = MockDisplay::<Gray8>::new();
+            drawing.draw(&mut display).unwrap();
+            for y in 0..32 {
+                for x in 0..48 {
+                    let level = drawing.level_at(x, y);
+                    assert_eq!(
+                        display.get_pixel(Point::new(x as i32, y as i32)),
+                        Some(Gray8::new(level))
+                    );
+                    // Pixel (x, y) samples its top-left corner, scale / width units a pixel.
+                    let at = (3.0 * f64::from(x) / 48.0, 3.0 * f64::from(y) / 48.0);
+                    let want = model_value(p, kind, &Octaves::default(), at) * 255.0;
+                    assert!(
+                        (f64::from(level) - want).abs() <= 0.51,
+                        "{kind:?} ({x}, {y})"
+                    );
+                }
             }
         }
     }

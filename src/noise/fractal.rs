@@ -1,7 +1,7 @@
 //! Fractal sums of noise: fBm, turbulence and Musgrave's ridged multifractal, octave by
 //! octave.
 
-use super::perlin::{Perlin, Sample, SAMPLE_FRAC_BITS};
+use super::perlin::{Perlin, RowPart, Sample, SAMPLE_FRAC_BITS};
 use crate::error::{Error, ParameterError};
 use crate::math::wide::shift_round_i64;
 use crate::math::Real;
@@ -169,16 +169,41 @@ impl Ladder {
     /// in 64-bit integers: the same value as the general path, at a fraction of its cost on
     /// a 32-bit core. `None` where a coordinate leaves `Real`'s range.
     fn plane_sum(&self, noise: &Perlin, turbulence: bool, (x, y): (Real, Real)) -> Option<Real> {
-        let (mut x, mut y) = (x.to_bits(), y.to_bits());
-        // Each term is at most 1.04 in magnitude, 16 of them: no overflow.
-        let mut total: i64 = 0;
-        let amplitudes = self.amplitudes.iter().take(self.octaves as usize);
-        for (octave, &amplitude) in amplitudes.enumerate() {
+        let rows = self.rows(y)?;
+        self.plane_sum_in_row(noise, turbulence, x, &rows)
+    }
+
+    /// Each octave's y part of a row at `y` (lacunarity 2: y doubled an octave); `None`
+    /// where it leaves `Real`'s range.
+    fn rows(&self, y: Real) -> Option<[RowPart; MAX_OCTAVES as usize]> {
+        let mut rows = [RowPart::default(); MAX_OCTAVES as usize];
+        let mut y = y.to_bits();
+        for (octave, row) in rows.iter_mut().take(self.octaves as usize).enumerate() {
             if octave > 0 {
-                x = x.checked_mul(2)?;
                 y = y.checked_mul(2)?;
             }
-            let mut value = noise.noise2(Real::from_bits(x), Real::from_bits(y));
+            *row = RowPart::of(Real::from_bits(y));
+        }
+        Some(rows)
+    }
+
+    /// [`plane_sum`](Self::plane_sum) at `x` in a row whose y parts are ready.
+    fn plane_sum_in_row(
+        &self,
+        noise: &Perlin,
+        turbulence: bool,
+        x: Real,
+        rows: &[RowPart; MAX_OCTAVES as usize],
+    ) -> Option<Real> {
+        let mut x = x.to_bits();
+        // Each term is at most 1.04 in magnitude, 16 of them: no overflow.
+        let mut total: i64 = 0;
+        let octaves = self.amplitudes.iter().zip(rows).take(self.octaves as usize);
+        for (octave, (&amplitude, &row)) in octaves.enumerate() {
+            if octave > 0 {
+                x = x.checked_mul(2)?;
+            }
+            let mut value = noise.noise2_in_row(Real::from_bits(x), row);
             if turbulence {
                 value = Sample(value.0.abs());
             }
@@ -204,4 +229,48 @@ impl Ladder {
 fn times(sample: Sample, amplitude: Real) -> Real {
     let product = i64::from(sample.0) * amplitude.to_bits();
     Real::from_bits(shift_round_i64(product, SAMPLE_FRAC_BITS))
+}
+
+/// A ladder with one row of points' y parts ready (one y, in the plane, lacunarity 2):
+/// what a drawing sums a row with, the same values as [`Ladder::sum`] at each point.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RowSums<'l> {
+    ladder: &'l Ladder,
+    /// The row's y and each octave's part of it, where the fast path applies.
+    row: Option<(Real, [RowPart; MAX_OCTAVES as usize])>,
+}
+
+impl<'l> RowSums<'l> {
+    /// For points of any row (nothing ready).
+    pub(crate) fn any(ladder: &'l Ladder) -> Self {
+        Self { ladder, row: None }
+    }
+
+    /// For the points of the plane at `y`.
+    pub(crate) fn row(ladder: &'l Ladder, y: Real) -> Self {
+        let ready = ladder.lacunarity == Real::from_int(2);
+        let row = ready
+            .then(|| ladder.rows(y).map(|rows| (y, rows)))
+            .flatten();
+        Self { ladder, row }
+    }
+
+    /// [`Ladder::sum`], from the row's parts where the point is in the row.
+    pub(crate) fn sum(
+        &self,
+        noise: &Perlin,
+        sum: Sum,
+        point: (Real, Real, Option<Real>),
+    ) -> Result<Real, Error> {
+        if let Some((y, rows)) = &self.row {
+            if point.1 == *y && point.2.is_none() && sum != Sum::Ridged {
+                let turbulence = sum == Sum::Turbulence;
+                return self
+                    .ladder
+                    .plane_sum_in_row(noise, turbulence, point.0, rows)
+                    .ok_or(Error::from(crate::math::Overflow));
+            }
+        }
+        self.ladder.sum(noise, sum, point)
+    }
 }

@@ -200,9 +200,16 @@ impl Perlin {
     /// The noise at (`x`, `y`): Perlin's noise at z = 0, where the far layer of the cell has
     /// no weight, computed from the near layer's four corners.
     pub fn noise2(&self, x: Real, y: Real) -> Sample {
+        self.noise2_in_row(x, RowPart::of(y))
+    }
+
+    /// [`noise2`](Self::noise2) at `x` in the row whose y part is `row`: a row of points
+    /// shares its y's cell, place and fade.
+    #[inline]
+    pub(super) fn noise2_in_row(&self, x: Real, row: RowPart) -> Sample {
         let (xi, xf) = cell(x);
-        let (yi, yf) = cell(y);
-        let (u, v) = (fade(xf), fade(yf));
+        let (yi, yf, v) = (row.cell, row.place, row.fade);
+        let u = fade(xf);
         let a = self.hash(xi) + yi;
         let b = self.hash(xi + 1) + yi;
         let one = 1 << CELL_FRAC_BITS;
@@ -217,6 +224,28 @@ impl Perlin {
                 corner(b + 1, xf - one, yf - one),
             ),
         ))
+    }
+}
+
+/// What 2D noise takes from a point's y: its lattice row (modulo 256), its place in the
+/// row in 2⁻²⁴, and the fade of that place in 2⁻³⁰.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(super) struct RowPart {
+    cell: i32,
+    place: i32,
+    fade: i32,
+}
+
+impl RowPart {
+    /// The part of `y`.
+    #[inline]
+    pub(super) fn of(y: Real) -> Self {
+        let (cell, place) = cell(y);
+        Self {
+            cell,
+            place,
+            fade: fade(place),
+        }
     }
 }
 

@@ -4,7 +4,7 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::fractal::{Octaves, Sum};
+use super::fractal::{Octaves, RowSums, Sum};
 use super::perlin::Perlin;
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::{Overflow, Real};
@@ -90,8 +90,10 @@ impl<'a> NoiseTerrain<'a> {
         };
         for (j, row) in (0_i64..).zip(heights.chunks_mut(self.samples as usize)) {
             let y = at(j)?;
+            // A row shares its y: each octave's part of it is computed once.
+            let sums = RowSums::row(&ladder, y);
             for (i, height) in (0_i64..).zip(row.iter_mut()) {
-                let value = ladder.sum(self.noise, Sum::Fbm, (at(i)?, y, None))?;
+                let value = sums.sum(self.noise, Sum::Fbm, (at(i)?, y, None))?;
                 *height = (value.to_bits() >> 16) as i32;
             }
         }

@@ -3,7 +3,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::fractal::{Ladder, Octaves, Sum};
+use super::fractal::{Ladder, Octaves, RowSums, Sum};
 use super::perlin::Perlin;
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::trig::BinaryAngle;
@@ -43,7 +43,7 @@ impl Texture {
         point: (Real, Real, Option<Real>),
     ) -> Result<Real, Error> {
         let ladder = octaves.ladder()?;
-        self.value_normalised(noise, &ladder, point, normaliser(&ladder)?)
+        self.value_normalised(noise, &RowSums::any(&ladder), point, normaliser(&ladder)?)
     }
 
     /// [`value`](Self::value) with the sums' normaliser given, so that a drawing computes
@@ -51,7 +51,7 @@ impl Texture {
     fn value_normalised(
         self,
         noise: &Perlin,
-        octaves: &Ladder,
+        octaves: &RowSums<'_>,
         point: (Real, Real, Option<Real>),
         normaliser: Real,
     ) -> Result<Real, Error> {
@@ -240,16 +240,17 @@ impl<P> NoiseDrawing<'_, P> {
 
     /// The value of pixel (`x`, `y`) of the area, in [0, 1] (what its level rounds).
     pub fn value_at(&self, x: u32, y: u32) -> Real {
-        self.value_of(self.texture.point((x, y), self.area.size.width))
+        let point = self.texture.point((x, y), self.area.size.width);
+        self.value_of(&RowSums::any(&self.ladder), point)
     }
 
-    /// The value at a point of the texture (one of this drawing's pixels).
-    fn value_of(&self, point: (Real, Real, Option<Real>)) -> Real {
+    /// The value at a point of the texture (one of this drawing's pixels), summed by `sums`.
+    fn value_of(&self, sums: &RowSums<'_>, point: (Real, Real, Option<Real>)) -> Real {
         let texture = &self.texture;
         // `fit` checked every point's range: a sample cannot fail here.
         texture
             .texture
-            .value_normalised(texture.noise, &self.ladder, point, self.normaliser)
+            .value_normalised(texture.noise, sums, point, self.normaliser)
             .unwrap_or(Real::ZERO)
     }
 
@@ -292,8 +293,11 @@ impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
     {
         let h = self.area.size.height;
         let colors = (0..h).flat_map(|y| {
+            // A row shares its y: each octave's part of it is computed once.
+            let (_, row, _) = self.texture.point((0, y), self.area.size.width.max(1));
+            let sums = RowSums::row(&self.ladder, row);
             self.row_points(y).map(move |point| {
-                let level = level_of(self.value_of(point));
+                let level = level_of(self.value_of(&sums, point));
                 self.palette.color(u16::from(level), u16::MAX)
             })
         });

@@ -309,9 +309,9 @@ fn every_core_draws_the_host_picture_and_fits() {
                 );
                 assert_eq!(record["pixels"], pixels.to_string(), "{} {name}", core.name);
                 assert_eq!(record["work"], work.to_string(), "{} {name}", core.name);
-            // A scene that did nothing (a feature left out, a path not taken) measures
-            // nothing: it would pass every check above with a count of 0.
-            assert!(work > 0, "{} {name}: no work done", core.name);
+                // A scene that did nothing (a feature left out, a path not taken) measures
+                // nothing: it would pass every check above with a count of 0.
+                assert!(work > 0, "{} {name}: no work done", core.name);
                 let instructions: u64 = record["instructions"].parse().unwrap();
                 let stack: u64 = record["stack"].parse().unwrap();
                 deepest_stack = deepest_stack.max(stack);
