@@ -70,6 +70,7 @@
 //! | [`terrain`] | profiles and landscapes by midpoint displacement |
 //! | [`noise`] | Perlin's improved noise, its fractal sums and textures |
 //! | [`reaction`] | reaction–diffusion: the Gray–Scott model on the caller's grid |
+//! | [`attractor`] | strange attractors: Hénon, Lorenz, Rössler, Clifford, de Jong and more |
 //! | [`dimension`] | the box-counting dimension of any picture |
 //!
 //! Beneath them, [`math`] holds the numbers (fixed-point [`Real`] and [`Coord`], angles,
@@ -121,6 +122,7 @@
 #[doc = include_str!("../README.md")]
 struct ReadmeDoctests;
 
+pub mod attractor;
 pub mod dimension;
 pub mod error;
 pub mod escape;

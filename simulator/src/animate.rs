@@ -22,6 +22,7 @@ use tinyfractal::{
     Real, View,
 };
 
+use crate::attractor_scene::AttractorOptions;
 use crate::console::Failure;
 use crate::escape_scene::{self, Escape, Request};
 use crate::noise_scene::TextureOptions;
@@ -78,6 +79,9 @@ enum AnimationKind {
     Noise(NoiseAnimationOptions),
     /// Reaction–diffusion unfolding: each frame --steps-per-frame steps later
     Reaction(ReactionAnimationOptions),
+    /// A 3D attractor (lorenz, rossler, pickover) turning about its vertical axis, a full
+    /// turn over the frames
+    Attractor(AttractorAnimationOptions),
 }
 
 #[derive(Debug, Args)]
@@ -185,6 +189,14 @@ struct ReactionAnimationOptions {
     frames: FrameOptions,
 }
 
+#[derive(Debug, Args)]
+struct AttractorAnimationOptions {
+    #[command(flatten)]
+    attractor: AttractorOptions,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
 /// Frames an animation writes without `--frames`.
 const DEFAULT_FRAMES: u32 = 100;
 
@@ -256,6 +268,11 @@ enum Animation {
         reaction: ReactionOptions,
         /// Steps between frames (`--steps-per-frame`).
         steps: u32,
+    },
+    /// A 3D attractor turning.
+    Attractor {
+        /// The attractor and how it is drawn.
+        attractor: AttractorOptions,
     },
 }
 
@@ -334,6 +351,22 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
             },
             options.frames,
         ),
+        AnimationKind::Attractor(options) => {
+            if !options.attractor.is_3d() {
+                return Err(Failure::Usage(format!(
+                    "animate attractor turns a 3D attractor (lorenz, rossler, pickover): {} \
+                     is drawn in its plane",
+                    options.attractor.name()
+                )));
+            }
+            options.attractor.attractor()?;
+            (
+                Animation::Attractor {
+                    attractor: options.attractor,
+                },
+                options.frames,
+            )
+        }
     };
     let count = frames.frames.unwrap_or(DEFAULT_FRAMES);
     if count == 0 {
@@ -458,6 +491,11 @@ fn make(arguments: &AnimationPlan, size: Size, emit: &Emit<'_>) -> Result<String
         }
         Animation::Reaction { reaction, steps } => {
             reaction_frames(reaction, *steps, arguments.frames, size, emit)
+        }
+        Animation::Attractor { attractor } => {
+            crate::attractor_scene::frames(attractor, arguments.frames, size, |frame| {
+                emit.frame(frame)
+            })
         }
     }
 }

@@ -11,6 +11,7 @@ use std::path::PathBuf;
 use clap::{error::ErrorKind, CommandFactory, Parser, Subcommand};
 
 use crate::animate::AnimateOptions;
+use crate::attractor_scene::RenderAttractorOptions;
 use crate::console::Failure;
 use crate::derive::DeriveOptions;
 use crate::dimension::DimensionOptions;
@@ -109,6 +110,9 @@ enum Scene {
     /// A landscape by diamond-square (2D midpoint displacement)
     #[command(name = "terrain2d")]
     Terrain2d(Terrain2dOptions),
+    /// A strange attractor: Hénon, Lorenz, Rössler, Clifford, de Jong, ... as points or by
+    /// density
+    Attractor(RenderAttractorOptions),
 }
 
 /// Parses the arguments after the program name. `Err` carries clap's message (help and
@@ -166,6 +170,7 @@ impl Scene {
             Self::Terrain2d(options) => Ok(render_terrain2d(&options)?),
             Self::Noise(options) => options.run(),
             Self::Reaction(options) => options.run(),
+            Self::Attractor(options) => options.run(),
         }
     }
 }

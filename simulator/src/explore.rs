@@ -204,6 +204,14 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             },
             seed,
         },
+        Scene::Attractor { kind, points } => Scene::Attractor {
+            kind,
+            points: if up {
+                (points * 2).min(10_000_000)
+            } else {
+                (points / 2).max(1_000)
+            },
+        },
         Scene::Terrain {
             mut displacement,
             samples,

@@ -174,6 +174,17 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
         | Scene::NoiseFlight { .. } => crate::shape_scene::render_entry(&entry.scene, size),
         Scene::Noise { .. } => crate::noise_scene::render_entry(&entry.scene, size),
         Scene::Reaction { .. } => crate::reaction_scene::render_entry(&entry.scene, size),
+        Scene::Attractor { kind, points } => crate::attractor_scene::render_entry(
+            kind, points, None, size,
+        )
+        .map(|(display, plotted, elapsed)| {
+            (
+                display,
+                "density".to_string(),
+                format!("{plotted} points"),
+                elapsed,
+            )
+        }),
         Scene::Escape(EscapeScene {
             julia,
             centre,

@@ -225,6 +225,10 @@ fn gallery_renders_every_scene() {
         "noise-terrain",
         "reaction-mitosis",
         "reaction-maze",
+        "attractor-henon",
+        "attractor-lorenz",
+        "attractor-clifford",
+        "attractor-dejong",
     ] {
         assert!(table.contains(scene), "{table}");
         assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");

@@ -111,6 +111,21 @@ pub enum ParameterError {
         /// log₂ of the largest side the area allows.
         max: u32,
     },
+    /// An attractor's parameter, start coordinate or rate times Δt is beyond the range of
+    /// its kind's fixed point.
+    AttractorValueOutOfRange {
+        /// The value given.
+        value: Real,
+        /// The range: values must stay strictly within ±this.
+        max: u32,
+    },
+    /// An attractor takes a fixed number of parameters.
+    ParameterCount {
+        /// How many were given.
+        given: usize,
+        /// How many the kind takes.
+        expected: usize,
+    },
     /// The camera's elevation is not strictly between −90° and 90°.
     CameraOutOfRange {
         /// The azimuth given, degrees.
@@ -171,6 +186,17 @@ impl fmt::Display for ParameterError {
                 f,
                 "the grid {width}x{height} is out of range: each side must be {min} to {max} \
                  cells"
+            ),
+            Self::AttractorValueOutOfRange { value, max } => write!(
+                f,
+                "{value} is out of range: this attractor is iterated in a fixed point that holds \
+                 values strictly within ±{max} (its parameters, start, and rates times the time \
+                 step alike)"
+            ),
+            Self::ParameterCount { given, expected } => write!(
+                f,
+                "{given} parameters given, but this attractor takes {expected} (a, b, c, d in \
+                 order)"
             ),
             Self::RoughnessOutOfRange { roughness } => write!(
                 f,

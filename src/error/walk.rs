@@ -36,6 +36,13 @@ pub enum WalkError {
         /// set): one slot per level below each open branch.
         capacity: usize,
     },
+    /// An attractor's orbit left the range of its kind's fixed point.
+    OrbitEscaped {
+        /// The step (from the start) whose point was out of range.
+        step: u64,
+        /// The range: the state stays strictly within ±this.
+        range: u32,
+    },
     /// Turtle coordinates or the step left the fixed-point range.
     Overflow,
     /// The step shrank (through `@`) below what fixed point can represent with precision.
@@ -91,6 +98,12 @@ impl fmt::Display for WalkError {
                 "branches nest too deep to keep the left contexts of a context-sensitive system \
                  ({capacity} slots, one per level below each open branch): lower the order or raise \
                  the walk's SLOTS"
+            ),
+            Self::OrbitEscaped { step, range } => write!(
+                f,
+                "the orbit left ±{range}, the range of this attractor's fixed point, at step \
+                 {step}: with these parameters (or this start, or time step) it diverges; \
+                 start from the kind's defaults and change one value at a time"
             ),
             Self::Overflow => write!(
                 f,

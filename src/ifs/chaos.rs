@@ -6,8 +6,6 @@
 //! The picture is fitted by playing the same game (same seed) once to measure the points'
 //! extent, then again to draw: every plotted point is inside the fitted box, exactly.
 
-use core::cell::Cell;
-
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
@@ -15,6 +13,7 @@ use super::maps::Ifs;
 use crate::error::{only_target_errors, DrawError, Error, FitError, WalkError};
 use crate::math::random::Generator;
 use crate::math::Real;
+use crate::render::density::{Density, HitCount};
 use crate::render::fit::DEFAULT_MARGIN;
 use crate::render::palette::{Colors, Palette};
 use crate::render::projection::Projection;
@@ -169,31 +168,23 @@ impl<'i> IfsPicture<'i> {
     }
 }
 
-/// Density levels: a pixel hit `n` times takes level 1 + ⌊log₂ n⌋ (at most this), one
-/// never hit level 0; the palette's `max` is this plus one.
-pub const DENSITY_LEVELS: u16 = 16;
-
 impl<'i> IfsPicture<'i> {
     /// Like [`fit`](Self::fit), coloured by density: each pixel of `area` by how many
-    /// points hit it, on a log scale ([`DENSITY_LEVELS`]) through `palette` (value 0 for
+    /// points hit it, on a log scale ([`DENSITY_LEVELS`](crate::render::DENSITY_LEVELS)) through `palette` (value 0 for
     /// none, up to `DENSITY_LEVELS - 1`, of `DENSITY_LEVELS`). The hit counts go in
-    /// `counts`, one cell a pixel of `area` (its only memory; a count stops at 65,535);
+    /// `counts`, one cell a pixel of `area` (its only memory; `u16` cells count to 65,535,
+    /// `u8` ones to 255 in half the memory);
     /// every pixel of `area` is written, a row at a time.
-    pub fn fit_density<'b, P: Palette>(
+    pub fn fit_density<'b, P: Palette, T: HitCount>(
         &self,
         area: Rectangle,
         palette: P,
-        counts: &'b mut [u16],
-    ) -> Result<DensityDrawing<'i, 'b, P>, Error> {
+        counts: &'b mut [T],
+    ) -> Result<DensityDrawing<'i, 'b, P, T>, Error> {
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
-        let needed = usize::try_from(u64::from(area.size.width) * u64::from(area.size.height))
-            .unwrap_or(usize::MAX);
-        let given = counts.len();
-        let counts = counts
-            .get_mut(..needed)
-            .ok_or(Error::Fit(FitError::BufferTooSmall { needed, given }))?;
+        let density = Density::new(area, counts)?;
         let space = SpaceFit::new(
             || self.game().map(|point| point.map(|p| [p.position])),
             self.projection(),
@@ -205,78 +196,48 @@ impl<'i> IfsPicture<'i> {
             picture: *self,
             space,
             palette,
-            area,
-            counts: Cell::from_mut(counts).as_slice_of_cells(),
+            density,
         })
     }
 }
 
 /// An IFS fitted and coloured by density: an embedded-graphics [`Drawable`].
 #[derive(Debug)]
-pub struct DensityDrawing<'i, 'b, P> {
+pub struct DensityDrawing<'i, 'b, P, T = u16> {
     picture: IfsPicture<'i>,
     space: SpaceFit,
     palette: P,
-    area: Rectangle,
-    counts: &'b [Cell<u16>],
+    density: Density<'b, T>,
 }
 
-/// The density level of a hit count.
-fn level(count: u16) -> u16 {
-    if count == 0 {
-        return 0;
-    }
-    let log2 = u16::try_from(count.ilog2()).unwrap_or(0);
-    (1 + log2).min(DENSITY_LEVELS - 1)
-}
-
-impl<P: Palette> DensityDrawing<'_, '_, P> {
+impl<P: Palette, T: HitCount> DensityDrawing<'_, '_, P, T> {
     /// Counts the hits, then writes every pixel of the area a row at a time; returns the
     /// points played.
     pub fn try_draw<D>(&self, target: &mut D) -> Result<u64, DrawError<D::Error>>
     where
         D: DrawTarget<Color = P::Color>,
     {
-        for cell in self.counts {
-            cell.set(0);
-        }
-        let width = self.area.size.width;
+        self.density.clear();
         let mut played = 0;
         for point in self.picture.game() {
             let (pixel, _) = self.space.place(point?.position);
-            let offset = pixel - self.area.top_left;
-            if let (Ok(x), Ok(y)) = (u32::try_from(offset.x), u32::try_from(offset.y)) {
-                if x < width && y < self.area.size.height {
-                    let index = usize::try_from(y * width + x).unwrap_or(usize::MAX);
-                    if let Some(cell) = self.counts.get(index) {
-                        cell.set(cell.get().saturating_add(1));
-                    }
-                }
-            }
+            self.density.hit(pixel);
             played += 1;
         }
-        let width_cells = usize::try_from(width).unwrap_or(usize::MAX);
-        for (row, cells) in self.counts.chunks(width_cells.max(1)).enumerate() {
-            let y = self.area.top_left.y + i32::try_from(row).unwrap_or(i32::MAX);
-            let line = Rectangle::new(Point::new(self.area.top_left.x, y), Size::new(width, 1));
-            let colors = cells
-                .iter()
-                .map(|cell| self.palette.color(level(cell.get()), DENSITY_LEVELS));
-            target
-                .fill_contiguous(&line, colors)
-                .map_err(DrawError::Target)?;
-        }
+        self.density
+            .emit(&self.palette, target)
+            .map_err(DrawError::Target)?;
         Ok(played)
     }
 }
 
-impl<P> Dimensions for DensityDrawing<'_, '_, P> {
+impl<P, T: HitCount> Dimensions for DensityDrawing<'_, '_, P, T> {
     fn bounding_box(&self) -> Rectangle {
-        self.area
+        self.density.area()
     }
 }
 
-impl<P: Palette> Drawable for DensityDrawing<'_, '_, P> {
+impl<P: Palette, T: HitCount> Drawable for DensityDrawing<'_, '_, P, T> {
     type Color = P::Color;
     type Output = u64;
 

@@ -28,9 +28,9 @@ pub(crate) mod file;
 pub(crate) mod gingerbread;
 pub(crate) mod maps;
 
-pub use chaos::{
-    ChaosGame, DensityDrawing, IfsDrawing, IfsPicture, IfsPoint, DENSITY_LEVELS, SKIPPED,
-};
+/// The density levels (shared by every density picture: see [`crate::render`]).
+pub use crate::render::DENSITY_LEVELS;
+pub use chaos::{ChaosGame, DensityDrawing, IfsDrawing, IfsPicture, IfsPoint, SKIPPED};
 pub use file::{IfsEntry, IfsFile};
 pub use gingerbread::{Cycle, Gingerbread, GingerbreadDrawing, GingerbreadPoints, MapPoint};
 pub use maps::{AffineMap, Ifs};

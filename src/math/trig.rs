@@ -156,20 +156,53 @@ impl BinaryAngle {
     /// Cosine and sine in Q30: table lookup with linear interpolation (error < 3·10⁻⁷).
     #[inline]
     pub(crate) fn cos_sin(self) -> (i32, i32) {
-        let sin = |angle: u32| -> i32 {
-            let within = angle & (Self::QUARTER - 1);
-            let magnitude = match (angle >> 30) & 1 {
-                0 => quarter_sine(within),
-                _ => quarter_sine(Self::QUARTER - within),
-            };
-            if angle >> 31 == 0 {
-                magnitude
-            } else {
-                -magnitude
-            }
-        };
-        (sin(self.0.wrapping_add(Self::QUARTER)), sin(self.0))
+        (cos_of_binary(self.0), sin_of_binary(self.0))
     }
+}
+
+/// A radian in binary-angle units (2⁻³² of a turn): 2³²/(2π) = 683,565,275.58, rounded.
+const TURN_UNITS_PER_RADIAN: i32 = 683_565_276;
+
+/// The binary angle of `radians` (fixed point with `bits` fraction bits, at most 32),
+/// wrapped to one turn: a 32×32 product and a shift, so a sine of any argument costs the
+/// same. The angle is truncated to 2⁻³² turn (1.5·10⁻⁹ rad) and the constant's rounding
+/// adds under 10⁻⁹ of the argument.
+#[inline(always)]
+pub(crate) fn binary_angle_of_radians(radians: i32, bits: u32) -> u32 {
+    // Wrapping to u32 is the reduction modulo one turn.
+    (super::wide::mul_i32_wide(radians, TURN_UNITS_PER_RADIAN) >> bits) as u32
+}
+
+/// The binary angle of tan θ (as radians) from θ's Q30 sine and cosine, wrapped to one
+/// turn: what sin(x + tan θ) needs, exact whatever the size of the tangent (a cosine of 0
+/// counts as the smallest positive one).
+#[inline(always)]
+pub(crate) fn binary_angle_of_tangent(sin_q30: i32, cos_q30: i32) -> u32 {
+    let cos = if cos_q30 == 0 { 1 } else { cos_q30 };
+    // |sin·K| < 2⁶⁰: the quotient fits; wrapping to u32 reduces it modulo a turn.
+    (super::wide::mul_i32_wide(sin_q30, TURN_UNITS_PER_RADIAN) / i64::from(cos)) as u32
+}
+
+/// The sine of a binary angle in Q30: the quarter-wave table, linearly interpolated
+/// (error < 3·10⁻⁷).
+#[inline(always)]
+pub(crate) fn sin_of_binary(angle: u32) -> i32 {
+    let within = angle & (BinaryAngle::QUARTER - 1);
+    let magnitude = match (angle >> 30) & 1 {
+        0 => quarter_sine(within),
+        _ => quarter_sine(BinaryAngle::QUARTER - within),
+    };
+    if angle >> 31 == 0 {
+        magnitude
+    } else {
+        -magnitude
+    }
+}
+
+/// The cosine of a binary angle in Q30 (the sine a quarter turn on).
+#[inline(always)]
+pub(crate) fn cos_of_binary(angle: u32) -> i32 {
+    sin_of_binary(angle.wrapping_add(BinaryAngle::QUARTER))
 }
 
 /// sin of `position / 2³⁰` of a quarter turn, `position` in 0..=2³⁰.

@@ -1,9 +1,10 @@
 //! From numbers to pixels, for every family.
 //!
 //! The run rasteriser for lines, value sinks
-//! (the raw layer under colour), palettes, and fitting a picture into a target. This is
+//! (the raw layer under colour), palettes, density pictures, and fitting a picture into a target. This is
 //! also where 3D projection belongs, and the relief drawing every height field shares.
 
+pub(crate) mod density;
 pub(crate) mod fit;
 pub(crate) mod palette;
 pub(crate) mod polygon;
@@ -13,6 +14,7 @@ pub(crate) mod relief;
 pub(crate) mod sink;
 pub(crate) mod space;
 
+pub use density::{HitCount, DENSITY_LEVELS};
 pub use fit::{Orientation, DEFAULT_MARGIN};
 pub use palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use projection::Projection;

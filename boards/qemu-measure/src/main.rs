@@ -1,9 +1,9 @@
 //! Measuring firmware, two builds per core: runs every scene (and, where they apply, the
 //! f32 and fixed-point baselines) into a checksum target and reports, over semihosting,
 //! one line per scene: instructions, work, checksum and stack high-water mark. The build
-//! with `--features textures` measures the texture scenes (noise, reaction–diffusion) and
-//! only them, the other build every other scene: together they would overflow the
-//! micro:bit's 256 KiB of flash.
+//! with `--features newer` measures the newer families' scenes (noise, reaction–diffusion,
+//! the attractors) and only them, the other build every other scene: together they would
+//! overflow the micro:bit's 256 KiB of flash.
 //!
 //! Under QEMU with `-icount shift=0` each instruction is one virtual nanosecond. SysTick
 //! runs from the core clock, so its ticks are proportional to instructions; the ratio is
@@ -21,18 +21,20 @@ mod firmware {
     use cortex_m_semihosting::{debug, hprintln};
     use embedded_graphics::prelude::Size;
     use panic_semihosting as _;
-    #[cfg(feature = "textures")]
+    #[cfg(feature = "newer")]
+    use tinyfractal::attractor::Kind;
+    #[cfg(feature = "newer")]
     use tinyfractal::noise::{Perlin, Texture};
-    #[cfg(feature = "textures")]
+    #[cfg(feature = "newer")]
     use tinyfractal::Real;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
-    #[cfg(feature = "textures")]
-    use tinyfractal_scenes::naive::{gray_scott_f32, noise_f32};
-    #[cfg(feature = "textures")]
-    use tinyfractal_scenes::TEXTURE_SCENES;
+    #[cfg(feature = "newer")]
+    use tinyfractal_scenes::naive::{gray_scott_f32, henon_f32, lorenz_f32, noise_f32};
     use tinyfractal_scenes::{Scene, Work, GREY};
-    #[cfg(not(feature = "textures"))]
+    #[cfg(not(feature = "newer"))]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
+    #[cfg(feature = "newer")]
+    use tinyfractal_scenes::{DYNAMICS_SCENES, TEXTURE_SCENES};
 
     /// The loops measured beside a scene: the escape time's f32 and fixed-point ones, or
     /// a texture's naive f32 one.
@@ -40,21 +42,24 @@ mod firmware {
     enum Baseline {
         Escape(BaselineView),
         /// fBm of Perlin's 2D noise: the permutation's seed, octaves, lattice cells across.
-        #[cfg(feature = "textures")]
+        #[cfg(feature = "newer")]
         Noise(u32, u32, f32),
         /// Gray–Scott: (f, k), the grid, the steps.
-        #[cfg(feature = "textures")]
+        #[cfg(feature = "newer")]
         Reaction((f32, f32), (usize, usize), u32),
+        /// The Hénon map's or the Lorenz flow's points.
+        #[cfg(feature = "newer")]
+        Attractor(Kind, u32),
     }
 
     impl Baseline {
         /// The baseline of `scene`, if it has one: a texture's only for fBm with
         /// persistence ½ and lacunarity 2, what the naive loop computes.
         fn of(scene: &Scene) -> Option<Self> {
-            #[cfg(feature = "textures")]
+            #[cfg(feature = "newer")]
             let f32_of = |r: Real| r.to_f64() as f32;
             match *scene {
-                #[cfg(feature = "textures")]
+                #[cfg(feature = "newer")]
                 Scene::Noise {
                     texture: Texture::Fbm,
                     octaves,
@@ -65,9 +70,9 @@ mod firmware {
                 {
                     Some(Self::Noise(seed, octaves.octaves, f32_of(scale)))
                 }
-                #[cfg(feature = "textures")]
+                #[cfg(feature = "newer")]
                 Scene::Noise { .. } => None,
-                #[cfg(feature = "textures")]
+                #[cfg(feature = "newer")]
                 Scene::Reaction {
                     preset,
                     grid,
@@ -81,6 +86,11 @@ mod firmware {
                         steps,
                     ))
                 }
+                #[cfg(feature = "newer")]
+                Scene::Attractor {
+                    kind: kind @ (Kind::Henon | Kind::Lorenz),
+                    points,
+                } => Some(Self::Attractor(kind, points as u32)),
                 _ => BaselineView::of(scene).map(Self::Escape),
             }
         }
@@ -202,11 +212,11 @@ mod firmware {
         while SYST::get_current() == 0 {}
         let clock = Clock::calibrate();
         hprintln!("measure calibration scale={}", clock.scale);
-        // Every core's scenes, with the baselines where they apply: the textures in their
-        // own build, the rest in the other.
-        #[cfg(feature = "textures")]
-        let every_core = TEXTURE_SCENES.iter();
-        #[cfg(not(feature = "textures"))]
+        // Every core's scenes, with the baselines where they apply: the newer families in
+        // their own build, the rest in the other.
+        #[cfg(feature = "newer")]
+        let every_core = TEXTURE_SCENES.iter().chain(&DYNAMICS_SCENES);
+        #[cfg(not(feature = "newer"))]
         let every_core = SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES);
         for entry in every_core {
             // The baseline's view (parsed from decimal text) only for a scene measured.
@@ -215,25 +225,26 @@ mod firmware {
             }
             let baseline = Baseline::of(&entry.scene);
             measure(&clock, (entry.name, entry.size), baseline, |target| {
-                // The textures' build reaches no other family's code.
-                #[cfg(feature = "textures")]
+                // The newer families' build reaches no other family's code.
+                #[cfg(feature = "newer")]
                 return entry
                     .scene
                     .draw_texture(target, &GREY)
+                    .or_else(|| entry.scene.draw_dynamics(target, &GREY))
                     .unwrap_or(Ok(Work::Samples(0)));
-                #[cfg(not(feature = "textures"))]
+                #[cfg(not(feature = "newer"))]
                 entry.scene.draw(target, &GREY)
             });
         }
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
-        #[cfg(all(measure_general, not(feature = "textures")))]
+        #[cfg(all(measure_general, not(feature = "newer")))]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.draw(target, &GREY)
             });
         }
         // Perturbation's views, where the RAM holds a reference orbit (not the micro:bit's).
-        #[cfg(all(measure_general, not(feature = "textures")))]
+        #[cfg(all(measure_general, not(feature = "newer")))]
         for entry in tinyfractal_scenes::DEEP_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.scene.draw(target, &GREY)
@@ -284,17 +295,27 @@ mod firmware {
                     baseline_fixed20(view, target);
                 });
             }
-            #[cfg(feature = "textures")]
+            #[cfg(feature = "newer")]
             Some(Baseline::Noise(seed, octaves, scale)) => {
                 let permutation = *Perlin::seeded(seed).permutation();
                 f32_cost = run(&mut |target| {
                     noise_f32(&permutation, octaves, scale, target);
                 });
             }
-            #[cfg(feature = "textures")]
+            #[cfg(feature = "newer")]
             Some(Baseline::Reaction(rates, grid, steps)) => {
                 f32_cost = run(&mut |target| {
                     gray_scott_f32(rates, grid, steps, target);
+                });
+            }
+            #[cfg(feature = "newer")]
+            Some(Baseline::Attractor(kind, points)) => {
+                f32_cost = run(&mut |target| {
+                    if kind == Kind::Henon {
+                        henon_f32(points, target);
+                    } else {
+                        lorenz_f32(points, target);
+                    }
                 });
             }
             None => {}

@@ -4,6 +4,7 @@
 
 use embedded_graphics::geometry::Size;
 use tinyfractal::{
+    attractor::Kind,
     escape::{Shading, Tier},
     math::DeepCoord,
     noise::{Octaves, Texture},
@@ -114,6 +115,14 @@ pub enum Scene {
     },
     /// A Mandelbrot or Julia view.
     Escape(EscapeScene),
+    /// A strange attractor with its kind's defaults, `points` points after the default
+    /// transient, by density (hit counts a byte a pixel) over the picture.
+    Attractor {
+        /// Which attractor.
+        kind: Kind,
+        /// Points plotted.
+        points: u64,
+    },
     /// One of Perlin's textures over the picture, `scale` lattice cells across it.
     Noise {
         /// Which texture.
@@ -203,12 +212,13 @@ impl Scene {
             Self::Reaction { .. } => "cell-step",
             Self::NoiseTerrain { .. } => "height",
             Self::NoiseFlight { .. } => "sample",
+            Self::Attractor { .. } => "point",
         }
     }
 
     /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
-    /// `terrain`, `terrain2d`, `figure`, `mandelbrot`, `julia`, `noise`, `reaction` or `zoom`
-    /// (`animate zoom`).
+    /// `terrain`, `terrain2d`, `figure`, `mandelbrot`, `julia`, `noise`, `reaction`,
+    /// `attractor` or `zoom` (`animate zoom`).
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
@@ -228,6 +238,7 @@ impl Scene {
             Self::Reaction { .. } => "reaction",
             Self::NoiseTerrain { .. } => "terrain2d",
             Self::NoiseFlight { .. } => "noise",
+            Self::Attractor { .. } => "attractor",
         }
     }
 
@@ -657,11 +668,21 @@ const fn reaction(
     }
 }
 
+/// `kind`'s attractor by density, `points` points.
+const fn attractor(name: &'static str, kind: Kind, points: u64, size: Size) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Attractor { kind, points },
+        size,
+        palette: "",
+    }
+}
+
 /// The gallery (`cargo run --release`): classic L-systems, escape-time views, the
-/// Sierpiński family, midpoint-displacement terrain, Perlin's textures and
-/// reaction–diffusion, 320×240.
+/// Sierpiński family, midpoint-displacement terrain, Perlin's textures,
+/// reaction–diffusion and strange attractors, 320×240.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 26] = [
+pub const GALLERY: [Entry; 30] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -691,6 +712,10 @@ pub const GALLERY: [Entry; 26] = [
     noise_terrain("noise-terrain", 3, 257, GALLERY_SIZE),
     reaction("reaction-mitosis", Preset::Mitosis, (128, 96), 8000, GALLERY_SIZE),
     reaction("reaction-maze", Preset::Maze, (128, 96), 8000, GALLERY_SIZE),
+    attractor("attractor-henon", Kind::Henon, 1_000_000, GALLERY_SIZE),
+    attractor("attractor-lorenz", Kind::Lorenz, 1_000_000, GALLERY_SIZE),
+    attractor("attractor-clifford", Kind::Clifford, 1_000_000, GALLERY_SIZE),
+    attractor("attractor-dejong", Kind::DeJong, 1_000_000, GALLERY_SIZE),
 ];
 
 /// The systems of ABOP's `data/abop.lsys`, drawn by the general engine.
@@ -838,6 +863,17 @@ pub const TEXTURE_SCENES: [Entry; 4] = [
     // 24×24: the naive f32 loop measured beside it keeps two grids of floats (9 KiB), all
     // the micro:bit has room for.
     reaction("reaction-mitosis", Preset::Mitosis, (24, 24), 700, OLED),
+];
+
+/// The lecture's dynamics on the OLED, measured on every core: the Hénon and Lorenz
+/// attractors by density (counts a byte a pixel, 8 KiB on the stack).
+///
+/// Shown by the boards built with the scenes' `dynamics` feature (not the LM3S6965, whose
+/// flash they would overflow), and measured by the measuring firmware's second build with
+/// the textures.
+pub const DYNAMICS_SCENES: [Entry; 2] = [
+    attractor("attractor-henon", Kind::Henon, 20_000, OLED),
+    attractor("attractor-lorenz", Kind::Lorenz, 20_000, OLED),
 ];
 
 /// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the stack

@@ -233,6 +233,9 @@ impl Scene {
             | Scene::NoiseFlight { .. } => self
                 .draw_texture(target, look)
                 .unwrap_or(Ok(Work::Samples(0))),
+            Scene::Attractor { .. } => self
+                .draw_dynamics(target, look)
+                .unwrap_or(Ok(Work::Points(0))),
             Scene::Escape(escape) => {
                 let view = escape.view(target.bounding_box().size)?;
                 match (escape.shading, view.tier()) {

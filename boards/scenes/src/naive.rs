@@ -1,7 +1,7 @@
-//! The loops a user would write for the textures, to measure the engine against.
+//! The loops a user would write for the newer families, to measure the engine against.
 //!
-//! Perlin's reference code in `f32` as an Arduino sketch ports it, and a first Gray–Scott
-//! sketch in `f32`. Each draws its picture pixel by pixel into the target, as such
+//! Perlin's reference code in `f32` as an Arduino sketch ports it, a first Gray–Scott
+//! sketch in `f32`, and the Hénon map and the Lorenz flow as sketches iterate them. Each draws its picture pixel by pixel into the target, as such
 //! sketches do.
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
@@ -182,4 +182,61 @@ pub fn gray_scott_f32<D: DrawTarget<Color = Gray4>>(
         }
     }
     u64::from(steps) * (w * h) as u64
+}
+
+/// Steps from the start before a sketch plots, as the scenes skip.
+const NAIVE_SKIP: u32 = 1000;
+
+/// The Hénon map (a = 1.4, b = 0.3) as a sketch writes it, in `f32`.
+///
+/// From (0, 0): 1,000 steps skipped, then each point a pixel of the target scaled from the attractor's
+/// hard-coded box [−1.5, 1.5] × [−0.45, 0.45]; returns the points plotted.
+pub fn henon_f32<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> u64 {
+    let size = target.bounding_box().size;
+    let (sx, sy) = (size.width as f32 / 3.0, size.height as f32 / 0.9);
+    let (mut x, mut y) = (0.0f32, 0.0f32);
+    for step in 0..NAIVE_SKIP + points {
+        let x_next = 1.0 - 1.4 * x * x + y;
+        y = 0.3 * x;
+        x = x_next;
+        if step >= NAIVE_SKIP {
+            let px = ((x + 1.5) * sx) as i32;
+            let py = ((0.45 - y) * sy) as i32;
+            let _ = target.draw_iter(core::iter::once(Pixel(Point::new(px, py), Gray4::WHITE)));
+        }
+    }
+    u64::from(points)
+}
+
+/// The Lorenz flow (σ = 10, ρ = 28, β = 8/3) as a sketch writes it, in `f32`.
+///
+/// From (1, 1, 1) by RK4 with Δt = 0.01: 1,000 steps skipped, then each point a pixel of the
+/// target, x and z scaled from the hard-coded box [−25, 25] × [0, 50]; returns the points
+/// plotted.
+pub fn lorenz_f32<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> u64 {
+    fn f([x, y, z]: [f32; 3]) -> [f32; 3] {
+        [10.0 * (y - x), x * (28.0 - z) - y, x * y - 8.0 / 3.0 * z]
+    }
+    fn ahead(s: [f32; 3], k: [f32; 3], h: f32) -> [f32; 3] {
+        [s[0] + h * k[0], s[1] + h * k[1], s[2] + h * k[2]]
+    }
+    const DT: f32 = 0.01;
+    let size = target.bounding_box().size;
+    let (sx, sz) = (size.width as f32 / 50.0, size.height as f32 / 50.0);
+    let mut s = [1.0f32; 3];
+    for step in 0..NAIVE_SKIP + points {
+        let k1 = f(s);
+        let k2 = f(ahead(s, k1, DT / 2.0));
+        let k3 = f(ahead(s, k2, DT / 2.0));
+        let k4 = f(ahead(s, k3, DT));
+        for i in 0..3 {
+            s[i] += DT / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+        if step >= NAIVE_SKIP {
+            let px = ((s[0] + 25.0) * sx) as i32;
+            let py = ((50.0 - s[2]) * sz) as i32;
+            let _ = target.draw_iter(core::iter::once(Pixel(Point::new(px, py), Gray4::WHITE)));
+        }
+    }
+    u64::from(points)
 }

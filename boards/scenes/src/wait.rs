@@ -3,7 +3,7 @@
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use tinyfractal::error::DrawError;
 
-use crate::catalogue::{Entry, DEEP_SCENES, SCENES, TEXTURE_SCENES, ZOOM_SCENES};
+use crate::catalogue::{Entry, DEEP_SCENES, DYNAMICS_SCENES, SCENES, TEXTURE_SCENES, ZOOM_SCENES};
 use crate::look::{Look, Work};
 
 /// How long an animated scene waits between its frames, in milliseconds.
@@ -18,8 +18,9 @@ pub const SHOW_FOR_MS: u64 = 10_000;
 /// polarity is the board's business), and `report` hears each scene's name, outcome and
 /// drawing time, for the board's log. An animated scene waits [`FRAME_MS`] between
 /// frames; each scene shows for [`SHOW_FOR_MS`] or until the button is pressed and
-/// released. The textures (noise, reaction–diffusion) are shown by a board built with the
-/// scenes' `textures` feature, which the real boards' firmware is.
+/// released. The textures (noise, reaction–diffusion) and the dynamics (attractors) are
+/// shown by a board built with the scenes' `textures` and `dynamics` features, which the
+/// real boards' firmware is.
 pub fn show_scenes<D>(
     display: &mut D,
     look: &Look<'_, D::Color>,
@@ -37,8 +38,13 @@ where
         } else {
             &[]
         };
+        let dynamics: &[Entry] = if cfg!(feature = "dynamics") {
+            &DYNAMICS_SCENES
+        } else {
+            &[]
+        };
         let every = SCENES.iter().chain(&DEEP_SCENES).chain(&ZOOM_SCENES);
-        for entry in every.chain(textures) {
+        for entry in every.chain(textures).chain(dynamics) {
             let start = now_ms();
             let result = entry.scene.draw_frames(display, look, || {
                 let since = now_ms();

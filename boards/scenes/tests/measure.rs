@@ -22,8 +22,8 @@ use embedded_graphics::prelude::Size;
 use tinyfractal::escape::{Render, REFERENCE_POINT_BYTES};
 use tinyfractal_scenes::measure::Checksum;
 use tinyfractal_scenes::{
-    Entry, Work, DEEP_SCENES, DISPLAY_SCENES, GENERAL_SCENES, GREY, MAX_BOARD_REFERENCE_POINTS,
-    SCENES, TEXTURE_SCENES, ZOOM_SCENES,
+    Entry, Work, DEEP_SCENES, DISPLAY_SCENES, DYNAMICS_SCENES, GENERAL_SCENES, GREY,
+    MAX_BOARD_REFERENCE_POINTS, SCENES, TEXTURE_SCENES, ZOOM_SCENES,
 };
 
 struct Core {
@@ -70,14 +70,14 @@ fn repository() -> PathBuf {
 }
 
 /// Builds the measuring firmware for one core, from its own folder (see its Cargo.toml):
-/// the texture scenes' build, or the other scenes'.
-fn build(core: &Core, textures: bool) -> PathBuf {
+/// the newer families' build (textures, dynamics), or the other scenes'.
+fn build(core: &Core, newer: bool) -> PathBuf {
     let folder = repository().join("boards/qemu-measure");
     tools::ensure_target(&folder, core.target);
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let mut args = vec!["build", "--release", "--target", core.target];
-    if textures {
-        args.extend(["--features", "textures"]);
+    if newer {
+        args.extend(["--features", "newer"]);
     }
     let status = Command::new(cargo)
         .current_dir(&folder)
@@ -252,8 +252,9 @@ fn every_core_draws_the_host_picture_and_fits() {
             work,
         )
     };
-    // In the order the firmware's two builds measure them: every scene but the textures
-    // (then, beyond the M0, the general engine's and perturbation's), then the textures.
+    // In the order the firmware's two builds measure them: every scene but the newer
+    // families' (then, beyond the M0, the general engine's and perturbation's), then the
+    // textures and the dynamics.
     let every_core_scenes = SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES);
     let mut host: Vec<Expected> = every_core_scenes.map(expected).collect();
     let every_core = host.len();
@@ -267,19 +268,23 @@ fn every_core_draws_the_host_picture_and_fits() {
         ));
     }
     host.extend(DEEP_SCENES.iter().map(expected));
-    let textures: Vec<Expected> = TEXTURE_SCENES.iter().map(expected).collect();
+    let newer: Vec<Expected> = TEXTURE_SCENES
+        .iter()
+        .chain(&DYNAMICS_SCENES)
+        .map(expected)
+        .collect();
 
     let mut json = String::from("[\n");
     let mut table = String::new();
     // (core, scene) → (stack, static RAM), for the perturbation RAM claims below.
     let mut stacks = BTreeMap::new();
     for core in &CORES {
-        for texture_build in [false, true] {
-            let elf = build(core, texture_build);
+        for newer_build in [false, true] {
+            let elf = build(core, newer_build);
             let (text, data, bss) = sizes(&elf);
             let records = run(core, &elf);
-            let expected: &[Expected] = match (texture_build, core.target.starts_with("thumbv6m")) {
-                (true, _) => &textures,
+            let expected: &[Expected] = match (newer_build, core.target.starts_with("thumbv6m")) {
+                (true, _) => &newer,
                 (false, true) => &host[..every_core],
                 (false, false) => &host,
             };
@@ -338,7 +343,7 @@ fn every_core_draws_the_host_picture_and_fits() {
             );
             }
             // Budgets with room to spare: thirty-one thirty-seconds of flash (this firmware
-            // carries every engine but the textures (their own build), both baselines, the perturbation's series and finish, the
+            // carries every engine but the newer families' (their own build), both baselines, the perturbation's series and finish, the
             // zoom and the expansion table, which no board's firmware does: it outgrew the
             // LM3S6965's 256 KiB, so Cortex-M3 runs it on the MPS2 image's 4 MiB; the OLED
             // board's own firmware takes about 210 KiB of the LM3S6965's), seven eighths
@@ -357,7 +362,7 @@ fn every_core_draws_the_host_picture_and_fits() {
             println!(
                 "{}{}: text {text}, data {data}, bss {bss}, deepest stack {deepest_stack}",
                 core.name,
-                if texture_build { " (textures)" } else { "" }
+                if newer_build { " (newer families)" } else { "" }
             );
         }
     }

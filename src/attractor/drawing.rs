@@ -1,0 +1,276 @@
+//! An attractor on a target: its orbit placed through a projection, fitted from the
+//! orbit's first points, drawn as points or by density.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::orbit::{Attractor, Orbit};
+use super::step::State;
+use crate::error::{only_target_errors, DrawError, Error, FitError};
+use crate::math::trig::BinaryAngle;
+use crate::math::Real;
+use crate::render::density::{Density, HitCount};
+use crate::render::fit::DEFAULT_MARGIN;
+use crate::render::palette::Palette;
+use crate::render::projection::Projection;
+use crate::render::space::SpaceFit;
+
+/// The transient skipped by default: the steps from the start before the first plotted
+/// point (enough for the defaults' orbits to reach their attractors).
+pub const DEFAULT_SKIP: u64 = 1000;
+
+/// How many of the first points plotted (or all, if fewer) the picture is fitted to.
+///
+/// For an attractor that its orbit fills within its first points (all but those whose
+/// orbits [spread](super::Kind::spreads)): one short pass instead of a second full orbit.
+/// The rest of the orbit is drawn where it lands; a point outside the fitted box is
+/// clipped and counted in [`AttractorStats::outside`]. A spreading orbit is fitted whole.
+pub const FIT_POINTS: u64 = 1 << 14;
+
+/// What a drawing did: points plotted, and how many of them fell outside the target.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct AttractorStats {
+    /// Points computed and placed (after the skipped transient).
+    pub points: u64,
+    /// Of those, how many landed outside the target (clipped).
+    pub outside: u64,
+}
+
+/// An attractor to draw: how many points after which transient, and how space is seen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct AttractorPicture {
+    attractor: Attractor,
+    skip: u64,
+    points: u64,
+    projection: Projection,
+    turn: (i32, i32),
+}
+
+impl AttractorPicture {
+    /// `points` points of `attractor` after [`DEFAULT_SKIP`] steps, seen from the front.
+    ///
+    /// A flow or Pickover's map is placed in space with its z up (picture y) and its y
+    /// away from the viewer, so the Lorenz butterfly shows its wings from the front.
+    pub fn new(attractor: Attractor, points: u64) -> Self {
+        Self {
+            attractor,
+            skip: DEFAULT_SKIP,
+            points,
+            projection: Projection::Front,
+            turn: (1 << 30, 0),
+        }
+    }
+
+    /// Another transient: `skip` steps before the first point (0: the start is plotted).
+    #[must_use]
+    pub const fn with_skip(mut self, skip: u64) -> Self {
+        self.skip = skip;
+        self
+    }
+
+    /// How space is seen (a 2D attractor is drawn in its plane whatever this is).
+    #[must_use]
+    pub const fn with_projection(mut self, projection: Projection) -> Self {
+        self.projection = projection;
+        self
+    }
+
+    /// Turns a 3D attractor about its vertical axis by `degrees` before projecting it
+    /// (what `animate attractor` steps through).
+    #[must_use]
+    pub fn with_turn(mut self, degrees: Real) -> Self {
+        self.turn = BinaryAngle::from_degrees_bits(degrees.to_bits()).cos_sin();
+        self
+    }
+
+    /// The attractor.
+    pub fn attractor(&self) -> &Attractor {
+        &self.attractor
+    }
+
+    /// The points it plots, in the attractor's units.
+    pub fn orbit(&self) -> Orbit {
+        self.attractor.orbit(self.skip, self.points)
+    }
+
+    /// A state as a point of picture space.
+    #[inline]
+    fn in_space(&self, state: State) -> [Real; 3] {
+        let [x, y, z] = self.attractor.real(state);
+        if self.attractor.kind().dimensions() == 2 {
+            return [x, y, Real::ZERO];
+        }
+        // z up, y away; then the turn about the vertical axis.
+        let (cos, sin) = self.turn;
+        let depth = Real::from_bits(y.to_bits().saturating_neg());
+        [
+            x.mul_q30(cos).saturating_add(depth.mul_q30(sin)),
+            z,
+            depth.mul_q30(cos).saturating_sub(x.mul_q30(sin)),
+        ]
+    }
+
+    fn projection(&self) -> Projection {
+        if self.attractor.kind().dimensions() == 2 {
+            Projection::Front
+        } else {
+            self.projection
+        }
+    }
+
+    /// The fit: the extent of the first [`FIT_POINTS`] points (every point of an orbit
+    /// that spreads), scaled and centred in `area` less a margin.
+    fn space(&self, area: &Rectangle) -> Result<SpaceFit, Error> {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        let sample = if self.attractor.kind().spreads() {
+            self.points
+        } else {
+            self.points.min(FIT_POINTS)
+        };
+        SpaceFit::new(
+            || {
+                let mut orbit = self.attractor.orbit(self.skip, sample);
+                core::iter::from_fn(move || orbit.next_state())
+                    .map(|state| state.map(|state| [self.in_space(state)]))
+            },
+            self.projection(),
+            false,
+            area,
+            DEFAULT_MARGIN,
+        )
+    }
+
+    /// Fitted into `area`, each point a pixel of `color`.
+    pub fn fit<C: PixelColor>(
+        &self,
+        area: Rectangle,
+        color: C,
+    ) -> Result<AttractorDrawing<C>, Error> {
+        Ok(AttractorDrawing {
+            picture: *self,
+            space: self.space(&area)?,
+            color,
+        })
+    }
+
+    /// Fitted into `area` and coloured by density: each pixel by how many points hit it,
+    /// on a log scale through `palette` (as the IFS's density pictures). The counts go in
+    /// `counts`, a cell a pixel of `area` (its only memory: `u16` or, in half the
+    /// memory, `u8`); every pixel of `area` is written, a row at a time.
+    pub fn fit_density<'b, P: Palette, T: HitCount>(
+        &self,
+        area: Rectangle,
+        palette: P,
+        counts: &'b mut [T],
+    ) -> Result<AttractorDensity<'b, P, T>, Error> {
+        let space = self.space(&area)?;
+        Ok(AttractorDensity {
+            picture: *self,
+            space,
+            palette,
+            density: Density::new(area, counts)?,
+        })
+    }
+}
+
+/// An attractor fitted to a target, a pixel a point: an embedded-graphics [`Drawable`].
+#[derive(Debug, Clone, Copy)]
+pub struct AttractorDrawing<C> {
+    picture: AttractorPicture,
+    space: SpaceFit,
+    color: C,
+}
+
+impl<C: PixelColor> AttractorDrawing<C> {
+    /// Plots the points (one pixel each), reporting an orbit that leaves its range too.
+    pub fn try_draw<D>(&self, target: &mut D) -> Result<AttractorStats, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        let clip = target.bounding_box();
+        let mut stats = AttractorStats::default();
+        let mut orbit = self.picture.orbit();
+        while let Some(state) = orbit.next_state() {
+            let (pixel, _) = self.space.place(self.picture.in_space(state?));
+            if clip.contains(pixel) {
+                target
+                    .fill_solid(&Rectangle::new(pixel, Size::new(1, 1)), self.color)
+                    .map_err(DrawError::Target)?;
+            } else {
+                stats.outside += 1;
+            }
+            stats.points += 1;
+        }
+        Ok(stats)
+    }
+}
+
+impl<C> Dimensions for AttractorDrawing<C> {
+    fn bounding_box(&self) -> Rectangle {
+        self.space.bounding_box
+    }
+}
+
+impl<C: PixelColor> Drawable for AttractorDrawing<C> {
+    type Color = C;
+    type Output = AttractorStats;
+
+    fn draw<D>(&self, target: &mut D) -> Result<AttractorStats, D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        only_target_errors(self.try_draw(target))
+    }
+}
+
+/// An attractor fitted and coloured by density: an embedded-graphics [`Drawable`].
+#[derive(Debug)]
+pub struct AttractorDensity<'b, P, T = u16> {
+    picture: AttractorPicture,
+    space: SpaceFit,
+    palette: P,
+    density: Density<'b, T>,
+}
+
+impl<P: Palette, T: HitCount> AttractorDensity<'_, P, T> {
+    /// Counts the hits, then writes every pixel of the area a row at a time.
+    pub fn try_draw<D>(&self, target: &mut D) -> Result<AttractorStats, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        self.density.clear();
+        let mut stats = AttractorStats::default();
+        let mut orbit = self.picture.orbit();
+        while let Some(state) = orbit.next_state() {
+            let (pixel, _) = self.space.place(self.picture.in_space(state?));
+            if !self.density.hit(pixel) {
+                stats.outside += 1;
+            }
+            stats.points += 1;
+        }
+        self.density
+            .emit(&self.palette, target)
+            .map_err(DrawError::Target)?;
+        Ok(stats)
+    }
+}
+
+impl<P, T: HitCount> Dimensions for AttractorDensity<'_, P, T> {
+    fn bounding_box(&self) -> Rectangle {
+        self.density.area()
+    }
+}
+
+impl<P: Palette, T: HitCount> Drawable for AttractorDensity<'_, P, T> {
+    type Color = P::Color;
+    type Output = AttractorStats;
+
+    fn draw<D>(&self, target: &mut D) -> Result<AttractorStats, D::Error>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        only_target_errors(self.try_draw(target))
+    }
+}

@@ -1,0 +1,68 @@
+//! The attractors' arithmetic: 32-bit fixed point with a kind's fraction bits, products
+//! in 64 bits, and every value that feeds another product checked back into 32 bits, so
+//! an orbit that leaves its range stops with an error instead of wrapping.
+
+use crate::math::trig::{binary_angle_of_radians, cos_of_binary, sin_of_binary};
+use crate::math::wide::mul_i32_wide;
+use crate::math::Real;
+
+/// `a·b` with `F` fraction bits, rounded down, in 64 bits (never overflows).
+#[inline(always)]
+pub(super) fn mul<const F: u32>(a: i32, b: i32) -> i64 {
+    mul_i32_wide(a, b) >> F
+}
+
+/// `value` back in 32 bits, or `None` where it left them.
+#[inline(always)]
+pub(super) fn narrow(value: i64) -> Option<i32> {
+    i32::try_from(value).ok()
+}
+
+/// A Q30 sine or cosine in `F` fraction bits, rounded down.
+#[inline(always)]
+fn from_q30<const F: u32>(value: i32) -> i32 {
+    value >> (30 - F)
+}
+
+/// sin(x) in Q30 for x with `F` fraction bits.
+#[inline(always)]
+pub(super) fn sin_q30<const F: u32>(x: i32) -> i32 {
+    sin_of_binary(binary_angle_of_radians(x, F))
+}
+
+/// cos(x) in Q30 for x with `F` fraction bits.
+#[inline(always)]
+pub(super) fn cos_q30<const F: u32>(x: i32) -> i32 {
+    cos_of_binary(binary_angle_of_radians(x, F))
+}
+
+/// sin(x) for x with `F` fraction bits, in `F` fraction bits.
+#[inline(always)]
+pub(super) fn sin<const F: u32>(x: i32) -> i32 {
+    from_q30::<F>(sin_q30::<F>(x))
+}
+
+/// cos(x) for x with `F` fraction bits, in `F` fraction bits.
+#[inline(always)]
+pub(super) fn cos<const F: u32>(x: i32) -> i32 {
+    from_q30::<F>(cos_q30::<F>(x))
+}
+
+/// `c·sin(x)` or `c·cos(x)` from the Q30 value of the sine: one product, rounded down.
+#[inline(always)]
+pub(super) fn times_q30(c: i32, trig_q30: i32) -> i64 {
+    mul_i32_wide(c, trig_q30) >> 30
+}
+
+/// A value in the fixed point of `bits` fraction bits, rounded to nearest; `None` beyond
+/// the 32-bit range.
+pub(super) fn to_fixed(value: Real, bits: u32) -> Option<i32> {
+    let shift = Real::FRAC_BITS - bits;
+    let bits = crate::math::wide::shift_round(i128::from(value.to_bits()), shift);
+    i32::try_from(bits).ok()
+}
+
+/// A fixed-point value as a [`Real`] (exact).
+pub(super) fn to_real(value: i32, bits: u32) -> Real {
+    Real::from_bits(i64::from(value) << (Real::FRAC_BITS - bits))
+}

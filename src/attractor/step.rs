@@ -1,0 +1,332 @@
+//! One step of each attractor in its fixed point: the maps' equations as [`Kind`] states
+//! them, the flows' derivatives times Δt, and the Euler and Runge–Kutta steps over them.
+//! Products round down; a value that leaves 32 bits ends the step with `None`.
+
+use super::fixed::{cos, cos_q30, mul, narrow, sin, sin_q30, times_q30, to_fixed};
+use super::kind::{Kind, Method};
+use crate::error::{Error, ParameterError};
+use crate::math::trig::{binary_angle_of_radians, binary_angle_of_tangent, sin_of_binary};
+use crate::math::Real;
+
+/// A state: x, y, z in the kind's fixed point (z is 0 for the 2D maps).
+pub(crate) type State = [i32; 3];
+
+/// The Hénon map's fraction bits (and so on: [`Kind::fraction_bits`]).
+const HENON: u32 = Kind::Henon.fraction_bits();
+const TRIG: u32 = Kind::Clifford.fraction_bits();
+const WIDE: u32 = Kind::GumowskiMira.fraction_bits();
+const HOP: u32 = Kind::Hopalong.fraction_bits();
+const FLOW: u32 = Kind::Lorenz.fraction_bits();
+
+/// An attractor's step with its parameters in its fixed point (for a flow, already
+/// multiplied by Δt).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Stepper {
+    Henon {
+        a: i32,
+        b: i32,
+    },
+    Clifford([i32; 4]),
+    DeJong([i32; 4]),
+    Pickover([i32; 4]),
+    Hopalong {
+        a: i32,
+        b: i32,
+        c: i32,
+    },
+    Martin {
+        a: i32,
+    },
+    GumowskiMira {
+        a: i32,
+        b: i32,
+        c: i32,
+        twice_one_less_c: i32,
+    },
+    Popcorn {
+        h: i32,
+    },
+    Lorenz {
+        flow: Lorenz,
+        method: Method,
+    },
+    Rossler {
+        flow: Rossler,
+        method: Method,
+    },
+}
+
+/// The Lorenz flow's rates times Δt.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Lorenz {
+    dt: i32,
+    sigma_dt: i32,
+    rho_dt: i32,
+    beta_dt: i32,
+}
+
+/// The Rössler flow's rates times Δt.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Rossler {
+    dt: i32,
+    a_dt: i32,
+    b_dt: i32,
+    c: i32,
+}
+
+/// A parameter (or a rate times Δt) in a kind's fixed point, or the error naming it.
+fn fixed(kind: Kind, value: Real) -> Result<i32, Error> {
+    let max = kind.range();
+    match to_fixed(value, kind.fraction_bits()) {
+        Some(bits) if bits.unsigned_abs() < 1 << 31 => Ok(bits),
+        _ => Err(Error::Parameter(ParameterError::AttractorValueOutOfRange {
+            value,
+            max,
+        })),
+    }
+}
+
+/// `a·b` for set-up, in `Real` (a rate times Δt), or the error naming it.
+fn product(kind: Kind, a: Real, b: Real) -> Result<i32, Error> {
+    let value =
+        a.checked_mul(b)
+            .ok_or(Error::Parameter(ParameterError::AttractorValueOutOfRange {
+                value: a,
+                max: kind.range(),
+            }))?;
+    fixed(kind, value)
+}
+
+impl Stepper {
+    /// The step of `kind` with parameters `p` (a, b, c, d), time step `dt` and `method`.
+    pub(crate) fn new(kind: Kind, p: [Real; 4], dt: Real, method: Method) -> Result<Self, Error> {
+        let f = |value: Real| fixed(kind, value);
+        let all = || -> Result<[i32; 4], Error> { Ok([f(p[0])?, f(p[1])?, f(p[2])?, f(p[3])?]) };
+        Ok(match kind {
+            Kind::Henon => Self::Henon {
+                a: f(p[0])?,
+                b: f(p[1])?,
+            },
+            Kind::Clifford => Self::Clifford(all()?),
+            Kind::DeJong => Self::DeJong(all()?),
+            Kind::Pickover => Self::Pickover(all()?),
+            Kind::Hopalong => Self::Hopalong {
+                a: f(p[0])?,
+                b: f(p[1])?,
+                c: f(p[2])?,
+            },
+            Kind::Martin => Self::Martin { a: f(p[0])? },
+            Kind::GumowskiMira => Self::GumowskiMira {
+                a: f(p[0])?,
+                b: f(p[1])?,
+                c: f(p[2])?,
+                twice_one_less_c: f(Real::from_int(2).saturating_sub(p[2].saturating_add(p[2])))?,
+            },
+            Kind::Popcorn => Self::Popcorn { h: f(p[0])? },
+            Kind::Lorenz => Self::Lorenz {
+                flow: Lorenz {
+                    dt: f(dt)?,
+                    sigma_dt: product(kind, p[0], dt)?,
+                    rho_dt: product(kind, p[1], dt)?,
+                    beta_dt: product(kind, p[2], dt)?,
+                },
+                method,
+            },
+            Kind::Rossler => Self::Rossler {
+                flow: Rossler {
+                    dt: f(dt)?,
+                    a_dt: product(kind, p[0], dt)?,
+                    b_dt: product(kind, p[1], dt)?,
+                    c: f(p[2])?,
+                },
+                method,
+            },
+        })
+    }
+
+    /// The state after `s`, or `None` where a value leaves the fixed-point range.
+    #[inline]
+    pub(crate) fn step(&self, s: State) -> Option<State> {
+        match *self {
+            Self::Henon { a, b } => henon(a, b, s),
+            Self::Clifford(p) => clifford(p, s),
+            Self::DeJong(p) => de_jong(p, s),
+            Self::Pickover(p) => pickover(p, s),
+            Self::Hopalong { a, b, c } => hopalong(a, b, c, s),
+            Self::Martin { a } => martin(a, s),
+            Self::GumowskiMira {
+                a,
+                b,
+                c,
+                twice_one_less_c,
+            } => gumowski_mira([a, b, c, twice_one_less_c], s),
+            Self::Popcorn { h } => popcorn(h, s),
+            Self::Lorenz { flow, method } => integrate(method, s, |s| flow.delta(s)),
+            Self::Rossler { flow, method } => integrate(method, s, |s| flow.delta(s)),
+        }
+    }
+}
+
+/// x′ = 1 − a·x² + y, y′ = b·x.
+#[inline(always)]
+fn henon(a: i32, b: i32, [x, y, _]: State) -> Option<State> {
+    let squared = narrow(mul::<HENON>(x, x))?;
+    let x_next = narrow((1 << HENON) + i64::from(y) - mul::<HENON>(a, squared))?;
+    Some([x_next, narrow(mul::<HENON>(b, x))?, 0])
+}
+
+/// x′ = sin(a·y) + c·cos(a·x), y′ = sin(b·x) + d·cos(b·y).
+fn clifford([a, b, c, d]: [i32; 4], [x, y, _]: State) -> Option<State> {
+    let (ax, ay) = (narrow(mul::<TRIG>(a, x))?, narrow(mul::<TRIG>(a, y))?);
+    let (bx, by) = (narrow(mul::<TRIG>(b, x))?, narrow(mul::<TRIG>(b, y))?);
+    let x_next = i64::from(sin::<TRIG>(ay)) + times_q30(c, cos_q30::<TRIG>(ax));
+    let y_next = i64::from(sin::<TRIG>(bx)) + times_q30(d, cos_q30::<TRIG>(by));
+    Some([narrow(x_next)?, narrow(y_next)?, 0])
+}
+
+/// x′ = sin(a·y) − cos(b·x), y′ = sin(c·x) − cos(d·y).
+fn de_jong([a, b, c, d]: [i32; 4], [x, y, _]: State) -> Option<State> {
+    let (ay, bx) = (narrow(mul::<TRIG>(a, y))?, narrow(mul::<TRIG>(b, x))?);
+    let (cx, dy) = (narrow(mul::<TRIG>(c, x))?, narrow(mul::<TRIG>(d, y))?);
+    let x_next = i64::from(sin::<TRIG>(ay)) - i64::from(cos::<TRIG>(bx));
+    let y_next = i64::from(sin::<TRIG>(cx)) - i64::from(cos::<TRIG>(dy));
+    Some([narrow(x_next)?, narrow(y_next)?, 0])
+}
+
+/// x′ = sin(a·y) − z·cos(b·x), y′ = z·sin(c·x) − cos(d·y), z′ = sin(x).
+fn pickover([a, b, c, d]: [i32; 4], [x, y, z]: State) -> Option<State> {
+    let (ay, bx) = (narrow(mul::<TRIG>(a, y))?, narrow(mul::<TRIG>(b, x))?);
+    let (cx, dy) = (narrow(mul::<TRIG>(c, x))?, narrow(mul::<TRIG>(d, y))?);
+    let x_next = i64::from(sin::<TRIG>(ay)) - times_q30(z, cos_q30::<TRIG>(bx));
+    let y_next = times_q30(z, sin_q30::<TRIG>(cx)) - i64::from(cos::<TRIG>(dy));
+    Some([narrow(x_next)?, narrow(y_next)?, sin::<TRIG>(x)])
+}
+
+/// x′ = y − sign(x)·√|b·x − c|, y′ = a − x; the root rounded down.
+fn hopalong(a: i32, b: i32, c: i32, [x, y, _]: State) -> Option<State> {
+    // |b·x − c| < 2⁴³ in HOP bits: shifted by HOP more it fits 64 bits.
+    let inside = (mul::<HOP>(b, x) - i64::from(c)).unsigned_abs();
+    let root = i64::try_from((inside << HOP).isqrt()).ok()?;
+    let x_next = i64::from(y) - i64::from(x.signum()) * root;
+    Some([narrow(x_next)?, narrow(i64::from(a) - i64::from(x))?, 0])
+}
+
+/// x′ = y − sin(x), y′ = a − x.
+fn martin(a: i32, [x, y, _]: State) -> Option<State> {
+    let x_next = i64::from(y) - i64::from(sin::<HOP>(x));
+    Some([narrow(x_next)?, narrow(i64::from(a) - i64::from(x))?, 0])
+}
+
+/// G(x) = c·x + 2(1 − c)·x²/(1 + x²), the quotient rounded toward zero.
+fn gumowski_mira_g(c: i32, twice_one_less_c: i32, x: i32) -> Option<i64> {
+    let squared = mul::<WIDE>(x, x); // below 2^38: x is within ±128
+    let share = narrow((squared << WIDE) / ((1 << WIDE) + squared))?;
+    Some(mul::<WIDE>(c, x) + mul::<WIDE>(twice_one_less_c, share))
+}
+
+/// x′ = y + a·(1 − b·y²)·y + G(x), y′ = −x + G(x′).
+fn gumowski_mira([a, b, c, twice_one_less_c]: [i32; 4], [x, y, _]: State) -> Option<State> {
+    // b·y first: y² alone can leave the range where b·y² does not.
+    let by = narrow(mul::<WIDE>(b, y))?;
+    let damping = narrow((1 << WIDE) - mul::<WIDE>(by, y))?;
+    let ay = narrow(mul::<WIDE>(a, y))?;
+    let x_next =
+        narrow(i64::from(y) + mul::<WIDE>(ay, damping) + gumowski_mira_g(c, twice_one_less_c, x)?)?;
+    let y_next = narrow(gumowski_mira_g(c, twice_one_less_c, x_next)? - i64::from(x))?;
+    Some([x_next, y_next, 0])
+}
+
+/// h·sin(v + tan 3v), in the popcorn's fixed point.
+fn popcorn_term(h: i32, v: i32) -> Option<i64> {
+    let triple = narrow(3 * i64::from(v))?;
+    let tangent = binary_angle_of_tangent(sin_q30::<WIDE>(triple), cos_q30::<WIDE>(triple));
+    let angle = binary_angle_of_radians(v, WIDE).wrapping_add(tangent);
+    Some(times_q30(h, sin_of_binary(angle)))
+}
+
+/// x′ = x − h·sin(y + tan 3y), y′ = y − h·sin(x + tan 3x).
+fn popcorn(h: i32, [x, y, _]: State) -> Option<State> {
+    let x_next = narrow(i64::from(x) - popcorn_term(h, y)?)?;
+    let y_next = narrow(i64::from(y) - popcorn_term(h, x)?)?;
+    Some([x_next, y_next, 0])
+}
+
+impl Lorenz {
+    /// Δt·(σ(y − x), x(ρ − z) − y, x·y − β·z).
+    #[inline(always)]
+    fn delta(&self, [x, y, z]: State) -> Option<State> {
+        let dx = mul::<FLOW>(self.sigma_dt, narrow(i64::from(y) - i64::from(x))?);
+        let y_dt = narrow(mul::<FLOW>(self.dt, y))?;
+        let z_dt = narrow(mul::<FLOW>(self.dt, z))?;
+        let dy =
+            mul::<FLOW>(x, narrow(i64::from(self.rho_dt) - i64::from(z_dt))?) - i64::from(y_dt);
+        let dz = mul::<FLOW>(x, y_dt) - mul::<FLOW>(self.beta_dt, z);
+        Some([narrow(dx)?, narrow(dy)?, narrow(dz)?])
+    }
+}
+
+impl Rossler {
+    /// Δt·(−(y + z), x + a·y, b + z(x − c)).
+    #[inline(always)]
+    fn delta(&self, [x, y, z]: State) -> Option<State> {
+        let dx = -mul::<FLOW>(self.dt, narrow(i64::from(y) + i64::from(z))?);
+        let dy = mul::<FLOW>(self.dt, x) + mul::<FLOW>(self.a_dt, y);
+        let x_less_c_dt = narrow(mul::<FLOW>(
+            self.dt,
+            narrow(i64::from(x) - i64::from(self.c))?,
+        ))?;
+        let dz = i64::from(self.b_dt) + mul::<FLOW>(z, x_less_c_dt);
+        Some([narrow(dx)?, narrow(dy)?, narrow(dz)?])
+    }
+}
+
+/// `s + k·weight / 2`, each coordinate checked (weight 1: half a step, 2: a whole one).
+#[inline(always)]
+fn ahead(s: State, k: State, whole: bool) -> Option<State> {
+    let part = |k: i32| {
+        if whole {
+            i64::from(k)
+        } else {
+            i64::from(k >> 1)
+        }
+    };
+    Some([
+        narrow(i64::from(s[0]) + part(k[0]))?,
+        narrow(i64::from(s[1]) + part(k[1]))?,
+        narrow(i64::from(s[2]) + part(k[2]))?,
+    ])
+}
+
+/// `value / 6`, rounded half away from zero (32-bit division).
+#[inline(always)]
+fn sixth(value: i64) -> Option<i32> {
+    let value = narrow(value)?;
+    let (quotient, remainder) = (value / 6, value % 6);
+    Some(if remainder >= 3 {
+        quotient + 1
+    } else if remainder <= -3 {
+        quotient - 1
+    } else {
+        quotient
+    })
+}
+
+/// One step of a flow whose derivative times Δt is `delta`: Euler's s + k₁, or RK4's
+/// s + (k₁ + 2k₂ + 2k₃ + k₄)/6 with k₂ = Δt·f(s + k₁/2), k₃ = Δt·f(s + k₂/2),
+/// k₄ = Δt·f(s + k₃) (halves rounded down).
+#[inline(always)]
+fn integrate(method: Method, s: State, delta: impl Fn(State) -> Option<State>) -> Option<State> {
+    let k1 = delta(s)?;
+    if method == Method::Euler {
+        return ahead(s, k1, true);
+    }
+    let k2 = delta(ahead(s, k1, false)?)?;
+    let k3 = delta(ahead(s, k2, false)?)?;
+    let k4 = delta(ahead(s, k3, true)?)?;
+    let coordinate = |i: usize| -> Option<i32> {
+        let k = |k: &State| i64::from(k.get(i).copied().unwrap_or(0));
+        let sum = k(&k1) + 2 * k(&k2) + 2 * k(&k3) + k(&k4);
+        narrow(i64::from(s.get(i).copied().unwrap_or(0)) + i64::from(sixth(sum)?))
+    };
+    Some([coordinate(0)?, coordinate(1)?, coordinate(2)?])
+}

@@ -1,0 +1,144 @@
+//! Pictures coloured by how often points hit each pixel: the hit counts in the caller's
+//! buffer, on a log scale through a palette, written a row at a time. The IFS and the
+//! attractors draw their density pictures through this.
+
+use core::cell::Cell;
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::palette::Palette;
+use crate::error::{Error, FitError};
+
+/// Density levels: a pixel hit `n` times takes level 1 + ⌊log₂ n⌋ (at most this − 1), one
+/// never hit level 0; the palette is asked for values up to `DENSITY_LEVELS - 1` of
+/// `DENSITY_LEVELS`.
+pub const DENSITY_LEVELS: u16 = 16;
+
+/// The density level of a hit count.
+pub(crate) fn level(count: u16) -> u16 {
+    if count == 0 {
+        return 0;
+    }
+    let log2 = u16::try_from(count.ilog2()).unwrap_or(0);
+    (1 + log2).min(DENSITY_LEVELS - 1)
+}
+
+/// A hit counter's cell: `u16` (counts to 65,535, every level) or `u8` (counts to 255,
+/// levels up to 8, half the memory: what a board with little RAM gives).
+pub trait HitCount: Copy + Default + core::fmt::Debug + sealed::Sealed {
+    /// One more hit, saturating.
+    fn bumped(self) -> Self;
+    /// The count as a `u16`.
+    fn count(self) -> u16;
+}
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for u8 {}
+    impl Sealed for u16 {}
+}
+
+impl HitCount for u8 {
+    #[inline]
+    fn bumped(self) -> Self {
+        self.saturating_add(1)
+    }
+    #[inline]
+    fn count(self) -> u16 {
+        u16::from(self)
+    }
+}
+
+impl HitCount for u16 {
+    #[inline]
+    fn bumped(self) -> Self {
+        self.saturating_add(1)
+    }
+    #[inline]
+    fn count(self) -> u16 {
+        self
+    }
+}
+
+/// Hit counts over an area, one cell a pixel in the caller's buffer (a count saturates).
+pub(crate) struct Density<'b, T> {
+    area: Rectangle,
+    counts: &'b [Cell<T>],
+}
+
+impl<T> core::fmt::Debug for Density<'_, T> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Density")
+            .field("area", &self.area)
+            .field("cells", &self.counts.len())
+            .finish()
+    }
+}
+
+impl<'b, T: HitCount> Density<'b, T> {
+    /// Counts over `area` in the first width × height cells of `counts`, or
+    /// [`FitError::BufferTooSmall`].
+    pub(crate) fn new(area: Rectangle, counts: &'b mut [T]) -> Result<Self, Error> {
+        let needed = usize::try_from(u64::from(area.size.width) * u64::from(area.size.height))
+            .unwrap_or(usize::MAX);
+        let given = counts.len();
+        let counts = counts
+            .get_mut(..needed)
+            .ok_or(Error::Fit(FitError::BufferTooSmall { needed, given }))?;
+        Ok(Self {
+            area,
+            counts: Cell::from_mut(counts).as_slice_of_cells(),
+        })
+    }
+
+    /// Every count back to 0.
+    pub(crate) fn clear(&self) {
+        for cell in self.counts {
+            cell.set(T::default());
+        }
+    }
+
+    /// Counts a hit on `pixel`; false where it is outside the area.
+    #[inline]
+    pub(crate) fn hit(&self, pixel: Point) -> bool {
+        let offset = pixel - self.area.top_left;
+        let (Ok(x), Ok(y)) = (u32::try_from(offset.x), u32::try_from(offset.y)) else {
+            return false;
+        };
+        if x >= self.area.size.width || y >= self.area.size.height {
+            return false;
+        }
+        let index = usize::try_from(y * self.area.size.width + x).unwrap_or(usize::MAX);
+        match self.counts.get(index) {
+            Some(cell) => {
+                cell.set(cell.get().bumped());
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Writes every pixel of the area, a row at a time (`fill_contiguous`).
+    pub(crate) fn emit<P: Palette, D>(&self, palette: &P, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let width = self.area.size.width;
+        let width_cells = usize::try_from(width).unwrap_or(usize::MAX);
+        for (row, cells) in self.counts.chunks(width_cells.max(1)).enumerate() {
+            let y = self.area.top_left.y + i32::try_from(row).unwrap_or(i32::MAX);
+            let line = Rectangle::new(Point::new(self.area.top_left.x, y), Size::new(width, 1));
+            let colors = cells
+                .iter()
+                .map(|cell| palette.color(level(cell.get().count()), DENSITY_LEVELS));
+            target.fill_contiguous(&line, colors)?;
+        }
+        Ok(())
+    }
+
+    /// The area counted.
+    pub(crate) fn area(&self) -> Rectangle {
+        self.area
+    }
+}
