@@ -4,7 +4,10 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
+use super::fixed::to_real;
+use super::kind::Kind;
 use super::orbit::{Attractor, Orbit};
+use super::place::Placer;
 use super::step::State;
 use crate::error::{only_target_errors, DrawError, Error, FitError};
 use crate::math::trig::BinaryAngle;
@@ -25,7 +28,7 @@ pub const DEFAULT_SKIP: u64 = 1000;
 /// orbits [spread](super::Kind::spreads)): one short pass instead of a second full orbit.
 /// The rest of the orbit is drawn where it lands; a point outside the fitted box is
 /// clipped and counted in [`AttractorStats::outside`]. A spreading orbit is fitted whole.
-pub const FIT_POINTS: u64 = 1 << 14;
+pub const FIT_POINTS: u64 = 1 << 12;
 
 /// What a drawing did: points plotted, and how many of them fell outside the target.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -118,18 +121,37 @@ impl AttractorPicture {
         }
     }
 
-    /// The fit: the extent of the first [`FIT_POINTS`] points (every point of an orbit
-    /// that spreads), scaled and centred in `area` less a margin.
-    fn space(&self, area: &Rectangle) -> Result<SpaceFit, Error> {
-        if area.size.width == 0 || area.size.height == 0 {
-            return Err(Error::Fit(FitError::ZeroSizeTarget));
-        }
-        let sample = if self.attractor.kind().spreads() {
+    /// True where the picture is a plane of the state seen from the front (a 2D kind, or
+    /// a 3D one from the front unturned): its points are placed in the orbit's own fixed
+    /// point.
+    fn planar(&self) -> bool {
+        self.attractor.kind().dimensions() == 2
+            || (self.projection == Projection::Front && self.turn == (1 << 30, 0))
+    }
+
+    /// The points the fit measures: the first [`FIT_POINTS`], or every point of an orbit
+    /// that spreads.
+    fn sample(&self) -> u64 {
+        if self.attractor.kind().spreads() {
             self.points
         } else {
             self.points.min(FIT_POINTS)
-        };
-        SpaceFit::new(
+        }
+    }
+
+    /// The fit, scaled and centred in `area` less a margin, and for a planar picture its
+    /// placement in the orbit's fixed point.
+    fn space(&self, area: &Rectangle) -> Result<(SpaceFit, Option<Placer>), Error> {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        if self.planar() {
+            if let Some(fitted) = self.planar_space(area)? {
+                return Ok(fitted);
+            }
+        }
+        let sample = self.sample();
+        let space = SpaceFit::new(
             || {
                 let mut orbit = self.attractor.orbit(self.skip, sample);
                 core::iter::from_fn(move || orbit.next_state())
@@ -139,7 +161,39 @@ impl AttractorPicture {
             false,
             area,
             DEFAULT_MARGIN,
-        )
+        )?;
+        Ok((space, None))
+    }
+
+    /// A planar picture's fit from the sample's box, measured in state bits (no `Real`
+    /// a point); `None` for a picture of no points.
+    fn planar_space(&self, area: &Rectangle) -> Result<Option<(SpaceFit, Option<Placer>)>, Error> {
+        let kind = self.attractor.kind();
+        let mut bounds: Option<([i32; 2], [i32; 2])> = None;
+        self.attractor
+            .orbit(self.skip, self.sample())
+            .run(|state| {
+                let [u, v] = planar(kind, state);
+                let ([low_u, low_v], [high_u, high_v]) = bounds.get_or_insert(([u, v], [u, v]));
+                (*low_u, *low_v) = ((*low_u).min(u), (*low_v).min(v));
+                (*high_u, *high_v) = ((*high_u).max(u), (*high_v).max(v));
+            })?;
+        let Some((low, high)) = bounds else {
+            return Ok(None);
+        };
+        let bits = self.attractor.kind().fraction_bits();
+        let real = |[u, v]: [i32; 2]| [to_real(u, bits), to_real(v, bits), Real::ZERO];
+        let space = SpaceFit::front_box(real(low), real(high), area, DEFAULT_MARGIN)?;
+        let placer = Placer::new(
+            &space,
+            (low, high),
+            bits,
+            (
+                (area.top_left.x, area.top_left.y),
+                (area.size.width, area.size.height),
+            ),
+        );
+        Ok(Some((space, placer)))
     }
 
     /// Fitted into `area`, each point a pixel of `color`.
@@ -148,9 +202,12 @@ impl AttractorPicture {
         area: Rectangle,
         color: C,
     ) -> Result<AttractorDrawing<C>, Error> {
+        let (space, placer) = self.space(&area)?;
         Ok(AttractorDrawing {
             picture: *self,
-            space: self.space(&area)?,
+            space,
+            placer,
+            area,
             color,
         })
     }
@@ -165,13 +222,25 @@ impl AttractorPicture {
         palette: P,
         counts: &'b mut [T],
     ) -> Result<AttractorDensity<'b, P, T>, Error> {
-        let space = self.space(&area)?;
+        let (space, placer) = self.space(&area)?;
         Ok(AttractorDensity {
             picture: *self,
             space,
+            placer,
             palette,
             density: Density::new(area, counts)?,
         })
+    }
+}
+
+/// The picture plane's coordinates of a state seen from the front: x and y, or for a 3D
+/// kind x and z (z up).
+#[inline(always)]
+fn planar(kind: Kind, [x, y, z]: State) -> [i32; 2] {
+    if kind.dimensions() == 2 {
+        [x, y]
+    } else {
+        [x, z]
     }
 }
 
@@ -180,6 +249,8 @@ impl AttractorPicture {
 pub struct AttractorDrawing<C> {
     picture: AttractorPicture,
     space: SpaceFit,
+    placer: Option<Placer>,
+    area: Rectangle,
     color: C,
 }
 
@@ -192,9 +263,20 @@ impl<C: PixelColor> AttractorDrawing<C> {
         let clip = target.bounding_box();
         let mut stats = AttractorStats::default();
         let mut orbit = self.picture.orbit();
+        let kind = self.picture.attractor.kind();
         while let Some(state) = orbit.next_state() {
-            let (pixel, _) = self.space.place(self.picture.in_space(state?));
-            if clip.contains(pixel) {
+            let state = state?;
+            let pixel = match self.placer {
+                Some(placer) => {
+                    let [u, v] = planar(kind, state);
+                    placer.place(u, v).map(|(column, row)| {
+                        self.area.top_left + Point::new(column as i32, row as i32)
+                    })
+                }
+                None => Some(self.space.place(self.picture.in_space(state)).0),
+            };
+            let pixel = pixel.filter(|pixel| clip.contains(*pixel));
+            if let Some(pixel) = pixel {
                 target
                     .fill_solid(&Rectangle::new(pixel, Size::new(1, 1)), self.color)
                     .map_err(DrawError::Target)?;
@@ -230,6 +312,7 @@ impl<C: PixelColor> Drawable for AttractorDrawing<C> {
 pub struct AttractorDensity<'b, P, T = u16> {
     picture: AttractorPicture,
     space: SpaceFit,
+    placer: Option<Placer>,
     palette: P,
     density: Density<'b, T>,
 }
@@ -243,12 +326,29 @@ impl<P: Palette, T: HitCount> AttractorDensity<'_, P, T> {
         self.density.clear();
         let mut stats = AttractorStats::default();
         let mut orbit = self.picture.orbit();
-        while let Some(state) = orbit.next_state() {
-            let (pixel, _) = self.space.place(self.picture.in_space(state?));
-            if !self.density.hit(pixel) {
-                stats.outside += 1;
+        let kind = self.picture.attractor.kind();
+        match self.placer {
+            Some(placer) => {
+                let count = orbit.remaining();
+                orbit.run(|state| {
+                    let [u, v] = planar(kind, state);
+                    let hit = match placer.place(u, v) {
+                        Some((column, row)) => self.density.hit_at(column, row),
+                        None => false,
+                    };
+                    if !hit {
+                        stats.outside += 1;
+                    }
+                })?;
+                stats.points = count;
             }
-            stats.points += 1;
+            None => {
+                while let Some(state) = orbit.next_state() {
+                    let (pixel, _) = self.space.place(self.picture.in_space(state?));
+                    stats.outside += u64::from(!self.density.hit(pixel));
+                    stats.points += 1;
+                }
+            }
         }
         self.density
             .emit(&self.palette, target)
@@ -272,5 +372,44 @@ impl<P: Palette, T: HitCount> Drawable for AttractorDensity<'_, P, T> {
         D: DrawTarget<Color = P::Color>,
     {
         only_target_errors(self.try_draw(target))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::attractor::Attractor;
+    use embedded_graphics::mock_display::MockDisplay;
+    use embedded_graphics::pixelcolor::BinaryColor;
+
+    /// The pixels a drawing lights, by the orbit's own placement or by `Real`s through the
+    /// projection.
+    fn lit(drawing: &AttractorDrawing<BinaryColor>) -> MockDisplay<BinaryColor> {
+        let mut display = MockDisplay::new();
+        display.set_allow_overdraw(true);
+        drawing.try_draw(&mut display).unwrap();
+        display
+    }
+
+    /// Placing in the orbit's fixed point lights the pixels the projection does, for
+    /// every kind seen from the front.
+    #[test]
+    fn fixed_point_placement_is_the_projections() {
+        for kind in Kind::ALL {
+            // More points than the fit measures: some land beyond its box, inside the area.
+            let picture = AttractorPicture::new(Attractor::new(kind), 3 * FIT_POINTS);
+            let fast = picture
+                .fit(
+                    Rectangle::new(Point::new(3, 5), Size::new(57, 41)),
+                    BinaryColor::On,
+                )
+                .unwrap();
+            assert!(fast.placer.is_some(), "{}", kind.name());
+            let slow = AttractorDrawing {
+                placer: None,
+                ..fast
+            };
+            assert_eq!(lit(&fast), lit(&slow), "{}", kind.name());
+        }
     }
 }

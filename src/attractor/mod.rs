@@ -37,6 +37,7 @@ mod drawing;
 mod fixed;
 mod kind;
 mod orbit;
+mod place;
 mod step;
 
 pub use drawing::{

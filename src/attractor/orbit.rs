@@ -3,7 +3,7 @@
 
 use super::fixed::{to_fixed, to_real};
 use super::kind::{Kind, Method};
-use super::step::{State, Stepper};
+use super::step::{State, Stepper, WithStep};
 use crate::error::{Error, ParameterError, WalkError};
 use crate::math::Real;
 
@@ -200,6 +200,31 @@ impl Orbit {
         Some(Ok(self.state))
     }
 
+    /// Runs the rest of the orbit, handing each point's state to `visit` in order: the
+    /// drawings' loop, with the kind's step inlined and no `Result` a point. Ends at the
+    /// first state out of range with its error, the points before it visited.
+    #[inline]
+    pub(crate) fn run(&mut self, visit: impl FnMut(State)) -> Result<(), Error> {
+        let stepper = self.attractor.stepper;
+        stepper.with_step(Run { orbit: self, visit })
+    }
+
+    /// Points not yet given.
+    pub(crate) fn remaining(&self) -> u64 {
+        if self.failed {
+            0
+        } else {
+            self.left
+        }
+    }
+
+    /// The orbit's error at `steps` steps past the last state kept.
+    #[cold]
+    fn fail(&mut self, steps: u64) -> Error {
+        self.failed = true;
+        self.attractor.escaped(self.index + steps)
+    }
+
     #[inline]
     fn advance(&mut self) -> Result<(), Error> {
         self.index += 1;
@@ -227,5 +252,52 @@ impl Iterator for Orbit {
     fn next(&mut self) -> Option<Self::Item> {
         let state = self.next_state()?;
         Some(state.map(|state| self.attractor.real(state)))
+    }
+}
+
+/// [`Orbit::run`] with the kind's step in hand.
+struct Run<'o, V> {
+    orbit: &'o mut Orbit,
+    visit: V,
+}
+
+impl<V: FnMut(State)> WithStep for Run<'_, V> {
+    type Output = Result<(), Error>;
+
+    #[inline(always)]
+    fn with(mut self, step: impl Fn(State) -> Option<State>) -> Result<(), Error> {
+        let orbit = self.orbit;
+        if orbit.failed || orbit.left == 0 {
+            return Ok(());
+        }
+        let mut state = orbit.state;
+        // The transient, and the step from the last point given to the next.
+        let pending = orbit.skip + u64::from(orbit.started);
+        for done in 0..pending {
+            match step(state) {
+                Some(next) => state = next,
+                None => return Err(orbit.fail(done + 1)),
+            }
+        }
+        let count = orbit.left;
+        let mut left = count;
+        loop {
+            (self.visit)(state);
+            left -= 1;
+            if left == 0 {
+                break;
+            }
+            match step(state) {
+                Some(next) => state = next,
+                None => {
+                    orbit.left = 0;
+                    return Err(orbit.fail(pending + (count - left)));
+                }
+            }
+        }
+        orbit.state = state;
+        orbit.index += pending + (count - 1);
+        (orbit.skip, orbit.left, orbit.started) = (0, 0, true);
+        Ok(())
     }
 }

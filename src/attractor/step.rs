@@ -167,6 +167,45 @@ impl Stepper {
     }
 }
 
+/// What runs with a kind's step as a plain function ([`Stepper::with_step`]), so that
+/// the step is inlined into the loop that calls it instead of dispatched on the kind at
+/// every point.
+pub(crate) trait WithStep {
+    /// What the run gives back.
+    type Output;
+    /// Runs with `step`, the kind's step.
+    fn with(self, step: impl Fn(State) -> Option<State>) -> Self::Output;
+}
+
+impl Stepper {
+    /// Runs `run` with this kind's step: one dispatch on the kind, then a loop of its own
+    /// for each kind.
+    #[inline]
+    pub(crate) fn with_step<W: WithStep>(&self, run: W) -> W::Output {
+        match *self {
+            Self::Henon { a, b } => run.with(move |s| henon(a, b, s)),
+            Self::Clifford(p) => run.with(move |s| clifford(p, s)),
+            Self::DeJong(p) => run.with(move |s| de_jong(p, s)),
+            Self::Pickover(p) => run.with(move |s| pickover(p, s)),
+            Self::Hopalong { a, b, c } => run.with(move |s| hopalong(a, b, c, s)),
+            Self::Martin { a } => run.with(move |s| martin(a, s)),
+            Self::GumowskiMira {
+                a,
+                b,
+                c,
+                twice_one_less_c,
+            } => run.with(move |s| gumowski_mira([a, b, c, twice_one_less_c], s)),
+            Self::Popcorn { h } => run.with(move |s| popcorn(h, s)),
+            Self::Lorenz { flow, method } => {
+                run.with(move |s| integrate(method, s, |s| flow.delta(s)))
+            }
+            Self::Rossler { flow, method } => {
+                run.with(move |s| integrate(method, s, |s| flow.delta(s)))
+            }
+        }
+    }
+}
+
 /// x′ = 1 − a·x² + y, y′ = b·x.
 #[inline(always)]
 fn henon(a: i32, b: i32, [x, y, _]: State) -> Option<State> {
@@ -255,11 +294,11 @@ impl Lorenz {
     /// Δt·(σ(y − x), x(ρ − z) − y, x·y − β·z).
     #[inline(always)]
     fn delta(&self, [x, y, z]: State) -> Option<State> {
-        let dx = mul::<FLOW>(self.sigma_dt, narrow(i64::from(y) - i64::from(x))?);
-        let y_dt = narrow(mul::<FLOW>(self.dt, y))?;
-        let z_dt = narrow(mul::<FLOW>(self.dt, z))?;
-        let dy =
-            mul::<FLOW>(x, narrow(i64::from(self.rho_dt) - i64::from(z_dt))?) - i64::from(y_dt);
+        let dx = mul::<FLOW>(self.sigma_dt, y.checked_sub(x)?);
+        // 0 < Δt ≤ 1 and |y|, |z| < 2^(31 − FLOW): the products stay within 32 bits.
+        let y_dt = mul::<FLOW>(self.dt, y) as i32;
+        let z_dt = mul::<FLOW>(self.dt, z) as i32;
+        let dy = mul::<FLOW>(x, self.rho_dt.checked_sub(z_dt)?) - i64::from(y_dt);
         let dz = mul::<FLOW>(x, y_dt) - mul::<FLOW>(self.beta_dt, z);
         Some([narrow(dx)?, narrow(dy)?, narrow(dz)?])
     }
@@ -269,32 +308,32 @@ impl Rossler {
     /// Δt·(−(y + z), x + a·y, b + z(x − c)).
     #[inline(always)]
     fn delta(&self, [x, y, z]: State) -> Option<State> {
-        let dx = -mul::<FLOW>(self.dt, narrow(i64::from(y) + i64::from(z))?);
+        let dx = -mul::<FLOW>(self.dt, y.checked_add(z)?);
         let dy = mul::<FLOW>(self.dt, x) + mul::<FLOW>(self.a_dt, y);
-        let x_less_c_dt = narrow(mul::<FLOW>(
-            self.dt,
-            narrow(i64::from(x) - i64::from(self.c))?,
-        ))?;
+        // 0 < Δt ≤ 1: the product is no larger than x − c, which fits 32 bits.
+        let x_less_c_dt = mul::<FLOW>(self.dt, x.checked_sub(self.c)?) as i32;
         let dz = i64::from(self.b_dt) + mul::<FLOW>(z, x_less_c_dt);
         Some([narrow(dx)?, narrow(dy)?, narrow(dz)?])
     }
 }
 
-/// `s + k·weight / 2`, each coordinate checked (weight 1: half a step, 2: a whole one).
+/// `s + k`, each coordinate checked.
 #[inline(always)]
-fn ahead(s: State, k: State, whole: bool) -> Option<State> {
-    let part = |k: i32| {
-        if whole {
-            i64::from(k)
-        } else {
-            i64::from(k >> 1)
-        }
-    };
-    Some([
-        narrow(i64::from(s[0]) + part(k[0]))?,
-        narrow(i64::from(s[1]) + part(k[1]))?,
-        narrow(i64::from(s[2]) + part(k[2]))?,
-    ])
+fn ahead([x, y, z]: State, [dx, dy, dz]: State) -> Option<State> {
+    Some([x.checked_add(dx)?, y.checked_add(dy)?, z.checked_add(dz)?])
+}
+
+/// `s + k/2`, the halves rounded down.
+#[inline(always)]
+fn half_ahead(s: State, [dx, dy, dz]: State) -> Option<State> {
+    ahead(s, [dx >> 1, dy >> 1, dz >> 1])
+}
+
+/// One coordinate of RK4's step: s + (k₁ + 2k₂ + 2k₃ + k₄)/6.
+#[inline(always)]
+fn combined(s: i32, k1: i32, k2: i32, k3: i32, k4: i32) -> Option<i32> {
+    let sum = i64::from(k1) + 2 * (i64::from(k2) + i64::from(k3)) + i64::from(k4);
+    s.checked_add(sixth(sum)?)
 }
 
 /// `value / 6`, rounded half away from zero (32-bit division).
@@ -318,15 +357,14 @@ fn sixth(value: i64) -> Option<i32> {
 fn integrate(method: Method, s: State, delta: impl Fn(State) -> Option<State>) -> Option<State> {
     let k1 = delta(s)?;
     if method == Method::Euler {
-        return ahead(s, k1, true);
+        return ahead(s, k1);
     }
-    let k2 = delta(ahead(s, k1, false)?)?;
-    let k3 = delta(ahead(s, k2, false)?)?;
-    let k4 = delta(ahead(s, k3, true)?)?;
-    let coordinate = |i: usize| -> Option<i32> {
-        let k = |k: &State| i64::from(k.get(i).copied().unwrap_or(0));
-        let sum = k(&k1) + 2 * k(&k2) + 2 * k(&k3) + k(&k4);
-        narrow(i64::from(s.get(i).copied().unwrap_or(0)) + i64::from(sixth(sum)?))
-    };
-    Some([coordinate(0)?, coordinate(1)?, coordinate(2)?])
+    let k2 = delta(half_ahead(s, k1)?)?;
+    let k3 = delta(half_ahead(s, k2)?)?;
+    let k4 = delta(ahead(s, k3)?)?;
+    Some([
+        combined(s[0], k1[0], k2[0], k3[0], k4[0])?,
+        combined(s[1], k1[1], k2[1], k3[1], k4[1])?,
+        combined(s[2], k1[2], k2[2], k3[2], k4[2])?,
+    ])
 }

@@ -119,6 +119,22 @@ impl<'b, T: HitCount> Density<'b, T> {
         }
     }
 
+    /// Counts a hit on the pixel `column`, `row` of the area; false where it is outside.
+    #[inline]
+    pub(crate) fn hit_at(&self, column: u32, row: u32) -> bool {
+        if column >= self.area.size.width || row >= self.area.size.height {
+            return false;
+        }
+        let index = row as usize * self.area.size.width as usize + column as usize;
+        match self.counts.get(index) {
+            Some(cell) => {
+                cell.set(cell.get().bumped());
+                true
+            }
+            None => false,
+        }
+    }
+
     /// Writes every pixel of the area, a row at a time (`fill_contiguous`).
     pub(crate) fn emit<P: Palette, D>(&self, palette: &P, target: &mut D) -> Result<(), D::Error>
     where

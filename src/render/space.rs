@@ -199,6 +199,13 @@ impl SpaceFit {
         )
     }
 
+    /// A front view's scale (pixels a unit) and the screen position of the origin, so a
+    /// family can place its points in its own arithmetic: pixel = round(origin + (x, −y) ·
+    /// scale). `None` for any other projection.
+    pub(crate) fn front_linear(&self) -> Option<(Real, (Real, Real))> {
+        (self.projection == Projection::Front).then_some((self.scale, self.origin))
+    }
+
     /// The depth-cue level of a depth: 0 farthest to `DEPTH_LEVELS - 1` nearest.
     pub(crate) fn level(&self, depth: Real) -> u16 {
         let (low, high) = self.depth;
