@@ -71,6 +71,7 @@
 //! | [`noise`] | Perlin's improved noise, its fractal sums and textures |
 //! | [`reaction`] | reaction–diffusion: the Gray–Scott model on the caller's grid |
 //! | [`attractor`] | strange attractors: Hénon, Lorenz, Rössler, Clifford, de Jong and more |
+//! | [`bezier`] | quadratic and cubic Bézier curves, the smooth counterpart |
 //! | [`dimension`] | the box-counting dimension of any picture |
 //!
 //! Beneath them, [`math`] holds the numbers (fixed-point [`Real`] and [`Coord`], angles,
@@ -123,6 +124,7 @@
 struct ReadmeDoctests;
 
 pub mod attractor;
+pub mod bezier;
 pub mod dimension;
 pub mod error;
 pub mod escape;

@@ -12,6 +12,7 @@ use clap::{error::ErrorKind, CommandFactory, Parser, Subcommand};
 
 use crate::animate::AnimateOptions;
 use crate::attractor_scene::RenderAttractorOptions;
+use crate::bezier_scene::BezierOptions;
 use crate::console::Failure;
 use crate::derive::DeriveOptions;
 use crate::dimension::DimensionOptions;
@@ -113,6 +114,8 @@ enum Scene {
     /// A strange attractor: Hénon, Lorenz, Rössler, Clifford, de Jong, ... as points or by
     /// density
     Attractor(RenderAttractorOptions),
+    /// Quadratic and cubic Bézier curves from their control points (the smooth counterpart)
+    Bezier(BezierOptions),
 }
 
 /// Parses the arguments after the program name. `Err` carries clap's message (help and
@@ -171,6 +174,7 @@ impl Scene {
             Self::Noise(options) => options.run(),
             Self::Reaction(options) => options.run(),
             Self::Attractor(options) => options.run(),
+            Self::Bezier(options) => options.run(),
         }
     }
 }

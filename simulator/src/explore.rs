@@ -309,7 +309,8 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             shrink,
             tolerance_percent,
         },
-        walk @ Scene::Walk { .. } => walk,
+        // Nothing of its own to step: the figure and the curves stay as they are.
+        unchanged @ (Scene::Walk { .. } | Scene::Bezier { .. }) => unchanged,
     };
     Entry { scene, ..entry }
 }

@@ -5,6 +5,7 @@
 pub(crate) mod animate;
 pub mod args;
 pub(crate) mod attractor_scene;
+pub(crate) mod bezier_scene;
 pub(crate) mod common;
 pub(crate) mod console;
 pub(crate) mod delivery;

@@ -229,6 +229,7 @@ fn gallery_renders_every_scene() {
         "attractor-lorenz",
         "attractor-clifford",
         "attractor-dejong",
+        "bezier-figure",
     ] {
         assert!(table.contains(scene), "{table}");
         assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");

@@ -13,6 +13,7 @@ pub(crate) mod raster;
 pub(crate) mod relief;
 pub(crate) mod sink;
 pub(crate) mod space;
+pub(crate) mod subpixel;
 
 pub use density::{HitCount, DENSITY_LEVELS};
 pub use fit::{Orientation, DEFAULT_MARGIN};
@@ -21,3 +22,4 @@ pub use projection::Projection;
 pub use relief::Relief;
 pub use sink::{DwellBuffer, DwellSink};
 pub use space::DEPTH_LEVELS;
+pub use subpixel::SUBPIXEL_BITS;

@@ -115,6 +115,12 @@ pub enum Scene {
     },
     /// A Mandelbrot or Julia view.
     Escape(EscapeScene),
+    /// Cubic Bézier curves given in a 320×240 design, scaled uniformly and centred on the
+    /// picture, one pixel wide in the look's ink over its background.
+    Bezier {
+        /// Each curve's four control points, in the design's pixels.
+        curves: &'static [[(i16, i16); 4]],
+    },
     /// A strange attractor with its kind's defaults, `points` points after the default
     /// transient, by density (hit counts a byte a pixel) over the picture.
     Attractor {
@@ -213,12 +219,13 @@ impl Scene {
             Self::NoiseTerrain { .. } => "height",
             Self::NoiseFlight { .. } => "sample",
             Self::Attractor { .. } => "point",
+            Self::Bezier { .. } => "segment",
         }
     }
 
     /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
     /// `terrain`, `terrain2d`, `figure`, `mandelbrot`, `julia`, `noise`, `reaction`,
-    /// `attractor` or `zoom` (`animate zoom`).
+    /// `attractor`, `bezier` or `zoom` (`animate zoom`).
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
@@ -239,6 +246,7 @@ impl Scene {
             Self::NoiseTerrain { .. } => "terrain2d",
             Self::NoiseFlight { .. } => "noise",
             Self::Attractor { .. } => "attractor",
+            Self::Bezier { .. } => "bezier",
         }
     }
 
@@ -678,11 +686,39 @@ const fn attractor(name: &'static str, kind: Kind, points: u64, size: Size) -> E
     }
 }
 
-/// The gallery (`cargo run --release`): classic L-systems, escape-time views, the
-/// Sierpiński family, midpoint-displacement terrain, Perlin's textures,
-/// reaction–diffusion and strange attractors, 320×240.
+/// A figure drawn in smooth curves, the lecture's counterpart to the articulated figure:
+/// a head of four arcs, a spine, arms (one waving), legs and the ground, as cubic Bézier
+/// curves in a 320×240 design (y down).
+pub const SMOOTH_FIGURE: [[(i16, i16); 4]; 10] = [
+    [(182, 50), (182, 38), (172, 28), (160, 28)],
+    [(160, 28), (148, 28), (138, 38), (138, 50)],
+    [(138, 50), (138, 62), (148, 72), (160, 72)],
+    [(160, 72), (172, 72), (182, 62), (182, 50)],
+    [(160, 72), (150, 100), (170, 125), (160, 150)],
+    [(160, 90), (135, 95), (115, 120), (105, 150)],
+    [(160, 90), (185, 85), (205, 70), (215, 45)],
+    [(160, 150), (150, 175), (135, 195), (125, 225)],
+    [(160, 150), (172, 178), (188, 198), (205, 222)],
+    [(20, 230), (110, 215), (210, 245), (300, 228)],
+];
+
+/// Curves of the 320×240 design `curves`.
+const fn bezier(name: &'static str, curves: &'static [[(i16, i16); 4]], size: Size) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Bezier { curves },
+        size,
+        palette: "",
+    }
+}
+
+/// The gallery (`cargo run --release`), 320×240.
+///
+/// Classic L-systems, escape-time views, the Sierpiński family, midpoint-displacement
+/// terrain, Perlin's textures, reaction–diffusion, strange attractors and a figure in
+/// Bézier curves.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 30] = [
+pub const GALLERY: [Entry; 31] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -716,6 +752,7 @@ pub const GALLERY: [Entry; 30] = [
     attractor("attractor-lorenz", Kind::Lorenz, 1_000_000, GALLERY_SIZE),
     attractor("attractor-clifford", Kind::Clifford, 1_000_000, GALLERY_SIZE),
     attractor("attractor-dejong", Kind::DeJong, 1_000_000, GALLERY_SIZE),
+    bezier("bezier-figure", &SMOOTH_FIGURE, GALLERY_SIZE),
 ];
 
 /// The systems of ABOP's `data/abop.lsys`, drawn by the general engine.
@@ -866,14 +903,16 @@ pub const TEXTURE_SCENES: [Entry; 4] = [
 ];
 
 /// The lecture's dynamics on the OLED, measured on every core: the Hénon and Lorenz
-/// attractors by density (counts a byte a pixel, 8 KiB on the stack).
+/// attractors by density (counts a byte a pixel, 8 KiB on the stack), and the figure in
+/// Bézier curves.
 ///
 /// Shown by the boards built with the scenes' `dynamics` feature (not the LM3S6965, whose
 /// flash they would overflow), and measured by the measuring firmware's second build with
 /// the textures.
-pub const DYNAMICS_SCENES: [Entry; 2] = [
+pub const DYNAMICS_SCENES: [Entry; 3] = [
     attractor("attractor-henon", Kind::Henon, 20_000, OLED),
     attractor("attractor-lorenz", Kind::Lorenz, 20_000, OLED),
+    bezier("bezier-figure", &SMOOTH_FIGURE, OLED),
 ];
 
 /// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the stack

@@ -1,5 +1,5 @@
-//! The dynamics' scenes (strange attractors) on a board: drawn by density with counts a
-//! byte a pixel on the stack.
+//! The dynamics' scenes on a board: strange attractors by density with counts a byte a
+//! pixel on the stack, and curves in Bézier's smooth strokes.
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
@@ -30,6 +30,7 @@ impl Scene {
     {
         match *self {
             Scene::Attractor { kind, points } => Some(draw_attractor(target, look, kind, points)),
+            Scene::Bezier { curves } => Some(draw_bezier(target, look, curves)),
             _ => None,
         }
     }
@@ -38,6 +39,7 @@ impl Scene {
 /// `kind`'s attractor by density over the whole of `target`, `points` points, the hit
 /// counts' levels through the look's gradient.
 #[cfg(feature = "dynamics")]
+#[inline(never)]
 fn draw_attractor<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
@@ -94,4 +96,65 @@ where
 {
     target.clear(look.background).map_err(DrawError::Target)?;
     Ok(Work::Points(0))
+}
+
+/// The design's size: curves are given in a 320×240 picture.
+const DESIGN: (i32, i32) = (320, 240);
+
+/// `curves` (a 320×240 design) scaled uniformly and centred on `target`, over the look's
+/// background in its ink; the work is the curves' straight pieces. Out of line: the
+/// flattening's stack of halves (1.5 KiB) is on the stack only while it draws.
+#[cfg(feature = "dynamics")]
+#[inline(never)]
+fn draw_bezier<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    curves: &[[(i16, i16); 4]],
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    use tinyfractal::bezier::Bezier;
+    let area = target.bounding_box();
+    target.clear(look.background).map_err(DrawError::Target)?;
+    let (width, height) = (area.size.width as i32, area.size.height as i32);
+    // The scale num/den: the tighter of width/320 and height/240.
+    let (num, den) = if width * DESIGN.1 <= height * DESIGN.0 {
+        (width, DESIGN.0)
+    } else {
+        (height, DESIGN.1)
+    };
+    let offset = Point::new(
+        (width - DESIGN.0 * num / den) / 2,
+        (height - DESIGN.1 * num / den) / 2,
+    );
+    let place = |(x, y): (i16, i16)| {
+        area.top_left + offset + Point::new(i32::from(x) * num / den, i32::from(y) * num / den)
+    };
+    let mut segments = 0;
+    for &[a, b, c, d] in curves {
+        let curve = Bezier::cubic([place(a), place(b), place(c), place(d)]);
+        segments += curve
+            .into_stroked(look.ink)
+            .draw(target)
+            .map_err(DrawError::Target)?
+            .segments;
+    }
+    Ok(Work::Segments(segments))
+}
+
+/// Without the `dynamics` feature curves are the background: nothing flattened.
+#[cfg(not(feature = "dynamics"))]
+fn draw_bezier<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    _: &[[(i16, i16); 4]],
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    target.clear(look.background).map_err(DrawError::Target)?;
+    Ok(Work::Segments(0))
 }

@@ -233,7 +233,7 @@ impl Scene {
             | Scene::NoiseFlight { .. } => self
                 .draw_texture(target, look)
                 .unwrap_or(Ok(Work::Samples(0))),
-            Scene::Attractor { .. } => self
+            Scene::Attractor { .. } | Scene::Bezier { .. } => self
                 .draw_dynamics(target, look)
                 .unwrap_or(Ok(Work::Points(0))),
             Scene::Escape(escape) => {
