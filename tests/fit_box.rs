@@ -42,7 +42,11 @@ fn walked_box(
     start: tinyfractal::lsystem::Start,
 ) -> Option<Rectangle> {
     let mut corners: Option<(Point, Point)> = None;
-    for segment in Segments::starting(grammar, order, start).unwrap() {
+    let segments = match Segments::starting(grammar, order, start) {
+        Err(Error::Walk(WalkError::StepUnderflow | WalkError::StepTooFine)) => return None,
+        segments => segments.unwrap(),
+    };
+    for segment in segments {
         let segment = match segment {
             Err(Error::Walk(WalkError::StepUnderflow | WalkError::StepTooFine)) => return None,
             segment => segment.unwrap(),
