@@ -72,6 +72,7 @@
 //! | [`reaction`] | reaction–diffusion: the Gray–Scott model on the caller's grid |
 //! | [`attractor`] | strange attractors: Hénon, Lorenz, Rössler, Clifford, de Jong and more |
 //! | [`bezier`] | quadratic and cubic Bézier curves, the smooth counterpart |
+//! | [`particles`] | particle systems: a fountain, fire, fireworks, snow, an explosion |
 //! | [`dimension`] | the box-counting dimension of any picture |
 //!
 //! Beneath them, [`math`] holds the numbers (fixed-point [`Real`] and [`Coord`], angles,
@@ -133,6 +134,7 @@ pub mod ifs;
 pub mod lsystem;
 pub mod math;
 pub mod noise;
+pub mod particles;
 pub mod prelude;
 pub mod reaction;
 pub mod render;

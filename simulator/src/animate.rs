@@ -27,6 +27,7 @@ use crate::console::Failure;
 use crate::escape_scene::{self, Escape, Request};
 use crate::noise_scene::TextureOptions;
 use crate::palette::PaletteName;
+use crate::particles_scene::ParticleOptions;
 use crate::reaction_scene::ReactionOptions;
 use crate::systems::{Purpose, Source};
 
@@ -82,6 +83,8 @@ enum AnimationKind {
     /// A 3D attractor (lorenz, rossler, pickover) turning about its vertical axis, a full
     /// turn over the frames
     Attractor(AttractorAnimationOptions),
+    /// A particle system from its start, a tick (1/30 s) a frame
+    Particles(ParticleAnimationOptions),
 }
 
 #[derive(Debug, Args)]
@@ -197,6 +200,14 @@ struct AttractorAnimationOptions {
     frames: FrameOptions,
 }
 
+#[derive(Debug, Args)]
+struct ParticleAnimationOptions {
+    #[command(flatten)]
+    particles: ParticleOptions,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
 /// Frames an animation writes without `--frames`.
 const DEFAULT_FRAMES: u32 = 100;
 
@@ -273,6 +284,11 @@ enum Animation {
     Attractor {
         /// The attractor and how it is drawn.
         attractor: AttractorOptions,
+    },
+    /// A particle system, a tick a frame.
+    Particles {
+        /// The preset and seed.
+        particles: ParticleOptions,
     },
 }
 
@@ -367,6 +383,12 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
                 options.frames,
             )
         }
+        AnimationKind::Particles(options) => (
+            Animation::Particles {
+                particles: options.particles,
+            },
+            options.frames,
+        ),
     };
     let count = frames.frames.unwrap_or(DEFAULT_FRAMES);
     if count == 0 {
@@ -494,6 +516,11 @@ fn make(arguments: &AnimationPlan, size: Size, emit: &Emit<'_>) -> Result<String
         }
         Animation::Attractor { attractor } => {
             crate::attractor_scene::frames(attractor, arguments.frames, size, |frame| {
+                emit.frame(frame)
+            })
+        }
+        Animation::Particles { particles } => {
+            crate::particles_scene::frames(particles, arguments.frames, size, |frame| {
                 emit.frame(frame)
             })
         }

@@ -21,6 +21,7 @@ use crate::figure_scene::{render_figure, FigureOptions};
 use crate::ifs_scene::{render_gingerbread, render_ifs, GingerbreadOptions, IfsOptions};
 use crate::lsystem_scene::LSystemOptions;
 use crate::noise_scene::{NoiseOptions, RenderNoiseOptions};
+use crate::particles_scene::RenderParticleOptions;
 use crate::reaction_scene::RenderReactionOptions;
 use crate::shape_scene::{
     render_carpet, render_cube, render_gasket, render_terrain, render_terrain2d, CubeOptions,
@@ -116,6 +117,8 @@ enum Scene {
     Attractor(RenderAttractorOptions),
     /// Quadratic and cubic Bézier curves from their control points (the smooth counterpart)
     Bezier(BezierOptions),
+    /// A particle system (fountain, fire, fireworks, snow, explosion) at a moment
+    Particles(RenderParticleOptions),
 }
 
 /// Parses the arguments after the program name. `Err` carries clap's message (help and
@@ -175,6 +178,7 @@ impl Scene {
             Self::Reaction(options) => options.run(),
             Self::Attractor(options) => options.run(),
             Self::Bezier(options) => options.run(),
+            Self::Particles(options) => options.run(),
         }
     }
 }

@@ -310,7 +310,9 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             tolerance_percent,
         },
         // Nothing of its own to step: the figure and the curves stay as they are.
-        unchanged @ (Scene::Walk { .. } | Scene::Bezier { .. }) => unchanged,
+        unchanged @ (Scene::Walk { .. } | Scene::Bezier { .. } | Scene::Particles { .. }) => {
+            unchanged
+        }
     };
     Entry { scene, ..entry }
 }

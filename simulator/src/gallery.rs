@@ -172,7 +172,8 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
         | Scene::Zoom { .. }
         | Scene::NoiseTerrain { .. }
         | Scene::NoiseFlight { .. }
-        | Scene::Bezier { .. } => crate::shape_scene::render_entry(&entry.scene, size),
+        | Scene::Bezier { .. }
+        | Scene::Particles { .. } => crate::shape_scene::render_entry(&entry.scene, size),
         Scene::Noise { .. } => crate::noise_scene::render_entry(&entry.scene, size),
         Scene::Reaction { .. } => crate::reaction_scene::render_entry(&entry.scene, size),
         Scene::Attractor { kind, points } => crate::attractor_scene::render_entry(

@@ -415,7 +415,9 @@ pub fn render_entry(
         Scene::NoiseTerrain { samples, seed, .. } => {
             format!("{samples} samples, noise seed {seed}")
         }
-        Scene::Walk { frames } | Scene::Zoom { frames, .. } => format!("{frames} frames"),
+        Scene::Walk { frames } | Scene::Zoom { frames, .. } | Scene::Particles { frames, .. } => {
+            format!("{frames} frames")
+        }
         _ => String::new(),
     };
     let work = format!("{} {}s", work.count(), scene.work_unit());

@@ -230,6 +230,7 @@ fn gallery_renders_every_scene() {
         "attractor-clifford",
         "attractor-dejong",
         "bezier-figure",
+        "particles-fireworks",
     ] {
         assert!(table.contains(scene), "{table}");
         assert!(dir.join(format!("{scene}.png")).exists(), "{scene}.png");

@@ -29,7 +29,9 @@ mod firmware {
     use tinyfractal::Real;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
     #[cfg(feature = "newer")]
-    use tinyfractal_scenes::naive::{gray_scott_f32, henon_f32, lorenz_f32, noise_f32};
+    use tinyfractal_scenes::naive::{
+        fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
+    };
     use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(not(feature = "newer"))]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
@@ -50,6 +52,9 @@ mod firmware {
         /// The Hénon map's or the Lorenz flow's points.
         #[cfg(feature = "newer")]
         Attractor(Kind, u32),
+        /// A fountain's frames.
+        #[cfg(feature = "newer")]
+        Fountain(u32),
     }
 
     impl Baseline {
@@ -86,6 +91,11 @@ mod firmware {
                         steps,
                     ))
                 }
+                #[cfg(feature = "newer")]
+                Scene::Particles {
+                    preset: tinyfractal::particles::Preset::Fountain,
+                    frames,
+                } => Some(Self::Fountain(frames)),
                 #[cfg(feature = "newer")]
                 Scene::Attractor {
                     kind: kind @ (Kind::Henon | Kind::Lorenz),
@@ -316,6 +326,12 @@ mod firmware {
                     } else {
                         lorenz_f32(points, target);
                     }
+                });
+            }
+            #[cfg(feature = "newer")]
+            Some(Baseline::Fountain(frames)) => {
+                f32_cost = run(&mut |target| {
+                    fountain_f32(frames, target);
                 });
             }
             None => {}

@@ -8,6 +8,7 @@ use tinyfractal::{
     escape::{Shading, Tier},
     math::DeepCoord,
     noise::{Octaves, Texture},
+    particles::Preset as ParticlePreset,
     reaction::Preset,
     render::Orientation,
     subdivision::CubeVariant,
@@ -121,6 +122,14 @@ pub enum Scene {
         /// Each curve's four control points, in the design's pixels.
         curves: &'static [[(i16, i16); 4]],
     },
+    /// A particle system from its start, `frames` ticks (a thirtieth of a second each), each
+    /// frame erasing the last one's particles (an animation on a board).
+    Particles {
+        /// Which system.
+        preset: ParticlePreset,
+        /// Frames drawn, a tick each.
+        frames: u32,
+    },
     /// A strange attractor with its kind's defaults, `points` points after the default
     /// transient, by density (hit counts a byte a pixel) over the picture.
     Attractor {
@@ -220,12 +229,13 @@ impl Scene {
             Self::NoiseFlight { .. } => "sample",
             Self::Attractor { .. } => "point",
             Self::Bezier { .. } => "segment",
+            Self::Particles { .. } => "particle-step",
         }
     }
 
     /// The family, as the CLI names it: `lsystem`, `ifs`, `carpet`, `gasket`, `cube`,
     /// `terrain`, `terrain2d`, `figure`, `mandelbrot`, `julia`, `noise`, `reaction`,
-    /// `attractor`, `bezier` or `zoom` (`animate zoom`).
+    /// `attractor`, `bezier`, `particles` or `zoom` (`animate zoom`).
     pub const fn family(&self) -> &'static str {
         match self {
             Self::LSystem { .. } => "lsystem",
@@ -247,6 +257,7 @@ impl Scene {
             Self::NoiseFlight { .. } => "noise",
             Self::Attractor { .. } => "attractor",
             Self::Bezier { .. } => "bezier",
+            Self::Particles { .. } => "particles",
         }
     }
 
@@ -718,7 +729,7 @@ const fn bezier(name: &'static str, curves: &'static [[(i16, i16); 4]], size: Si
 /// terrain, Perlin's textures, reaction–diffusion, strange attractors and a figure in
 /// Bézier curves.
 #[rustfmt::skip]
-pub const GALLERY: [Entry; 31] = [
+pub const GALLERY: [Entry; 32] = [
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 5, Orientation::Right, GALLERY_SIZE),
     lsystem("dragon", &DRAGON, 12, Orientation::Right, GALLERY_SIZE),
     lsystem("hilbert", &HILBERT, 6, Orientation::Right, GALLERY_SIZE),
@@ -753,6 +764,12 @@ pub const GALLERY: [Entry; 31] = [
     attractor("attractor-clifford", Kind::Clifford, 1_000_000, GALLERY_SIZE),
     attractor("attractor-dejong", Kind::DeJong, 1_000_000, GALLERY_SIZE),
     bezier("bezier-figure", &SMOOTH_FIGURE, GALLERY_SIZE),
+    Entry {
+        name: "particles-fireworks",
+        scene: Scene::Particles { preset: ParticlePreset::Fireworks, frames: 40 },
+        size: GALLERY_SIZE,
+        palette: "",
+    },
 ];
 
 /// The systems of ABOP's `data/abop.lsys`, drawn by the general engine.
@@ -902,17 +919,28 @@ pub const TEXTURE_SCENES: [Entry; 4] = [
     reaction("reaction-mitosis", Preset::Mitosis, (24, 24), 700, OLED),
 ];
 
-/// The lecture's dynamics on the OLED, measured on every core: the Hénon and Lorenz
-/// attractors by density (counts a byte a pixel, 8 KiB on the stack), and the figure in
-/// Bézier curves.
+/// The lecture's dynamics on the OLED, measured on every core.
+///
+/// The Hénon and Lorenz attractors by density (counts a byte a pixel, 8 KiB on the stack),
+/// the figure in Bézier curves, and a fountain of particles.
 ///
 /// Shown by the boards built with the scenes' `dynamics` feature (not the LM3S6965, whose
 /// flash they would overflow), and measured by the measuring firmware's second build with
 /// the textures.
-pub const DYNAMICS_SCENES: [Entry; 3] = [
+pub const DYNAMICS_SCENES: [Entry; 4] = [
     attractor("attractor-henon", Kind::Henon, 20_000, OLED),
     attractor("attractor-lorenz", Kind::Lorenz, 20_000, OLED),
     bezier("bezier-figure", &SMOOTH_FIGURE, OLED),
+    // Two seconds of the fountain, a frame a tick, in a pool of MAX_BOARD_PARTICLES.
+    Entry {
+        name: "particles-fountain",
+        scene: Scene::Particles {
+            preset: ParticlePreset::Fountain,
+            frames: 60,
+        },
+        size: OLED,
+        palette: "",
+    },
 ];
 
 /// Views past `Deep`'s spacing, drawn by perturbation with the reference orbit on the stack

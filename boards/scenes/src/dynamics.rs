@@ -12,9 +12,10 @@ use crate::look::{Look, Work};
 /// (8 KiB on the stack while it draws).
 pub const MAX_BOARD_DENSITY_PIXELS: usize = 128 * 64;
 
-/// The most pixels the host's catalogue density pictures count (320×240).
+/// The most pixels a full display's density picture counts: the real boards' 320×240 (and
+/// the gallery's), a byte each.
 #[cfg(feature = "dynamics")]
-const MAX_HOST_DENSITY_PIXELS: usize = 320 * 240;
+const MAX_DISPLAY_DENSITY_PIXELS: usize = 320 * 240;
 
 impl Scene {
     /// Draws a dynamics scene (a strange attractor) as [`Scene::draw`] does, without
@@ -28,12 +29,90 @@ impl Scene {
         D: DrawTarget,
         D::Color: From<Rgb888>,
     {
+        self.draw_dynamics_frames(target, look, || {})
+    }
+
+    /// [`draw_dynamics`](Self::draw_dynamics), calling `between_frames` after each frame of
+    /// an animated scene (the particles).
+    pub fn draw_dynamics_frames<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+        between_frames: impl FnMut(),
+    ) -> Option<Result<Work, DrawError<D::Error>>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
         match *self {
             Scene::Attractor { kind, points } => Some(draw_attractor(target, look, kind, points)),
             Scene::Bezier { curves } => Some(draw_bezier(target, look, curves)),
+            Scene::Particles { preset, frames } => Some(draw_particles(
+                target,
+                look,
+                (preset, frames),
+                between_frames,
+            )),
             _ => None,
         }
     }
+}
+
+/// The most particles a board's pool holds: 128 (2.5 KiB, and as much again for the last
+/// frame's squares).
+pub const MAX_BOARD_PARTICLES: usize = 128;
+
+/// `preset`'s system on the whole of `target` from its start, `frames` ticks, a frame each:
+/// the target cleared once, then each frame erasing the last one's particles; their age
+/// through the look's gradient. The work is the particle-steps.
+#[cfg(feature = "dynamics")]
+#[inline(never)]
+fn draw_particles<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    (preset, frames): (tinyfractal::particles::Preset, u32),
+    mut between_frames: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    use tinyfractal::particles::{Frames, ParticleLook};
+    let size = target.bounding_box().size;
+    let sizes = preset.sizes(size.height);
+    let particle_look = ParticleLook {
+        palette: look.gradient::<16>()?,
+        size_at_birth: sizes.birth,
+        size_at_death: sizes.death,
+    };
+    let mut system = preset.system::<MAX_BOARD_PARTICLES>(size, 1);
+    let mut drawn = Frames::<MAX_BOARD_PARTICLES>::new();
+    target.clear(look.background).map_err(DrawError::Target)?;
+    let mut steps = 0;
+    for _ in 0..frames {
+        steps += system.step(1);
+        drawn
+            .draw(&system, &particle_look, look.background, target)
+            .map_err(DrawError::Target)?;
+        between_frames();
+    }
+    Ok(Work::ParticleSteps(steps))
+}
+
+/// Without the `dynamics` feature particles are the background: nothing moved.
+#[cfg(not(feature = "dynamics"))]
+fn draw_particles<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    _: (tinyfractal::particles::Preset, u32),
+    _: impl FnMut(),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    target.clear(look.background).map_err(DrawError::Target)?;
+    Ok(Work::ParticleSteps(0))
 }
 
 /// `kind`'s attractor by density over the whole of `target`, `points` points, the hit
@@ -52,11 +131,12 @@ where
 {
     let area = target.bounding_box();
     let pixels = area.size.width as usize * area.size.height as usize;
-    // A board (a target without an OS) carries only its own buffer's code.
-    if pixels <= MAX_BOARD_DENSITY_PIXELS || cfg!(target_os = "none") {
+    // The OLED's buffer where it is enough, a full display's (the Pico's and the DISCO's
+    // 320×240, 75 KiB on their stacks) otherwise.
+    if pixels <= MAX_BOARD_DENSITY_PIXELS {
         count_attractor::<D, MAX_BOARD_DENSITY_PIXELS>(target, look, kind, points)
     } else {
-        count_attractor::<D, MAX_HOST_DENSITY_PIXELS>(target, look, kind, points)
+        count_attractor::<D, MAX_DISPLAY_DENSITY_PIXELS>(target, look, kind, points)
     }
 }
 
@@ -99,6 +179,7 @@ where
 }
 
 /// The design's size: curves are given in a 320×240 picture.
+#[cfg(feature = "dynamics")]
 const DESIGN: (i32, i32) = (320, 240);
 
 /// `curves` (a 320×240 design) scaled uniformly and centred on `target`, over the look's

@@ -96,6 +96,8 @@ pub enum Work {
     Samples(u64),
     /// Cells stepped, once a step (reaction–diffusion).
     CellSteps(u64),
+    /// Live particles moved, once a tick (a particle system).
+    ParticleSteps(u64),
 }
 
 impl Work {
@@ -108,7 +110,8 @@ impl Work {
             | Self::Cells(n)
             | Self::Frames(n)
             | Self::Samples(n)
-            | Self::CellSteps(n) => n,
+            | Self::CellSteps(n)
+            | Self::ParticleSteps(n) => n,
         }
     }
 
@@ -122,6 +125,7 @@ impl Work {
             Self::Frames(_) => "frames",
             Self::Samples(_) => "samples",
             Self::CellSteps(_) => "cell_steps",
+            Self::ParticleSteps(_) => "particle_steps",
         }
     }
 }
@@ -144,6 +148,9 @@ impl Scene {
             Scene::Walk { frames } => draw_walk(target, look, frames, between_frames),
             Scene::Zoom { .. } => draw_zoom(target, look, self, between_frames),
             Scene::NoiseFlight { .. } => draw_flight(target, look, self, between_frames),
+            Scene::Particles { .. } => self
+                .draw_dynamics_frames(target, look, between_frames)
+                .unwrap_or(Ok(Work::ParticleSteps(0))),
             _ => self.draw(target, look),
         }
     }
@@ -233,7 +240,7 @@ impl Scene {
             | Scene::NoiseFlight { .. } => self
                 .draw_texture(target, look)
                 .unwrap_or(Ok(Work::Samples(0))),
-            Scene::Attractor { .. } | Scene::Bezier { .. } => self
+            Scene::Attractor { .. } | Scene::Bezier { .. } | Scene::Particles { .. } => self
                 .draw_dynamics(target, look)
                 .unwrap_or(Ok(Work::Points(0))),
             Scene::Escape(escape) => {

@@ -240,3 +240,62 @@ pub fn lorenz_f32<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> 
     }
     u64::from(points)
 }
+
+/// A fountain of particles as a sketch writes it, in `f32`.
+///
+/// `frames` ticks of 1/30 s, four particles a tick from the bottom's middle into a pool of 128 (a dead slot, else the
+/// oldest), each tick every live particle moved under gravity and bounced on the ground,
+/// then the display cleared and each particle a pixel; returns the particle-steps.
+///
+/// A sketch draws its directions from a cheap generator, as here, without sines.
+pub fn fountain_f32<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -> u64 {
+    const N: usize = 128;
+    let size = target.bounding_box().size;
+    let (w, h) = (size.width as f32, size.height as f32);
+    let scale = h / 240.0 / 30.0;
+    let (gravity, ground) = (300.0 * scale / 30.0, h * 0.95);
+    let mut seed: u32 = 1;
+    let mut random = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        (seed >> 8) as f32 / 16_777_216.0
+    };
+    let (mut x, mut y, mut vx, mut vy) = ([0f32; N], [0f32; N], [0f32; N], [0f32; N]);
+    let (mut age, mut life) = ([0u16; N], [0u16; N]);
+    let mut steps = 0;
+    for _ in 0..frames {
+        for _ in 0..4 {
+            let slot = (0..N)
+                .find(|&i| age[i] >= life[i])
+                .unwrap_or_else(|| (0..N).max_by_key(|&i| age[i]).unwrap_or(0));
+            x[slot] = w * 0.5;
+            y[slot] = ground;
+            vx[slot] = (random() - 0.5) * 90.0 * scale;
+            vy[slot] = -(250.0 + (random() - 0.5) * 60.0) * scale;
+            age[slot] = 0;
+            life[slot] = 57 + (random() * 18.0) as u16;
+        }
+        for i in 0..N {
+            if age[i] < life[i] {
+                vy[i] += gravity;
+                x[i] += vx[i];
+                y[i] += vy[i];
+                if y[i] > ground {
+                    y[i] = ground;
+                    vy[i] = -vy[i] * 0.25;
+                }
+                age[i] += 1;
+                steps += 1;
+            }
+        }
+        let _ = target.clear(Gray4::BLACK);
+        for i in 0..N {
+            if age[i] < life[i] {
+                let p = Point::new(x[i] as i32, y[i] as i32);
+                let _ = target.draw_iter(core::iter::once(Pixel(p, Gray4::WHITE)));
+            }
+        }
+    }
+    steps
+}

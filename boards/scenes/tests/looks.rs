@@ -7,7 +7,9 @@ use embedded_graphics::{
     pixelcolor::{Rgb565, Rgb888},
     prelude::*,
 };
-use tinyfractal_scenes::{Entry, Look, Work, COLOUR, GREY, SCENES, ZOOM_SCENES};
+use tinyfractal_scenes::{
+    Entry, Look, Work, COLOUR, DYNAMICS_SCENES, GREY, SCENES, TEXTURE_SCENES, ZOOM_SCENES,
+};
 
 use tinyfractal_test_support::frame;
 
@@ -31,7 +33,7 @@ fn marks<C: PixelColor + From<Rgb888>>(
         }
         // A texture's 256 levels show as gradient colours, which a 16-grey panel merges:
         // nothing to compare pixel for pixel (the core's tests check the levels).
-        Work::Samples(_) | Work::CellSteps(_) => Vec::new(),
+        Work::Samples(_) | Work::CellSteps(_) | Work::ParticleSteps(_) => Vec::new(),
     };
     (work, marked)
 }
@@ -57,6 +59,27 @@ fn every_scene_marks_the_same_pixels_in_colour_and_in_grey() {
                 "{name} at {size}: only {marked} pixels marked"
             );
             assert!(colour == grey, "{name} at {size}: looks differ");
+        }
+    }
+}
+
+/// The newer families' scenes draw at the real boards' display sizes in both looks, inside
+/// the target, doing the same work: a board shows them full screen.
+#[test]
+fn the_newer_scenes_draw_at_every_display_size() {
+    for Entry { name, scene, .. } in TEXTURE_SCENES.iter().chain(&DYNAMICS_SCENES) {
+        for size in [Size::new(320, 240), Size::new(240, 320), Size::new(128, 64)] {
+            let mut colour = Frame::filled(size, COLOUR.background);
+            let mut grey = Frame::filled(size, GREY.background);
+            let work_colour = scene.draw(&mut colour, &COLOUR).unwrap();
+            let work_grey = scene.draw(&mut grey, &GREY).unwrap();
+            assert_eq!(work_colour, work_grey, "{name} at {size}");
+            assert!(work_colour.count() > 0, "{name} at {size}: no work");
+            assert_eq!(
+                colour.outside + grey.outside,
+                0,
+                "{name} drew outside {size}"
+            );
         }
     }
 }
