@@ -22,10 +22,16 @@ fn render_parametric(
     window_available(common.window)?;
     let order = arguments.system.order;
     let failed = |e: tinyfractal::Error| format!("{name} at order {order}: {e}");
+    let colormap = arguments
+        .colormap
+        .as_deref()
+        .map(crate::palette::read_map)
+        .transpose()?;
     let look = scene::GeneralLook {
         projection: arguments.projection,
         depth_cue: arguments.depth_cue,
         environment: arguments.environment.as_ref(),
+        colormap: colormap.as_deref(),
     };
     let rendered = scene::render_general(
         grammar,
@@ -83,6 +89,10 @@ pub struct LSystemOptions {
     /// R in turtle units, the shape standing on the turtle's start; env(0) is 1 inside
     #[arg(long, value_name = "SHAPE:R", value_parser = crate::environment::Shape::parse)]
     pub environment: Option<crate::environment::Shape>,
+    /// A Fractint .map colour map (lines `R G B`) for the colour modules to index; default:
+    /// Fractint's 16 colours for .l systems, browns to greens for .lsys ones
+    #[arg(long, value_name = "FILE.map")]
+    pub colormap: Option<PathBuf>,
     #[command(flatten)]
     pub common: Common,
 }
@@ -128,13 +138,18 @@ fn render_lsystem(arguments: &LSystemOptions) -> Result<(), Failure> {
     let common = &arguments.common;
     window_available(common.window)?;
     let failed = |e: tinyfractal::Error| format!("{name} at order {}: {e}", arguments.system.order);
+    let colormap = arguments
+        .colormap
+        .as_deref()
+        .map(crate::palette::read_map)
+        .transpose()?;
     // Everything is computed and every output checked before anything is written.
-    let rendered = scene::render(
+    let rendered = scene::render_in(
         &grammar,
         arguments.system.order,
-        common.width(),
-        common.height(),
+        (common.width(), common.height()),
         arguments.view,
+        colormap.as_deref().unwrap_or(&crate::palette::VGA),
     )
     .map_err(failed)?;
     if rendered.stats.segments == 0 {

@@ -1,5 +1,6 @@
 //! The host's colours: Fractint's 16 VGA colours, with index 0 (the turtle's first colour)
-//! white instead of black so that uncoloured systems show on the black background.
+//! white instead of black so that uncoloured systems show on the black background; the
+//! book's browns and greens for `.lsys` plants; and Fractint's `.map` files read.
 
 use clap::ValueEnum;
 use embedded_graphics::pixelcolor::Rgb888;
@@ -15,6 +16,73 @@ pub const DEPTH_GREENS: [Rgb888; 16] = {
     }
     levels
 };
+
+/// The colour map of `.lsys` systems without `--colormap`, in the spirit of *The
+/// Algorithmic Beauty of Plants*: index 0 a bark brown for stems, then browns turning to
+/// greens, light greens for young leaves, and a few flower colours at the end (a plant's `;`
+/// steps from wood towards leaves).
+pub const BOOK: [Rgb888; 16] = [
+    Rgb888::new(0x8B, 0x5A, 0x2B),
+    Rgb888::new(0x7A, 0x4E, 0x24),
+    Rgb888::new(0x6B, 0x5A, 0x2A),
+    Rgb888::new(0x5C, 0x6B, 0x2E),
+    Rgb888::new(0x4A, 0x7A, 0x30),
+    Rgb888::new(0x3C, 0x8A, 0x34),
+    Rgb888::new(0x34, 0x9A, 0x3A),
+    Rgb888::new(0x3E, 0xAA, 0x44),
+    Rgb888::new(0x52, 0xBA, 0x4E),
+    Rgb888::new(0x6C, 0xC8, 0x5A),
+    Rgb888::new(0x8A, 0xD4, 0x68),
+    Rgb888::new(0xA8, 0xDE, 0x7A),
+    Rgb888::new(0xF2, 0xE2, 0x5C),
+    Rgb888::new(0xF0, 0x9C, 0x4C),
+    Rgb888::new(0xE8, 0x6A, 0x8A),
+    Rgb888::new(0xF8, 0xF4, 0xF0),
+];
+
+/// Reads a Fractint `.map` colour map: a line per colour, `R G B` (each 0 to 255) and
+/// anything after the three numbers a comment; blank lines skipped; 1 to 256 colours.
+pub fn read_map(path: &std::path::Path) -> Result<Vec<Rgb888>, String> {
+    let text = crate::files::read_text(path)?;
+    let mut colors = Vec::new();
+    for (number, line) in text.lines().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let bad = || {
+            format!(
+                "{}:{}: `{}` is not a colour `R G B` (three whole numbers 0 to 255, then \
+                 anything)",
+                path.display(),
+                number + 1,
+                line.trim()
+            )
+        };
+        let mut fields = line.split_whitespace();
+        let mut channel = || -> Result<u8, String> {
+            fields
+                .next()
+                .and_then(|f| f.parse::<u8>().ok())
+                .ok_or_else(bad)
+        };
+        let (r, g, b) = (channel()?, channel()?, channel()?);
+        if colors.len() == 256 {
+            return Err(format!(
+                "{}:{}: more than 256 colours: a Fractint map has at most 256 lines",
+                path.display(),
+                number + 1
+            ));
+        }
+        colors.push(Rgb888::new(r, g, b));
+    }
+    if colors.is_empty() {
+        return Err(format!(
+            "{}: no colours: give lines `R G B`",
+            path.display()
+        ));
+    }
+    Ok(colors)
+}
 
 pub const VGA: [Rgb888; 16] = [
     Rgb888::new(0xFF, 0xFF, 0xFF),

@@ -52,11 +52,22 @@ pub fn render(
     height: u32,
     view: Option<View>,
 ) -> Result<Rendered, Error> {
+    render_in(grammar, order, (width, height), view, &VGA)
+}
+
+/// [`render`] through the colour map `colors` (the colour modules index it).
+pub fn render_in(
+    grammar: &Grammar<'_>,
+    order: u32,
+    (width, height): (u32, u32),
+    view: Option<View>,
+    colors: &[Rgb888],
+) -> Result<Rendered, Error> {
     let orientation = match grammar.dialect() {
         tinyfractal::Dialect::Fractint => Orientation::Right,
         tinyfractal::Dialect::Abop => Orientation::Up,
     };
-    render_window(grammar, order, width, height, orientation, view)
+    render_window(grammar, order, (width, height), orientation, view, colors)
 }
 
 /// The area the whole picture is fitted to so that `view` of it fills a `width`×`height`
@@ -91,7 +102,7 @@ pub fn render_oriented(
     height: u32,
     orientation: Orientation,
 ) -> Result<Rendered, Error> {
-    render_window(grammar, order, width, height, orientation, None)
+    render_window(grammar, order, (width, height), orientation, None, &VGA)
 }
 
 impl Rendered {
@@ -137,6 +148,9 @@ pub struct GeneralLook<'e> {
     pub depth_cue: bool,
     /// The world an open system grows in, if any.
     pub environment: Option<&'e crate::environment::Shape>,
+    /// The colour map the colour modules index (`--colormap`); the book's browns and
+    /// greens without one.
+    pub colormap: Option<&'e [Rgb888]>,
 }
 
 /// The system of the general engine (parametric, contextual, 3D, open) `look` describes.
@@ -171,7 +185,7 @@ pub fn render_general(
     let palette: &[Rgb888] = if system.projection().is_some() && look.depth_cue {
         &crate::palette::DEPTH_GREENS
     } else {
-        &VGA
+        look.colormap.unwrap_or(&crate::palette::BOOK)
     };
     let drawing = system.fit(fitted_area(width, height, view)?, palette)?;
     let fit = started.elapsed();
@@ -182,16 +196,16 @@ pub fn render_general(
 fn render_window(
     grammar: &Grammar<'_>,
     order: u32,
-    width: u32,
-    height: u32,
+    (width, height): (u32, u32),
     orientation: Orientation,
     view: Option<View>,
+    colors: &[Rgb888],
 ) -> Result<Rendered, Error> {
     let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(width, height));
     let started = Instant::now();
     let system = HostSystem::with_capacity(grammar, order).with_orientation(orientation);
     let palette =
-        Colors::new(&VGA).ok_or(Error::Fit(tinyfractal::error::FitError::EmptyPalette))?;
+        Colors::new(colors).ok_or(Error::Fit(tinyfractal::error::FitError::EmptyPalette))?;
     let mut cells = cells_needed(grammar, order)
         .filter(|&needed| needed <= MAX_CELLS)
         .map_or_else(Vec::new, |needed| vec![Cell::default(); needed]);
