@@ -147,23 +147,19 @@ impl Stepper {
     /// The state after `s`, or `None` where a value leaves the fixed-point range.
     #[inline]
     pub(crate) fn step(&self, s: State) -> Option<State> {
-        match *self {
-            Self::Henon { a, b } => henon(a, b, s),
-            Self::Clifford(p) => clifford(p, s),
-            Self::DeJong(p) => de_jong(p, s),
-            Self::Pickover(p) => pickover(p, s),
-            Self::Hopalong { a, b, c } => hopalong(a, b, c, s),
-            Self::Martin { a } => martin(a, s),
-            Self::GumowskiMira {
-                a,
-                b,
-                c,
-                twice_one_less_c,
-            } => gumowski_mira([a, b, c, twice_one_less_c], s),
-            Self::Popcorn { h } => popcorn(h, s),
-            Self::Lorenz { flow, method } => integrate(method, s, |s| flow.delta(s)),
-            Self::Rossler { flow, method } => integrate(method, s, |s| flow.delta(s)),
-        }
+        self.with_step(Once(s))
+    }
+}
+
+/// One step from a state: [`Stepper::step`] through the same dispatch as the loops.
+struct Once(State);
+
+impl WithStep for Once {
+    type Output = Option<State>;
+
+    #[inline(always)]
+    fn with(self, step: impl Fn(State) -> Option<State>) -> Option<State> {
+        step(self.0)
     }
 }
 

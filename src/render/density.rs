@@ -103,19 +103,9 @@ impl<'b, T: HitCount> Density<'b, T> {
     #[inline]
     pub(crate) fn hit(&self, pixel: Point) -> bool {
         let offset = pixel - self.area.top_left;
-        let (Ok(x), Ok(y)) = (u32::try_from(offset.x), u32::try_from(offset.y)) else {
-            return false;
-        };
-        if x >= self.area.size.width || y >= self.area.size.height {
-            return false;
-        }
-        let index = usize::try_from(y * self.area.size.width + x).unwrap_or(usize::MAX);
-        match self.counts.get(index) {
-            Some(cell) => {
-                cell.set(cell.get().bumped());
-                true
-            }
-            None => false,
+        match (u32::try_from(offset.x), u32::try_from(offset.y)) {
+            (Ok(column), Ok(row)) => self.hit_at(column, row),
+            _ => false,
         }
     }
 

@@ -44,7 +44,8 @@ impl Scene {
         D: DrawTarget,
         D::Color: From<Rgb888>,
     {
-        match *self {
+        #[cfg(feature = "dynamics")]
+        return match *self {
             Scene::Attractor { kind, points } => Some(draw_attractor(target, look, kind, points)),
             Scene::Bezier { curves } => Some(draw_bezier(target, look, curves)),
             Scene::Particles { preset, frames } => Some(draw_particles(
@@ -54,6 +55,23 @@ impl Scene {
                 between_frames,
             )),
             _ => None,
+        };
+        // Without the `dynamics` feature a dynamics scene is the background: no work done.
+        #[cfg(not(feature = "dynamics"))]
+        {
+            let _ = between_frames;
+            let nothing = match *self {
+                Scene::Attractor { .. } => Work::Points(0),
+                Scene::Bezier { .. } => Work::Segments(0),
+                Scene::Particles { .. } => Work::ParticleSteps(0),
+                _ => return None,
+            };
+            Some(
+                target
+                    .clear(look.background)
+                    .map(|()| nothing)
+                    .map_err(DrawError::Target),
+            )
         }
     }
 }
@@ -97,22 +115,6 @@ where
         between_frames();
     }
     Ok(Work::ParticleSteps(steps))
-}
-
-/// Without the `dynamics` feature particles are the background: nothing moved.
-#[cfg(not(feature = "dynamics"))]
-fn draw_particles<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    _: (tinyfractal::particles::Preset, u32),
-    _: impl FnMut(),
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-    D::Color: From<Rgb888>,
-{
-    target.clear(look.background).map_err(DrawError::Target)?;
-    Ok(Work::ParticleSteps(0))
 }
 
 /// `kind`'s attractor by density over the whole of `target`, `points` points, the hit
@@ -162,22 +164,6 @@ where
     Ok(Work::Points(stats.points))
 }
 
-/// Without the `dynamics` feature an attractor is the background: no points computed.
-#[cfg(not(feature = "dynamics"))]
-fn draw_attractor<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    _: tinyfractal::attractor::Kind,
-    _: u64,
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-    D::Color: From<Rgb888>,
-{
-    target.clear(look.background).map_err(DrawError::Target)?;
-    Ok(Work::Points(0))
-}
-
 /// The design's size: curves are given in a 320×240 picture.
 #[cfg(feature = "dynamics")]
 const DESIGN: (i32, i32) = (320, 240);
@@ -223,19 +209,4 @@ where
             .segments;
     }
     Ok(Work::Segments(segments))
-}
-
-/// Without the `dynamics` feature curves are the background: nothing flattened.
-#[cfg(not(feature = "dynamics"))]
-fn draw_bezier<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    _: &[[(i16, i16); 4]],
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-    D::Color: From<Rgb888>,
-{
-    target.clear(look.background).map_err(DrawError::Target)?;
-    Ok(Work::Segments(0))
 }
