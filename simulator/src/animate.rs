@@ -18,8 +18,9 @@ use image::{Delay, Frame, RgbaImage};
 use indicatif::ProgressBar;
 use tinyfractal::{
     escape::{Algorithm, Tier, ZoomFrame, ZoomLine},
+    lsystem::Wind,
     math::{DeepCoord, MAX_DECIMAL_PLACES},
-    Real, View,
+    ParametricGrammar, Real, View,
 };
 
 use crate::attractor_scene::AttractorOptions;
@@ -72,8 +73,13 @@ enum AnimationKind {
     Zoom(ZoomOptions),
     /// Colour cycling: one view, its gradient turned a step each frame
     Palette(PaletteOptions),
-    /// An L-system growing, one order a frame
+    /// An L-system growing: a plain one an order a frame; a parametric `.lsys` one
+    /// continuously from order 0 (its new modules growing in between orders) over
+    /// --frames [default: 8 an order, and one]
     Growth(GrowthOptions),
+    /// A parametric `.lsys` plant swaying in a periodic wind (a tropism that changes with
+    /// time), rooted where it stands: a loop of --frames [default: 24]
+    Sway(SwayOptions),
     /// The lecture's figure walking (or waving), one cycle
     Figure(FigureAnimationOptions),
     /// Perlin noise moving: each frame a step deeper in its third dimension
@@ -153,6 +159,29 @@ struct GrowthOptions {
     system: crate::systems::SystemOptions,
     #[command(flatten)]
     frames: FrameOptions,
+}
+
+#[derive(Debug, Args)]
+struct SwayOptions {
+    #[command(flatten)]
+    system: crate::systems::SystemOptions,
+    /// The wind's strength at the height of a gust: e·T of its push, T horizontal (+x)
+    #[arg(long, value_name = "E", default_value = "0.05", value_parser = parse_wind, allow_hyphen_values = true)]
+    wind: Real,
+    /// Chooses the gusts' shape (the phase of their second harmonic)
+    #[arg(long = "wind-seed", value_name = "N", default_value_t = 1)]
+    wind_seed: u32,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+/// A wind strength: a decimal from −4 to 4.
+fn parse_wind(text: &str) -> Result<Real, String> {
+    Real::parse_signed(text)
+        .filter(|e| e.abs() <= Real::from_int(4))
+        .ok_or_else(|| {
+            format!("{text:?} is not a wind strength: give a number from -4 to 4, e.g. 0.05")
+        })
 }
 
 #[derive(Debug, Args)]
@@ -252,12 +281,26 @@ enum Animation {
         /// Gradient entries the colours move a frame (`--step`).
         step: u16,
     },
-    /// An L-system, one order a frame.
+    /// An L-system, one order a frame (plain), or growing continuously to `order`
+    /// (parametric).
     Growth {
         /// The system.
         source: Source,
         /// The seed of stochastic productions (`--seed`), if given.
         seed: Option<u32>,
+        /// The last order.
+        order: u32,
+    },
+    /// A parametric plant at `order` swaying in `wind`.
+    Sway {
+        /// The system.
+        source: Source,
+        /// The seed of stochastic productions (`--seed`), if given.
+        seed: Option<u32>,
+        /// Its order.
+        order: u32,
+        /// The wind.
+        wind: Wind,
     },
     /// The walking (or waving) figure.
     Figure {
@@ -330,21 +373,49 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
             options.frames,
         ),
         AnimationKind::Growth(options) => {
-            if options.frames.frames.is_some() {
+            let source = options.system.source(Purpose::Draw)?;
+            let order = options.system.order;
+            let mut text = String::new();
+            let (loaded, _, _) = crate::systems::load(&source, &mut text)?;
+            let parametric = matches!(loaded, crate::systems::Loaded::Parametric(..));
+            let mut frames = options.frames;
+            if !parametric && frames.frames.is_some() {
                 return Err(Failure::Usage(
-                    "--frames does not apply to growth: it writes one frame an order, 0 to \
-                     --order (leave out --frames)"
+                    "--frames does not apply to the growth of a plain system: it writes one \
+                     frame an order, 0 to --order (leave out --frames; a parametric .lsys \
+                     system grows continuously over --frames)"
                         .to_string(),
                 ));
             }
-            let mut frames = options.frames;
-            // Orders 0 to N: N + 1 frames.
-            frames.frames = Some(options.system.order.saturating_add(1));
+            // Plain: orders 0 to N, N + 1 frames; parametric: 8 an order, and the last.
+            let per_order = if parametric { 8 } else { 1 };
+            frames.frames = Some(
+                frames
+                    .frames
+                    .unwrap_or(order.saturating_mul(per_order).saturating_add(1)),
+            );
             let seed = options.system.seed;
             (
                 Animation::Growth {
-                    source: options.system.source(Purpose::Draw)?,
+                    source,
                     seed,
+                    order,
+                },
+                frames,
+            )
+        }
+        AnimationKind::Sway(options) => {
+            let mut frames = options.frames;
+            frames.frames = Some(frames.frames.unwrap_or(24));
+            (
+                Animation::Sway {
+                    source: options.system.source(Purpose::Draw)?,
+                    seed: options.system.seed,
+                    order: options.system.order,
+                    wind: Wind {
+                        push: [options.wind, Real::ZERO, Real::ZERO],
+                        seed: options.wind_seed,
+                    },
                 },
                 frames,
             )
@@ -503,7 +574,30 @@ fn make(arguments: &AnimationPlan, size: Size, emit: &Emit<'_>) -> Result<String
             arguments.frames,
             emit,
         ),
-        Animation::Growth { source, seed } => growth(source, *seed, arguments.frames, size, emit),
+        Animation::Growth {
+            source,
+            seed,
+            order,
+        } => growth(source, *seed, (*order, arguments.frames), size, emit),
+        Animation::Sway {
+            source,
+            seed,
+            order,
+            wind,
+        } => {
+            let mut text = String::new();
+            let (grammar, colors, name) = parametric(source, *seed, &mut text, "sway")?;
+            crate::plant_animation::sway(
+                (&grammar, &colors),
+                *order,
+                wind,
+                arguments.frames,
+                size,
+                |picture| emit.frame(picture),
+            )
+            .map_err(|e| format!("{name} {e}"))?;
+            Ok(String::new())
+        }
         Animation::Figure { pose } => {
             crate::figure_scene::cycle(*pose, arguments.frames, size, |frame| emit.frame(frame))?;
             Ok(String::new())
@@ -731,20 +825,50 @@ fn palette_cycle(
     Ok(String::new())
 }
 
-/// An L-system at orders 0 to `frames` − 1, each fitted to the picture.
+/// The parametric system `source` names, its entry's colours and its name; an error
+/// naming `animation` for a plain one.
+fn parametric(
+    source: &Source,
+    seed: Option<u32>,
+    text: &mut String,
+    animation: &str,
+) -> Result<(ParametricGrammar, Vec<Rgb888>, String), String> {
+    let (loaded, name, _) = crate::systems::load(source, text)?;
+    let crate::systems::Loaded::Parametric(mut grammar, colors) = loaded else {
+        return Err(format!(
+            "{name}: {animation} animates the general engine's systems (parametric .lsys \
+             ones: F(l), 3D turns, polygons, widths, tropism); this one is plain"
+        ));
+    };
+    if let Some(seed) = seed {
+        grammar.set_seed(seed);
+    }
+    Ok((*grammar, colors, name))
+}
+
+/// A plain L-system at orders 0 to `frames` − 1, each fitted to the picture; a parametric
+/// one growing continuously to `order` over `frames`.
 fn growth(
     source: &Source,
     seed: Option<u32>,
-    frames: u32,
+    (order, frames): (u32, u32),
     size: Size,
     emit: &Emit<'_>,
 ) -> Result<String, String> {
     let mut text = String::new();
     let (loaded, name, _) = crate::systems::load(source, &mut text)?;
-    let crate::systems::Loaded::Plain(grammar) = loaded else {
-        return Err(format!(
-            "{name}: growth animates plain systems; this one is parametric"
-        ));
+    let grammar = match loaded {
+        crate::systems::Loaded::Plain(grammar) => grammar,
+        crate::systems::Loaded::Parametric(mut grammar, colors) => {
+            if let Some(seed) = seed {
+                grammar.set_seed(seed);
+            }
+            crate::plant_animation::grow((&grammar, &colors), order, frames, size, |picture| {
+                emit.frame(picture)
+            })
+            .map_err(|e| format!("{name} {e}"))?;
+            return Ok(String::new());
+        }
     };
     let mut grammar = *grammar;
     if let Some(seed) = seed {

@@ -41,7 +41,7 @@ fn derive(arguments: &DeriveOptions) -> Result<(), Failure> {
     let budget = derive_budget(arguments);
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
-        Loaded::Parametric(mut grammar) => {
+        Loaded::Parametric(mut grammar, _) => {
             if let Some(seed) = arguments.system.seed {
                 grammar.set_seed(seed);
             }

@@ -60,14 +60,18 @@ pub fn run(out: &Path) -> Result<(), String> {
     for entry in &GENERAL_GALLERY {
         let result = tinyfractal::LsysFile::new(entry.source)
             .entry(entry.system)
-            .and_then(|system| system.parametric())
-            .and_then(|grammar| {
+            .and_then(|system| Ok((system.parametric()?, system.colors::<256>()?)))
+            .and_then(|(grammar, colors)| {
+                let look = crate::scene::GeneralLook {
+                    colormap: (!colors.is_empty()).then_some(colors.as_slice()),
+                    ..crate::scene::GeneralLook::default()
+                };
                 crate::scene::render_general(
                     &grammar,
                     entry.order,
                     (entry.size.width, entry.size.height),
                     None,
-                    &crate::scene::GeneralLook::default(),
+                    &look,
                 )
             })
             .map_err(|e| e.to_string())

@@ -23,6 +23,7 @@ pub(crate) mod noise_scene;
 pub(crate) mod output;
 pub(crate) mod palette;
 pub(crate) mod particles_scene;
+pub(crate) mod plant_animation;
 pub(crate) mod progress;
 pub(crate) mod reaction_scene;
 pub mod scene;

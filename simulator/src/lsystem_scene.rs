@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use embedded_graphics::pixelcolor::Rgb888;
 use tinyfractal::ParametricGrammar;
 
 use crate::common::{Common, View};
@@ -16,6 +17,7 @@ use crate::systems::{load, seed_applies, Loaded, Purpose, SystemOptions};
 fn render_parametric(
     arguments: &LSystemOptions,
     grammar: &ParametricGrammar,
+    entry_colors: &[Rgb888],
     name: &str,
 ) -> Result<(), String> {
     let common = &arguments.common;
@@ -31,7 +33,10 @@ fn render_parametric(
         projection: arguments.projection,
         depth_cue: arguments.depth_cue,
         environment: arguments.environment.as_ref(),
-        colormap: colormap.as_deref(),
+        colormap: colormap
+            .as_deref()
+            .or((!entry_colors.is_empty()).then_some(entry_colors)),
+        ..scene::GeneralLook::default()
     };
     let rendered = scene::render_general(
         grammar,
@@ -42,8 +47,9 @@ fn render_parametric(
     )
     .map_err(failed)?;
     let stats_line = format!(
-        "segments={} fit_ms={:.3} draw_ms={:.3} elapsed_ms={:.3}",
+        "segments={} polygons={} fit_ms={:.3} draw_ms={:.3} elapsed_ms={:.3}",
         rendered.stats.segments,
+        rendered.stats.polygons,
         rendered.fit.as_secs_f64() * 1e3,
         rendered.draw.as_secs_f64() * 1e3,
         rendered.elapsed.as_secs_f64() * 1e3
@@ -61,6 +67,11 @@ fn render_parametric(
                     None => scene::write_parametric_segments(grammar, order, w),
                 });
             }
+            if let Some(path) = &arguments.polygons {
+                plan.add("--polygons", path, move |w| {
+                    scene::write_polygons(&system, grammar.is_3d(), w)
+                });
+            }
         },
         &stats_line,
     )
@@ -74,6 +85,10 @@ pub struct LSystemOptions {
     /// Write every drawn segment, `x0 y0 x1 y1` in turtle units
     #[arg(long, value_name = "TXT")]
     pub segments: Option<PathBuf>,
+    /// Write every filled polygon (`{ }`), one a line: its vertices `x y` in turtle units
+    /// (`x y z` for a system that turns in space), in drawing order
+    #[arg(long, value_name = "TXT")]
+    pub polygons: Option<PathBuf>,
     /// Draw only this window of the picture: fractions of the target the whole picture
     /// fills (0,0 top left, 1,1 bottom right), e.g. 0.4,0.4,0.6,0.6 to zoom 5 times
     #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = crate::common::parse_view, allow_hyphen_values = true)]
@@ -125,11 +140,11 @@ fn render_lsystem(arguments: &LSystemOptions) -> Result<(), Failure> {
     seed_applies(kind, arguments.system.seed, &name)?;
     let mut grammar = match loaded {
         Loaded::Plain(grammar) => *grammar,
-        Loaded::Parametric(mut grammar) => {
+        Loaded::Parametric(mut grammar, colors) => {
             if let Some(seed) = arguments.system.seed {
                 grammar.set_seed(seed);
             }
-            return Ok(render_parametric(arguments, &grammar, &name)?);
+            return Ok(render_parametric(arguments, &grammar, &colors, &name)?);
         }
     };
     if let Some(seed) = arguments.system.seed {

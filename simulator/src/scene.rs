@@ -151,6 +151,10 @@ pub struct GeneralLook<'e> {
     /// The colour map the colour modules index (`--colormap`); the book's browns and
     /// greens without one.
     pub colormap: Option<&'e [Rgb888]>,
+    /// A tropism in place of the system's own (the wind of `animate sway`).
+    pub tropism: Option<Option<tinyfractal::lsystem::Tropism>>,
+    /// How far the last order has grown in (`animate growth`), if growing.
+    pub growth: Option<tinyfractal::Real>,
 }
 
 /// The system of the general engine (parametric, contextual, 3D, open) `look` describes.
@@ -166,6 +170,12 @@ pub fn general_system<'g>(
     }
     if let Some(shape) = look.environment {
         system = system.with_environment(shape);
+    }
+    if let Some(tropism) = look.tropism {
+        system = system.with_tropism(tropism);
+    }
+    if let Some(fraction) = look.growth {
+        system = system.growing(fraction);
     }
     system
 }
@@ -189,7 +199,9 @@ pub fn render_general(
     };
     let drawing = system.fit(fitted_area(width, height, view)?, palette)?;
     let fit = started.elapsed();
-    let stats = drawn(drawing.try_draw(&mut display))?;
+    // The host always sorts surfaces by depth.
+    let mut depth = vec![0u16; width as usize * height as usize];
+    let stats = drawn(drawing.try_draw_lit(&mut display, Some(&mut depth)))?;
     Ok(Rendered::timed(display, stats, started, fit))
 }
 
@@ -247,6 +259,35 @@ pub fn write_segments_3d(
         let s = segment.map_err(io::Error::other)?;
         let ([x0, y0, z0], [x1, y1, z1]) = (s.start, s.end);
         writeln!(out, "{x0} {y0} {z0} {x1} {y1} {z1}")?;
+    }
+    Ok(())
+}
+
+/// `--polygons`: each filled polygon a line, its vertices `x y` (`x y z` if `space`) in
+/// turtle units.
+pub fn write_polygons(
+    system: &tinyfractal::ParametricLSystem<'_, DEPTH, STACK>,
+    space: bool,
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    let mut marks = system.marks().map_err(io::Error::other)?;
+    while let Some(mark) = marks.next_mark() {
+        if let tinyfractal::lsystem::Mark::Polygon { vertices, .. } =
+            mark.map_err(io::Error::other)?
+        {
+            let mut line = String::new();
+            for [x, y, z] in vertices {
+                if !line.is_empty() {
+                    line.push(' ');
+                }
+                line.push_str(&if space {
+                    format!("{x} {y} {z}")
+                } else {
+                    format!("{x} {y}")
+                });
+            }
+            writeln!(out, "{line}")?;
+        }
     }
     Ok(())
 }

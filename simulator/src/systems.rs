@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use clap::builder::NonEmptyStringValueParser;
 use clap::{Args, ValueEnum};
 
+use embedded_graphics::pixelcolor::Rgb888;
 use tinyfractal::{Grammar, LFile, LsysFile, ParametricGrammar};
 
 use crate::console::{self, warn, Failure};
@@ -30,8 +31,12 @@ pub fn list(path: &Path) -> Result<(), String> {
 /// A system as a source names it: plain (Fractint, ABOP, stochastic) or parametric.
 pub(crate) enum Loaded<'a> {
     Plain(Box<Grammar<'a>>),
-    Parametric(Box<ParametricGrammar>),
+    /// The grammar and the colours of its `colors:` line (empty without one).
+    Parametric(Box<ParametricGrammar>, Vec<Rgb888>),
 }
+
+/// Most colours a `colors:` line lists: a Fractint map's 256.
+const MAX_ENTRY_COLORS: usize = 256;
 
 /// The system a source names, the name to report it by, and the kind of its file (`None`
 /// inline); warnings go to stderr. The file is read once, here.
@@ -63,7 +68,11 @@ pub(crate) fn load_for<'a>(
             if is_lsys(path, file_text)? {
                 let entry = LsysFile::new(file_text).entry(name).map_err(failed)?;
                 let loaded = if entry.is_parametric() {
-                    Loaded::Parametric(Box::new(entry.parametric().map_err(failed)?))
+                    let colors = entry.colors::<MAX_ENTRY_COLORS>().map_err(failed)?;
+                    Loaded::Parametric(
+                        Box::new(entry.parametric().map_err(failed)?),
+                        colors.to_vec(),
+                    )
                 } else if purpose == Purpose::Derive {
                     Loaded::Plain(Box::new(entry.grammar_to_derive().map_err(failed)?))
                 } else {

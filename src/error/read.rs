@@ -117,6 +117,23 @@ pub enum ReadError {
         /// Where it is.
         at: Location,
     },
+    /// A colour of a `colors:` line is not `RRGGBB` in hexadecimal.
+    NotAColor {
+        /// Where it is.
+        at: Location,
+    },
+    /// A `colors:` line lists more colours than the reader keeps.
+    TooManyColors {
+        /// The most colours it keeps.
+        max: usize,
+        /// Where the first colour too many is.
+        at: Location,
+    },
+    /// A `tropism:` line is not `TX,TY,TZ E` (a direction and an elasticity).
+    MalformedTropism {
+        /// Where it is.
+        at: Location,
+    },
     /// An `.lsys` production's predecessor is not one symbol.
     NotOneSymbol {
         /// Where the predecessor is.
@@ -217,6 +234,9 @@ pub enum Unsupported {
     SecondProduction,
     /// An open system (`env(k)`) with contexts: no reader takes them together.
     EnvironmentWithContext,
+    /// A context in a homomorphism's production (`homomorphism:`): the homomorphism
+    /// rewrites each module alone.
+    ContextInHomomorphism,
 }
 
 impl Unsupported {
@@ -229,6 +249,7 @@ impl Unsupported {
             Self::EnvironmentWithContext => {
                 "an environment (`env(k)`) in a system with contexts (`lc < pred > rc`)"
             }
+            Self::ContextInHomomorphism => "a context in a homomorphism",
         }
     }
 }
@@ -406,6 +427,16 @@ impl fmt::Display for ReadError {
                 f,
                 "the number at {at} is malformed: write e.g. 22.5, -90 or 1e-3"
             ),
+            Self::NotAColor { at } => write!(f, "the colour at {at} is not RRGGBB (hex digits)"),
+            Self::TooManyColors { max, at } => {
+                write!(f, "the colour at {at} is one over the {max} kept")
+            }
+            Self::MalformedTropism { at } => {
+                write!(
+                    f,
+                    "the tropism at {at} is not `TX,TY,TZ E` (e.g. 0,-1,0 0.22)"
+                )
+            }
             Self::NotOneSymbol { at } => write!(
                 f,
                 "the predecessor at {at} is not one symbol: write `X --> ...`"

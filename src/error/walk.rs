@@ -43,6 +43,22 @@ pub enum WalkError {
         /// The range: the state stays strictly within ±this.
         range: u32,
     },
+    /// A polygon (`{ ... }`) has more vertices than the turtle records.
+    PolygonTooLarge {
+        /// The most vertices of a polygon
+        /// ([`MAX_POLYGON_VERTICES`](crate::lsystem::MAX_POLYGON_VERTICES)).
+        capacity: usize,
+    },
+    /// Polygons open inside open polygons deeper than the turtle records.
+    PolygonsNestTooDeep {
+        /// The most polygons open at once
+        /// ([`MAX_OPEN_POLYGONS`](crate::lsystem::MAX_OPEN_POLYGONS)).
+        capacity: usize,
+    },
+    /// A `}` with no polygon open.
+    PolygonNotOpen,
+    /// The string ends inside a polygon: a `{` without its `}`.
+    PolygonNotClosed,
     /// Turtle coordinates or the step left the fixed-point range.
     Overflow,
     /// The step shrank (through `@`) below what fixed point can represent with precision.
@@ -124,6 +140,14 @@ impl fmt::Display for WalkError {
                 f,
                 "the step shrank below fixed-point precision (too many `@` scalings): lower the order"
             ),
+            Self::PolygonTooLarge { capacity } => {
+                write!(f, "a polygon has over {capacity} vertices: record fewer")
+            }
+            Self::PolygonsNestTooDeep { capacity } => {
+                write!(f, "polygons nest over {capacity} deep: close each `{{` sooner")
+            }
+            Self::PolygonNotOpen => write!(f, "a `}}` with no `{{` open"),
+            Self::PolygonNotClosed => write!(f, "a `{{` with no `}}`"),
             Self::StepTooFine => write!(
                 f,
                 "the picture is too many steps across for the target: one step would be under \

@@ -12,16 +12,23 @@
 //!
 //! Several systems to a file, each `name { ... }` on lines of their own. Inside, `key:
 //! value` lines (`axiom:`, `angle:` in degrees, `seed:` for the stochastic choices;
-//! `ignore:` and `define:` are read for the productions that will use them) and
+//! `ignore:` and `define:` are read for the productions that will use them; the general
+//! engine's `width: W S`, `tropism: TX,TY,TZ E`, `colors: RRGGBB ...` and
+//! `homomorphism:`, after which productions apply when drawing only) and
 //! productions `pred --> successor`, one symbol to a string in ABOP's notation
 //! (case-sensitive; `F` draws, `f` moves, `+ - |` turn, `[ ]` branch; spaces between
 //! symbols are dropped), or stochastic alternatives `pred --> successor : probability`.
 //! Productions with context (`lc < pred > rc`), conditions (`: cond`) or parameters are
 //! named in a [`ReadError::Unsupported`] error: this reader does not derive them yet.
 
+use embedded_graphics::pixelcolor::Rgb888;
+
 use super::alphabet::Dialect;
 use super::grammar::Grammar;
-use super::parametric::grammar::{constant, ParametricGrammar, Place, MAX_CONSTANTS};
+use super::parametric::grammar::{
+    constant, ParametricGrammar, Place, DEFAULT_WIDTH_STEP, MAX_CONSTANTS,
+};
+use super::parametric::tropism::Tropism;
 use crate::error::{Error, Location, ReadError, Unsupported};
 use crate::math::{Angle, Real};
 
@@ -217,8 +224,9 @@ impl<'a> LsysEntry<'a> {
                             .map_err(|_| Error::Read(ReadError::NotANumber { at: value_at }))?;
                         seed = Some(number);
                     }
-                    // Kept for the productions that use them, which are not derived yet.
-                    "ignore" | "define" => {}
+                    // Kept for the productions that use them, which are not derived yet;
+                    // the colours are the caller's palette.
+                    "ignore" | "define" | "colors" => {}
                     _ => return Err(Error::Read(ReadError::UnknownLine { at: at(0) })),
                 }
             } else if find_str(text, "-->").is_none() {
@@ -315,6 +323,31 @@ impl<'a> LsysEntry<'a> {
 }
 
 impl<'a> LsysEntry<'a> {
+    /// The colours of its `colors:` line (`colors: 5a3a1e 7a5230 3f6b2a ...`, six
+    /// hexadecimal digits each, spaces or commas between; a `#` starts a comment as
+    /// everywhere), the colour map its colour modules index; empty without one. At most `N` are kept: more is an
+    /// error naming the first one too many.
+    pub fn colors<const N: usize>(&self) -> Result<heapless::Vec<Rgb888, N>, Error> {
+        let mut colors = heapless::Vec::new();
+        for (line, text) in self.lines() {
+            let Some(("colors", value)) = key_value(text) else {
+                continue;
+            };
+            let tokens = value.split([' ', '\t', ',']).filter(|t| !t.is_empty());
+            for token in tokens {
+                let at = Location {
+                    line,
+                    column: u32::try_from(offset(text, token) + 1).unwrap_or(u32::MAX),
+                };
+                let color = hex_color(token).ok_or(Error::Read(ReadError::NotAColor { at }))?;
+                colors
+                    .push(color)
+                    .map_err(|_| Error::Read(ReadError::TooManyColors { max: N, at }))?;
+            }
+        }
+        Ok(colors)
+    }
+
     /// Whether the system needs the general engine (read it with
     /// [`parametric`](Self::parametric) then): parameters, conditions, contexts, or modules
     /// only it interprets, the 3D turns `& ^ \\ / $`, the scale symbols `r R`, the colour
@@ -326,6 +359,7 @@ impl<'a> LsysEntry<'a> {
                 || string.contains(['D', 'T'])
         };
         self.lines().any(|(_, text)| match key_value(text) {
+            Some(("tropism" | "width" | "homomorphism", _)) => true,
             Some((key, value)) => key == "axiom" && (value.contains('(') || general(value)),
             None => split_at_str(text, "-->").is_some_and(|(left, right)| {
                 left.contains(['(', ':', '<', '>']) || right.contains('(') || general(right)
@@ -367,6 +401,21 @@ impl<'a> LsysEntry<'a> {
                     grammar.set_angle(degrees, at)?;
                 }
                 "ignore" => grammar.set_ignore(value),
+                "tropism" => grammar.set_tropism(Some(tropism(value, place(value).at(0))?)),
+                "width" => {
+                    let at = place(value).at(0);
+                    let mut numbers = value.split_whitespace().map(|number| {
+                        Real::parse_signed(number)
+                            .filter(|w| *w >= Real::ZERO)
+                            .ok_or(Error::Read(ReadError::NotANumber { at }))
+                    });
+                    let width = numbers.next().unwrap_or(Ok(Real::ZERO))?;
+                    let step = numbers.next().unwrap_or(Ok(DEFAULT_WIDTH_STEP))?;
+                    if numbers.next().is_some() {
+                        return Err(Error::Read(ReadError::NotANumber { at }));
+                    }
+                    grammar.set_width(width, step);
+                }
                 "seed" => {
                     let seed = value.parse::<u32>().map_err(|_| {
                         Error::Read(ReadError::NotANumber {
@@ -399,6 +448,9 @@ impl<'a> LsysEntry<'a> {
         let mut sums = ProbabilitySums::default();
         for (line, text) in self.lines() {
             let Some((left, right)) = split_at_str(text, "-->") else {
+                if key_value(text).is_some_and(|(key, _)| key == "homomorphism") {
+                    grammar.start_homomorphism();
+                }
                 continue;
             };
             let place = |part: &str| Place {
@@ -435,6 +487,26 @@ impl<'a> LsysEntry<'a> {
         grammar.check_arities()?;
         grammar.check_open()
     }
+}
+
+/// `TX,TY,TZ E`: a tropism's direction and elasticity.
+fn tropism(value: &str, at: Location) -> Result<Tropism, Error> {
+    let malformed = Error::Read(ReadError::MalformedTropism { at });
+    let (direction, elasticity) = value
+        .trim()
+        .split_once(char::is_whitespace)
+        .ok_or(malformed)?;
+    let mut components = direction.split(',').map(|c| Real::parse_signed(c.trim()));
+    let mut next = || components.next().flatten().ok_or(malformed);
+    let direction = [next()?, next()?, next()?];
+    if components.next().is_some() {
+        return Err(malformed);
+    }
+    let elasticity = Real::parse_signed(elasticity.trim()).ok_or(malformed)?;
+    Ok(Tropism {
+        direction,
+        elasticity,
+    })
 }
 
 /// Most distinct left sides with probabilities in one system.
@@ -475,7 +547,9 @@ impl<'a> ProbabilitySums<'a> {
 }
 
 /// Modules only the general engine interprets.
-const GENERAL_MODULES: [char; 11] = ['&', '^', '\\', '/', '$', 'r', 'R', '\'', ';', ',', '%'];
+const GENERAL_MODULES: [char; 16] = [
+    '&', '^', '\\', '/', '$', 'r', 'R', '\'', ';', ',', '%', '{', '}', '.', '!', '_',
+];
 
 /// The value part of a `key: value` line.
 fn value_text(line: &str) -> &str {
@@ -508,6 +582,15 @@ fn find_str(text: &str, pattern: &str) -> Option<usize> {
 fn split_at_str<'t>(text: &'t str, pattern: &str) -> Option<(&'t str, &'t str)> {
     let at = find_str(text, pattern)?;
     Some((text.get(..at)?, text.get(at + pattern.len()..)?))
+}
+
+/// `RRGGBB` in hexadecimal.
+fn hex_color(digits: &str) -> Option<Rgb888> {
+    if digits.len() != 6 || !digits.bytes().all(|b| b.is_ascii_hexdigit()) {
+        return None;
+    }
+    let channel = |at: usize| u8::from_str_radix(digits.get(at..at + 2)?, 16).ok();
+    Some(Rgb888::new(channel(0)?, channel(2)?, channel(4)?))
 }
 
 /// Where `part`, a slice of `line`, starts in it.

@@ -34,6 +34,8 @@ pub(crate) enum Decision {
 pub struct WalkStats {
     /// Segments drawn.
     pub segments: u64,
+    /// Polygons filled (`{ }`).
+    pub polygons: u64,
     /// Symbols read (expanded and interpreted).
     pub symbols: u64,
     /// The deepest the turtle stack got (bracket nesting).
@@ -125,6 +127,7 @@ impl<'g, 'a, const DEPTH: usize, const STACK: usize> Segments<'g, 'a, DEPTH, STA
     pub fn stats(&self) -> WalkStats {
         WalkStats {
             segments: self.segments,
+            polygons: 0,
             symbols: self.walker.symbols_read(),
             max_stack: self.turtle.max_stack(),
             max_depth: self.walker.max_depth(),

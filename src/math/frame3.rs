@@ -9,7 +9,7 @@
 //! number of turns (a test turns it 10⁶ times).
 
 use super::real::Real;
-use super::trig::{BinaryAngle, ONE_Q30};
+use super::trig::{binary_angle_of_radians, BinaryAngle, ONE_Q30};
 
 /// A vector with Q30 components (2³⁰ = 1.0).
 pub(crate) type Unit = [i32; 3];
@@ -55,6 +55,11 @@ fn renormalised(v: Unit) -> Unit {
     v.map(|x| clamp((i64::from(x) * factor + (1 << 30)) >> 31))
 }
 
+/// |v|² in Q60: three squares of values below 2³¹, below 2⁶³.
+fn squared_length(v: Unit) -> u64 {
+    v.iter().map(|&x| u64::from(x.unsigned_abs()).pow(2)).sum()
+}
+
 /// Vectors shorter than this (2⁻²⁰, in Q30) have no direction worth the name: rounding
 /// alone makes them.
 const SHORTEST: i64 = 1 << 10;
@@ -62,8 +67,7 @@ const SHORTEST: i64 = 1 << 10;
 /// `v` scaled to unit length (a square root: for `$`, whose vector may be short); `None`
 /// if it is shorter than [`SHORTEST`].
 fn normalised(v: Unit) -> Option<Unit> {
-    // Three squares of values below 2^31: below 2^63.
-    let squared: u64 = v.iter().map(|&x| u64::from(x.unsigned_abs()).pow(2)).sum();
+    let squared = squared_length(v);
     let length = i64::try_from(squared.isqrt())
         .ok()
         .filter(|&l| l >= SHORTEST)?;
@@ -147,6 +151,35 @@ impl Frame3 {
             self.left = left;
             self.up = cross(self.heading, left);
         }
+    }
+
+    /// Bends the heading towards `towards` (a Q30 unit vector) by `strength`·|H × T|
+    /// radians about H × T (ABOP eq. 2.4, with `strength` the elasticity times |T|), the
+    /// whole frame turning with it. A heading within 2⁻²⁰ of T (or of −T) is not bent: the
+    /// axis has no direction. The angle is clamped to ±2 radians (a Q30 `i32`).
+    pub(crate) fn bend(&mut self, towards: Unit, strength: Real) {
+        let across = cross(self.heading, towards);
+        let Some(axis) = normalised(across) else {
+            return;
+        };
+        let sine = i64::try_from(squared_length(across).isqrt()).unwrap_or(i64::MAX);
+        // strength (Q32) · sine (Q30) >> 32: radians in Q30.
+        let radians = clamp(((i128::from(strength.to_bits()) * i128::from(sine)) >> 32) as i64);
+        let angle = BinaryAngle(binary_angle_of_radians(radians, 30));
+        let (cos, sin) = angle.cos_sin();
+        let turn = |v: Unit| -> Unit {
+            // Rodrigues: v·cos + (a × v)·sin + a·(a · v)·(1 − cos).
+            let along = clamp(mul(clamp(dot(axis, v)), ONE_Q30 - cos));
+            let crossed = cross(axis, v);
+            let mut out = [0; 3];
+            for (((o, &x), &c), &a) in out.iter_mut().zip(&v).zip(&crossed).zip(&axis) {
+                *o = clamp(mul(x, cos) + mul(c, sin) + mul(a, along));
+            }
+            out
+        };
+        self.heading = turn(self.heading);
+        self.left = turn(self.left);
+        self.renormalise();
     }
 
     /// The step `length` along the heading.

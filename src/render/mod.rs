@@ -5,21 +5,25 @@
 //! also where 3D projection belongs, and the relief drawing every height field shares.
 
 pub(crate) mod density;
+pub(crate) mod depth;
 pub(crate) mod fit;
 pub(crate) mod palette;
 pub(crate) mod polygon;
 pub(crate) mod projection;
 pub(crate) mod raster;
 pub(crate) mod relief;
+pub(crate) mod shade;
 pub(crate) mod sink;
 pub(crate) mod space;
 pub(crate) mod subpixel;
+pub(crate) mod thick;
 
 pub use density::{HitCount, DENSITY_LEVELS};
 pub use fit::{Orientation, DEFAULT_MARGIN};
 pub use palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use projection::Projection;
 pub use relief::Relief;
+pub use shade::Shade;
 pub use sink::{DwellBuffer, DwellSink};
 pub use space::DEPTH_LEVELS;
 pub use subpixel::SUBPIXEL_BITS;

@@ -6,6 +6,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
 use super::fit::{fit, Orientation};
+use super::polygon::SubPixel;
 use super::projection::{Eye, Projection, Seen};
 use crate::error::{Error, WalkError};
 use crate::math::Real;
@@ -217,6 +218,35 @@ impl SpaceFit {
         let level = into * i128::from(DEPTH_LEVELS - 1) / i128::from(span);
         u16::try_from(level.clamp(0, i128::from(DEPTH_LEVELS - 1))).unwrap_or(0)
     }
+    /// Where a point of space lands in Q16 pixels on the fill rule's grid (pixel (x, y)
+    /// covers [x, x + 1) × [y, y + 1), so a point [`place`](Self::place) puts on a pixel
+    /// lands on its centre), and how it is seen.
+    pub(crate) fn place_subpixel(&self, p: [Real; 3]) -> (SubPixel, Seen) {
+        let seen = self.projection.project(p, self.eye);
+        let scaled = |v: Real| v.checked_mul(self.scale).unwrap_or(Real::ZERO);
+        let q16 = |v: Real| (v.to_bits() + (1 << 31)) >> 16;
+        let x = self.origin.0.saturating_add(scaled(seen.x));
+        let y = self.origin.1.saturating_sub(scaled(seen.y));
+        ((q16(x), q16(y)), seen)
+    }
+
+    /// Pixels a picture unit (across the screen; a perspective's at its middle depth).
+    pub(crate) const fn scale(&self) -> Real {
+        self.scale
+    }
+
+    /// A depth as a depth buffer's `u16`: 0 the farthest the picture reaches, 65535 the
+    /// nearest.
+    pub(crate) fn buffer_depth(&self, depth: Real) -> u16 {
+        let (low, high) = self.depth;
+        let span = high.to_bits().saturating_sub(low.to_bits());
+        if span <= 0 {
+            return 0;
+        }
+        let into = i128::from(depth.to_bits().saturating_sub(low.to_bits()));
+        u16::try_from((into * 65_535 / i128::from(span)).clamp(0, 65_535)).unwrap_or(0)
+    }
+
     /// Where a point of space lands: its pixel and its projected depth.
     pub(crate) fn place(&self, p: [Real; 3]) -> (Point, Real) {
         let seen = self.projection.project(p, self.eye);

@@ -802,12 +802,14 @@ const fn general(name: &'static str, system: &'static str, order: u32) -> Genera
 }
 
 /// The gallery's systems of the general engine: ABOP's context-sensitive, 3D and
-/// parametric plants, and the lecture's.
+/// parametric plants (leaves filled, widths, tropism), and the lecture's.
 #[rustfmt::skip]
-pub const GENERAL_GALLERY: [GeneralEntry; 6] = [
+pub const GENERAL_GALLERY: [GeneralEntry; 8] = [
     general("hogeweg-plant", "Fig1.31b", 30),
     general("hilbert-3d", "Hilbert3D", 3),
     general("bush-3d", "Fig1.25", 7),
+    general("flowering-plant", "Fig1.26", 5),
+    general("tree-tropism", "Fig2.8a", 6),
     general("monopodial-tree", "MonopodialTree", 10),
     general("sympodial-tree", "SympodialTree", 10),
     general("lecture-plant", "LectureParametric", 7),

@@ -1,6 +1,6 @@
 //! What a derived module does to a turtle: the one reading of ABOP's symbols that the 2D,
-//! the 3D and the matrix turtle share (`F(l)`, `f(l)`, `r`, `R`, colours, `[`, `]`), and the
-//! 2D turtle's commands, turns included.
+//! the 3D and the matrix turtle share (`F(l)`, `f(l)`, `G(l)`, `r`, `R`, colours, widths,
+//! polygons, `[`, `]`), and the 2D turtle's commands, turns included.
 
 use super::values::DerivedModule;
 use crate::lsystem::alphabet::Command;
@@ -30,13 +30,24 @@ impl ColorChange {
     }
 }
 
+/// A change of the line width: `!(w)` and `_(w)` set it, `!` lowers it and `_` raises it
+/// by the system's width step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum WidthChange {
+    Set(Real),
+    Lower,
+    Raise,
+}
+
 /// What a module makes the 2D and the 3D turtle alike do (turns differ).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Action {
-    /// `F(l)`, `f(l)`: `length` steps, drawing or not.
+    /// `F(l)`, `f(l)`, `G(l)`: `length` steps, drawing a line or not; in a polygon none
+    /// draws, and `G` records no vertex.
     Step {
         length: Real,
         draw: bool,
+        vertex: bool,
     },
     /// `r` and `R`: the step times 1/√2 or √2 (the lecture's scale symbols).
     Scale(Real),
@@ -45,7 +56,15 @@ pub(crate) enum Action {
     Color(ColorChange),
     Push,
     Pop,
-    /// Anything else, `!(w)` (line width) included: lines are one pixel wide.
+    /// `!`, `_`: the line width.
+    Width(WidthChange),
+    /// `{`: a polygon starts.
+    StartPolygon,
+    /// `.`: the turtle's position is a vertex of the polygon.
+    Vertex,
+    /// `}`: the polygon closes and is filled.
+    EndPolygon,
+    /// Anything else.
     Nothing,
 }
 
@@ -54,15 +73,22 @@ pub(crate) fn turtle_action(module: &DerivedModule) -> Action {
     let value = module.values.first();
     let color = |c: Real| u8::try_from(c.round_to_i32().clamp(0, 255)).unwrap_or(0);
     match (module.symbol, value) {
-        ('F' | 'f', length) => Action::Step {
+        ('F' | 'f' | 'G', length) => Action::Step {
             length: length.unwrap_or(Real::ONE),
-            draw: module.symbol == 'F',
+            draw: module.symbol != 'f',
+            vertex: module.symbol != 'G',
         },
         ('r', _) => Action::Scale(INV_SQRT_2),
         ('R', _) => Action::Scale(SQRT_2),
         ('\'' | ';' | ',', Some(c)) => Action::Color(ColorChange::Set(color(c))),
         ('\'' | ';', None) => Action::Color(ColorChange::Raise),
         (',', None) => Action::Color(ColorChange::Lower),
+        ('!' | '_', Some(width)) => Action::Width(WidthChange::Set(width)),
+        ('!', None) => Action::Width(WidthChange::Lower),
+        ('_', None) => Action::Width(WidthChange::Raise),
+        ('{', _) => Action::StartPolygon,
+        ('.', _) => Action::Vertex,
+        ('}', _) => Action::EndPolygon,
         ('[', _) => Action::Push,
         (']', _) => Action::Pop,
         _ => Action::Nothing,
@@ -82,10 +108,13 @@ pub(crate) fn command(module: &DerivedModule) -> Command {
         _ => match turtle_action(module) {
             Action::Step { draw: true, .. } if value.is_none() => Command::Draw,
             Action::Step { draw: false, .. } if value.is_none() => Command::Move,
-            Action::Step { length, draw: true } => Command::DrawBy(length),
+            Action::Step {
+                length, draw: true, ..
+            } => Command::DrawBy(length),
             Action::Step {
                 length,
                 draw: false,
+                ..
             } => Command::MoveBy(length),
             Action::Scale(factor) => Command::Scale(factor),
             Action::Color(ColorChange::Set(c)) => Command::SetColor(c),
@@ -93,7 +122,12 @@ pub(crate) fn command(module: &DerivedModule) -> Command {
             Action::Color(ColorChange::Lower) => Command::LowerColor(1),
             Action::Push => Command::Push,
             Action::Pop => Command::Pop,
-            Action::Nothing => Command::Nothing,
+            // Systems that use them are drawn by the 3D turtle.
+            Action::Width(_)
+            | Action::StartPolygon
+            | Action::Vertex
+            | Action::EndPolygon
+            | Action::Nothing => Command::Nothing,
         },
     }
 }

@@ -192,6 +192,8 @@ pub(crate) fn expand_in_context<const DEPTH: usize>(
         key: 0,
         path: 0,
         bound: super::values::Values::default(),
+        growing: false,
+        drawn: false,
     });
     let id = path_of(parent.path, at);
     if let Some(expansion) = expansions.get(level, id, take) {

@@ -10,7 +10,9 @@ use super::action::command;
 use super::context::MAX_CONTEXT_SLOTS;
 use super::environment::{Environment, Held};
 use super::grammar::ParametricGrammar;
-use super::space::{draw_segments, Segments3};
+use super::marks::{MarkPoints, Marks3, Segments3, WalkOptions};
+use super::paint::{paint, Flat, Lighting, Lit};
+use super::tropism::{Tropism, Wind};
 use super::walker::ParametricWalker;
 use crate::error::{DrawError, Error, FitError};
 use crate::lsystem::alphabet::Dialect;
@@ -20,9 +22,12 @@ use crate::lsystem::segments::{next_segment, WalkStats};
 use crate::lsystem::sizing::{fitted_start, measure, pixel_box, Bounds};
 use crate::lsystem::turtle::{Segment, Start, Turtle, DEFAULT_STACK};
 use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
+use crate::math::Real;
+use crate::render::depth::{DepthTested, Layered, Unsorted};
 use crate::render::fit::{Orientation, DEFAULT_MARGIN};
 use crate::render::palette::{Colors, Palette};
 use crate::render::projection::Projection;
+use crate::render::shade::Shade;
 use crate::render::space::SpaceFit;
 #[cfg(doc)]
 use crate::render::space::DEPTH_LEVELS;
@@ -47,7 +52,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     /// The segments of `grammar` at `order` from `start`.
     pub fn new(grammar: &'g ParametricGrammar, order: u32, start: Start) -> Result<Self, Error> {
         Ok(Self {
-            walker: ParametricWalker::new(grammar, order)?,
+            walker: ParametricWalker::new(grammar, order)?.drawing(),
             turtle: Turtle::new(grammar.headings(), Dialect::Abop, start, false)?,
             segments: 0,
             failed: false,
@@ -56,6 +61,13 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
 
     fn budget(mut self, symbols: u64) -> Self {
         self.walker = self.walker.with_budget(symbols);
+        self
+    }
+
+    fn growing(mut self, growth: Option<Real>) -> Self {
+        if let Some(fraction) = growth {
+            self.walker = self.walker.growing(fraction);
+        }
         self
     }
 
@@ -98,6 +110,9 @@ pub struct ParametricLSystem<
     projection: Option<Projection>,
     depth_cue: bool,
     environment: Option<Held<'g>>,
+    /// A tropism in place of the system's own (`Some(None)`: none).
+    tropism: Option<Option<Tropism>>,
+    growth: Option<Real>,
 }
 
 impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
@@ -113,6 +128,36 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
             projection: None,
             depth_cue: false,
             environment: None,
+            tropism: None,
+            growth: None,
+        }
+    }
+
+    /// Bends every step under `tropism` instead of the system's own `tropism:` (`None`:
+    /// no tropism): wind sways a plant this way (see [`Wind`](crate::lsystem::Wind)).
+    #[must_use]
+    pub const fn with_tropism(mut self, tropism: Option<Tropism>) -> Self {
+        self.tropism = Some(tropism);
+        self
+    }
+
+    /// Draws the plant `fraction` (0 to 1) of the way grown from order n − 1 to this
+    /// order n: the last order's new modules grow in (see
+    /// [`ParametricWalker::growing`]). Fit the full-grown plant and draw the growing one
+    /// with its placement for a plant that grows where it stands.
+    #[must_use]
+    pub const fn growing(mut self, fraction: Real) -> Self {
+        self.growth = Some(fraction);
+        self
+    }
+
+    /// The walk options of this drawing.
+    const fn options(&self) -> WalkOptions<'g> {
+        WalkOptions {
+            budget: self.budget,
+            environment: self.environment,
+            tropism: self.tropism,
+            growth: self.growth,
         }
     }
 
@@ -146,7 +191,11 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         match self.projection {
             Some(projection) => Some(projection),
             None if self.grammar.is_3d() => Some(Projection::default()),
-            None if self.grammar.uses_environment() || self.grammar.is_matrix() => {
+            None if self.grammar.uses_environment()
+                || self.grammar.is_matrix()
+                || self.grammar.draws_surfaces()
+                || matches!(self.tropism, Some(Some(_))) =>
+            {
                 Some(Projection::Front)
             }
             None => None,
@@ -156,13 +205,19 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     /// The 3D segments, in turtle units.
     pub fn segments_3d(&self) -> Result<Segments3<'g, DEPTH, STACK, SLOTS>, Error> {
         check_order(self.order, DEPTH)?;
+        Ok(Segments3::from_marks(self.walk_3d()))
+    }
+
+    /// Everything it draws in 3D (lines with widths, polygons), in turtle units.
+    pub fn marks(&self) -> Result<Marks3<'g, DEPTH, STACK, SLOTS>, Error> {
+        check_order(self.order, DEPTH)?;
         Ok(self.walk_3d())
     }
 
     /// The 3D walk, built in one piece (an order too high is its first item).
     #[inline(always)]
-    fn walk_3d(&self) -> Segments3<'g, DEPTH, STACK, SLOTS> {
-        Segments3::starting(self.grammar, self.order, self.budget, self.environment)
+    fn walk_3d(&self) -> Marks3<'g, DEPTH, STACK, SLOTS> {
+        Marks3::starting(self.grammar, self.order, self.options())
     }
 
     /// [`fit`](Self::fit) in 3D, out of line: its walks do not share a frame with the
@@ -175,7 +230,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         palette: P,
     ) -> Result<ParametricDrawing<'g, P, DEPTH, STACK, SLOTS>, Error> {
         let space = SpaceFit::new(
-            || self.walk_3d().map(|s| s.map(|s| [s.start, s.end])),
+            || MarkPoints::new(self.walk_3d()),
             projection,
             self.depth_cue,
             area,
@@ -183,6 +238,40 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         )?;
         Ok(ParametricDrawing {
             system: *self,
+            start: Start::default(),
+            palette,
+            bounding_box: space.bounding_box,
+            space: Some(space),
+        })
+    }
+
+    /// Fits the plant as it sways in `wind` over a loop of `frames` (the union of every
+    /// frame's picture, so no frame leaves the area), seen through its projection (from
+    /// the front unless it turns in space); draw frame k with
+    /// [`ParametricDrawing::with_tropism`]`(Some(wind.tropism_at(own, k, frames)))`.
+    pub fn fit_in_wind<'p, C: PixelColor>(
+        &self,
+        area: Rectangle,
+        palette: &'p [C],
+        wind: &Wind,
+        frames: u32,
+    ) -> Result<ParametricDrawing<'g, Colors<'p, C>, DEPTH, STACK, SLOTS>, Error> {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        let palette = colors(palette)?;
+        let own = self.tropism.unwrap_or(self.grammar.tropism());
+        let swaying = |frame: u32| self.with_tropism(Some(wind.tropism_at(own, frame, frames)));
+        let projection = self.projection().unwrap_or(Projection::Front);
+        let space = SpaceFit::new(
+            || (0..frames.max(1)).flat_map(move |frame| MarkPoints::new(swaying(frame).walk_3d())),
+            projection,
+            self.depth_cue,
+            &area,
+            DEFAULT_MARGIN,
+        )?;
+        Ok(ParametricDrawing {
+            system: swaying(0),
             start: Start::default(),
             palette,
             bounding_box: space.bounding_box,
@@ -205,7 +294,9 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     }
 
     fn segments(&self, start: Start) -> Result<ParametricSegments<'g, DEPTH, STACK, SLOTS>, Error> {
-        Ok(ParametricSegments::new(self.grammar, self.order, start)?.budget(self.budget))
+        Ok(ParametricSegments::new(self.grammar, self.order, start)?
+            .budget(self.budget)
+            .growing(self.growth))
     }
 
     /// Scales and centres the drawing into `area` (less a margin), colours from `palette`
@@ -262,6 +353,27 @@ pub struct ParametricDrawing<
     space: Option<SpaceFit>,
 }
 
+impl<P, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
+    ParametricDrawing<'_, P, DEPTH, STACK, SLOTS>
+{
+    /// The same placement, the plant bent by `tropism` instead (a frame of a plant in the
+    /// wind fitted by [`ParametricLSystem::fit_in_wind`]).
+    #[must_use]
+    pub const fn with_tropism(mut self, tropism: Option<Tropism>) -> Self {
+        self.system = self.system.with_tropism(tropism);
+        self
+    }
+
+    /// The same placement, the plant at `order` grown `fraction` of the way from the order
+    /// below (a frame of a plant growing where it stands: fit the full-grown one).
+    #[must_use]
+    pub const fn growing(mut self, order: u32, fraction: Real) -> Self {
+        self.system.order = order;
+        self.system = self.system.growing(fraction);
+        self
+    }
+}
+
 impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     ParametricDrawing<'_, P, DEPTH, STACK, SLOTS>
 {
@@ -271,7 +383,7 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         D: DrawTarget<Color = P::Color>,
     {
         match self.space {
-            Some(space) => self.draw_3d(&space, target),
+            Some(space) => self.draw_3d::<_, Flat>(&space, &mut Unsorted(target)),
             None => self.draw_2d(target),
         }
     }
@@ -304,16 +416,47 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
 {
     /// The 3D draw, out of line: its walk does not share a frame with the 2D draw's.
     #[inline(never)]
-    fn draw_3d<D>(&self, space: &SpaceFit, target: &mut D) -> Result<WalkStats, DrawError<D::Error>>
+    fn draw_3d<T, L>(
+        &self,
+        space: &SpaceFit,
+        target: &mut T,
+    ) -> Result<WalkStats, DrawError<T::Error>>
     where
-        D: DrawTarget<Color = P::Color>,
+        T: Layered<Color = P::Color>,
+        L: Lighting<P::Color>,
     {
-        let mut segments = self.system.walk_3d();
-        draw_segments(space, target, segments.by_ref(), &self.palette)?;
+        let mut marks = self.system.walk_3d();
+        let (lines, polygons) =
+            paint::<_, _, L, DEPTH, STACK, SLOTS>(space, target, &mut marks, &self.palette)?;
         Ok(WalkStats {
-            segments: segments.segments(),
+            segments: lines,
+            polygons,
             ..WalkStats::default()
         })
+    }
+
+    /// Draws with surfaces in light (each polygon shaded by its normal) and, given a
+    /// `depth` buffer (one `u16` a pixel of the target's bounding box, emptied here),
+    /// nearer surfaces and lines hiding farther ones; without one, in walk order.
+    pub fn try_draw_lit<D>(
+        &self,
+        target: &mut D,
+        depth: Option<&mut [u16]>,
+    ) -> Result<WalkStats, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+        P::Color: Shade,
+    {
+        let Some(space) = self.space else {
+            return self.draw_2d(target);
+        };
+        match depth {
+            Some(buffer) => {
+                let mut tested = DepthTested::new(target, buffer)?;
+                self.draw_3d::<_, Lit>(&space, &mut tested)
+            }
+            None => self.draw_3d::<_, Lit>(&space, &mut Unsorted(target)),
+        }
     }
 }
 

@@ -2,7 +2,7 @@
 //! condition, probability), the values that production binds, and the walk's frame of it.
 
 use super::expr::{evaluate, EvalError, Query};
-use super::grammar::{Module, Neighbour, ParametricGrammar, Production};
+use super::grammar::{Module, Neighbour, ParametricGrammar, Production, Rewrite};
 use super::values::Values;
 use crate::error::{Arithmetic, Error, WalkError};
 use crate::lsystem::choice::{child_key, kept, pick};
@@ -20,6 +20,11 @@ pub(crate) struct Frame {
     /// The same place hashed to 64 bits: which expansion a context search remembered.
     pub(super) path: u64,
     pub(super) bound: Values,
+    /// Whether its modules are new in a growing walk (see
+    /// [`ParametricWalker::growing`](super::walker::ParametricWalker::growing)).
+    pub(super) growing: bool,
+    /// Whether it is a homomorphism's successor: its modules are handed out as they are.
+    pub(super) drawn: bool,
 }
 
 /// The place of the expansion of the module at `at` inside the expansion `parent` (the
@@ -103,10 +108,23 @@ impl ParametricGrammar {
         contexts: (Option<&Neighbour>, Option<&Neighbour>),
         query: Query,
     ) -> Result<Expansion, Error> {
+        self.expand_by(Rewrite::Derivation, module, at, parent, contexts, query)
+    }
+
+    /// [`expand`](Self::expand) by the derivation's or the homomorphism's productions.
+    pub(super) fn expand_by(
+        &self,
+        rewrite: Rewrite,
+        module: &Neighbour,
+        at: u16,
+        parent: &Frame,
+        contexts: (Option<&Neighbour>, Option<&Neighbour>),
+        query: Query,
+    ) -> Result<Expansion, Error> {
         let key = child_key(parent.key, at);
         let (left, right) = contexts;
         let choice = self
-            .production_for(module, left, right, key, query)
+            .production_for(rewrite, module, left, right, key, query)
             .map_err(|problem| arithmetic(module.symbol, problem))?;
         let kept = kept(key);
         let path = path_of(parent.path, at);
@@ -120,6 +138,8 @@ impl ParametricGrammar {
                     key: kept,
                     path,
                     bound,
+                    growing: false,
+                    drawn: false,
                 })
             }
             None if self.is_contextual(module.symbol) => Expansion::Kept(Frame {
@@ -128,6 +148,8 @@ impl ParametricGrammar {
                 key: kept,
                 path,
                 bound: parent.bound,
+                growing: parent.growing,
+                drawn: false,
             }),
             None => Expansion::Final,
         })
@@ -206,27 +228,30 @@ impl ParametricGrammar {
     /// picked by `key` with its weight's share.
     pub(super) fn production_for(
         &self,
+        rewrite: Rewrite,
         module: &Neighbour,
         left: Option<&Neighbour>,
         right: Option<&Neighbour>,
         key: u32,
         query: Query,
     ) -> Result<Option<(u8, Values)>, EvalError> {
+        let (first, productions) = self.rewriting(rewrite);
+        let index_of = |index: usize| u8::try_from(first + index).ok();
         let mut total = 0u64;
-        for (index, production) in self.productions.iter().enumerate() {
+        for (index, production) in productions.iter().enumerate() {
             let Some(bound) = self.binding(production, module, left, right, query)? else {
                 continue;
             };
             if production.weight == 0 {
                 if total == 0 {
-                    return Ok(u8::try_from(index).ok().map(|index| (index, bound)));
+                    return Ok(index_of(index).map(|index| (index, bound)));
                 }
                 continue;
             }
             total += u64::from(production.weight);
         }
         let mut pick = pick(key, total);
-        for (index, production) in self.productions.iter().enumerate() {
+        for (index, production) in productions.iter().enumerate() {
             if production.weight == 0 {
                 continue;
             }
@@ -235,7 +260,7 @@ impl ParametricGrammar {
             };
             let weight = u64::from(production.weight);
             if pick < weight {
-                return Ok(u8::try_from(index).ok().map(|index| (index, bound)));
+                return Ok(index_of(index).map(|index| (index, bound)));
             }
             pick -= weight;
         }

@@ -4,6 +4,7 @@
 use heapless::Vec;
 
 use super::expr::{compile, evaluate, Code, Instr, Names, SyntaxError, MAX_CODE};
+use super::tropism::Tropism;
 use super::values::{Values, MAX_PARAMS};
 use crate::error::{Error, Location, ReadError, Unsupported};
 use crate::lsystem::alphabet::SymbolSet;
@@ -63,6 +64,14 @@ pub(super) struct Production {
     pub(super) successor_at: Place,
 }
 
+/// Which productions rewrite a module: the derivation's, or the homomorphism's (applied
+/// once, when drawing).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Rewrite {
+    Derivation,
+    Homomorphism,
+}
+
 /// A module next to the one being rewritten, as a context sees it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct Neighbour {
@@ -91,7 +100,20 @@ pub struct ParametricGrammar {
     pub(super) seed: u32,
     /// Whether any module turns in space (`& ^ \\ / $`).
     pub(super) three_d: bool,
+    /// Whether any module draws a surface or a width (`{ } . ! _`), or a tropism bends it.
+    pub(super) surfaces: bool,
+    /// Where the homomorphism's productions start among `productions` (all of them are
+    /// the derivation's when it is `productions.len()` or more).
+    pub(super) homomorphism_from: u8,
+    /// The tropism (`tropism:`), if any.
+    pub(super) tropism: Option<Tropism>,
+    /// The initial line width and the step of `!` and `_` (`width:`), in turtle units.
+    pub(super) width: (Real, Real),
 }
+
+/// The step of `!` and `_` without a parameter when `width:` gives none: a tenth of a
+/// unit step.
+pub(crate) const DEFAULT_WIDTH_STEP: Real = Real::from_bits((1 << 32) / 10);
 
 /// What a text position is, for errors: `base` is where `text` starts.
 #[derive(Debug, Clone, Copy)]
@@ -197,6 +219,10 @@ impl ParametricGrammar {
             contextual: SymbolSet::default(),
             seed: 0,
             three_d: false,
+            surfaces: false,
+            homomorphism_from: u8::MAX,
+            tropism: None,
+            width: (Real::ZERO, DEFAULT_WIDTH_STEP),
         }
     }
 
@@ -213,6 +239,56 @@ impl ParametricGrammar {
         self.contextual = SymbolSet::default();
         self.seed = 0;
         self.three_d = false;
+        self.surfaces = false;
+        self.homomorphism_from = u8::MAX;
+        self.tropism = None;
+        self.width = (Real::ZERO, DEFAULT_WIDTH_STEP);
+    }
+
+    /// The productions of a rewriting, and the index of the first among all.
+    pub(super) fn rewriting(&self, rewrite: Rewrite) -> (usize, &[Production]) {
+        let from = usize::from(self.homomorphism_from).min(self.productions.len());
+        match rewrite {
+            Rewrite::Derivation => (0, self.productions.get(..from).unwrap_or_default()),
+            Rewrite::Homomorphism => (from, self.productions.get(from..).unwrap_or_default()),
+        }
+    }
+
+    /// Whether it has a homomorphism: productions applied once, when drawing.
+    pub fn has_homomorphism(&self) -> bool {
+        usize::from(self.homomorphism_from) < self.productions.len()
+    }
+
+    /// Starts the homomorphism: productions added from now on apply when drawing only.
+    pub(crate) fn start_homomorphism(&mut self) {
+        self.homomorphism_from = u8::try_from(self.productions.len()).unwrap_or(u8::MAX);
+    }
+
+    /// Whether it draws surfaces or widths (`{ } . ! _`) or bends under a tropism: it is
+    /// drawn by the 3D turtle, from the front unless it turns in space.
+    pub fn draws_surfaces(&self) -> bool {
+        self.surfaces || self.tropism.is_some()
+    }
+
+    /// Its tropism (`tropism:`), if any.
+    pub const fn tropism(&self) -> Option<Tropism> {
+        self.tropism
+    }
+
+    /// Sets its tropism.
+    pub fn set_tropism(&mut self, tropism: Option<Tropism>) {
+        self.tropism = tropism;
+    }
+
+    /// Its initial line width and the step of `!` and `_`, in turtle units (a step `F`
+    /// is one).
+    pub const fn width(&self) -> (Real, Real) {
+        self.width
+    }
+
+    /// Sets the initial line width and the step of `!` and `_`.
+    pub(crate) fn set_width(&mut self, width: Real, step: Real) {
+        self.width = (width, step);
     }
 
     /// Seeds the choices among stochastic productions (see
@@ -348,6 +424,7 @@ impl ParametricGrammar {
                 return Err(Error::Read(ReadError::NonAsciiSymbol { at: place.at(at) }));
             }
             self.three_d |= b"&^\\/$".contains(&symbol);
+            self.surfaces |= b"{}.!_".contains(&symbol);
             match symbol {
                 b'[' => {
                     if depth == 0 {
@@ -499,6 +576,12 @@ impl ParametricGrammar {
         let (text, successor_place) = successor;
         let (start, end) = self.modules_of(text, &names, constants, successor_place)?;
         if left.is_some() || right.is_some() {
+            if self.has_homomorphism_started() {
+                return Err(Error::Read(ReadError::Unsupported {
+                    feature: Unsupported::ContextInHomomorphism,
+                    at: predecessor_place.at(0),
+                }));
+            }
             self.contextual.insert(predecessor.symbol);
         }
         self.productions
@@ -518,6 +601,11 @@ impl ParametricGrammar {
                     at: predecessor_place.at(0),
                 })
             })
+    }
+
+    /// Whether `homomorphism:` has been read: productions go to the homomorphism.
+    fn has_homomorphism_started(&self) -> bool {
+        usize::from(self.homomorphism_from) <= self.productions.len()
     }
 
     /// The instructions of one expression.

@@ -77,7 +77,7 @@ impl<const STACK: usize> MatrixTurtle<STACK> {
             ('-', None) => self.matrix.rotate(negated(self.turn))?,
             ('|', _) => self.matrix.rotate(BinaryAngle(1 << 31))?,
             _ => match turtle_action(module) {
-                Action::Step { length, draw } => {
+                Action::Step { length, draw, .. } => {
                     let segment = draw.then(|| self.segment(length)).transpose()?;
                     self.matrix.translate(length, Real::ZERO)?;
                     return Ok(segment);
@@ -93,7 +93,12 @@ impl<const STACK: usize> MatrixTurtle<STACK> {
                         (self.matrix, self.color) = (matrix, color);
                     }
                 }
-                Action::Nothing => {}
+                // The matrix notation draws lines only.
+                Action::Width(_)
+                | Action::StartPolygon
+                | Action::Vertex
+                | Action::EndPolygon
+                | Action::Nothing => {}
             },
         }
         Ok(None)

@@ -12,30 +12,25 @@
 //! Without a parameter a turn is the system's `angle:`. The turtle starts at the origin
 //! heading up (+y), left towards −x and up towards the viewer (+z), so a system turned only
 //! by `+` and `-` draws in the plane z = 0 exactly as the 2D turtle heading up would.
-//! `F(l)`, `f(l)`, `[ ]`, `r`, `R` and the colour modules act as in 2D.
+//! `F(l)`, `f(l)`, `[ ]`, `r`, `R` and the colour modules act as in 2D. It also draws
+//! the book's surfaces and widths: polygons (`{ . }`, see [`surface`](super::surface)),
+//! line widths (`!(w)` and `_(w)` set it in turtle units, `!` and `_` lower and raise it
+//! by the system's width step), and bends each step under a tropism
+//! ([`tropism`](super::tropism)).
 
-use embedded_graphics::prelude::*;
 use heapless::Vec;
 
-use super::action::{turtle_action, Action};
-use super::context::MAX_CONTEXT_SLOTS;
-use super::environment::{Environment, Held, TurtleState};
+use super::action::{turtle_action, Action, WidthChange};
+use super::environment::TurtleState;
 use super::grammar::ParametricGrammar;
 use super::matrix::MatrixTurtle;
+use super::surface::Polygons;
+use super::tropism::{Bend, Tropism};
 use super::values::DerivedModule;
-use super::walker::ParametricWalker;
-use crate::error::{DrawError, Error, WalkError};
-use crate::lsystem::segments::next_segment;
-use crate::lsystem::turtle::DEFAULT_STACK;
-use crate::lsystem::walker::{check_order, DEFAULT_BUDGET, DEFAULT_DEPTH};
+use crate::error::{Error, WalkError};
 use crate::math::frame3::{Axis, Frame3};
 use crate::math::trig::BinaryAngle;
 use crate::math::{Angle, Real};
-use crate::render::palette::Palette;
-use crate::render::raster::draw_line;
-#[cfg(doc)]
-use crate::render::space::DEPTH_LEVELS;
-use crate::render::space::{middle, SpaceFit};
 
 pub use crate::render::space::Segment3;
 
@@ -46,6 +41,18 @@ struct State3 {
     frame: Frame3,
     step: Real,
     color: u8,
+    /// The line width in turtle units (0: one pixel).
+    width: Real,
+}
+
+/// What a module drew.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Drawn {
+    /// A line, `width` turtle units wide (0: one pixel).
+    Line { segment: Segment3, width: Real },
+    /// A polygon closed (its vertices are the turtle's
+    /// [`closed_polygon`](AnyTurtle::closed_polygon)), in colour `color`.
+    Polygon { color: u8 },
 }
 
 /// The system's turn as a binary angle.
@@ -59,12 +66,17 @@ pub(crate) fn binary_angle(angle: Angle) -> BinaryAngle {
     }
 }
 
-/// The 3D turtle: a state and a stack of saved states (`STACK` deep).
+/// The 3D turtle: a state and a stack of saved states (`STACK` deep), the polygons it is
+/// recording, and the tropism that bends it.
 #[derive(Debug, Clone)]
 pub(crate) struct Turtle3<const STACK: usize> {
     turn: BinaryAngle,
     state: State3,
     stack: Vec<State3, STACK>,
+    /// The step of `!` and `_` without a parameter.
+    width_step: Real,
+    bend: Option<Bend>,
+    polygons: Polygons,
 }
 
 impl<const STACK: usize> Turtle3<STACK> {
@@ -80,7 +92,9 @@ impl<const STACK: usize> Turtle3<STACK> {
         }
     }
 
-    pub(crate) fn new(turn: BinaryAngle) -> Self {
+    /// A turtle turning by `turn`, with lines `width.0` wide (changed by `width.1` a `!`
+    /// or `_`), bent by `tropism` after each step.
+    pub(crate) fn new(turn: BinaryAngle, width: (Real, Real), tropism: Option<Tropism>) -> Self {
         Self {
             turn,
             state: State3 {
@@ -88,9 +102,23 @@ impl<const STACK: usize> Turtle3<STACK> {
                 frame: Frame3::default(),
                 step: Real::ONE,
                 color: 0,
+                width: width.0,
             },
             stack: Vec::new(),
+            width_step: width.1,
+            bend: tropism.and_then(|t| t.bend()),
+            polygons: Polygons::default(),
         }
+    }
+
+    /// The vertices of the polygon the last module closed (empty if it closed none).
+    pub(crate) fn closed_polygon(&self) -> &[[Real; 3]] {
+        self.polygons.closed()
+    }
+
+    /// At the end of the walk: an error if a polygon is still open.
+    pub(crate) fn finish(&mut self) -> Result<(), Error> {
+        self.polygons.finish()
     }
 
     fn rotate(&mut self, axis: Axis, degrees: Option<Real>, positive: bool) {
@@ -103,8 +131,9 @@ impl<const STACK: usize> Turtle3<STACK> {
         self.state.frame.rotate(axis, angle);
     }
 
-    /// Moves `length` steps along the heading; the segment if `draw`.
-    fn advance(&mut self, length: Real, draw: bool) -> Result<Option<Segment3>, Error> {
+    /// Moves `length` steps along the heading, then bends under the tropism; the line if
+    /// `draw` (none inside a polygon, where the move records a vertex if `vertex`).
+    fn advance(&mut self, length: Real, draw: bool, vertex: bool) -> Result<Option<Drawn>, Error> {
         let overflow = Error::Walk(WalkError::Overflow);
         let length = length.checked_mul(self.state.step).ok_or(overflow)?;
         let delta = self.state.frame.step(length);
@@ -114,15 +143,39 @@ impl<const STACK: usize> Turtle3<STACK> {
             *e = e.checked_add(d).ok_or(overflow)?;
         }
         self.state.position = end;
-        Ok(draw.then_some(Segment3 {
-            start,
-            end,
-            color: self.state.color,
+        if let Some(bend) = self.bend {
+            self.state.frame.bend(bend.towards, bend.strength);
+        }
+        if self.polygons.recording() {
+            if vertex {
+                self.polygons.moved(end)?;
+            }
+            return Ok(None);
+        }
+        Ok(draw.then_some(Drawn::Line {
+            segment: Segment3 {
+                start,
+                end,
+                color: self.state.color,
+            },
+            width: self.state.width,
         }))
     }
 
-    /// Does what `module` says; the segment it draws, if any.
-    pub(crate) fn execute(&mut self, module: &DerivedModule) -> Result<Option<Segment3>, Error> {
+    /// `!`, `_`: the new line width (never below 0).
+    fn change_width(&mut self, change: WidthChange) {
+        let width = self.state.width;
+        self.state.width = match change {
+            WidthChange::Set(w) => w,
+            WidthChange::Lower => width.saturating_sub(self.width_step),
+            WidthChange::Raise => width.saturating_add(self.width_step),
+        }
+        .max(Real::ZERO);
+    }
+
+    /// Does what `module` says; what it draws, if anything.
+    pub(crate) fn execute(&mut self, module: &DerivedModule) -> Result<Option<Drawn>, Error> {
+        self.polygons.settle();
         let value = module.values.first();
         let positive = matches!(module.symbol, '+' | '&' | '\\');
         match module.symbol {
@@ -132,7 +185,11 @@ impl<const STACK: usize> Turtle3<STACK> {
             '|' => self.state.frame.rotate(Axis::Up, BinaryAngle(1 << 31)),
             '$' => self.state.frame.roll_to_horizontal(),
             _ => match turtle_action(module) {
-                Action::Step { length, draw } => return self.advance(length, draw),
+                Action::Step {
+                    length,
+                    draw,
+                    vertex,
+                } => return self.advance(length, draw, vertex),
                 Action::Scale(factor) => {
                     self.state.step = self
                         .state
@@ -150,6 +207,15 @@ impl<const STACK: usize> Turtle3<STACK> {
                         self.state = state;
                     }
                 }
+                Action::Width(change) => self.change_width(change),
+                Action::StartPolygon => self.polygons.start(self.state.position)?,
+                Action::Vertex => self.polygons.vertex(self.state.position)?,
+                Action::EndPolygon => {
+                    self.polygons.end()?;
+                    return Ok(Some(Drawn::Polygon {
+                        color: self.state.color,
+                    }));
+                }
                 Action::Nothing => {}
             },
         }
@@ -158,14 +224,42 @@ impl<const STACK: usize> Turtle3<STACK> {
 }
 
 /// The 3D turtle, or the matrix turtle for a system in the matrix notation.
+// Not boxed: no heap; a walk holds one turtle, whichever it is.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
-enum AnyTurtle<const STACK: usize> {
+pub(crate) enum AnyTurtle<const STACK: usize> {
     Space(Turtle3<STACK>),
     Matrix(MatrixTurtle<STACK>),
 }
 
 impl<const STACK: usize> AnyTurtle<STACK> {
-    fn state(&self) -> TurtleState {
+    /// The turtle for `grammar`, bent by `tropism`.
+    pub(crate) fn for_grammar(grammar: &ParametricGrammar, tropism: Option<Tropism>) -> Self {
+        let turn = binary_angle(grammar.angle());
+        if grammar.is_matrix() {
+            Self::Matrix(MatrixTurtle::new(turn))
+        } else {
+            Self::Space(Turtle3::new(turn, grammar.width(), tropism))
+        }
+    }
+
+    /// The vertices of the polygon the last module closed.
+    pub(crate) fn closed_polygon(&self) -> &[[Real; 3]] {
+        match self {
+            Self::Space(turtle) => turtle.closed_polygon(),
+            Self::Matrix(_) => &[],
+        }
+    }
+
+    /// At the end of the walk: an error if a polygon is still open.
+    pub(crate) fn finish(&mut self) -> Result<(), Error> {
+        match self {
+            Self::Space(turtle) => turtle.finish(),
+            Self::Matrix(_) => Ok(()),
+        }
+    }
+
+    pub(crate) fn state(&self) -> TurtleState {
         match self {
             Self::Space(turtle) => turtle.state(),
             Self::Matrix(turtle) => {
@@ -175,130 +269,13 @@ impl<const STACK: usize> AnyTurtle<STACK> {
         }
     }
 
-    fn execute(&mut self, module: &DerivedModule) -> Result<Option<Segment3>, Error> {
+    pub(crate) fn execute(&mut self, module: &DerivedModule) -> Result<Option<Drawn>, Error> {
         match self {
             Self::Space(turtle) => turtle.execute(module),
-            Self::Matrix(turtle) => turtle.execute(module),
+            Self::Matrix(turtle) => Ok(turtle.execute(module)?.map(|segment| Drawn::Line {
+                segment,
+                width: Real::ZERO,
+            })),
         }
     }
-}
-
-/// The segments a 3D system draws at an order, in turtle units, computed on the fly.
-#[derive(Debug, Clone)]
-pub struct Segments3<
-    'g,
-    const DEPTH: usize = DEFAULT_DEPTH,
-    const STACK: usize = DEFAULT_STACK,
-    const SLOTS: usize = MAX_CONTEXT_SLOTS,
-> {
-    walker: ParametricWalker<'g, DEPTH, SLOTS>,
-    turtle: AnyTurtle<STACK>,
-    environment: Option<Held<'g>>,
-    segments: u64,
-    failed: bool,
-}
-
-impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
-    Segments3<'g, DEPTH, STACK, SLOTS>
-{
-    /// The segments of `grammar` at `order`, from the origin, one unit a step.
-    pub fn new(grammar: &'g ParametricGrammar, order: u32) -> Result<Self, Error> {
-        check_order(order, DEPTH)?;
-        Ok(Self::starting(grammar, order, DEFAULT_BUDGET, None))
-    }
-
-    /// Built in one piece, as [`ParametricWalker::starting`] is.
-    #[inline(always)]
-    pub(crate) fn starting(
-        grammar: &'g ParametricGrammar,
-        order: u32,
-        budget: u64,
-        environment: Option<Held<'g>>,
-    ) -> Self {
-        Self {
-            walker: ParametricWalker::starting(grammar, order, budget),
-            turtle: if grammar.is_matrix() {
-                AnyTurtle::Matrix(MatrixTurtle::new(binary_angle(grammar.angle())))
-            } else {
-                AnyTurtle::Space(Turtle3::new(binary_angle(grammar.angle())))
-            },
-            environment,
-            segments: 0,
-            failed: false,
-        }
-    }
-
-    /// Caps the walk at `symbols` modules.
-    #[must_use]
-    pub fn with_budget(mut self, symbols: u64) -> Self {
-        self.walker = self.walker.with_budget(symbols);
-        self
-    }
-
-    /// Grows an open system in `environment`: `env(k)` asks it about the turtle.
-    #[must_use]
-    pub fn with_environment(mut self, environment: &'g dyn Environment) -> Self {
-        self.environment = Some(Held(environment));
-        self
-    }
-
-    /// Segments drawn so far.
-    pub const fn segments(&self) -> u64 {
-        self.segments
-    }
-}
-
-impl<const DEPTH: usize, const STACK: usize, const SLOTS: usize> Iterator
-    for Segments3<'_, DEPTH, STACK, SLOTS>
-{
-    type Item = Result<Segment3, Error>;
-
-    fn next(&mut self) -> Option<Self::Item> {
-        let (walker, turtle, environment) = (&mut self.walker, &mut self.turtle, self.environment);
-        next_segment(&mut self.failed, &mut self.segments, || {
-            let module = match environment {
-                Some(Held(environment)) => {
-                    // Every module expanded before the next one is handed out is where
-                    // the turtle stands now.
-                    let state = turtle.state();
-                    let ask = |query: Real| environment.query(query, &state);
-                    walker.next_queried(Some(&ask))
-                }
-                None => walker.next(),
-            }?;
-            Some(module.and_then(|module| turtle.execute(&module)))
-        })
-    }
-}
-
-/// Draws `segments` fitted by `space`: each line in its colour index, or with depth cue
-/// in the palette's colour for its middle's depth ([`DEPTH_LEVELS`] levels, nearer later).
-pub(crate) fn draw_segments<D, P>(
-    space: &SpaceFit,
-    target: &mut D,
-    segments: impl Iterator<Item = Result<Segment3, Error>>,
-    palette: &P,
-) -> Result<(), DrawError<D::Error>>
-where
-    D: DrawTarget<Color = P::Color>,
-    P: Palette,
-{
-    let clip = target.bounding_box();
-    let mut last_end = None;
-    for segment in segments {
-        let segment = segment?;
-        let ((from, near), (to, far)) = (space.place(segment.start), space.place(segment.end));
-        let (value, max) = space.color_value(middle(near, far), u16::from(segment.color));
-        draw_line(
-            target,
-            from,
-            to,
-            last_end == Some(from),
-            palette.color(value, max),
-            &clip,
-        )
-        .map_err(DrawError::Target)?;
-        last_end = Some(to);
-    }
-    Ok(())
 }

@@ -6,11 +6,12 @@ use heapless::Vec;
 use super::context::{expand_in_context, Branches, Expansions, Levels, MAX_CONTEXT_SLOTS};
 use super::expansion::{Expansion, Frame, Work};
 use super::expr::Query;
-use super::grammar::ParametricGrammar;
+use super::grammar::{Neighbour, ParametricGrammar, Rewrite};
 use super::values::{DerivedModule, Values};
 use crate::error::Error;
 use crate::lsystem::choice::{kept, mix};
 use crate::lsystem::walker::{check_order, order_too_high};
+use crate::math::Real;
 
 /// The modules of a parametric system's derivation at an order, in order, without
 /// building the string. Yields `Err` once (an arithmetic error, the budget, a capacity)
@@ -34,6 +35,11 @@ pub struct ParametricWalker<
     levels: Levels<DEPTH>,
     branches: Branches<SLOTS>,
     expansions: Expansions<DEPTH>,
+    /// Whether the homomorphism rewrites the derived modules (when drawing).
+    interpret: bool,
+    /// How far the last order's new modules have grown in (see
+    /// [`growing`](Self::growing)).
+    growth: Option<Real>,
 }
 
 impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLOTS> {
@@ -63,6 +69,8 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
                 key: kept(mix(grammar.seed)),
                 path: 0,
                 bound: Values::default(),
+                growing: false,
+                drawn: false,
             });
         }
         Self {
@@ -74,7 +82,37 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
             levels: Levels::new(),
             branches: Branches::new(),
             expansions: Expansions::new(),
+            interpret: false,
+            growth: None,
         }
+    }
+
+    /// Hands out the modules as drawn: each derived module rewritten once by the system's
+    /// homomorphism (`homomorphism:`) if one applies. The homomorphism is a level of the
+    /// walk below the order: the order must be below `DEPTH - 1`.
+    #[must_use]
+    pub fn drawing(mut self) -> Self {
+        if self.grammar.has_homomorphism() {
+            self.interpret = true;
+            if self.pending.is_none() {
+                if let Err(error) = check_order(self.order + 1, DEPTH) {
+                    self.pending = Some(error);
+                    self.frames.clear();
+                }
+            }
+        }
+        self
+    }
+
+    /// Grows the last order's new modules in: at `fraction` t (0 to 1) of the way from
+    /// order n − 1 to n (this walk's order), each module rewritten at the last step hands
+    /// out its successor with every step `F`, `f`, `G` scaled by t, after itself (if a
+    /// step) scaled by 1 − t. At t = 0 the picture is order n − 1's, at t = 1 order n's,
+    /// and in between the new branches grow from nothing.
+    #[must_use]
+    pub fn growing(mut self, fraction: Real) -> Self {
+        self.growth = Some(fraction.clamp(Real::ZERO, Real::ONE));
+        self
     }
 
     /// Stops the walk with [`WalkError::BudgetExhausted`](crate::error::WalkError::BudgetExhausted) after `symbols` modules are read
@@ -153,8 +191,11 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
                 symbol: char::from(module.symbol),
                 values: module.values,
             };
-            if level >= order {
-                return Ok(Some(derived));
+            if level >= order || parent.drawn {
+                if !parent.drawn && self.interpreted(&module, at, &parent, query)? {
+                    continue;
+                }
+                return Ok(Some(self.grown(derived, parent.growing)));
             }
             if contextual {
                 match module.symbol {
@@ -185,13 +226,28 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
             if contextual {
                 self.levels.visit(grammar, level, &module);
             }
-            let frame = match expansion {
-                Expansion::Successor(frame) | Expansion::Kept(frame) => frame,
-                Expansion::Final => {
+            let last_step = level + 1 == order;
+            let frame = match (expansion, self.growth) {
+                (Expansion::Successor(mut frame), Some(fraction)) if last_step => {
+                    frame.growing = true;
+                    // Cannot fail: `new` checked that order + 1 <= DEPTH.
+                    self.frames
+                        .push(frame)
+                        .map_err(|_| order_too_high(self.order, DEPTH))?;
+                    if is_step(derived.symbol) {
+                        return Ok(Some(scaled(derived, Real::ONE.saturating_sub(fraction))));
+                    }
+                    continue;
+                }
+                (Expansion::Successor(frame) | Expansion::Kept(frame), _) => frame,
+                (Expansion::Final, _) => {
                     if contextual {
                         for below in level + 1..order {
                             self.levels.visit(grammar, below, &module);
                         }
+                    }
+                    if self.interpreted(&module, at, &parent, query)? {
+                        continue;
                     }
                     return Ok(Some(derived));
                 }
@@ -202,6 +258,67 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
                 .map_err(|_| order_too_high(self.order, DEPTH))?;
         }
     }
+}
+
+impl<const DEPTH: usize, const SLOTS: usize> ParametricWalker<'_, DEPTH, SLOTS> {
+    /// When drawing, rewrites `module` (read at `at` in `parent`) by the homomorphism:
+    /// whether a production applied (its successor is then the next frame, handed out as
+    /// it is).
+    fn interpreted(
+        &mut self,
+        module: &Neighbour,
+        at: u16,
+        parent: &Frame,
+        query: Query,
+    ) -> Result<bool, Error> {
+        if !self.interpret {
+            return Ok(false);
+        }
+        let expansion = self.grammar.expand_by(
+            Rewrite::Homomorphism,
+            module,
+            at,
+            parent,
+            (None, None),
+            query,
+        )?;
+        let Expansion::Successor(mut frame) = expansion else {
+            return Ok(false);
+        };
+        frame.growing = parent.growing;
+        frame.drawn = true;
+        self.frames
+            .push(frame)
+            .map_err(|_| order_too_high(self.order + 1, DEPTH))?;
+        Ok(true)
+    }
+
+    /// `module` as handed out: its step scaled by the growth if it is new.
+    fn grown(&self, module: DerivedModule, growing: bool) -> DerivedModule {
+        match self.growth {
+            Some(fraction) if growing && is_step(module.symbol) => scaled(module, fraction),
+            _ => module,
+        }
+    }
+}
+
+/// Whether `symbol` is a step (`F`, `f`, `G`), whose length growth scales.
+fn is_step(symbol: char) -> bool {
+    matches!(symbol, 'F' | 'f' | 'G')
+}
+
+/// The step `module` (`F`, `f`, `G`, a length of one unless given) scaled by `factor`.
+fn scaled(mut module: DerivedModule, factor: Real) -> DerivedModule {
+    let values = &mut module.values;
+    if let Some(first) = values.values.first_mut() {
+        if values.count == 0 {
+            *first = factor;
+            values.count = 1;
+        } else {
+            *first = first.checked_mul(factor).unwrap_or(*first);
+        }
+    }
+    module
 }
 
 impl<const DEPTH: usize, const SLOTS: usize> Iterator for ParametricWalker<'_, DEPTH, SLOTS> {
