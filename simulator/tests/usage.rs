@@ -76,7 +76,7 @@ fn options_that_do_not_apply_are_usage_errors() {
         &[
             "animate", "growth", "--axiom", "F", "--angle", "4", "--order", "2", "--frames", "3",
         ],
-        &["--frames does not apply to growth"],
+        &["--frames does not apply to the growth of a plain system"],
     );
     // Found after parsing, by the command that draws: still a usage error, naming the fix.
     usage_error(
