@@ -62,6 +62,7 @@ fn the_books_plants_read_as_the_same_systems() {
             "Fig1.31e",
             "Hilbert3D",
             "Fig1.25",
+            "Fig1.25Bare",
             "Fig1.26",
             "Fig2.8a",
             "Topiary",

@@ -21,24 +21,7 @@ pub const DEPTH_GREENS: [Rgb888; 16] = {
 /// Algorithmic Beauty of Plants*: index 0 a bark brown for stems, then browns turning to
 /// greens, light greens for young leaves, and a few flower colours at the end (a plant's `;`
 /// steps from wood towards leaves).
-pub const BOOK: [Rgb888; 16] = [
-    Rgb888::new(0x8B, 0x5A, 0x2B),
-    Rgb888::new(0x7A, 0x4E, 0x24),
-    Rgb888::new(0x6B, 0x5A, 0x2A),
-    Rgb888::new(0x5C, 0x6B, 0x2E),
-    Rgb888::new(0x4A, 0x7A, 0x30),
-    Rgb888::new(0x3C, 0x8A, 0x34),
-    Rgb888::new(0x34, 0x9A, 0x3A),
-    Rgb888::new(0x3E, 0xAA, 0x44),
-    Rgb888::new(0x52, 0xBA, 0x4E),
-    Rgb888::new(0x6C, 0xC8, 0x5A),
-    Rgb888::new(0x8A, 0xD4, 0x68),
-    Rgb888::new(0xA8, 0xDE, 0x7A),
-    Rgb888::new(0xF2, 0xE2, 0x5C),
-    Rgb888::new(0xF0, 0x9C, 0x4C),
-    Rgb888::new(0xE8, 0x6A, 0x8A),
-    Rgb888::new(0xF8, 0xF4, 0xF0),
-];
+pub const BOOK: [Rgb888; 16] = tinyfractal_scenes::BOOK;
 
 /// Reads a Fractint `.map` colour map: a line per colour, `R G B` (each 0 to 255) and
 /// anything after the three numbers a comment; blank lines skipped; 1 to 256 colours.

@@ -104,15 +104,9 @@ fn main() -> ! {
         &COLOUR,
         || timer.get_counter().ticks() / 1000,
         || button.is_low().unwrap_or(false), // active low
-        |entry, result, ms| match result {
-            Ok(work) => info!(
-                "{}: {} {} in {} ms",
-                entry.name,
-                work.count(),
-                work.unit(),
-                ms
-            ),
-            Err(error) => error!("{} failed: {}", entry.name, Display2Format(&error)),
+        |name, result, ms| match result {
+            Ok(work) => info!("{}: {} {} in {} ms", name, work.count(), work.unit(), ms),
+            Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
         },
     )
 }

@@ -2,10 +2,11 @@
 //! system at an order, or an escape-time view, with a size and a palette) that the gallery,
 //! every firmware and the measuring firmware read.
 
-use embedded_graphics::geometry::Size;
+use embedded_graphics::{geometry::Size, pixelcolor::Rgb888};
 use tinyfractal::{
     attractor::Kind,
     escape::{Shading, Tier},
+    lsystem::Wind,
     math::DeepCoord,
     noise::{Octaves, Texture},
     particles::Preset as ParticlePreset,
@@ -65,8 +66,7 @@ pub enum Shape {
 }
 
 /// The colour of the Sierpiński cube's faces, before shading.
-pub const CUBE_COLOUR: embedded_graphics::pixelcolor::Rgb888 =
-    embedded_graphics::pixelcolor::Rgb888::new(0xC8, 0xB4, 0x78);
+pub const CUBE_COLOUR: Rgb888 = Rgb888::new(0xC8, 0xB4, 0x78);
 
 /// What to draw.
 #[derive(Debug, Clone, Copy)]
@@ -789,7 +789,37 @@ pub struct GeneralEntry {
     pub order: u32,
     /// Size in pixels.
     pub size: Size,
+    /// Frames of a loop swaying in [`WIND`] (0: still).
+    pub frames: u32,
 }
+
+/// The wind the swaying scenes blow: e·T = 0.05 towards +x at a gust's height, seed 1
+/// (`animate sway`'s default).
+pub const WIND: Wind = Wind {
+    push: [Real::from_bits((1 << 32) / 20), Real::ZERO, Real::ZERO],
+    seed: 1,
+};
+
+/// The colours the general engine's colour modules index unless an entry has a `colors:`
+/// line: the book's browns to greens, then flower colours.
+pub const BOOK: [Rgb888; 16] = [
+    Rgb888::new(0x8B, 0x5A, 0x2B),
+    Rgb888::new(0x7A, 0x4E, 0x24),
+    Rgb888::new(0x6B, 0x5A, 0x2A),
+    Rgb888::new(0x5C, 0x6B, 0x2E),
+    Rgb888::new(0x4A, 0x7A, 0x30),
+    Rgb888::new(0x3C, 0x8A, 0x34),
+    Rgb888::new(0x34, 0x9A, 0x3A),
+    Rgb888::new(0x3E, 0xAA, 0x44),
+    Rgb888::new(0x52, 0xBA, 0x4E),
+    Rgb888::new(0x6C, 0xC8, 0x5A),
+    Rgb888::new(0x8A, 0xD4, 0x68),
+    Rgb888::new(0xA8, 0xDE, 0x7A),
+    Rgb888::new(0xF2, 0xE2, 0x5C),
+    Rgb888::new(0xF0, 0x9C, 0x4C),
+    Rgb888::new(0xE8, 0x6A, 0x8A),
+    Rgb888::new(0xF8, 0xF4, 0xF0),
+];
 
 const fn general(name: &'static str, system: &'static str, order: u32) -> GeneralEntry {
     GeneralEntry {
@@ -798,6 +828,24 @@ const fn general(name: &'static str, system: &'static str, order: u32) -> Genera
         system,
         order,
         size: GALLERY_SIZE,
+        frames: 0,
+    }
+}
+
+/// A general-engine scene on the OLED.
+const fn oled_plant(
+    name: &'static str,
+    system: &'static str,
+    order: u32,
+    frames: u32,
+) -> GeneralEntry {
+    GeneralEntry {
+        name,
+        source: ABOP_LSYS,
+        system,
+        order,
+        size: OLED,
+        frames,
     }
 }
 
@@ -852,16 +900,19 @@ pub const IFS_GALLERY: [IfsEntry; 2] = [
 ];
 
 /// The general engine's scenes measured on Cortex-M3 and M4 (not M0: the micro:bit's 16 KiB
-/// cannot hold the engine's grammar and walk).
+/// cannot hold the engine's grammar and walk), and shown by the real boards in colour.
 ///
-/// ABOP's monopodial tree (figure 2.6, a parametric 3D system) at its order on the OLED.
-pub const GENERAL_SCENES: [GeneralEntry; 1] = [GeneralEntry {
-    name: "monopodial-tree",
-    source: ABOP_LSYS,
-    system: "MonopodialTree",
-    order: 10,
-    size: OLED,
-}];
+/// ABOP's monopodial tree (figure 2.6, a parametric 3D system, with widths) at its order on
+/// the OLED; the bush of figure 1.25 with its leaves filled and lit, and the same bush
+/// without leaves (the same lines: what the leaves cost); the tree of figure 2.8 (a)
+/// swaying in the wind, four frames.
+#[rustfmt::skip]
+pub const GENERAL_SCENES: [GeneralEntry; 4] = [
+    oled_plant("monopodial-tree", "MonopodialTree", 10, 0),
+    oled_plant("bush-leaves", "Fig1.25", 5, 0),
+    oled_plant("bush-bare", "Fig1.25Bare", 5, 0),
+    oled_plant("tree-sway", "Fig2.8a", 5, 4),
+];
 
 /// The lecture's IFS in the catalogue's notation.
 const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) -> Entry {

@@ -14,7 +14,7 @@ use tinyfractal::{
     lsystem::{Cell, DEFAULT_DEPTH, DEFAULT_STACK},
     math::DeepCoord,
     noise::{Octaves, Texture},
-    render::{Colors, Gradient, Orientation},
+    render::{Colors, Gradient, Orientation, Shade},
     terrain::Displacement,
     Carpet, Coord, Error, EscapeTime, Figure, Fractal, Gasket, Ifs, IfsFile, LSystem, LsysFile,
     ParametricGrammar, ParametricLSystem, Real, SierpinskiCube, Terrain, TerrainMap, View,
@@ -845,12 +845,15 @@ where
     Ok(Work::Points(drawing.try_draw(target)?))
 }
 
+/// Most colours of an entry's `colors:` line a board keeps.
+const MAX_PLANT_COLORS: usize = 16;
+
 impl GeneralEntry {
     /// Draws the system over the whole of `target`, cleared to `look.background` first,
-    /// in `look.ink`. Its grammar (12 KiB) and a walk (about 8 KiB, with no room for
-    /// contexts: the scenes have none) are on the stack while it draws: a scene for cores
-    /// with the RAM for them.
-    #[inline(never)]
+    /// in its colours (its `colors:` line, else [`BOOK`](crate::BOOK)) with its surfaces
+    /// lit, in walk order (no depth buffer); a swaying entry's frames one after another.
+    /// Its grammar (12 KiB) and a walk (about 8 KiB, with no room for contexts: the scenes
+    /// have none) are on the stack while it draws: a scene for cores with the RAM for them.
     pub fn draw<D>(
         &self,
         target: &mut D,
@@ -858,17 +861,54 @@ impl GeneralEntry {
     ) -> Result<Work, DrawError<D::Error>>
     where
         D: DrawTarget,
+        D::Color: From<Rgb888> + Shade,
     {
-        target.clear(look.background).map_err(DrawError::Target)?;
+        self.draw_frames(target, look, || {})
+    }
+
+    /// [`draw`](Self::draw), calling `between` between frames.
+    #[inline(never)]
+    pub fn draw_frames<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+        mut between: impl FnMut(),
+    ) -> Result<Work, DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888> + Shade,
+    {
+        let entry = LsysFile::new(self.source).entry(self.system)?;
         let mut grammar = ParametricGrammar::new();
-        LsysFile::new(self.source)
-            .entry(self.system)?
-            .parametric_into(&mut grammar)?;
-        let ink = [look.ink];
-        let drawing =
-            ParametricLSystem::<'_, DEFAULT_DEPTH, DEFAULT_STACK, 0>::new(&grammar, self.order)
-                .fit(target.bounding_box(), &ink)?;
-        let stats = drawing.try_draw(target)?;
-        Ok(Work::Segments(stats.segments))
+        entry.parametric_into(&mut grammar)?;
+        let own = entry.colors::<MAX_PLANT_COLORS>()?;
+        let colors: &[Rgb888] = if own.is_empty() { &crate::BOOK } else { &own };
+        let all: [D::Color; MAX_PLANT_COLORS] = core::array::from_fn(|i| {
+            D::Color::from(colors.get(i).copied().unwrap_or(Rgb888::BLACK))
+        });
+        let palette = all.get(..colors.len()).unwrap_or(&all);
+        let system =
+            ParametricLSystem::<'_, DEFAULT_DEPTH, DEFAULT_STACK, 0>::new(&grammar, self.order);
+        let area = target.bounding_box();
+        if self.frames == 0 {
+            target.clear(look.background).map_err(DrawError::Target)?;
+            let drawing = system.fit(area, palette)?;
+            let stats = drawing.try_draw_lit(target, None)?;
+            return Ok(Work::Segments(stats.segments));
+        }
+        let fitted = system.fit_in_wind(area, palette, &crate::WIND, self.frames)?;
+        let mut segments = 0;
+        for frame in 0..self.frames {
+            if frame > 0 {
+                between();
+            }
+            target.clear(look.background).map_err(DrawError::Target)?;
+            let tropism = crate::WIND.tropism_at(grammar.tropism(), frame, self.frames);
+            segments += fitted
+                .with_tropism(Some(tropism))
+                .try_draw_lit(target, None)?
+                .segments;
+        }
+        Ok(Work::Segments(segments))
     }
 }

@@ -2,8 +2,11 @@
 
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use tinyfractal::error::DrawError;
+use tinyfractal::render::Shade;
 
-use crate::catalogue::{Entry, DEEP_SCENES, DYNAMICS_SCENES, SCENES, TEXTURE_SCENES, ZOOM_SCENES};
+use crate::catalogue::{
+    Entry, DEEP_SCENES, DYNAMICS_SCENES, GENERAL_SCENES, SCENES, TEXTURE_SCENES, ZOOM_SCENES,
+};
 use crate::look::{Look, Work};
 
 /// How long an animated scene waits between its frames, in milliseconds.
@@ -26,11 +29,11 @@ pub fn show_scenes<D>(
     look: &Look<'_, D::Color>,
     mut now_ms: impl FnMut() -> u64,
     mut pressed: impl FnMut() -> bool,
-    mut report: impl FnMut(&Entry, Result<Work, DrawError<D::Error>>, u64),
+    mut report: impl FnMut(&str, Result<Work, DrawError<D::Error>>, u64),
 ) -> !
 where
     D: DrawTarget,
-    D::Color: From<Rgb888>,
+    D::Color: From<Rgb888> + Shade,
 {
     loop {
         let textures: &[Entry] = if cfg!(feature = "textures") {
@@ -50,7 +53,18 @@ where
                 let since = now_ms();
                 wait_for_press_or(FRAME_MS, || now_ms().wrapping_sub(since), || false);
             });
-            report(entry, result, now_ms().wrapping_sub(start));
+            report(entry.name, result, now_ms().wrapping_sub(start));
+            let shown = now_ms();
+            wait_for_press_or(SHOW_FOR_MS, || now_ms().wrapping_sub(shown), &mut pressed);
+        }
+        // The general engine's plants: leaves filled and lit, a tree in the wind.
+        for entry in &GENERAL_SCENES {
+            let start = now_ms();
+            let result = entry.draw_frames(display, look, || {
+                let since = now_ms();
+                wait_for_press_or(FRAME_MS, || now_ms().wrapping_sub(since), || false);
+            });
+            report(entry.name, result, now_ms().wrapping_sub(start));
             let shown = now_ms();
             wait_for_press_or(SHOW_FOR_MS, || now_ms().wrapping_sub(shown), &mut pressed);
         }

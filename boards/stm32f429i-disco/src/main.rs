@@ -115,15 +115,9 @@ fn main() -> ! {
         &COLOUR,
         || u64::from(clock.now().ticks()) / u64::from(TICK_HZ / 1000),
         || button.is_high(), // active high
-        |entry, result, ms| match result {
-            Ok(work) => info!(
-                "{}: {} {} in {} ms",
-                entry.name,
-                work.count(),
-                work.unit(),
-                ms
-            ),
-            Err(error) => error!("{} failed: {}", entry.name, Display2Format(&error)),
+        |name, result, ms| match result {
+            Ok(work) => info!("{}: {} {} in {} ms", name, work.count(), work.unit(), ms),
+            Err(error) => error!("{} failed: {}", name, Display2Format(&error)),
         },
     )
 }
