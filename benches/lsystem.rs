@@ -192,9 +192,77 @@ fn general(c: &mut Criterion) {
     group.finish();
 }
 
+/// Polygon fill per pixel beside embedded-graphics' own `Triangle` fill of about the same
+/// triangle (its bounding box's base and apex), both into the same framebuffer; and ABOP's
+/// bush of figure 1.25 drawn with its leaves and without (the same lines).
+fn plants(c: &mut Criterion) {
+    use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
+    let file = tinyfractal::LsysFile::new(include_str!("../data/abop.lsys"));
+    let mut framebuffer = Framebuffer::filled(Size::new(320, 240), Rgb565::BLACK);
+    let lit = |framebuffer: &Framebuffer| {
+        framebuffer
+            .bounding_box()
+            .points()
+            .filter(|p| framebuffer.pixel(p.x, p.y) != Some(Rgb565::BLACK))
+            .count() as u64
+    };
+    let triangle = tinyfractal::LsysFile::new("t {\n axiom: {.f+(120).f+(120).f}\n angle: 90\n}\n")
+        .entry("t")
+        .unwrap()
+        .parametric()
+        .unwrap();
+    let system: tinyfractal::ParametricLSystem = tinyfractal::ParametricLSystem::new(&triangle, 0);
+    let drawing = system
+        .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
+        .unwrap();
+    drawing.draw(&mut framebuffer).unwrap();
+    let ours = lit(&framebuffer);
+    let bounds = drawing.bounding_box();
+    let end = bounds.bottom_right().unwrap();
+    let theirs = Triangle::new(
+        Point::new(bounds.top_left.x, end.y),
+        Point::new(end.x, end.y),
+        Point::new((bounds.top_left.x + end.x) / 2, bounds.top_left.y),
+    )
+    .into_styled(PrimitiveStyle::with_fill(Rgb565::WHITE));
+    framebuffer.clear(Rgb565::BLACK).unwrap();
+    theirs.draw(&mut framebuffer).unwrap();
+    let their_pixels = lit(&framebuffer);
+    println!("work group=polygon-fill ours_pixels={ours} triangle_pixels={their_pixels}");
+    let mut group = c.benchmark_group("polygon-fill");
+    group.throughput(Throughput::Elements(ours));
+    group.bench_function("a triangle polygon, fit + fill", |b| {
+        b.iter(|| drawing.draw(black_box(&mut framebuffer)).unwrap())
+    });
+    group.throughput(Throughput::Elements(their_pixels));
+    group.bench_function("peer: embedded-graphics Triangle fill", |b| {
+        b.iter(|| theirs.draw(black_box(&mut framebuffer)).unwrap())
+    });
+    group.finish();
+    let mut group = c.benchmark_group("bush-figure-1.25-order-5");
+    group.throughput(Throughput::Elements(420));
+    for name in ["Fig1.25", "Fig1.25Bare"] {
+        let grammar = file.entry(name).unwrap().parametric().unwrap();
+        group.bench_function(format!("{name}: fit + draw lit 320x240"), |b| {
+            b.iter(|| {
+                let system: tinyfractal::ParametricLSystem =
+                    tinyfractal::ParametricLSystem::new(black_box(&grammar), 5);
+                let drawing = system
+                    .fit(
+                        framebuffer.bounding_box(),
+                        &[Rgb565::CSS_SADDLE_BROWN, Rgb565::GREEN],
+                    )
+                    .unwrap();
+                drawing.try_draw_lit(&mut framebuffer, None).unwrap()
+            })
+        });
+    }
+    group.finish();
+}
+
 fn size_box(size: Size) -> embedded_graphics::primitives::Rectangle {
     embedded_graphics::primitives::Rectangle::new(Point::zero(), size)
 }
 
-criterion_group!(benches, bench);
+criterion_group!(benches, bench, plants);
 criterion_main!(benches);

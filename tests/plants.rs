@@ -584,3 +584,17 @@ fn growth_runs_from_one_order_to_the_next() {
         );
     }
 }
+
+/// docs/memory.md's figures for a walk that draws surfaces: the polygons the turtle records
+/// are 2 × 32 vertices of 24 bytes, and a whole walk with the boards' capacities
+/// (`Marks3<16, 20, 0>`) stays under 10 KiB on a 64-bit host.
+#[test]
+fn a_surface_walk_is_bounded() {
+    let size = size_of::<Marks3<'static, 16, 20, 0>>();
+    println!("Marks3<16, 20, 0>: {size} bytes");
+    assert!(size <= 10 * 1024, "{size}");
+    assert_eq!(
+        tinyfractal::lsystem::MAX_OPEN_POLYGONS * MAX_POLYGON_VERTICES * 24,
+        1536
+    );
+}
