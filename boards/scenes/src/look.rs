@@ -850,7 +850,7 @@ const MAX_PLANT_COLORS: usize = 16;
 
 impl GeneralEntry {
     /// Draws the system over the whole of `target`, cleared to `look.background` first,
-    /// in its colours (its `colors:` line, else [`BOOK`](crate::BOOK)) with its surfaces
+    /// in its colours (its `colors:` line, else the catalogue's `BOOK`) with its surfaces
     /// lit, in walk order (no depth buffer); a swaying entry's frames one after another.
     /// Its grammar (12 KiB) and a walk (about 8 KiB, with no room for contexts: the scenes
     /// have none) are on the stack while it draws: a scene for cores with the RAM for them.
@@ -882,7 +882,11 @@ impl GeneralEntry {
         let mut grammar = ParametricGrammar::new();
         entry.parametric_into(&mut grammar)?;
         let own = entry.colors::<MAX_PLANT_COLORS>()?;
-        let colors: &[Rgb888] = if own.is_empty() { &crate::BOOK } else { &own };
+        let colors: &[Rgb888] = if own.is_empty() {
+            &crate::catalogue::BOOK
+        } else {
+            &own
+        };
         let all: [D::Color; MAX_PLANT_COLORS] = core::array::from_fn(|i| {
             D::Color::from(colors.get(i).copied().unwrap_or(Rgb888::BLACK))
         });
@@ -896,14 +900,14 @@ impl GeneralEntry {
             let stats = drawing.try_draw_lit(target, None)?;
             return Ok(Work::Segments(stats.segments));
         }
-        let fitted = system.fit_in_wind(area, palette, &crate::WIND, self.frames)?;
+        let fitted = system.fit_in_wind(area, palette, &crate::catalogue::WIND, self.frames)?;
         let mut segments = 0;
         for frame in 0..self.frames {
             if frame > 0 {
                 between();
             }
             target.clear(look.background).map_err(DrawError::Target)?;
-            let tropism = crate::WIND.tropism_at(grammar.tropism(), frame, self.frames);
+            let tropism = crate::catalogue::WIND.tropism_at(grammar.tropism(), frame, self.frames);
             segments += fitted
                 .with_tropism(Some(tropism))
                 .try_draw_lit(target, None)?
