@@ -3,24 +3,27 @@
 //! point is on it, within the fixed-point rounding. The same seed plots the same points on
 //! every target.
 //!
-//! The picture is fitted by playing the same game (same seed) once to measure the points'
-//! extent, then again to draw: every plotted point is inside the fitted box, exactly.
+//! A planar picture seen from the front whose maps contract (the lecture's fern, the
+//! gasket, most of Fractint's) is fitted to a sample of its game and played in the pixels'
+//! own fixed point ([`fast`](super::fast)); any other is fitted by playing the same game
+//! (same seed) once to measure the points' extent, then again to draw, every plotted point
+//! inside the fitted box, exactly. Both choose the same maps: one generator, one choice.
 
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
+#[cfg(doc)]
+use super::fast::FIT_POINTS;
+use super::fast::{pixel, repeat, sample_box, PixelMaps, FAST_MAPS, SKIPPED};
 use super::maps::Ifs;
 use crate::error::{only_target_errors, DrawError, Error, FitError, WalkError};
-use crate::math::random::Generator;
+use crate::math::random::Xorshift32;
 use crate::math::Real;
 use crate::render::density::{Density, HitCount};
 use crate::render::fit::DEFAULT_MARGIN;
 use crate::render::palette::{Colors, Palette};
 use crate::render::projection::Projection;
 use crate::render::space::SpaceFit;
-
-/// Points computed and not plotted at the start of a game.
-pub const SKIPPED: u32 = 100;
 
 /// A plotted point of a chaos game: where, and which map put it there.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -36,7 +39,7 @@ pub struct IfsPoint {
 #[derive(Debug, Clone)]
 pub struct ChaosGame<'i> {
     ifs: &'i Ifs,
-    generator: Generator,
+    generator: Xorshift32,
     point: [Real; 3],
     left: u64,
     failed: bool,
@@ -47,7 +50,7 @@ impl<'i> ChaosGame<'i> {
     pub fn new(ifs: &'i Ifs, seed: u64, points: u64) -> Self {
         let mut game = Self {
             ifs,
-            generator: Generator::new(seed),
+            generator: Xorshift32::new(seed),
             point: [Real::ZERO; 3],
             left: points,
             failed: false,
@@ -153,18 +156,39 @@ impl<'i> IfsPicture<'i> {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let palette = Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))?;
-        let space = SpaceFit::new(
-            || self.game().map(|point| point.map(|p| [p.position])),
-            self.projection(),
-            false,
-            &area,
-            DEFAULT_MARGIN,
-        )?;
+        let (space, fast) = self.space(&area)?;
         Ok(IfsDrawing {
             picture: *self,
             space,
             palette,
+            fast,
         })
+    }
+
+    /// The fit, and for a planar picture from the front whose maps (at most
+    /// [`FAST_MAPS`]) contract, the game in pixel space: fitted to the box of the first
+    /// [`FIT_POINTS`] points and the maps' fixed points. Any other picture
+    /// is fitted to its whole game, played once to measure.
+    fn space(&self, area: &Rectangle) -> Result<(SpaceFit, Option<PixelMaps>), Error> {
+        if self.projection() == Projection::Front && !self.ifs.is_3d() {
+            if let Some((low, high)) = sample_box(self.ifs, self.seed, self.points) {
+                let space = SpaceFit::front_box(low, high, area, DEFAULT_MARGIN)?;
+                let fast = space
+                    .front_linear()
+                    .and_then(|(scale, origin)| PixelMaps::new(self.ifs, scale, origin));
+                if fast.is_some() {
+                    return Ok((space, fast));
+                }
+            }
+        }
+        let space = SpaceFit::new(
+            || self.game().map(|point| point.map(|p| [p.position])),
+            self.projection(),
+            false,
+            area,
+            DEFAULT_MARGIN,
+        )?;
+        Ok((space, None))
     }
 }
 
@@ -185,18 +209,13 @@ impl<'i> IfsPicture<'i> {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let density = Density::new(area, counts)?;
-        let space = SpaceFit::new(
-            || self.game().map(|point| point.map(|p| [p.position])),
-            self.projection(),
-            false,
-            &area,
-            DEFAULT_MARGIN,
-        )?;
+        let (space, fast) = self.space(&area)?;
         Ok(DensityDrawing {
             picture: *self,
             space,
             palette,
             density,
+            fast,
         })
     }
 }
@@ -208,6 +227,7 @@ pub struct DensityDrawing<'i, 'b, P, T = u16> {
     space: SpaceFit,
     palette: P,
     density: Density<'b, T>,
+    fast: Option<PixelMaps>,
 }
 
 impl<P: Palette, T: HitCount> DensityDrawing<'_, '_, P, T> {
@@ -219,10 +239,22 @@ impl<P: Palette, T: HitCount> DensityDrawing<'_, '_, P, T> {
     {
         self.density.clear();
         let mut played = 0;
-        for point in self.picture.game() {
-            let (pixel, _) = self.space.place(point?.position);
-            self.density.hit(pixel);
-            played += 1;
+        if let Some(maps) = &self.fast {
+            let area = self.density.area().top_left;
+            let mut game = maps.game(self.picture.seed);
+            repeat(self.picture.points, || {
+                let (x, y) = pixel(game.next_point().1);
+                // Outside the area: a column or row beyond its size, or wrapped negative.
+                self.density
+                    .hit_at(x.wrapping_sub(area.x) as u32, y.wrapping_sub(area.y) as u32);
+            });
+            played = self.picture.points;
+        } else {
+            for point in self.picture.game() {
+                let (pixel, _) = self.space.place(point?.position);
+                self.density.hit(pixel);
+                played += 1;
+            }
         }
         self.density
             .emit(&self.palette, target)
@@ -255,6 +287,7 @@ pub struct IfsDrawing<'i, P> {
     picture: IfsPicture<'i>,
     space: SpaceFit,
     palette: P,
+    fast: Option<PixelMaps>,
 }
 
 impl<P: Palette> IfsDrawing<'_, P> {
@@ -265,6 +298,9 @@ impl<P: Palette> IfsDrawing<'_, P> {
         D: DrawTarget<Color = P::Color>,
     {
         let clip = target.bounding_box();
+        if let Some(maps) = &self.fast {
+            return self.draw_fast(maps, target, &clip);
+        }
         let mut plotted = 0;
         for point in self.picture.game() {
             let point = point?;
@@ -282,6 +318,41 @@ impl<P: Palette> IfsDrawing<'_, P> {
             plotted += 1;
         }
         Ok(plotted)
+    }
+}
+
+impl<P: Palette> IfsDrawing<'_, P> {
+    /// The game in pixel space: each point a pixel in its map's colour through `draw_iter`
+    /// (scattered points make no runs), clipped to `clip`.
+    fn draw_fast<D>(
+        &self,
+        maps: &PixelMaps,
+        target: &mut D,
+        clip: &Rectangle,
+    ) -> Result<u64, DrawError<D::Error>>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let colors: [P::Color; FAST_MAPS] = core::array::from_fn(|map| {
+            self.palette
+                .color(u16::try_from(map).unwrap_or(u16::MAX), u16::MAX)
+        });
+        let (left, top) = (clip.top_left.x, clip.top_left.y);
+        let (width, height) = (clip.size.width, clip.size.height);
+        let mut game = maps.game(self.picture.seed);
+        let mut failed = Ok(());
+        repeat(self.picture.points, || {
+            let (map, point) = game.next_point();
+            let (x, y) = pixel(point);
+            // Wrapped: a point left of or above the clip is a large column or row.
+            if (x.wrapping_sub(left) as u32) < width && (y.wrapping_sub(top) as u32) < height {
+                if let (Some(&color), Ok(())) = (colors.get(map), &failed) {
+                    failed = target.draw_iter(core::iter::once(Pixel(Point::new(x, y), color)));
+                }
+            }
+        });
+        failed.map_err(DrawError::Target)?;
+        Ok(self.picture.points)
     }
 }
 

@@ -122,6 +122,14 @@ impl Ifs {
         self.maps.is_empty()
     }
 
+    /// The maps with their weights, in order, and the weights' sum.
+    pub(crate) fn weighted(&self) -> (impl Iterator<Item = (&AffineMap, u32)>, u64) {
+        (
+            self.maps.iter().map(|(map, weight)| (map, *weight)),
+            self.total,
+        )
+    }
+
     /// The map a random number picks, and its index.
     #[inline]
     pub(crate) fn choose(&self, random: u32) -> (usize, &AffineMap) {

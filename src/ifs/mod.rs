@@ -24,13 +24,15 @@
 //! ```
 
 pub(crate) mod chaos;
+pub(crate) mod fast;
 pub(crate) mod file;
 pub(crate) mod gingerbread;
 pub(crate) mod maps;
 
 /// The density levels (shared by every density picture: see [`crate::render`]).
 pub use crate::render::DENSITY_LEVELS;
-pub use chaos::{ChaosGame, DensityDrawing, IfsDrawing, IfsPicture, IfsPoint, SKIPPED};
+pub use chaos::{ChaosGame, DensityDrawing, IfsDrawing, IfsPicture, IfsPoint};
+pub use fast::{FAST_MAPS, FIT_POINTS, SKIPPED};
 pub use file::{IfsEntry, IfsFile};
 pub use gingerbread::{Cycle, Gingerbread, GingerbreadDrawing, GingerbreadPoints, MapPoint};
 pub use maps::{AffineMap, Ifs};

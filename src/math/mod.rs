@@ -20,5 +20,5 @@ pub use affine::{Affine2, Affine3, Overflow};
 pub use angle::{Angle, AngleOutOfRange, MAX_ANGLE_DIVISIONS};
 pub use big::{DeepCoord, DeepParseError, DEEP_LIMBS, MAX_DECIMAL_PLACES};
 pub use coord::Coord;
-pub use random::Generator;
+pub use random::{Generator, Xorshift32};
 pub use real::Real;

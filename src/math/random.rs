@@ -21,6 +21,39 @@ impl Generator {
     }
 }
 
+/// The chaos game's stream: Marsaglia's xorshift32 (shifts 13, 17, 5).
+///
+/// Three shifts and three exclusive-ors a number where PCG32's 64-bit step costs a
+/// Cortex-M core about 20 instructions; its period, 2³² − 1, is longer than any game
+/// played. Seeded through
+/// SplitMix64's finaliser (a state of 0 would stay 0). Not `Copy`, like any stream: a
+/// copy would repeat its numbers.
+#[allow(missing_copy_implementations)]
+#[derive(Debug, Clone)]
+pub struct Xorshift32(u32);
+
+impl Xorshift32 {
+    /// The stream for `seed`.
+    pub const fn new(seed: u64) -> Self {
+        let mut z = seed.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        let state = (z ^ (z >> 31)) as u32;
+        Self(if state == 0 { 0x9E37_79B9 } else { state })
+    }
+
+    /// The next number.
+    #[inline(always)]
+    pub fn next_u32(&mut self) -> u32 {
+        let mut x = self.0;
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        self.0 = x;
+        x
+    }
+}
+
 /// Mixes 32 bits (Wellons' lowbias32): every input bit moves about half the output bits.
 #[inline]
 const fn mix(mut h: u32) -> u32 {

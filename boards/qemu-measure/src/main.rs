@@ -32,6 +32,8 @@ mod firmware {
     use tinyfractal_scenes::naive::{
         fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
     };
+    #[cfg(not(feature = "newer"))]
+    use tinyfractal_scenes::naive::{fern_f32, fern_fixed};
     use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(not(feature = "newer"))]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
@@ -43,6 +45,9 @@ mod firmware {
     #[derive(Clone, Copy)]
     enum Baseline {
         Escape(BaselineView),
+        /// The lecture's fern by the chaos game: the points.
+        #[cfg(not(feature = "newer"))]
+        Fern(u32),
         /// fBm of Perlin's 2D noise: the permutation's seed, octaves, lattice cells across.
         #[cfg(feature = "newer")]
         Noise(u32, u32, f32),
@@ -101,6 +106,12 @@ mod firmware {
                     kind: kind @ (Kind::Henon | Kind::Lorenz),
                     points,
                 } => Some(Self::Attractor(kind, points as u32)),
+                #[cfg(not(feature = "newer"))]
+                Scene::Ifs {
+                    system: "fern",
+                    points,
+                    ..
+                } => Some(Self::Fern(points as u32)),
                 _ => BaselineView::of(scene).map(Self::Escape),
             }
         }
@@ -332,6 +343,15 @@ mod firmware {
             Some(Baseline::Fountain(frames)) => {
                 f32_cost = run(&mut |target| {
                     fountain_f32(frames, target);
+                });
+            }
+            #[cfg(not(feature = "newer"))]
+            Some(Baseline::Fern(points)) => {
+                f32_cost = run(&mut |target| {
+                    fern_f32(points, target);
+                });
+                fixed_cost = run(&mut |target| {
+                    fern_fixed(points, target);
                 });
             }
             None => {}

@@ -1,7 +1,8 @@
 //! The loops a user would write for the newer families, to measure the engine against.
 //!
 //! Perlin's reference code in `f32` as an Arduino sketch ports it, a first Gray–Scott
-//! sketch in `f32`, and the Hénon map and the Lorenz flow as sketches iterate them. Each draws its picture pixel by pixel into the target, as such
+//! sketch in `f32`, the Hénon map and the Lorenz flow as sketches iterate them, and the
+//! lecture's fern by the chaos game in `f32` and in careful Q16.16. Each draws its picture pixel by pixel into the target, as such
 //! sketches do.
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
@@ -298,4 +299,86 @@ pub fn fountain_f32<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -
         }
     }
     steps
+}
+
+/// C's `rand()` step as Arduino and newlib sketches have it (a 32-bit LCG): its bits 16 and
+/// up, 0 to 32767.
+fn c_rand(seed: &mut u32) -> u32 {
+    *seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+    (*seed >> 16) & 0x7FFF
+}
+
+/// The lecture's fern as a sketch writes it, in `f32`.
+///
+/// The table's four maps, probabilities 1, 85, 7 and 7 in 100, a map chosen by
+/// `rand() % 100`, 1,000 points skipped, then each point a pixel of the target scaled from
+/// the fern's hard-coded box [−2.2, 2.7] × [0, 10]; returns the points plotted.
+pub fn fern_f32<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> u64 {
+    let size = target.bounding_box().size;
+    let (sx, sy) = (size.width as f32 / 4.9, size.height as f32 / 10.0);
+    let mut seed = 1u32;
+    let (mut x, mut y) = (0.0f32, 0.0f32);
+    for step in 0..NAIVE_SKIP + points {
+        let r = c_rand(&mut seed) % 100;
+        (x, y) = if r < 1 {
+            (0.0, 0.16 * y)
+        } else if r < 86 {
+            (0.85 * x + 0.04 * y, -0.04 * x + 0.85 * y + 1.6)
+        } else if r < 93 {
+            (0.2 * x - 0.26 * y, 0.23 * x + 0.22 * y + 1.6)
+        } else {
+            (-0.15 * x + 0.28 * y, 0.26 * x + 0.24 * y + 0.44)
+        };
+        if step >= NAIVE_SKIP {
+            let px = ((x + 2.2) * sx) as i32;
+            let py = ((10.0 - y) * sy) as i32;
+            let _ = target.draw_iter(core::iter::once(Pixel(Point::new(px, py), Gray4::WHITE)));
+        }
+    }
+    u64::from(points)
+}
+
+/// A value in Q16.16, for the careful loop's constants.
+const fn q16(value: f32) -> i32 {
+    (value * 65536.0) as i32
+}
+
+/// The fern as a careful fixed-point sketch writes it.
+///
+/// Q16.16 with 64-bit products, the same choice and box as [`fern_f32`], the scale to
+/// pixels folded into one multiply an axis.
+pub fn fern_fixed<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> u64 {
+    fn mul(a: i32, b: i32) -> i32 {
+        ((i64::from(a) * i64::from(b)) >> 16) as i32
+    }
+    const MAPS: [[i32; 6]; 4] = [
+        [0, 0, 0, q16(0.16), 0, 0],
+        [q16(0.85), q16(0.04), q16(-0.04), q16(0.85), 0, q16(1.6)],
+        [q16(0.2), q16(-0.26), q16(0.23), q16(0.22), 0, q16(1.6)],
+        [q16(-0.15), q16(0.28), q16(0.26), q16(0.24), 0, q16(0.44)],
+    ];
+    let size = target.bounding_box().size;
+    // Pixels a unit, Q16.16.
+    let (sx, sy) = (
+        (size.width as i32) * 65536 / 49 * 10,
+        (size.height as i32) * 65536 / 10,
+    );
+    let mut seed = 1u32;
+    let (mut x, mut y) = (0i32, 0i32);
+    for step in 0..NAIVE_SKIP + points {
+        let r = c_rand(&mut seed) % 100;
+        let [a, b, c, d, e, f] = MAPS[match r {
+            0 => 0,
+            1..=85 => 1,
+            86..=92 => 2,
+            _ => 3,
+        }];
+        (x, y) = (mul(a, x) + mul(b, y) + e, mul(c, x) + mul(d, y) + f);
+        if step >= NAIVE_SKIP {
+            let px = mul(x + q16(2.2), sx) >> 16;
+            let py = mul(q16(10.0) - y, sy) >> 16;
+            let _ = target.draw_iter(core::iter::once(Pixel(Point::new(px, py), Gray4::WHITE)));
+        }
+    }
+    u64::from(points)
 }

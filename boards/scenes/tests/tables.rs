@@ -302,9 +302,26 @@ fn ifs_table(records: &[Value], results: &Value) -> String {
     }
     for (core, instructions, per_unit) in cortex_m_rows(records, "ifs-fern") {
         table.push_str(&format!(
-            "| {core} | read, fit (one game) and draw (another) | {} instructions | {per_unit} instructions |\n",
+            "| {core} | read, fit (a sample) and draw | {} instructions | {per_unit} instructions |\n",
             thousands(instructions),
         ));
+    }
+    // The sketches beside it: the lecture's table in f32, and in careful Q16.16.
+    for record in records.iter().filter(|r| r["scene"] == "ifs-fern") {
+        let core = record["core"].as_str().unwrap_or("?");
+        let work = record["work"].as_u64().unwrap_or(1).max(1);
+        for (key, what) in [
+            ("baseline_f32", "the naive f32 sketch"),
+            ("baseline_fixed20", "a careful Q16.16 sketch"),
+        ] {
+            if let Some(cost) = record[key].as_u64() {
+                table.push_str(&format!(
+                    "| {core} | {what} | {} instructions | {} instructions |\n",
+                    thousands(cost),
+                    thousands(cost / work),
+                ));
+            }
+        }
     }
     table
 }
