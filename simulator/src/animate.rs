@@ -351,6 +351,8 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
             stats: false,
             window: false,
             dimension: false,
+            colors: crate::common::Panel::Rgb888,
+            dither: crate::common::DitherName::None,
         },
         dwell: None,
     };

@@ -7,6 +7,9 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::prelude::*;
+use embedded_graphics_simulator::SimulatorDisplay;
 
 /// Options every render takes.
 #[derive(Debug, Clone, PartialEq, Args)]
@@ -26,6 +29,99 @@ pub struct Common {
     /// Print the picture's box-counting dimension (pixels not black), `dimension=D.DDD`
     #[arg(long)]
     pub dimension: bool,
+    /// The panel's colours, which the picture shows: 1bit, gray2, gray4, gray8, rgb565 or
+    /// rgb888 (the PNG holds what such a panel would show)
+    #[arg(long, value_enum, value_name = "PANEL", default_value = "rgb888")]
+    pub colors: Panel,
+    /// How colours are brought to the panel's: none (the nearest), bayer4 or bayer8
+    /// (ordered dithering)
+    #[arg(long, value_enum, value_name = "HOW", default_value = "none")]
+    pub dither: DitherName,
+}
+
+/// A panel's colours (`--colors`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Panel {
+    /// One bit: black or white (an SSD1306).
+    #[value(name = "1bit")]
+    OneBit,
+    /// Four greys.
+    Gray2,
+    /// Sixteen greys (an SSD1322, the LM3S6965's OLED).
+    Gray4,
+    /// 256 greys.
+    Gray8,
+    /// 16-bit colour (an ST7789, an ILI9341).
+    Rgb565,
+    /// 24-bit colour: the picture as drawn.
+    #[default]
+    Rgb888,
+}
+
+/// How colours are brought to the panel's (`--dither`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum DitherName {
+    /// The nearest level.
+    #[default]
+    None,
+    /// Bayer's 4×4 ordered dither.
+    Bayer4,
+    /// Bayer's 8×8 ordered dither.
+    Bayer8,
+}
+
+impl DitherName {
+    /// The name of the core's dither.
+    pub fn of(dither: tinyfractal::render::Dither) -> Self {
+        match dither {
+            tinyfractal::render::Dither::Bayer4 => Self::Bayer4,
+            tinyfractal::render::Dither::Bayer8 => Self::Bayer8,
+            _ => Self::None,
+        }
+    }
+
+    /// The core's dither.
+    pub fn dither(self) -> tinyfractal::render::Dither {
+        match self {
+            Self::None => tinyfractal::render::Dither::None,
+            Self::Bayer4 => tinyfractal::render::Dither::Bayer4,
+            Self::Bayer8 => tinyfractal::render::Dither::Bayer8,
+        }
+    }
+}
+
+/// `picture` as a panel of `panel`'s colours would show it, dithered by `dither` (each
+/// pixel by its position, as the core's `Dithered` target draws it), back in 24-bit colour
+/// for the PNG; `None` when it is shown as drawn.
+pub fn as_panel(
+    picture: &SimulatorDisplay<Rgb888>,
+    panel: Panel,
+    dither: DitherName,
+) -> Option<SimulatorDisplay<Rgb888>> {
+    use embedded_graphics::pixelcolor::{BinaryColor, Gray2, Gray4, Gray8, Rgb565};
+    use tinyfractal::render::Quantize;
+    if panel == Panel::Rgb888 {
+        return None;
+    }
+    let dither = dither.dither();
+    let mut shown = SimulatorDisplay::<Rgb888>::new(picture.size());
+    for point in picture.bounding_box().points() {
+        let color = picture.get_pixel(point);
+        let threshold = dither.threshold(point);
+        let seen = match panel {
+            Panel::OneBit => match BinaryColor::quantize(color, threshold) {
+                BinaryColor::On => Rgb888::WHITE,
+                BinaryColor::Off => Rgb888::BLACK,
+            },
+            Panel::Gray2 => Rgb888::from(Gray2::quantize(color, threshold)),
+            Panel::Gray4 => Rgb888::from(Gray4::quantize(color, threshold)),
+            Panel::Gray8 => Rgb888::from(Gray8::quantize(color, threshold)),
+            Panel::Rgb565 => Rgb888::from(Rgb565::quantize(color, threshold)),
+            Panel::Rgb888 => color,
+        };
+        let _ = Pixel(point, seen).draw(&mut shown);
+    }
+    Some(shown)
 }
 
 impl Common {
@@ -40,17 +136,15 @@ impl Common {
     }
 
     /// A display of `--size`.
-    pub fn display(
-        &self,
-    ) -> embedded_graphics_simulator::SimulatorDisplay<embedded_graphics::pixelcolor::Rgb888> {
-        embedded_graphics_simulator::SimulatorDisplay::new(self.area().size)
+    pub fn display(&self) -> SimulatorDisplay<Rgb888> {
+        SimulatorDisplay::new(self.area().size)
     }
 
     /// The whole picture, `--size` at the origin.
     pub fn area(&self) -> embedded_graphics::primitives::Rectangle {
         embedded_graphics::primitives::Rectangle::new(
-            embedded_graphics::prelude::Point::zero(),
-            embedded_graphics::prelude::Size::new(self.width(), self.height()),
+            Point::zero(),
+            Size::new(self.width(), self.height()),
         )
     }
 }

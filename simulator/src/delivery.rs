@@ -19,6 +19,13 @@ pub fn deliver<'a>(
     more: impl FnOnce(&mut output::Plan<'a>),
     stats: &str,
 ) -> Result<(), String> {
+    // What the panel shows (`--colors`, `--dither`): made once, kept for the plan's
+    // writers, which borrow the picture for as long as the command runs.
+    let display: &'a SimulatorDisplay<Rgb888> =
+        match crate::common::as_panel(display, common.colors, common.dither) {
+            Some(shown) => Box::leak(Box::new(shown)),
+            None => display,
+        };
     let out = common
         .out
         .clone()

@@ -198,6 +198,7 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
             max_iterations,
             shading,
             tier,
+            one_bit,
         }) => {
             let request = crate::escape_scene::Request {
                 julia,
@@ -221,8 +222,19 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                     Some(_) => ", not exact (a forced tier)",
                     None => "",
                 };
+                // A one-bit panel's scene as the panel shows it.
+                let display = match one_bit.and_then(|dither| {
+                    crate::common::as_panel(
+                        &rendered.display,
+                        crate::common::Panel::OneBit,
+                        crate::common::DitherName::of(dither),
+                    )
+                }) {
+                    Some(shown) => shown,
+                    None => rendered.display,
+                };
                 Ok((
-                    rendered.display,
+                    display,
                     format!("{} tier{caveat}", rendered.stats.tier.name()),
                     format!("{} iterations", rendered.stats.iterations),
                     rendered.elapsed,

@@ -62,24 +62,21 @@ impl PixelMap {
         (along(self.a, self.b, self.e), along(self.c, self.d, self.f))
     }
 
-    /// The point the map keeps (Q16.16): (I − M)·p = t by Cramer's rule; `None` if
-    /// I − M is singular or the point beyond range.
+    /// The point the map keeps (Q16.16): (I − M)·p = t by Cramer's rule, in 64 bits
+    /// (the matrix in Q1.30, so a product of two entries and a translation fits); `None`
+    /// if I − M is singular or the point beyond range.
+    #[inline(never)]
     fn fixed_point(&self) -> Option<(i32, i32)> {
-        const ONE: i128 = 1 << 31;
-        let (a, b, c, d) = (
-            i128::from(self.a),
-            i128::from(self.b),
-            i128::from(self.c),
-            i128::from(self.d),
-        );
-        let (e, f) = (i128::from(self.e), i128::from(self.f));
-        // Q2.62 determinant; the numerators Q17.47 (Q1.31 × Q16.16).
-        let det = (ONE - a) * (ONE - d) - b * c;
+        const ONE: i64 = 1 << 30;
+        let [a, b, c, d] = [self.a, self.b, self.c, self.d].map(|v| i64::from(v >> 1));
+        let (e, f) = (i64::from(self.e), i64::from(self.f));
+        // Q2.60, then Q30; the numerators Q16.16 × Q1.30, each term below 2^62.
+        let det = ((ONE - a) * (ONE - d) - b * c) >> 30;
         if det == 0 {
             return None;
         }
-        let x = ((ONE - d) * e + b * f) * ONE / det;
-        let y = (c * e + (ONE - a) * f) * ONE / det;
+        let x = ((ONE - d) * e + b * f) / det;
+        let y = (c * e + (ONE - a) * f) / det;
         Some((i32::try_from(x).ok()?, i32::try_from(y).ok()?))
     }
 }
@@ -141,6 +138,7 @@ impl PixelMaps {
     /// `ifs`'s maps conjugated by X = ox + s·x, Y = oy − s·y (`None` for a map out of the
     /// fast game's range: more than [`FAST_MAPS`] maps, an entry beyond [−1, 1), a
     /// translation beyond 2¹⁵ pixels).
+    #[inline(never)]
     pub(crate) fn new(ifs: &Ifs, scale: Real, origin: (Real, Real)) -> Option<Self> {
         if ifs.is_empty() || ifs.len() > FAST_MAPS {
             return None;

@@ -6,6 +6,7 @@
 
 pub(crate) mod density;
 pub(crate) mod depth;
+pub(crate) mod dither;
 pub(crate) mod fit;
 pub(crate) mod palette;
 pub(crate) mod polygon;
@@ -19,6 +20,7 @@ pub(crate) mod subpixel;
 pub(crate) mod thick;
 
 pub use density::{HitCount, DENSITY_LEVELS};
+pub use dither::{Dither, Dithered, Quantize};
 pub use fit::{Orientation, DEFAULT_MARGIN};
 pub use palette::{Bands, Colors, Gradient, Palette, TwoColor};
 pub use projection::Projection;

@@ -28,12 +28,12 @@ mod firmware {
     #[cfg(feature = "newer")]
     use tinyfractal::Real;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
+    #[cfg(not(feature = "newer"))]
+    use tinyfractal_scenes::naive::{fern_f32, fern_fixed};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::naive::{
         fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
     };
-    #[cfg(not(feature = "newer"))]
-    use tinyfractal_scenes::naive::{fern_f32, fern_fixed};
     use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(not(feature = "newer"))]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
@@ -236,7 +236,10 @@ mod firmware {
         // Every core's scenes, with the baselines where they apply: the newer families in
         // their own build, the rest in the other.
         #[cfg(feature = "newer")]
-        let every_core = TEXTURE_SCENES.iter().chain(&DYNAMICS_SCENES);
+        let every_core = TEXTURE_SCENES
+            .iter()
+            .chain(&DYNAMICS_SCENES)
+            .chain(&tinyfractal_scenes::PANEL_SCENES);
         #[cfg(not(feature = "newer"))]
         let every_core = SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES);
         for entry in every_core {
@@ -252,6 +255,7 @@ mod firmware {
                     .scene
                     .draw_texture(target, &GREY)
                     .or_else(|| entry.scene.draw_dynamics(target, &GREY))
+                    .or_else(|| entry.scene.draw_panel(target, &GREY))
                     .unwrap_or(Ok(Work::Samples(0)));
                 #[cfg(not(feature = "newer"))]
                 entry.scene.draw(target, &GREY)

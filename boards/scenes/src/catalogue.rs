@@ -11,7 +11,7 @@ use tinyfractal::{
     noise::{Octaves, Texture},
     particles::Preset as ParticlePreset,
     reaction::Preset,
-    render::Orientation,
+    render::{Dither, Orientation},
     subdivision::CubeVariant,
     terrain::Displacement,
     Angle, Coord, Dialect, Error, Fractal, Grammar, Real, View,
@@ -288,6 +288,9 @@ pub struct EscapeScene {
     pub shading: Shading,
     /// The tier forced on the view, or `None` for its own (the calibrated rule's).
     pub tier: Option<Tier>,
+    /// Shown on a one-bit panel (an SSD1306) by this dithering, or `None` in the look's
+    /// colours.
+    pub one_bit: Option<Dither>,
 }
 
 impl EscapeScene {
@@ -508,6 +511,7 @@ const fn escape(
             max_iterations,
             shading: Shading::Dwell,
             tier: None,
+            one_bit: None,
         }),
         size,
         palette,
@@ -529,6 +533,21 @@ const fn perturbed(name: &'static str, entry: Entry) -> Entry {
     Entry {
         name,
         ..adjusted(entry, escape_of(entry).with_tier(Tier::Perturbation))
+    }
+}
+
+/// `entry`, an escape-time view, shown on a one-bit panel by Bayer's 8×8 dither.
+const fn one_bit(name: &'static str, entry: Entry) -> Entry {
+    let escape = escape_of(entry);
+    Entry {
+        name,
+        ..adjusted(
+            entry,
+            EscapeScene {
+                one_bit: Some(Dither::Bayer8),
+                ..escape
+            },
+        )
     }
 }
 
@@ -1056,3 +1075,21 @@ pub const DISPLAY_SCENES: [Entry; 2] = [
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.2", 100, GALLERY_SIZE, "classic"),
 ];
+
+/// Panels of fewer colours: the OLED's Mandelbrot on a one-bit SSD1306 of its size.
+///
+/// Dithered by Bayer's 8×8 matrix; measured by the newer families' firmware (the
+/// dithering target is a second copy of the escape-time engine, beyond the other build's
+/// flash).
+pub const PANEL_SCENES: [Entry; 1] = [one_bit(
+    "mandelbrot-1bit",
+    escape(
+        "mandelbrot",
+        None,
+        MANDELBROT_CENTRE,
+        "3.5",
+        64,
+        OLED,
+        "classic",
+    ),
+)];

@@ -155,6 +155,35 @@ impl Scene {
         }
     }
 
+    /// Draws a scene for a panel of fewer colours (an escape-time view dithered onto one
+    /// bit) as [`Scene::draw`] does, with the scenes' `panels` feature; `None` for any
+    /// other scene or without the feature.
+    ///
+    /// Its drawing target is the dithering one: on a core's flash, a second copy of the
+    /// escape-time engine, which is why it is a feature of its own.
+    pub fn draw_panel<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+    ) -> Option<Result<Work, DrawError<D::Error>>>
+    where
+        D: DrawTarget,
+    {
+        #[cfg(feature = "panels")]
+        if let Scene::Escape(escape) = self {
+            if let Some(dither) = escape.one_bit {
+                return Some(
+                    escape
+                        .view(target.bounding_box().size)
+                        .map_err(DrawError::Fractal)
+                        .and_then(|view| draw_escape_one_bit(target, look, view, dither)),
+                );
+            }
+        }
+        let _ = (target, look);
+        None
+    }
+
     /// Draws a texture scene (Perlin noise, reaction–diffusion) as [`Scene::draw`] does,
     /// without reaching the other families' code; `None` for any other scene.
     ///
@@ -245,6 +274,12 @@ impl Scene {
                 .unwrap_or(Ok(Work::Points(0))),
             Scene::Escape(escape) => {
                 let view = escape.view(target.bounding_box().size)?;
+                if escape.one_bit.is_some() {
+                    return self.draw_panel(target, look).unwrap_or_else(|| {
+                        target.clear(look.background).map_err(DrawError::Target)?;
+                        Ok(Work::Iterations(0))
+                    });
+                }
                 match (escape.shading, view.tier()) {
                     (_, Tier::Perturbation) => draw_perturbed(target, look, view),
                     (Shading::Dwell, _) => draw_escape::<D, 16>(target, look, view),
@@ -472,6 +507,100 @@ where
 {
     let stats = EscapeTime::new(view, look.gradient::<N>()?)
         .draw(target)
+        .map_err(DrawError::Target)?;
+    Ok(Work::Iterations(stats.iterations))
+}
+
+#[cfg(feature = "panels")]
+/// A one-bit panel (an SSD1306) over any target: on in the look's ink, off in its
+/// background.
+struct OneBit<'a, D: DrawTarget> {
+    target: &'a mut D,
+    on: D::Color,
+    off: D::Color,
+}
+
+#[cfg(feature = "panels")]
+impl<D: DrawTarget> OneBit<'_, D> {
+    fn color(&self, bit: BinaryColor) -> D::Color {
+        match bit {
+            BinaryColor::On => self.on,
+            BinaryColor::Off => self.off,
+        }
+    }
+}
+
+#[cfg(feature = "panels")]
+impl<D: DrawTarget> Dimensions for OneBit<'_, D> {
+    fn bounding_box(&self) -> Rectangle {
+        self.target.bounding_box()
+    }
+}
+
+#[cfg(feature = "panels")]
+impl<D: DrawTarget> DrawTarget for OneBit<'_, D> {
+    type Color = BinaryColor;
+    type Error = D::Error;
+
+    fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(
+        &mut self,
+        pixels: I,
+    ) -> Result<(), D::Error> {
+        let (on, off) = (self.on, self.off);
+        self.target.draw_iter(
+            pixels
+                .into_iter()
+                .map(|Pixel(p, bit)| Pixel(p, if bit.is_on() { on } else { off })),
+        )
+    }
+
+    fn fill_contiguous<I: IntoIterator<Item = BinaryColor>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), D::Error> {
+        let (on, off) = (self.on, self.off);
+        self.target.fill_contiguous(
+            area,
+            colors
+                .into_iter()
+                .map(|bit| if bit.is_on() { on } else { off }),
+        )
+    }
+
+    fn fill_solid(&mut self, area: &Rectangle, bit: BinaryColor) -> Result<(), D::Error> {
+        let color = self.color(bit);
+        self.target.fill_solid(area, color)
+    }
+}
+
+#[cfg(feature = "panels")]
+use embedded_graphics::pixelcolor::BinaryColor;
+#[cfg(feature = "panels")]
+use tinyfractal::render::{Dither, Dithered};
+
+#[cfg(feature = "panels")]
+/// An escape-time view on a one-bit panel: its gradient in 24-bit colour, each pixel
+/// dithered to one bit by its position, out of line.
+#[inline(never)]
+fn draw_escape_one_bit<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    view: View,
+    dither: Dither,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+{
+    let gradient = Gradient::<Rgb888, 16>::new(look.keys, Rgb888::BLACK)
+        .ok_or(Error::Fit(FitError::EmptyPalette))?;
+    let mut panel = OneBit {
+        target,
+        on: look.ink,
+        off: look.background,
+    };
+    let stats = EscapeTime::new(view, &gradient)
+        .draw(&mut Dithered::new(&mut panel, dither))
         .map_err(DrawError::Target)?;
     Ok(Work::Iterations(stats.iterations))
 }

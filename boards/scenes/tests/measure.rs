@@ -23,7 +23,7 @@ use tinyfractal::escape::{Render, REFERENCE_POINT_BYTES};
 use tinyfractal_scenes::measure::Checksum;
 use tinyfractal_scenes::{
     Entry, Work, DEEP_SCENES, DISPLAY_SCENES, DYNAMICS_SCENES, GENERAL_SCENES, GREY,
-    MAX_BOARD_REFERENCE_POINTS, SCENES, TEXTURE_SCENES, ZOOM_SCENES,
+    MAX_BOARD_REFERENCE_POINTS, PANEL_SCENES, SCENES, TEXTURE_SCENES, ZOOM_SCENES,
 };
 
 struct Core {
@@ -271,6 +271,7 @@ fn every_core_draws_the_host_picture_and_fits() {
     let newer: Vec<Expected> = TEXTURE_SCENES
         .iter()
         .chain(&DYNAMICS_SCENES)
+        .chain(&PANEL_SCENES)
         .map(expected)
         .collect();
 
