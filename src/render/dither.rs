@@ -38,38 +38,49 @@ const BAYER8: [[u8; 8]; 8] = [
     [63, 31, 55, 23, 61, 29, 53, 21],
 ];
 
+/// The thresholds of an n×n matrix spread over 8×8 (row by row), in 256ths:
+/// (2k + 1)·128/n² for rank k.
+// Evaluated when the crate compiles (the constants below): an index out of range would be
+// a compile error, not a panic.
+#[allow(clippy::indexing_slicing)]
+const fn thresholds(n: usize) -> [u16; 64] {
+    let mut table = [0u16; 64];
+    let mut i = 0;
+    while i < 64 {
+        let (x, y) = (i % 8, i / 8);
+        table[i] = if n == 8 {
+            (2 * BAYER8[y][x] as u16 + 1) * 2
+        } else if n == 4 {
+            (2 * (BAYER8[y % 4][x % 4] / 4) as u16 + 1) * 8
+        } else {
+            128
+        };
+        i += 1;
+    }
+    table
+}
+
+const NEAREST: [u16; 64] = thresholds(1);
+const BAYER4_THRESHOLDS: [u16; 64] = thresholds(4);
+const BAYER8_THRESHOLDS: [u16; 64] = thresholds(8);
+
 impl Dither {
+    /// Its thresholds over an 8×8 block, row by row.
+    #[inline]
+    const fn table(self) -> &'static [u16; 64] {
+        match self {
+            Self::None => &NEAREST,
+            Self::Bayer4 => &BAYER4_THRESHOLDS,
+            Self::Bayer8 => &BAYER8_THRESHOLDS,
+        }
+    }
+
     /// The threshold at `point`, in 256ths: (2k + 1)·128/n², or 128 without dithering.
     #[inline]
     pub fn threshold(self, point: Point) -> u16 {
-        let (x, y) = ((point.x & 7) as usize, (point.y & 7) as usize);
-        match self {
-            Self::None => 128,
-            Self::Bayer8 => {
-                let rank = BAYER8
-                    .get(y)
-                    .and_then(|row| row.get(x))
-                    .copied()
-                    .unwrap_or(0);
-                (2 * u16::from(rank) + 1) * 2
-            }
-            Self::Bayer4 => {
-                let rank = BAYER8
-                    .get(y & 3)
-                    .and_then(|row| row.get(x & 3))
-                    .copied()
-                    .unwrap_or(0)
-                    / 4;
-                (2 * u16::from(rank) + 1) * 8
-            }
-        }
+        let index = ((point.y & 7) << 3 | (point.x & 7)) as usize;
+        self.table().get(index).copied().unwrap_or(128)
     }
-}
-
-/// The level (0 to `levels` − 1) of channel value `value` (0–255) at `threshold` (256ths).
-#[inline]
-fn level(value: u8, levels: u32, threshold: u16) -> u32 {
-    (u32::from(value) * (levels - 1) * 256 + u32::from(threshold) * 255) / (255 * 256)
 }
 
 /// The luma of a colour, 0–255.
@@ -80,14 +91,38 @@ fn luma(color: Rgb888) -> u8 {
 }
 
 /// A panel's colour, made from 24-bit colour at a threshold.
+///
+/// A colour is prepared once ([`prepare`](Self::prepare): its luma or channels scaled to
+/// the panel's levels) and then placed at each pixel's threshold ([`at`](Self::at)): a run
+/// of one colour costs a comparison or a division by a constant a pixel.
 pub trait Quantize: PixelColor {
-    /// `color` at `threshold` (256ths; 128 rounds to nearest).
-    fn quantize(color: Rgb888, threshold: u16) -> Self;
+    /// A colour ready to be placed at any threshold.
+    type Prepared: Copy;
+
+    /// `color` ready for [`at`](Self::at).
+    fn prepare(color: Rgb888) -> Self::Prepared;
+
+    /// The prepared colour at `threshold` (256ths; 128 rounds to nearest).
+    fn at(prepared: Self::Prepared, threshold: u16) -> Self;
+
+    /// `color` at `threshold`.
+    fn quantize(color: Rgb888, threshold: u16) -> Self {
+        Self::at(Self::prepare(color), threshold)
+    }
 }
 
 impl Quantize for BinaryColor {
-    fn quantize(color: Rgb888, threshold: u16) -> Self {
-        if level(luma(color), 2, threshold) > 0 {
+    /// The least threshold that lights it: v·256 + t·255 ≥ 255·256.
+    type Prepared = u16;
+
+    fn prepare(color: Rgb888) -> u16 {
+        let short = 255 * 256 - 256 * u32::from(luma(color));
+        u16::try_from(short.div_ceil(255)).unwrap_or(u16::MAX)
+    }
+
+    #[inline]
+    fn at(least: u16, threshold: u16) -> Self {
+        if threshold >= least {
             Self::On
         } else {
             Self::Off
@@ -98,8 +133,16 @@ impl Quantize for BinaryColor {
 macro_rules! quantize_gray {
     ($($color:ty: $levels:expr),*) => {$(
         impl Quantize for $color {
-            fn quantize(color: Rgb888, threshold: u16) -> Self {
-                let level = level(luma(color), $levels, threshold);
+            /// The luma scaled: v·(N − 1)·256.
+            type Prepared = u32;
+
+            fn prepare(color: Rgb888) -> u32 {
+                u32::from(luma(color)) * ($levels - 1) * 256
+            }
+
+            #[inline]
+            fn at(scaled: u32, threshold: u16) -> Self {
+                let level = (scaled + u32::from(threshold) * 255) / (255 * 256);
                 Self::new(u8::try_from(level).unwrap_or(u8::MAX))
             }
         }
@@ -109,19 +152,34 @@ macro_rules! quantize_gray {
 quantize_gray!(Gray2: 4, Gray4: 16, Gray8: 256);
 
 impl Quantize for Rgb565 {
-    fn quantize(color: Rgb888, threshold: u16) -> Self {
-        let channel =
-            |value: u8, levels: u32| u8::try_from(level(value, levels, threshold)).unwrap_or(0);
-        Self::new(
-            channel(color.r(), 32),
-            channel(color.g(), 64),
-            channel(color.b(), 32),
-        )
+    /// The channels scaled: v·(N − 1)·256 for 32, 64 and 32 levels.
+    type Prepared = [u32; 3];
+
+    fn prepare(color: Rgb888) -> [u32; 3] {
+        [
+            u32::from(color.r()) * 31 * 256,
+            u32::from(color.g()) * 63 * 256,
+            u32::from(color.b()) * 31 * 256,
+        ]
+    }
+
+    #[inline]
+    fn at([r, g, b]: [u32; 3], threshold: u16) -> Self {
+        let level = |scaled: u32| {
+            u8::try_from((scaled + u32::from(threshold) * 255) / (255 * 256)).unwrap_or(0)
+        };
+        Self::new(level(r), level(g), level(b))
     }
 }
 
 impl Quantize for Rgb888 {
-    fn quantize(color: Rgb888, _threshold: u16) -> Self {
+    type Prepared = Rgb888;
+
+    fn prepare(color: Rgb888) -> Rgb888 {
+        color
+    }
+
+    fn at(color: Rgb888, _threshold: u16) -> Self {
         color
     }
 }
@@ -162,36 +220,69 @@ where
     where
         I: IntoIterator<Item = Pixel<Rgb888>>,
     {
-        let dither = self.dither;
-        self.target
-            .draw_iter(pixels.into_iter().map(|Pixel(point, color)| {
-                Pixel(point, D::Color::quantize(color, dither.threshold(point)))
-            }))
+        let table = self.dither.table();
+        self.target.draw_iter(pixels.into_iter().map(|Pixel(point, color)| {
+            let index = ((point.y & 7) << 3 | (point.x & 7)) as usize;
+            let threshold = table.get(index).copied().unwrap_or(128);
+            Pixel(point, D::Color::quantize(color, threshold))
+        }))
     }
 
     fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
     where
         I: IntoIterator<Item = Rgb888>,
     {
-        let dither = self.dither;
-        let colors = area
-            .points()
-            .zip(colors)
-            .map(|(point, color)| D::Color::quantize(color, dither.threshold(point)));
+        let table = self.dither.table();
+        let (left, width) = (area.top_left.x, area.size.width.max(1));
+        let mut x = 0;
+        let mut row = area.top_left.y;
+        // Runs of one colour are the rule: the last colour is prepared once.
+        let mut last: Option<(Rgb888, <D::Color as Quantize>::Prepared)> = None;
+        let colors = colors.into_iter().map(move |color| {
+            let prepared = match last {
+                Some((seen, prepared)) if seen == color => prepared,
+                _ => {
+                    let prepared = D::Color::prepare(color);
+                    last = Some((color, prepared));
+                    prepared
+                }
+            };
+            let column = left.wrapping_add_unsigned(x);
+            let index = ((row & 7) << 3 | (column & 7)) as usize;
+            x += 1;
+            if x == width {
+                x = 0;
+                row += 1;
+            }
+            D::Color::at(prepared, table.get(index).copied().unwrap_or(128))
+        });
         self.target.fill_contiguous(area, colors)
     }
 
     fn fill_solid(&mut self, area: &Rectangle, color: Rgb888) -> Result<(), Self::Error> {
+        let prepared = D::Color::prepare(color);
         if self.dither == Dither::None {
-            return self.target.fill_solid(
-                area,
-                D::Color::quantize(color, Dither::None.threshold(Point::zero())),
-            );
+            return self.target.fill_solid(area, D::Color::at(prepared, 128));
         }
-        let dither = self.dither;
-        let colors = area
-            .points()
-            .map(|point| D::Color::quantize(color, dither.threshold(point)));
+        // Each row's pattern of eight, repeated.
+        let table = self.dither.table();
+        let (left, width) = (area.top_left.x, area.size.width.max(1));
+        let mut pattern = [D::Color::at(prepared, 128); 8];
+        let mut row = area.top_left.y;
+        let mut x = width;
+        let colors = core::iter::from_fn(move || {
+            if x == width {
+                x = 0;
+                for (column, slot) in pattern.iter_mut().enumerate() {
+                    let index = ((row & 7) << 3) as usize | ((left as usize).wrapping_add(column) & 7);
+                    *slot = D::Color::at(prepared, table.get(index).copied().unwrap_or(128));
+                }
+                row += 1;
+            }
+            let color = pattern.get((x & 7) as usize).copied();
+            x += 1;
+            color
+        });
         self.target.fill_contiguous(area, colors)
     }
 }
