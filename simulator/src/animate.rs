@@ -345,6 +345,7 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
         algorithm: Algorithm::Exact,
         tier: None,
         palette: view.palette,
+        palette_file: None,
         common: crate::common::Common {
             size: (0, 0),
             out: None,

@@ -42,6 +42,14 @@ pub struct EscapeOptions {
     /// The colours
     #[arg(long, value_enum, default_value = "classic")]
     pub(crate) palette: PaletteName,
+    /// A Fractint .map colour map (lines `R G B`, anything after the numbers a comment):
+    /// dwell d takes colour d mod the map's length, the set black (instead of --palette)
+    #[arg(
+        long = "palette-file",
+        value_name = "FILE.map",
+        conflicts_with = "palette"
+    )]
+    pub(crate) palette_file: Option<PathBuf>,
     /// Write `W H MAXITER`, then H lines of W dwells
     #[arg(long, value_name = "TXT")]
     pub(crate) dwell: Option<PathBuf>,
@@ -120,6 +128,8 @@ pub struct Escape {
     pub tier: Option<Tier>,
     /// The colours (`--palette`).
     pub palette: PaletteName,
+    /// A colour map instead (`--palette-file`).
+    pub palette_file: Option<PathBuf>,
     /// The options every render takes.
     pub common: Common,
     /// Where to write the dwells (`--dwell`), if anywhere.
@@ -153,6 +163,7 @@ impl EscapeOptions {
             },
             tier: options.precision.tier(),
             palette: options.palette,
+            palette_file: options.palette_file,
             common: options.common,
             dwell: options.dwell,
         }
@@ -202,6 +213,8 @@ pub struct Request<'a> {
     pub tier: Option<Tier>,
     /// The palette's name.
     pub palette: &'a str,
+    /// A colour map file instead, if any.
+    pub palette_file: Option<&'a std::path::Path>,
 }
 
 /// What `render mandelbrot|julia` (or an animation's view) asked for, at `size`.
@@ -218,6 +231,7 @@ pub fn request(arguments: &Escape, size: Size) -> Request<'_> {
         algorithm: arguments.algorithm,
         tier: arguments.tier,
         palette: arguments.palette.name(),
+        palette_file: arguments.palette_file.as_deref(),
     }
 }
 
@@ -261,7 +275,13 @@ pub fn view_at(request: &Request<'_>, width: &str) -> Result<(View, HostPalette)
         deep_coordinate("--center", request.centre.1)?,
     );
     let width = deep_coordinate("--width", width)?;
-    let (palette, shading) = palette(request.palette)?;
+    let (palette, shading) = match request.palette_file {
+        Some(path) => (
+            HostPalette::Map(crate::palette::read_map(path)?.into_boxed_slice()),
+            Shading::Dwell,
+        ),
+        None => palette(request.palette)?,
+    };
     let mut view = View::deep(fractal, centre, width, request.size, request.max_iterations)
         .and_then(|view| view.with_shading(shading))
         .map_err(|e: Error| e.to_string())?;
@@ -467,6 +487,8 @@ pub enum HostPalette {
     Bands(Bands<'static, Rgb888>),
     /// Inside and outside, two colours.
     TwoColor(TwoColor<Rgb888>),
+    /// A Fractint colour map: dwell d takes colour d mod its length, the set black.
+    Map(Box<[Rgb888]>),
 }
 
 impl HostPalette {
@@ -476,7 +498,7 @@ impl HostPalette {
         match self {
             Self::Gradient(p) => Some(Self::Gradient(Box::new(p.with_offset(offset)))),
             Self::Smooth(p) => Some(Self::Smooth(Box::new(p.with_offset(offset)))),
-            Self::Bands(_) | Self::TwoColor(_) => None,
+            Self::Bands(_) | Self::TwoColor(_) | Self::Map(_) => None,
         }
     }
 }
@@ -490,6 +512,11 @@ impl Palette for HostPalette {
             Self::Smooth(p) => p.color(dwell, max),
             Self::Bands(p) => p.color(dwell, max),
             Self::TwoColor(p) => p.color(dwell, max),
+            Self::Map(colors) if dwell < max => colors
+                .get(usize::from(dwell) % colors.len().max(1))
+                .copied()
+                .unwrap_or(Rgb888::BLACK),
+            Self::Map(_) => Rgb888::BLACK,
         }
     }
 }

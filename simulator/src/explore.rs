@@ -530,6 +530,7 @@ impl Explorer {
             algorithm: Algorithm::Fast,
             tier: None,
             palette: PALETTES[state.palette % PALETTES.len()],
+            palette_file: None,
         };
         let (view, palette) = escape_scene::view_at(&request, &width)?;
         // Its centre is an f64: past Deep's spacing it has no more digits to zoom into.

@@ -209,6 +209,7 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                 algorithm: tinyfractal::escape::Algorithm::Fast,
                 tier,
                 palette: entry.palette,
+                palette_file: None,
             };
             crate::escape_scene::render(&request).and_then(|rendered| {
                 if rendered.view.shading() != shading {

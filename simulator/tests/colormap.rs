@@ -99,3 +99,61 @@ fn a_bad_map_names_its_line() {
         assert!(!png.exists());
     }
 }
+
+/// `--palette-file` colours an escape-time picture by its map: each pixel's dwell d (from
+/// `--dwell`) takes colour d mod the map's length, the set black; the shipped maps read.
+#[test]
+fn a_map_colours_the_dwells() {
+    let dir = scratch("colormap-dwells");
+    let (map, png, dwells) = (dir.join("three.map"), dir.join("m.png"), dir.join("d.txt"));
+    std::fs::write(&map, "255 0 0\n0 255 0 green\n0 0 255\n").unwrap();
+    let output = run(&[
+        "render",
+        "mandelbrot",
+        "--size",
+        "64x48",
+        "--max-iter",
+        "50",
+        "--palette-file",
+        map.to_str().unwrap(),
+        "--dwell",
+        dwells.to_str().unwrap(),
+        "--out",
+        png.to_str().unwrap(),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let picture = image::open(&png).unwrap().to_rgb8();
+    let text = std::fs::read_to_string(&dwells).unwrap();
+    let colours = [[255, 0, 0], [0, 255, 0], [0, 0, 255]];
+    for (y, line) in text.lines().skip(1).enumerate() {
+        for (x, dwell) in line.split_whitespace().enumerate() {
+            let dwell: usize = dwell.parse().unwrap();
+            let expected = if dwell >= 50 {
+                [0, 0, 0]
+            } else {
+                colours[dwell % 3]
+            };
+            assert_eq!(
+                picture.get_pixel(x as u32, y as u32).0,
+                expected,
+                "({x}, {y}) dwell {dwell}"
+            );
+        }
+    }
+    for shipped in ["glow", "earth", "neon"] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../data/maps")
+            .join(format!("{shipped}.map"));
+        let output = run(&[
+            "render",
+            "mandelbrot",
+            "--size",
+            "32x24",
+            "--palette-file",
+            path.to_str().unwrap(),
+            "--out",
+            png.to_str().unwrap(),
+        ]);
+        assert!(output.status.success(), "{shipped}: {}", stderr(&output));
+    }
+}

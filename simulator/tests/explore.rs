@@ -56,6 +56,7 @@ fn headless(state: &EscapeState) -> SimulatorDisplay<Rgb888> {
         algorithm: Algorithm::Fast,
         tier: None,
         palette: PALETTES[state.palette],
+        palette_file: None,
     };
     let (view, palette) = escape_scene::view_at(&request, &width).unwrap();
     let mut display = SimulatorDisplay::new(SIZE);

@@ -221,11 +221,12 @@ where
         I: IntoIterator<Item = Pixel<Rgb888>>,
     {
         let table = self.dither.table();
-        self.target.draw_iter(pixels.into_iter().map(|Pixel(point, color)| {
-            let index = ((point.y & 7) << 3 | (point.x & 7)) as usize;
-            let threshold = table.get(index).copied().unwrap_or(128);
-            Pixel(point, D::Color::quantize(color, threshold))
-        }))
+        self.target
+            .draw_iter(pixels.into_iter().map(|Pixel(point, color)| {
+                let index = ((point.y & 7) << 3 | (point.x & 7)) as usize;
+                let threshold = table.get(index).copied().unwrap_or(128);
+                Pixel(point, D::Color::quantize(color, threshold))
+            }))
     }
 
     fn fill_contiguous<I>(&mut self, area: &Rectangle, colors: I) -> Result<(), Self::Error>
@@ -274,7 +275,8 @@ where
             if x == width {
                 x = 0;
                 for (column, slot) in pattern.iter_mut().enumerate() {
-                    let index = ((row & 7) << 3) as usize | ((left as usize).wrapping_add(column) & 7);
+                    let index =
+                        ((row & 7) << 3) as usize | ((left as usize).wrapping_add(column) & 7);
                     *slot = D::Color::at(prepared, table.get(index).copied().unwrap_or(128));
                 }
                 row += 1;
