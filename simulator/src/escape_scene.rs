@@ -323,8 +323,24 @@ where
     D: DrawTarget<Color = Rgb888, Error = core::convert::Infallible>,
 {
     let inside = view.inside_value();
-    let colours = values.iter().map(|&value| palette.color(value, inside));
     let area = embedded_graphics::primitives::Rectangle::new(Point::zero(), view.size());
+    if let HostPalette::Histogram(gradient) = palette {
+        // The counts of every dwell, the set's included.
+        let mut counts = vec![0u32; usize::from(inside) + 1];
+        let equalised = tinyfractal::render::Histogram::new(
+            &mut counts,
+            values.iter().copied(),
+            inside,
+            256,
+            gradient.as_ref(),
+        );
+        if let Ok(equalised) = equalised {
+            let colours = values.iter().map(|&value| equalised.color(value, inside));
+            let Ok(()) = target.fill_contiguous(&area, colours);
+            return;
+        }
+    }
+    let colours = values.iter().map(|&value| palette.color(value, inside));
     let Ok(()) = target.fill_contiguous(&area, colours);
 }
 
@@ -489,6 +505,9 @@ pub enum HostPalette {
     TwoColor(TwoColor<Rgb888>),
     /// A Fractint colour map: dwell d takes colour d mod its length, the set black.
     Map(Box<[Rgb888]>),
+    /// A gradient's colours equalised over the picture's dwells when it is painted
+    /// (histogram colouring); alone, the gradient.
+    Histogram(Box<Gradient<Rgb888, 256>>),
 }
 
 impl HostPalette {
@@ -498,7 +517,7 @@ impl HostPalette {
         match self {
             Self::Gradient(p) => Some(Self::Gradient(Box::new(p.with_offset(offset)))),
             Self::Smooth(p) => Some(Self::Smooth(Box::new(p.with_offset(offset)))),
-            Self::Bands(_) | Self::TwoColor(_) | Self::Map(_) => None,
+            Self::Bands(_) | Self::TwoColor(_) | Self::Map(_) | Self::Histogram(_) => None,
         }
     }
 }
@@ -517,6 +536,7 @@ impl Palette for HostPalette {
                 .copied()
                 .unwrap_or(Rgb888::BLACK),
             Self::Map(_) => Rgb888::BLACK,
+            Self::Histogram(p) => p.color(dwell, max),
         }
     }
 }
@@ -535,7 +555,7 @@ pub fn palette(name: &str) -> Result<(HostPalette, Shading), String> {
     let unknown = || {
         format!(
             "--palette: `{name}` is not classic, fire, gray, bands, two-color, smooth-classic, \
-             smooth-fire or smooth-gray"
+             smooth-fire, smooth-gray or histogram"
         )
     };
     if let Some(gradient) = name.strip_prefix("smooth-") {
@@ -547,6 +567,11 @@ pub fn palette(name: &str) -> Result<(HostPalette, Shading), String> {
         "bands" => Bands::new(&BANDS, Rgb888::BLACK)
             .map(HostPalette::Bands)
             .ok_or("empty bands")?,
+        "histogram" => {
+            let keys = gradient_keys("classic").ok_or_else(unknown)?;
+            let palette = Gradient::new(keys, Rgb888::BLACK).ok_or("empty gradient")?;
+            HostPalette::Histogram(Box::new(palette))
+        }
         "two-color" => HostPalette::TwoColor(TwoColor {
             inside: Rgb888::BLACK,
             outside: Rgb888::WHITE,

@@ -27,14 +27,18 @@ use tinyfractal_scenes::{Entry, Scene, GALLERY};
 use crate::escape_scene::{self, HostPalette};
 
 /// The palettes `p` steps through.
-pub const PALETTES: [&str; 6] = [
+pub const PALETTES: [&str; 7] = [
     "classic",
     "fire",
     "gray",
     "smooth-classic",
     "smooth-fire",
     "bands",
+    "histogram",
 ];
+
+/// Where `h` goes: histogram colouring.
+const HISTOGRAM: usize = 6;
 
 /// Height of the status line at the bottom, in pixels.
 pub const STATUS_HEIGHT: u32 = 12;
@@ -59,6 +63,8 @@ pub enum Input {
     Fewer,
     /// `p`: the next palette.
     NextPalette,
+    /// `h`: histogram colouring (each colour an equal share of the escaping pixels).
+    Histogram,
     /// `c`: colour cycling on or off.
     ToggleCycling,
     /// `j`: the Julia set of the point under the mouse (or back to the Mandelbrot set).
@@ -444,6 +450,7 @@ impl Explorer {
                             stepped_cap(state.max_iterations, input == Input::More);
                     }
                     Input::NextPalette => state.palette = (state.palette + 1) % PALETTES.len(),
+                    Input::Histogram => state.palette = HISTOGRAM,
                     Input::ToggleCycling => {
                         state.cycling = !state.cycling;
                         redraw = false;

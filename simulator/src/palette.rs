@@ -105,6 +105,8 @@ pub enum PaletteName {
     SmoothFire,
     /// gray, by the smooth iteration count
     SmoothGray,
+    /// classic's 256 colours equalised: each covers an equal share of the escaping pixels
+    Histogram,
 }
 
 impl PaletteName {
@@ -119,6 +121,7 @@ impl PaletteName {
             Self::SmoothClassic => "smooth-classic",
             Self::SmoothFire => "smooth-fire",
             Self::SmoothGray => "smooth-gray",
+            Self::Histogram => "histogram",
         }
     }
 }

@@ -153,6 +153,7 @@ fn explore_window(arguments: &ExploreOptions) -> Result<(), String> {
                         Keycode::Minus | Keycode::KpMinus => Some(Input::Fewer),
                         Keycode::P => Some(Input::NextPalette),
                         Keycode::C => Some(Input::ToggleCycling),
+                        Keycode::H => Some(Input::Histogram),
                         Keycode::J => Some(Input::JuliaAt(mouse)),
                         Keycode::S => Some(Input::Save),
                         Keycode::R => Some(Input::Reset),

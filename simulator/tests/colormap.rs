@@ -157,3 +157,38 @@ fn a_map_colours_the_dwells() {
         assert!(output.status.success(), "{shipped}: {}", stderr(&output));
     }
 }
+
+/// `--palette histogram` spreads the picture over the gradient: far more of its colours
+/// than the plain gradient shows at a high cap, where the dwells crowd low.
+#[test]
+fn histogram_colouring_spreads_the_colours() {
+    let dir = scratch("histogram");
+    let png = dir.join("h.png");
+    let distinct = |palette: &str| {
+        let output = run(&[
+            "render",
+            "mandelbrot",
+            "--size",
+            "96x64",
+            "--max-iter",
+            "2000",
+            "--width",
+            "0.02",
+            "--center=-0.745,0.11",
+            "--palette",
+            palette,
+            "--out",
+            png.to_str().unwrap(),
+        ]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        let picture = image::open(&png).unwrap().to_rgb8();
+        picture
+            .pixels()
+            .map(|p| p.0)
+            .collect::<HashSet<_>>()
+            .len()
+    };
+    let (plain, equalised) = (distinct("classic"), distinct("histogram"));
+    assert!(equalised >= 32, "{equalised} colours");
+    assert!(equalised != plain);
+}
