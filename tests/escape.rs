@@ -1072,3 +1072,47 @@ fn goes_on_after_a_sink_error<const CELLS: usize>((re, im): (&str, &str), width:
         );
     }
 }
+
+/// A render split into parts (`Render::parts`, `run_part`), each computed by a render of its
+/// own as a thread would, writes every pixel exactly once and the whole render's dwell.
+#[test]
+fn parts_rendered_apart_make_the_whole_picture() {
+    for case in CASES {
+        let view = view_of(case);
+        for algorithm in [Algorithm::Exact, Algorithm::Fast] {
+            let (whole, _) = render(view, algorithm);
+            let (units, grain) = Render::new(view, algorithm).parts();
+            let groups = units.div_ceil(grain);
+            for pieces in [2u32, 3, 7] {
+                let mut merged = vec![0u16; whole.values.len()];
+                let mut writes = vec![0u32; whole.values.len()];
+                let mut iterations = 0;
+                for piece in 0..pieces {
+                    let (first, last) = (groups * piece / pieces, groups * (piece + 1) / pieces);
+                    let mut sink = Dwells::new(view.size());
+                    let stats = Render::new(view, algorithm)
+                        .run_part(&mut sink, first * grain..last * grain)
+                        .unwrap();
+                    iterations += stats.iterations;
+                    for (index, &count) in sink.writes.iter().enumerate() {
+                        if count > 0 {
+                            merged[index] = sink.values[index];
+                            writes[index] += count;
+                        }
+                    }
+                }
+                assert!(
+                    writes.iter().all(|&w| w == 1),
+                    "{}: each pixel once",
+                    case.name
+                );
+                assert!(
+                    merged == whole.values,
+                    "{} {algorithm:?} in {pieces}",
+                    case.name
+                );
+                assert!(iterations > 0);
+            }
+        }
+    }
+}

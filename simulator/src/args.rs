@@ -41,6 +41,10 @@ use crate::window::ExploreOptions;
 pub struct Cli {
     #[command(subcommand)]
     command: Option<Commands>,
+    /// Threads to use (default: every core): escape-time pictures split into parts, the
+    /// gallery's scenes side by side; the output is the same whatever the number
+    #[arg(long, global = true, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -137,10 +141,12 @@ where
 impl Cli {
     /// Runs the command; with none, renders the gallery into `./gallery/`.
     pub fn run(self) -> Result<(), Failure> {
-        match self.command {
+        let threads = self.threads.map(|n| n as usize);
+        let command = self.command;
+        crate::parallel::with_threads(threads, || match command {
             None => Ok(crate::gallery::run(&PathBuf::from("gallery"))?),
             Some(command) => command.run(),
-        }
+        })?
     }
 }
 
@@ -235,6 +241,7 @@ mod tests {
         match parse(args(text)) {
             Ok(Cli {
                 command: Some(Commands::Render { scene }),
+                ..
             }) => *scene,
             other => panic!("{text}: {other:?}"),
         }

@@ -354,14 +354,16 @@ fn pixel_count(size: Size) -> Result<usize, String> {
 pub fn compute(view: View, algorithm: Algorithm) -> Result<(Vec<u16>, RenderStats), String> {
     let size = view.size();
     let mut values = vec![0; pixel_count(size)?];
-    let mut sink = DwellBuffer::new(&mut values, size.width);
-    let Ok(stats) = if view.tier() == Tier::Perturbation {
+    let stats = if view.tier() == Tier::Perturbation {
+        let mut sink = DwellBuffer::new(&mut values, size.width);
         let mut reference = vec![ReferencePoint::default(); ReferenceOrbit::points_needed(&view)];
-        Render::perturbed(view, algorithm, &mut reference)
+        let Ok(stats) = Render::perturbed(view, algorithm, &mut reference)
             .map_err(|e| e.to_string())?
-            .run(&mut sink)
+            .run(&mut sink);
+        stats
     } else {
-        Render::new(view, algorithm).run(&mut sink)
+        // Parts on every thread of the pool (see `parallel`).
+        crate::parallel::render_parts(view, algorithm, &mut values)
     };
     Ok((values, stats))
 }

@@ -4,7 +4,10 @@
 use std::path::Path;
 use std::time::Duration;
 
-use tinyfractal_scenes::{Entry, EscapeScene, Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY};
+use rayon::prelude::*;
+use tinyfractal_scenes::{
+    Entry, EscapeScene, GeneralEntry, IfsEntry, Scene, GALLERY, GENERAL_GALLERY, IFS_GALLERY,
+};
 
 fn row(scene: &str, detail: &str, work: &str, elapsed: Duration, file: &Path) -> String {
     format!(
@@ -29,7 +32,7 @@ fn folder_missing(out: &Path) -> Result<bool, String> {
 }
 
 /// A scene's picture and what the table says of it: detail, work, time.
-type Rendered = (Picture, String, String, Duration);
+pub type Rendered = (Picture, String, String, Duration);
 
 /// Renders every scene, then writes them all into `out` with the table on standard output, or
 /// nothing.
@@ -42,7 +45,7 @@ pub fn run(out: &Path) -> Result<(), String> {
     let bar = crate::progress::bar(scenes as u64, "gallery");
     let mut rendered: Vec<(&str, Rendered)> = Vec::with_capacity(scenes);
     let mut failed = 0;
-    let mut report = |name: &'static str, result: Result<Rendered, String>| {
+    for (name, result) in pictures(|| bar.inc(1)) {
         match result {
             Ok(scene) => rendered.push((name, scene)),
             Err(error) => {
@@ -52,47 +55,6 @@ pub fn run(out: &Path) -> Result<(), String> {
                 failed += 1;
             }
         }
-        bar.inc(1);
-    };
-    for entry in &GALLERY {
-        report(entry.name, picture(entry));
-    }
-    for entry in &GENERAL_GALLERY {
-        let result = tinyfractal::LsysFile::new(entry.source)
-            .entry(entry.system)
-            .and_then(|system| Ok((system.parametric()?, system.colors::<256>()?)))
-            .and_then(|(grammar, colors)| {
-                let look = crate::scene::GeneralLook {
-                    colormap: (!colors.is_empty()).then_some(colors.as_slice()),
-                    ..crate::scene::GeneralLook::default()
-                };
-                crate::scene::render_general(
-                    &grammar,
-                    entry.order,
-                    (entry.size.width, entry.size.height),
-                    None,
-                    &look,
-                )
-            })
-            .map_err(|e| e.to_string())
-            .map(|rendered| {
-                (
-                    rendered.display,
-                    format!("order {}", entry.order),
-                    format!("{} segments", rendered.stats.segments),
-                    rendered.elapsed,
-                )
-            });
-        report(entry.name, result);
-    }
-    for entry in &IFS_GALLERY {
-        let result =
-            crate::ifs_scene::render_entry(entry.source, entry.system, entry.points, entry.size)
-                .map(|(display, plotted, elapsed)| {
-                    let work = format!("{plotted} points");
-                    (display, "chaos game".to_string(), work, elapsed)
-                });
-        report(entry.name, result);
     }
     bar.finish_and_clear();
     if failed > 0 {
@@ -130,6 +92,87 @@ pub fn run(out: &Path) -> Result<(), String> {
             let _ = std::fs::remove_dir(out);
         }
     })
+}
+
+/// Every scene of the gallery rendered on the pool's threads (`--threads`), in the
+/// catalogue's order, `done` called as each is finished: the pictures are the same
+/// whatever the number of threads.
+pub fn pictures(done: impl Fn() + Sync) -> Vec<(&'static str, Result<Rendered, String>)> {
+    let jobs: Vec<(&'static str, Job)> = GALLERY
+        .iter()
+        .map(|entry| (entry.name, Job::Scene(entry)))
+        .chain(
+            GENERAL_GALLERY
+                .iter()
+                .map(|entry| (entry.name, Job::General(entry))),
+        )
+        .chain(
+            IFS_GALLERY
+                .iter()
+                .map(|entry| (entry.name, Job::Ifs(entry))),
+        )
+        .collect();
+    jobs.into_par_iter()
+        .map(|(name, job)| {
+            let result = job.render();
+            done();
+            (name, result)
+        })
+        .collect()
+}
+
+/// One scene of the gallery, from whichever list of the catalogue.
+#[derive(Clone, Copy)]
+enum Job {
+    Scene(&'static Entry),
+    General(&'static GeneralEntry),
+    Ifs(&'static IfsEntry),
+}
+
+impl Job {
+    /// The scene's picture and what the table says of it.
+    fn render(self) -> Result<Rendered, String> {
+        match self {
+            Self::Scene(entry) => picture(entry),
+            Self::General(entry) => general_picture(entry),
+            Self::Ifs(entry) => {
+                crate::ifs_scene::render_entry(entry.source, entry.system, entry.points, entry.size)
+                    .map(|(display, plotted, elapsed)| {
+                        let work = format!("{plotted} points");
+                        (display, "chaos game".to_string(), work, elapsed)
+                    })
+            }
+        }
+    }
+}
+
+/// A system of the general engine drawn in its entry's colours (or the book's).
+fn general_picture(entry: &GeneralEntry) -> Result<Rendered, String> {
+    tinyfractal::LsysFile::new(entry.source)
+        .entry(entry.system)
+        .and_then(|system| Ok((system.parametric()?, system.colors::<256>()?)))
+        .and_then(|(grammar, colors)| {
+            let look = crate::scene::GeneralLook {
+                colormap: (!colors.is_empty()).then_some(colors.as_slice()),
+                ..crate::scene::GeneralLook::default()
+            };
+            crate::scene::render_general(
+                &grammar,
+                entry.order,
+                (entry.size.width, entry.size.height),
+                None,
+                &look,
+            )
+        })
+        .map_err(|e| e.to_string())
+        .map(|rendered| {
+            (
+                rendered.display,
+                format!("order {}", entry.order),
+                format!("{} segments", rendered.stats.segments),
+                rendered.elapsed,
+            )
+        })
 }
 
 /// A catalogue entry's picture at its size, with what the gallery reports: a detail (order,

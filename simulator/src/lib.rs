@@ -22,6 +22,7 @@ pub(crate) mod lsystem_scene;
 pub(crate) mod noise_scene;
 pub(crate) mod output;
 pub(crate) mod palette;
+pub mod parallel;
 pub(crate) mod particles_scene;
 pub(crate) mod plant_animation;
 pub(crate) mod progress;

@@ -182,11 +182,7 @@ fn histogram_colouring_spreads_the_colours() {
         ]);
         assert!(output.status.success(), "{}", stderr(&output));
         let picture = image::open(&png).unwrap().to_rgb8();
-        picture
-            .pixels()
-            .map(|p| p.0)
-            .collect::<HashSet<_>>()
-            .len()
+        picture.pixels().map(|p| p.0).collect::<HashSet<_>>().len()
     };
     let (plain, equalised) = (distinct("classic"), distinct("histogram"));
     assert!(equalised >= 32, "{equalised} colours");

@@ -234,6 +234,39 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         Ok(self.stats)
     }
 
+    /// How the render splits into parts a thread each: its units (rows for `Exact`, tiles
+    /// for `Fast`) and how many make one independent part (a row; a column of tiles, whose
+    /// tiles share rows). Parts computed apart ([`run_part`](Self::run_part)) give every
+    /// pixel the dwell the whole render gives it.
+    pub fn parts(&self) -> (u32, u32) {
+        let grain = match self.algorithm {
+            Algorithm::Exact => 1,
+            Algorithm::Fast => self.tiles_down().max(1),
+        };
+        (self.units(), grain)
+    }
+
+    /// Computes units `units` only (no preview), for a host that splits a render between
+    /// threads, each with a render of the same view: the range should start and end on
+    /// whole parts ([`parts`](Self::parts)). Returns this part's stats.
+    pub fn run_part<S: DwellSink>(
+        &mut self,
+        sink: &mut S,
+        units: core::ops::Range<u32>,
+    ) -> Result<RenderStats, S::Error> {
+        self.previewed = self.preview_units();
+        self.next = units.start;
+        let end = units.end.min(self.units());
+        while self.next < end {
+            match self.algorithm {
+                Algorithm::Exact => self.exact_row(sink)?,
+                Algorithm::Fast => self.fast_tile(sink)?,
+            }
+            self.next += 1;
+        }
+        Ok(self.stats)
+    }
+
     pub(super) fn units(&self) -> u32 {
         match self.algorithm {
             Algorithm::Exact => self.view.size.height,

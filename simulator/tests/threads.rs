@@ -1,0 +1,50 @@
+//! `--threads`: the same picture, byte for byte, on one thread or several.
+
+mod common;
+
+use common::{run, scratch, stderr};
+
+#[test]
+fn any_number_of_threads_draws_the_same_picture() {
+    let dir = scratch("threads");
+    let views: [&[&str]; 4] = [
+        &["render", "mandelbrot", "--size", "300x200"],
+        &[
+            "render",
+            "mandelbrot",
+            "--size",
+            "300x200",
+            "--algorithm",
+            "exact",
+        ],
+        &["render", "julia", "--c=-0.8,0.156", "--size", "257x131"],
+        &[
+            "render",
+            "mandelbrot",
+            "--size",
+            "200x150",
+            "--center=-0.745,0.11",
+            "--width",
+            "0.02",
+            "--max-iter",
+            "1000",
+            "--palette",
+            "smooth-classic",
+        ],
+    ];
+    for (index, view) in views.iter().enumerate() {
+        let mut pictures = Vec::new();
+        for threads in ["1", "2", "5"] {
+            let out = dir.join(format!("{index}-{threads}.png"));
+            let mut args = vec!["--threads", threads];
+            args.extend_from_slice(view);
+            args.extend(["--out", out.to_str().unwrap()]);
+            let output = run(&args);
+            assert!(output.status.success(), "{args:?}: {}", stderr(&output));
+            pictures.push(std::fs::read(&out).unwrap());
+        }
+        assert!(pictures.windows(2).all(|w| w[0] == w[1]), "{view:?}");
+    }
+    let refused = run(&["--threads", "0", "render", "mandelbrot"]);
+    assert_eq!(refused.status.code(), Some(2));
+}
