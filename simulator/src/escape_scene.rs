@@ -9,9 +9,9 @@ use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    escape::{Algorithm, ReferenceOrbit, ReferencePoint, Render, RenderStats, Shading, Tier},
+    escape::{Algorithm, RenderStats, Shading, Tier},
     math::{DeepCoord, DeepParseError},
-    render::{Bands, DwellBuffer, Gradient, Palette, TwoColor},
+    render::{Bands, Gradient, Palette, TwoColor},
     Coord, Error, Fractal, View,
 };
 
@@ -354,17 +354,8 @@ fn pixel_count(size: Size) -> Result<usize, String> {
 pub fn compute(view: View, algorithm: Algorithm) -> Result<(Vec<u16>, RenderStats), String> {
     let size = view.size();
     let mut values = vec![0; pixel_count(size)?];
-    let stats = if view.tier() == Tier::Perturbation {
-        let mut sink = DwellBuffer::new(&mut values, size.width);
-        let mut reference = vec![ReferencePoint::default(); ReferenceOrbit::points_needed(&view)];
-        let Ok(stats) = Render::perturbed(view, algorithm, &mut reference)
-            .map_err(|e| e.to_string())?
-            .run(&mut sink);
-        stats
-    } else {
-        // Parts on every thread of the pool (see `parallel`).
-        crate::parallel::render_parts(view, algorithm, &mut values)
-    };
+    // Parts on every thread of the pool (see `parallel`).
+    let stats = crate::parallel::render_parts(view, algorithm, &mut values)?;
     Ok((values, stats))
 }
 

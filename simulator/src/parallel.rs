@@ -1,28 +1,27 @@
 //! Every core of the host, the picture byte for byte the one thread's.
 //!
-//! An escape-time render splits into parts (a row, or a column of tiles, each), the parts
-//! rendered on rayon's threads and their blocks put in place in order.
+//! An escape-time render splits into parts (rows, or columns of tiles), each part rendered
+//! on one of rayon's threads into its own strip of the picture, the strips then copied in.
 //!
-//! A perturbed view renders on one thread: its reference orbit is computed into a render's
-//! own storage, and a part a thread would compute it again (it stops scaling there).
+//! A perturbed view renders in one part: its pixels depend on the render's history (split
+//! in parts, some of its dwells came out otherwise), so it does not scale.
 
+use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use rayon::prelude::*;
-use tinyfractal::escape::{Algorithm, Render, RenderStats};
+use tinyfractal::escape::ReferencePoint;
+use tinyfractal::escape::{Algorithm, ReferenceOrbit, Render, RenderStats, Tier, TILE};
 use tinyfractal::render::{DwellBuffer, DwellSink};
 use tinyfractal::View;
 
-/// What a part sent its sink, kept until every part is done.
-enum Block {
-    Dwells(Rectangle, Vec<u16>),
-    Uniform(Rectangle, u16),
+/// One part's own piece of the picture: the dwells of `area`, row by row, written as the
+/// part sends them (its blocks all fall inside it).
+struct Strip {
+    area: Rectangle,
+    values: Vec<u16>,
 }
 
-/// A part's blocks, in the order it sent them.
-#[derive(Default)]
-struct Blocks(Vec<Block>);
-
-impl DwellSink for Blocks {
+impl DwellSink for Strip {
     type Error = core::convert::Infallible;
 
     fn dwells<I: Iterator<Item = u16>>(
@@ -30,46 +29,117 @@ impl DwellSink for Blocks {
         area: &Rectangle,
         dwells: I,
     ) -> Result<(), Self::Error> {
-        self.0.push(Block::Dwells(*area, dwells.collect()));
-        Ok(())
+        let within = area.translate(-self.area.top_left);
+        DwellBuffer::new(&mut self.values, self.area.size.width).dwells(&within, dwells)
     }
 
     fn uniform(&mut self, area: &Rectangle, dwell: u16) -> Result<(), Self::Error> {
-        self.0.push(Block::Uniform(*area, dwell));
-        Ok(())
+        let within = area.translate(-self.area.top_left);
+        DwellBuffer::new(&mut self.values, self.area.size.width).uniform(&within, dwell)
     }
 }
 
 /// Parts a thread takes on average: more than one, so a thread that drew cheap parts
 /// takes more while another works through an expensive one.
-const PARTS_A_THREAD: u32 = 4;
+const PARTS_A_THREAD: u32 = 16;
+
+/// The piece of the picture units `units` cover: rows for `Exact`, columns of tiles for
+/// `Fast` (every row: a symmetric view's tiles are mirrored within their column).
+fn area_of(
+    view: &View,
+    algorithm: Algorithm,
+    units: core::ops::Range<u32>,
+    grain: u32,
+) -> Rectangle {
+    let size = view.size();
+    match algorithm {
+        Algorithm::Exact => Rectangle::new(
+            Point::new(0, units.start as i32),
+            Size::new(
+                size.width,
+                units.end.min(size.height) - units.start.min(size.height),
+            ),
+        ),
+        Algorithm::Fast => {
+            let x0 = (units.start / grain * TILE).min(size.width);
+            let x1 = (units.end / grain * TILE).min(size.width);
+            Rectangle::new(Point::new(x0 as i32, 0), Size::new(x1 - x0, size.height))
+        }
+    }
+}
 
 /// Renders `view` into `values` (row by row) on the current rayon pool's threads; the
 /// stats summed over the parts.
-pub(crate) fn render_parts(view: View, algorithm: Algorithm, values: &mut [u16]) -> RenderStats {
+pub(crate) fn render_parts(
+    view: View,
+    algorithm: Algorithm,
+    values: &mut [u16],
+) -> Result<RenderStats, String> {
     let threads = u32::try_from(rayon::current_num_threads()).unwrap_or(1);
     let (units, grain) = Render::new(view, algorithm).parts();
-    let groups = units.div_ceil(grain.max(1));
-    let pieces = (threads * PARTS_A_THREAD).clamp(1, groups.max(1));
-    let parts: Vec<(Blocks, RenderStats)> = (0..pieces)
+    let grain = grain.max(1);
+    let groups = units.div_ceil(grain);
+    // A perturbed render in one part: its pixels depend on what it computed before (a
+    // part of its own would not give the same picture).
+    let perturbed = view.tier() == Tier::Perturbation;
+    let pieces = if perturbed {
+        1
+    } else {
+        (threads * PARTS_A_THREAD).clamp(1, groups.max(1))
+    };
+    let parts: Vec<(Strip, RenderStats)> = (0..pieces)
         .into_par_iter()
         .map(|piece| {
             let (first, last) = (groups * piece / pieces, groups * (piece + 1) / pieces);
-            let mut blocks = Blocks::default();
-            let Ok(stats) =
-                Render::new(view, algorithm).run_part(&mut blocks, first * grain..last * grain);
-            (blocks, stats)
-        })
-        .collect();
-    let mut sink = DwellBuffer::new(values, view.size().width);
-    let mut total: Option<RenderStats> = None;
-    for (blocks, stats) in parts {
-        for block in blocks.0 {
-            let Ok(()) = match block {
-                Block::Dwells(area, dwells) => sink.dwells(&area, dwells.into_iter()),
-                Block::Uniform(area, dwell) => sink.uniform(&area, dwell),
+            let units = first * grain..(last * grain).min(units);
+            let area = area_of(&view, algorithm, units.clone(), grain);
+            let cells = area.size.width as usize * area.size.height as usize;
+            let mut strip = Strip {
+                area,
+                values: vec![0; cells],
             };
-        }
+            let stats = if perturbed {
+                let points = ReferenceOrbit::points_needed(&view);
+                let mut reference = vec![ReferencePoint::default(); points];
+                let mut render = Render::perturbed(view, algorithm, &mut reference)
+                    .map_err(|e| e.to_string())?;
+                let Ok(stats) = render.run_part(&mut strip, units);
+                stats
+            } else {
+                let Ok(stats) = Render::new(view, algorithm).run_part(&mut strip, units);
+                stats
+            };
+            Ok((strip, stats))
+        })
+        .collect::<Result<_, String>>()?;
+    // The strips copied in a row of the picture at a time, the rows on every thread.
+    let width = view.size().width as usize;
+    if width > 0 {
+        values
+            .par_chunks_mut(width)
+            .enumerate()
+            .for_each(|(y, row)| {
+                for (strip, _) in &parts {
+                    let (x0, y0) = (
+                        strip.area.top_left.x as usize,
+                        strip.area.top_left.y as usize,
+                    );
+                    let (w, h) = (
+                        strip.area.size.width as usize,
+                        strip.area.size.height as usize,
+                    );
+                    if w == 0 || y < y0 || y >= y0 + h {
+                        continue;
+                    }
+                    let from = strip.values.get((y - y0) * w..(y - y0 + 1) * w);
+                    if let (Some(to), Some(from)) = (row.get_mut(x0..x0 + w), from) {
+                        to.copy_from_slice(from);
+                    }
+                }
+            });
+    }
+    let mut total: Option<RenderStats> = None;
+    for (_, stats) in parts {
         total = Some(match total {
             None => stats,
             Some(sum) => RenderStats {
@@ -82,7 +152,7 @@ pub(crate) fn render_parts(view: View, algorithm: Algorithm, values: &mut [u16])
             },
         });
     }
-    total.unwrap_or_else(|| Render::new(view, algorithm).stats())
+    Ok(total.unwrap_or_else(|| Render::new(view, algorithm).stats()))
 }
 
 /// Runs `work` with a pool of `threads` threads (every core when `None`): what the

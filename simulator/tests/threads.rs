@@ -7,7 +7,7 @@ use common::{run, scratch, stderr};
 #[test]
 fn any_number_of_threads_draws_the_same_picture() {
     let dir = scratch("threads");
-    let views: [&[&str]; 4] = [
+    let views: [&[&str]; 5] = [
         &["render", "mandelbrot", "--size", "300x200"],
         &[
             "render",
@@ -30,6 +30,20 @@ fn any_number_of_threads_draws_the_same_picture() {
             "1000",
             "--palette",
             "smooth-classic",
+        ],
+        // By perturbation: each part computes its own reference orbit.
+        &[
+            "render",
+            "mandelbrot",
+            "--size",
+            "160x96",
+            "--center=-0.743643887,0.131825904",
+            "--width",
+            "1e-7",
+            "--max-iter",
+            "1500",
+            "--precision",
+            "perturbation",
         ],
     ];
     for (index, view) in views.iter().enumerate() {
