@@ -3,8 +3,8 @@
 //! An escape-time render splits into parts (rows, or columns of tiles), each part rendered
 //! on one of rayon's threads into its own strip of the picture, the strips then copied in.
 //!
-//! A perturbed view renders in one part: its pixels depend on the render's history (split
-//! in parts, some of its dwells came out otherwise), so it does not scale.
+//! A perturbed view renders whole, on one thread: not split yet (its parts would each
+//! compute the reference orbit again, and its tiles are not the fixed tiers').
 
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
@@ -79,8 +79,7 @@ pub(crate) fn render_parts(
     let (units, grain) = Render::new(view, algorithm).parts();
     let grain = grain.max(1);
     let groups = units.div_ceil(grain);
-    // A perturbed render in one part: its pixels depend on what it computed before (a
-    // part of its own would not give the same picture).
+    // A perturbed render in one part, on one thread (not split yet).
     let perturbed = view.tier() == Tier::Perturbation;
     let pieces = if perturbed {
         1
@@ -99,11 +98,13 @@ pub(crate) fn render_parts(
                 values: vec![0; cells],
             };
             let stats = if perturbed {
+                // The whole render (its tiles are not the fixed tiers', whose parts these
+                // are).
                 let points = ReferenceOrbit::points_needed(&view);
                 let mut reference = vec![ReferencePoint::default(); points];
                 let mut render = Render::perturbed(view, algorithm, &mut reference)
                     .map_err(|e| e.to_string())?;
-                let Ok(stats) = render.run_part(&mut strip, units);
+                let Ok(stats) = render.run(&mut strip);
                 stats
             } else {
                 let Ok(stats) = Render::new(view, algorithm).run_part(&mut strip, units);
