@@ -141,16 +141,14 @@ fn a_map_colours_the_dwells() {
         }
     }
     for shipped in ["glow", "earth", "neon"] {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../data/maps")
-            .join(format!("{shipped}.map"));
+        let path = common::shipped(&format!("maps/{shipped}.map"));
         let output = run(&[
             "render",
             "mandelbrot",
             "--size",
             "32x24",
             "--palette-file",
-            path.to_str().unwrap(),
+            &path,
             "--out",
             png.to_str().unwrap(),
         ]);

@@ -3,16 +3,8 @@
 
 mod common;
 
-use common::{run, scratch, stderr, stdout};
+use common::{run, scratch, shipped, stderr, stdout};
 use std::path::Path;
-
-fn data(name: &str) -> String {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../data")
-        .join(name)
-        .display()
-        .to_string()
-}
 
 fn ok(args: &[&str]) -> String {
     let output = run(args);
@@ -69,7 +61,7 @@ fn the_bushs_leaves_are_seven_vertices_in_space() {
         "render",
         "lsystem",
         "--file",
-        &data("abop.lsys"),
+        &shipped("abop.lsys"),
         "--name",
         "Fig1.25",
         "--order",
@@ -144,7 +136,7 @@ fn animate_sway_moves_the_crown_not_the_root() {
         "animate",
         "sway",
         "--file",
-        &data("abop.lsys"),
+        &shipped("abop.lsys"),
         "--name",
         "Fig2.8a",
         "--order",

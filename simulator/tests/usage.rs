@@ -4,16 +4,8 @@
 
 mod common;
 
-use common::{run, scratch, stderr};
+use common::{run, scratch, shipped, stderr};
 use std::path::Path;
-
-fn data(name: &str) -> String {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../data")
-        .join(name)
-        .display()
-        .to_string()
-}
 
 /// Exit status 2, and stderr holding each of `expected`.
 fn usage_error(args: &[&str], expected: &[&str]) {
@@ -30,7 +22,7 @@ fn options_that_do_not_apply_are_usage_errors() {
     let dir = scratch("not-applying");
     let out = dir.join("never.png");
     let out = out.to_str().unwrap();
-    let classics = data("classics.l");
+    let classics = shipped("classics.l");
     let koch = [
         "render",
         "lsystem",
@@ -138,7 +130,7 @@ fn limits_and_causes_are_the_options_own() {
         "render",
         "lsystem",
         "--file",
-        &data("classics.l"),
+        &shipped("classics.l"),
         "--name",
         "KochCurve",
         "--order",
@@ -169,7 +161,7 @@ fn files_are_known_by_content_and_extension() {
     let dir = scratch("files");
     // An upper-case extension is the same kind.
     let upper = dir.join("ABOP.LSYS");
-    std::fs::copy(data("abop.lsys"), &upper).unwrap();
+    std::fs::copy(shipped("abop.lsys"), &upper).unwrap();
     let output = run(&["list", upper.to_str().unwrap()]);
     assert!(output.status.success(), "{}", stderr(&output));
     assert!(
@@ -180,7 +172,7 @@ fn files_are_known_by_content_and_extension() {
     // A UTF-8 byte-order mark is skipped.
     let bom = dir.join("bom.l");
     let mut text = vec![0xef, 0xbb, 0xbf];
-    text.extend(std::fs::read(data("classics.l")).unwrap());
+    text.extend(std::fs::read(shipped("classics.l")).unwrap());
     std::fs::write(&bom, text).unwrap();
     let output = run(&["list", bom.to_str().unwrap()]);
     assert!(
@@ -208,8 +200,8 @@ fn files_are_known_by_content_and_extension() {
     );
     // An IFS file given to the L-system reader, under any extension.
     let disguised = dir.join("fern.l");
-    std::fs::copy(data("lecture.ifs"), &disguised).unwrap();
-    for path in [data("lecture.ifs"), disguised.display().to_string()] {
+    std::fs::copy(shipped("lecture.ifs"), &disguised).unwrap();
+    for path in [shipped("lecture.ifs"), disguised.display().to_string()] {
         let output = run(&[
             "render", "lsystem", "--file", &path, "--name", "fern", "--order", "2",
         ]);
@@ -223,7 +215,7 @@ fn files_are_known_by_content_and_extension() {
     // `--seed` goes by what the file holds: an `.lsys` file under another extension takes
     // it, and the seed picks the stochastic plant's productions.
     let plant = dir.join("plants.txt");
-    std::fs::copy(data("abop.lsys"), &plant).unwrap();
+    std::fs::copy(shipped("abop.lsys"), &plant).unwrap();
     let derive = |seed: &str| {
         let output = run(&[
             "derive",
@@ -241,7 +233,7 @@ fn files_are_known_by_content_and_extension() {
     };
     assert_ne!(derive("1"), derive("2"));
     // `list` lists an IFS file's entries.
-    let output = run(&["list", &data("lecture.ifs")]);
+    let output = run(&["list", &shipped("lecture.ifs")]);
     assert_eq!(common::stdout(&output), "fern\ngasket\n");
 }
 

@@ -12,7 +12,8 @@
 //! bound, |t| / (1 − c) for the largest translation t and matrix norm c, kept under 2¹³
 //! pixels), adds the maps' fixed points and their images under every map (points of the
 //! attractor a short game may miss), fits their box, then conjugates the maps by the fit:
-//! the fit costs a fifth of a 20,000-point game, not a second game. Points beyond the
+//! the fit plays a bounded sample, not a second game (its cost: docs/performance.md, The
+//! fern against the sketches). Points beyond the
 //! sample's box are drawn where they land inside the area (the margin) and clipped outside
 //! it.
 
@@ -259,8 +260,9 @@ impl PixelGame<'_> {
     }
 }
 
-/// Calls `each` `count` times, counting in 32 bits (a 64-bit count costs a Cortex-M core
-/// four instructions a point).
+/// Calls `each` `count` times, counting in 32 bits: a 64-bit count is a pair of registers
+/// and a carry on a 32-bit core, every point (docs/performance.md, The fern against the
+/// sketches).
 #[inline(always)]
 pub(crate) fn repeat(count: u64, mut each: impl FnMut()) {
     let mut left = count;

@@ -23,9 +23,9 @@ impl Generator {
 
 /// The chaos game's stream: Marsaglia's xorshift32 (shifts 13, 17, 5).
 ///
-/// Three shifts and three exclusive-ors a number where PCG32's 64-bit step costs a
-/// Cortex-M core about 20 instructions; its period, 2³² − 1, is longer than any game
-/// played. Seeded through
+/// Three shifts and three exclusive-ors a number, where PCG32's 64-bit multiply is several
+/// 32-bit ones on a Cortex-M core (measured in docs/performance.md, The fern against the
+/// sketches); its period, 2³² − 1, is longer than any game played. Seeded through
 /// SplitMix64's finaliser (a state of 0 would stay 0). Not `Copy`, like any stream: a
 /// copy would repeat its numbers.
 #[allow(missing_copy_implementations)]

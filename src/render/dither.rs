@@ -64,6 +64,12 @@ const NEAREST: [u16; 64] = thresholds(1);
 const BAYER4_THRESHOLDS: [u16; 64] = thresholds(4);
 const BAYER8_THRESHOLDS: [u16; 64] = thresholds(8);
 
+/// The place of pixel (x, y) in an 8×8 block of thresholds, row by row.
+#[inline(always)]
+const fn cell(x: i32, y: i32) -> usize {
+    ((y & 7) << 3 | (x & 7)) as usize
+}
+
 impl Dither {
     /// Its thresholds over an 8×8 block, row by row.
     #[inline]
@@ -78,8 +84,10 @@ impl Dither {
     /// The threshold at `point`, in 256ths: (2k + 1)·128/n², or 128 without dithering.
     #[inline]
     pub fn threshold(self, point: Point) -> u16 {
-        let index = ((point.y & 7) << 3 | (point.x & 7)) as usize;
-        self.table().get(index).copied().unwrap_or(128)
+        self.table()
+            .get(cell(point.x, point.y))
+            .copied()
+            .unwrap_or(128)
     }
 }
 
@@ -223,8 +231,7 @@ where
         let table = self.dither.table();
         self.target
             .draw_iter(pixels.into_iter().map(|Pixel(point, color)| {
-                let index = ((point.y & 7) << 3 | (point.x & 7)) as usize;
-                let threshold = table.get(index).copied().unwrap_or(128);
+                let threshold = table.get(cell(point.x, point.y)).copied().unwrap_or(128);
                 Pixel(point, D::Color::quantize(color, threshold))
             }))
     }
@@ -249,7 +256,7 @@ where
                 }
             };
             let column = left.wrapping_add_unsigned(x);
-            let index = ((row & 7) << 3 | (column & 7)) as usize;
+            let index = cell(column, row);
             x += 1;
             if x == width {
                 x = 0;
@@ -275,8 +282,7 @@ where
             if x == width {
                 x = 0;
                 for (column, slot) in pattern.iter_mut().enumerate() {
-                    let index =
-                        ((row & 7) << 3) as usize | ((left as usize).wrapping_add(column) & 7);
+                    let index = cell(left.wrapping_add(column as i32), row);
                     *slot = D::Color::at(prepared, table.get(index).copied().unwrap_or(128));
                 }
                 row += 1;
