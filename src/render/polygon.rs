@@ -9,8 +9,6 @@
 //! outline winds around its centre a nonzero number of times (a figure eight's two loops
 //! are both filled, whichever way each turns).
 
-use core::ops::Range;
-
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
@@ -44,38 +42,6 @@ fn first_pixel(edge: i64) -> i64 {
     (edge - HALF + ONE - 1).div_euclid(ONE)
 }
 
-/// The rows a polygon's vertices span within `clip`, and the clip's columns (end
-/// exclusive); `None` for no vertices or an empty clip.
-fn extent(vertices: &[SubPixel], clip: &Rectangle) -> Option<(Range<i64>, (i64, i64))> {
-    let low = vertices.iter().map(|v| v.1).min()?;
-    let high = vertices.iter().map(|v| v.1).max()?;
-    let clip_end = clip.bottom_right()?;
-    let rows = first_pixel(low).max(i64::from(clip.top_left.y))
-        ..first_pixel(high).min(i64::from(clip_end.y) + 1);
-    Some((
-        rows,
-        (i64::from(clip.top_left.x), i64::from(clip_end.x) + 1),
-    ))
-}
-
-/// Where the outline's edges cross the row centred at `centre`, each with its direction
-/// (+1 down): half-open in y, an edge crosses the rows whose centre is in [y0, y1).
-fn crossings_at(vertices: &[SubPixel], centre: i64) -> impl Iterator<Item = (i64, i8)> + '_ {
-    vertices.iter().enumerate().filter_map(move |(i, &a)| {
-        let b = vertices
-            .get(i + 1)
-            .or(vertices.first())
-            .copied()
-            .unwrap_or(a);
-        let (y0, y1, direction) = if a.1 <= b.1 {
-            (a.1, b.1, 1)
-        } else {
-            (b.1, a.1, -1)
-        };
-        (y0 <= centre && centre < y1).then(|| (crossing(a, b, centre), direction))
-    })
-}
-
 /// Fills the convex polygon with `vertices` (in order, either winding) in `color`, clipped
 /// to `clip`: one `fill_solid` per row it covers.
 pub(crate) fn fill_convex<D: DrawTarget>(
@@ -84,14 +50,51 @@ pub(crate) fn fill_convex<D: DrawTarget>(
     color: D::Color,
     clip: &Rectangle,
 ) -> Result<(), D::Error> {
-    let Some((rows, columns)) = extent(vertices, clip) else {
+    let (Some(low), Some(high)) = (
+        vertices.iter().map(|v| v.1).min(),
+        vertices.iter().map(|v| v.1).max(),
+    ) else {
         return Ok(());
     };
+    let Some(clip_end) = clip.bottom_right() else {
+        return Ok(());
+    };
+    let rows = first_pixel(low).max(i64::from(clip.top_left.y))
+        ..first_pixel(high).min(i64::from(clip_end.y) + 1);
     for row in rows {
-        let (left, right) = crossings_at(vertices, row * ONE + HALF)
-            .fold((i64::MAX, i64::MIN), |(l, r), (x, _)| (l.min(x), r.max(x)));
-        if left < right {
-            fill_span(target, (left, right), row, columns, color)?;
+        let centre = row * ONE + HALF;
+        let (mut left, mut right) = (i64::MAX, i64::MIN);
+        for (i, &a) in vertices.iter().enumerate() {
+            let b = vertices
+                .get(i + 1)
+                .or(vertices.first())
+                .copied()
+                .unwrap_or(a);
+            let (y0, y1) = if a.1 <= b.1 { (a.1, b.1) } else { (b.1, a.1) };
+            // Half-open in y: an edge covers the rows whose centre is in [y0, y1).
+            if y0 <= centre && centre < y1 {
+                let x = crossing(a, b, centre);
+                left = left.min(x);
+                right = right.max(x);
+            }
+        }
+        if left >= right {
+            continue;
+        }
+        let start = first_pixel(left).max(i64::from(clip.top_left.x));
+        let end = first_pixel(right).min(i64::from(clip_end.x) + 1);
+        if start < end {
+            let (Ok(x), Ok(y), Ok(width)) = (
+                i32::try_from(start),
+                i32::try_from(row),
+                u32::try_from(end - start),
+            ) else {
+                continue;
+            };
+            target.fill_solid(
+                &Rectangle::new(Point::new(x, y), Size::new(width, 1)),
+                color,
+            )?;
         }
     }
     Ok(())
@@ -110,19 +113,40 @@ pub(crate) fn fill_polygon<D: DrawTarget>(
     clip: &Rectangle,
 ) -> Result<(), D::Error> {
     let vertices = vertices.get(..MAX_FILL_VERTICES).unwrap_or(vertices);
-    let Some((rows, columns)) = extent(vertices, clip) else {
+    let (Some(low), Some(high)) = (
+        vertices.iter().map(|v| v.1).min(),
+        vertices.iter().map(|v| v.1).max(),
+    ) else {
         return Ok(());
     };
+    let Some(clip_end) = clip.bottom_right() else {
+        return Ok(());
+    };
+    let rows = first_pixel(low).max(i64::from(clip.top_left.y))
+        ..first_pixel(high).min(i64::from(clip_end.y) + 1);
+    let columns = (i64::from(clip.top_left.x), i64::from(clip_end.x) + 1);
     // Each edge crosses a row at most once: a crossing's x and its direction (+1 down).
     let mut crossings = [(0i64, 0i8); MAX_FILL_VERTICES];
     for row in rows {
+        let centre = row * ONE + HALF;
         let mut count = 0;
-        for (slot, found) in crossings
-            .iter_mut()
-            .zip(crossings_at(vertices, row * ONE + HALF))
-        {
-            *slot = found;
-            count += 1;
+        for (i, &a) in vertices.iter().enumerate() {
+            let b = vertices
+                .get(i + 1)
+                .or(vertices.first())
+                .copied()
+                .unwrap_or(a);
+            let (y0, y1, direction) = if a.1 <= b.1 {
+                (a.1, b.1, 1)
+            } else {
+                (b.1, a.1, -1)
+            };
+            if y0 <= centre && centre < y1 {
+                if let Some(slot) = crossings.get_mut(count) {
+                    *slot = (crossing(a, b, centre), direction);
+                    count += 1;
+                }
+            }
         }
         let row_crossings = crossings.get_mut(..count).unwrap_or_default();
         sort_by_x(row_crossings);
