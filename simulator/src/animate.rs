@@ -356,6 +356,7 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
             dither: crate::common::DitherName::None,
         },
         dwell: None,
+        modes: escape_scene::Modes::default(),
     };
     let (kind, frames) = match kind {
         AnimationKind::Zoom(options) => (

@@ -9,7 +9,7 @@ use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    escape::{Algorithm, RenderStats, Shading, Tier},
+    escape::{Algorithm, Inside, Outside, RenderStats, Shading, Tier},
     math::{DeepCoord, DeepParseError},
     render::{Bands, Gradient, Palette, TwoColor},
     Coord, Error, Fractal, View,
@@ -53,6 +53,18 @@ pub struct EscapeOptions {
     /// Write `W H MAXITER`, then H lines of W dwells
     #[arg(long, value_name = "TXT")]
     pub(crate) dwell: Option<PathBuf>,
+    /// Fractint's inside= mode: what a point that never escapes is worth (zmag: |z|² at
+    /// the cap; period: its cycle's length)
+    #[arg(long, value_enum, default_value = "maxiter")]
+    pub(crate) inside: InsideName,
+    /// Fractint's outside= mode: what an escaping point is worth (iter: its dwell; real,
+    /// imag, mult, summ, atan: from its last point)
+    #[arg(long, value_enum, default_value = "iter")]
+    pub(crate) outside: OutsideName,
+    /// Distance estimation: escaping pixels within W pixel widths of the set are drawn as
+    /// the set, so thin strands stay connected (Fractint's default 0.71)
+    #[arg(long, value_name = "W", value_parser = parse_distance)]
+    pub(crate) distance: Option<u16>,
     #[command(flatten)]
     pub(crate) common: Common,
 }
@@ -65,6 +77,90 @@ pub struct JuliaOptions {
     pub(crate) c: (String, String),
     #[command(flatten)]
     pub(crate) view: EscapeOptions,
+}
+
+/// `--inside`: Fractint's inside= modes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum InsideName {
+    /// The set in the palette's inside colour
+    Maxiter,
+    /// |z|² at the cap, times max-iter/2, plus 1
+    Zmag,
+    /// The length of the cycle the orbit settled into
+    Period,
+}
+
+/// `--outside`: Fractint's outside= modes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum OutsideName {
+    /// The dwell
+    Iter,
+    /// The dwell + the last point's real part + 7
+    Real,
+    /// The dwell + its imaginary part + 7
+    Imag,
+    /// The dwell × real/imaginary
+    Mult,
+    /// The dwell + real + imaginary
+    Summ,
+    /// The last point's angle, in 256 steps
+    Atan,
+}
+
+/// Fractint's colourings and distance estimation, as `--inside`, `--outside` and
+/// `--distance` ask.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Modes {
+    /// `--inside`.
+    pub inside: Inside,
+    /// `--outside`.
+    pub outside: Outside,
+    /// `--distance` in 256ths of a pixel (0: off).
+    pub distance: u16,
+}
+
+impl Modes {
+    /// The modes of the options.
+    fn of(options: &EscapeOptions) -> Self {
+        Self {
+            inside: match options.inside {
+                InsideName::Maxiter => Inside::MaxIter,
+                InsideName::Zmag => Inside::Zmag,
+                InsideName::Period => Inside::Period,
+            },
+            outside: match options.outside {
+                OutsideName::Iter => Outside::Iter,
+                OutsideName::Real => Outside::Real,
+                OutsideName::Imag => Outside::Imag,
+                OutsideName::Mult => Outside::Mult,
+                OutsideName::Summ => Outside::Summ,
+                OutsideName::Atan => Outside::Atan,
+            },
+            distance: options.distance.unwrap_or(0),
+        }
+    }
+
+    /// `view` with these modes.
+    fn apply(self, view: View) -> Result<View, Error> {
+        Ok(view
+            .with_outside(self.outside)?
+            .with_inside(self.inside)
+            .with_distance(self.distance))
+    }
+}
+
+/// `--distance W`: a width above 0 and at most 255 pixels, in 256ths of a pixel.
+fn parse_distance(text: &str) -> Result<u16, String> {
+    let width: f64 = text
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number (write e.g. 0.71)"))?;
+    let steps = (width * 256.0).round();
+    if !(1.0..=f64::from(u16::MAX)).contains(&steps) {
+        return Err(format!(
+            "`{text}` is out of range: give a width from 1/256 to 255 pixel widths"
+        ));
+    }
+    Ok(steps as u16)
 }
 
 /// `--algorithm`: how the pixels are scheduled.
@@ -134,6 +230,8 @@ pub struct Escape {
     pub common: Common,
     /// Where to write the dwells (`--dwell`), if anywhere.
     pub dwell: Option<PathBuf>,
+    /// Fractint's colourings and distance estimation.
+    pub modes: Modes,
 }
 
 impl EscapeOptions {
@@ -146,6 +244,7 @@ impl EscapeOptions {
     /// Mandelbrot set; each set's whole picture by default.
     fn escape(self, julia: Option<(String, String)>) -> Escape {
         let options = self;
+        let modes = Modes::of(&options);
         let (centre, width) = match julia {
             None => (("-0.75", "0"), "3.5"),
             Some(_) => (("0", "0"), "3.2"),
@@ -166,6 +265,7 @@ impl EscapeOptions {
             palette_file: options.palette_file,
             common: options.common,
             dwell: options.dwell,
+            modes,
         }
     }
 }
@@ -215,6 +315,8 @@ pub struct Request<'a> {
     pub palette: &'a str,
     /// A colour map file instead, if any.
     pub palette_file: Option<&'a std::path::Path>,
+    /// Fractint's colourings and distance estimation.
+    pub modes: Modes,
 }
 
 /// What `render mandelbrot|julia` (or an animation's view) asked for, at `size`.
@@ -232,6 +334,7 @@ pub fn request(arguments: &Escape, size: Size) -> Request<'_> {
         tier: arguments.tier,
         palette: arguments.palette.name(),
         palette_file: arguments.palette_file.as_deref(),
+        modes: arguments.modes,
     }
 }
 
@@ -284,6 +387,7 @@ pub fn view_at(request: &Request<'_>, width: &str) -> Result<(View, HostPalette)
     };
     let mut view = View::deep(fractal, centre, width, request.size, request.max_iterations)
         .and_then(|view| view.with_shading(shading))
+        .and_then(|view| request.modes.apply(view))
         .map_err(|e: Error| e.to_string())?;
     if let Some(tier) = request.tier {
         view = view.with_tier(tier);
@@ -360,22 +464,18 @@ pub fn compute(view: View, algorithm: Algorithm) -> Result<(Vec<u16>, RenderStat
 }
 
 /// The `--dwell` text, streamed: `W H MAXITER`, then H lines of W dwells. Dwells, whatever
-/// the palette: a smooth picture's dwells are computed here.
+/// the palette and modes: a smooth, distance or mode picture's dwells are computed here.
 pub fn write_dwells(rendered: &Rendered, out: &mut dyn Write) -> io::Result<()> {
     let size = rendered.view.size();
     let recomputed;
-    let dwells = match rendered.view.shading() {
-        Shading::Dwell => &rendered.values,
-        Shading::Smooth => {
-            let dwells = rendered
-                .view
-                .with_shading(Shading::Dwell)
-                .map_err(io::Error::other);
-            recomputed = compute(dwells?, rendered.algorithm)
-                .map_err(io::Error::other)?
-                .0;
-            &recomputed
-        }
+    let plain = rendered.view.dwells_only();
+    let dwells = if plain == rendered.view {
+        &rendered.values
+    } else {
+        recomputed = compute(plain, rendered.algorithm)
+            .map_err(io::Error::other)?
+            .0;
+        &recomputed
     };
     writeln!(
         out,
@@ -548,9 +648,26 @@ pub fn palette(name: &str) -> Result<(HostPalette, Shading), String> {
     let unknown = || {
         format!(
             "--palette: `{name}` is not classic, fire, gray, bands, two-color, smooth-classic, \
-             smooth-fire, smooth-gray or histogram"
+             smooth-fire, smooth-gray, histogram, distance-gray, distance-classic or \
+             distance-fire"
         )
     };
+    if let Some(gradient) = name.strip_prefix("distance-") {
+        // Grey as a ramp (black at the set, grey at a pixel, white from 16 pixels on);
+        // the others as their loops.
+        const RAMP: [Rgb888; 4] = [
+            Rgb888::new(0x00, 0x00, 0x00),
+            Rgb888::new(0x80, 0x80, 0x80),
+            Rgb888::WHITE,
+            Rgb888::WHITE,
+        ];
+        let keys = match gradient {
+            "gray" => &RAMP,
+            other => gradient_keys(other).ok_or_else(unknown)?,
+        };
+        let palette = Gradient::new(keys, Rgb888::BLACK).ok_or("empty gradient")?;
+        return Ok((HostPalette::Gradient(Box::new(palette)), Shading::Distance));
+    }
     if let Some(gradient) = name.strip_prefix("smooth-") {
         let keys = gradient_keys(gradient).ok_or_else(unknown)?;
         let palette = Gradient::new(keys, Rgb888::BLACK).ok_or("empty gradient")?;

@@ -538,6 +538,7 @@ impl Explorer {
             tier: None,
             palette: PALETTES[state.palette % PALETTES.len()],
             palette_file: None,
+            modes: escape_scene::Modes::default(),
         };
         let (view, palette) = escape_scene::view_at(&request, &width)?;
         // Its centre is an f64: past Deep's spacing it has no more digits to zoom into.

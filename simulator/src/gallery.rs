@@ -253,6 +253,7 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                 tier,
                 palette: entry.palette,
                 palette_file: None,
+                modes: crate::escape_scene::Modes::default(),
             };
             crate::escape_scene::render(&request).and_then(|rendered| {
                 if rendered.view.shading() != shading {

@@ -107,6 +107,12 @@ pub enum PaletteName {
     SmoothGray,
     /// classic's 256 colours equalised: each covers an equal share of the escaping pixels
     Histogram,
+    /// Black at the set through grey at a pixel to white, by the estimated distance
+    DistanceGray,
+    /// classic, by the estimated distance (16 colours a doubling)
+    DistanceClassic,
+    /// fire, by the estimated distance
+    DistanceFire,
 }
 
 impl PaletteName {
@@ -122,6 +128,9 @@ impl PaletteName {
             Self::SmoothFire => "smooth-fire",
             Self::SmoothGray => "smooth-gray",
             Self::Histogram => "histogram",
+            Self::DistanceGray => "distance-gray",
+            Self::DistanceClassic => "distance-classic",
+            Self::DistanceFire => "distance-fire",
         }
     }
 }

@@ -57,6 +57,7 @@ fn headless(state: &EscapeState) -> SimulatorDisplay<Rgb888> {
         tier: None,
         palette: PALETTES[state.palette],
         palette_file: None,
+        modes: escape_scene::Modes::default(),
     };
     let (view, palette) = escape_scene::view_at(&request, &width).unwrap();
     let mut display = SimulatorDisplay::new(SIZE);

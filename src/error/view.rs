@@ -75,6 +75,12 @@ pub enum ViewError {
     /// `Deep` draws, not the view. Render such a frame with a perturbed
     /// [`Render`](crate::escape::Render).
     ZoomNeedsFixedTier,
+    /// Fractint's `outside=` modes colour dwells, not smooth values: both were asked.
+    OutsideModeWithSmooth,
+    /// An `inside=` mode or distance estimation asked of a perturbed render: its pixels'
+    /// last points and derivatives are not kept (render the view in a fixed tier, or
+    /// without them).
+    NotWithPerturbation,
 }
 
 impl fmt::Display for ViewError {
@@ -120,6 +126,15 @@ impl fmt::Display for ViewError {
                 f,
                 "the reference orbit needs {needed} points (max-iter + 1) but its storage holds \
                  {given}: give more storage or fewer iterations"
+            ),
+            Self::OutsideModeWithSmooth => f.write_str(
+                "an outside mode other than iter colours dwells, not smooth values: choose a \
+                 palette that is not smooth, or leave out the outside mode",
+            ),
+            Self::NotWithPerturbation => f.write_str(
+                "an inside mode other than maxiter, and distance estimation, need a fixed-point \
+                 tier, and this view is rendered by perturbation: leave them out, or widen the \
+                 view to a fixed tier's depth",
             ),
             Self::ZoomNeedsFixedTier => f.write_str(
                 "a zoom frame computes in a fixed-point tier, and this view needs \

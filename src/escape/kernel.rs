@@ -19,7 +19,9 @@
 //! multiplies and shifts back), and one generic `orbit` iterates them all, so each tier's
 //! loop is compiled with its arithmetic in line (why not a macro: docs/performance.md).
 
+use super::modes::{Inside, Outside};
 use super::view::{Fractal, Parts, Shading, Tier, View};
+use crate::math::log::log2;
 use crate::math::wide::shift_round_i64;
 
 /// Largest periodicity tolerance of a fast render, 2⁻²² in Q60 bits.
@@ -98,6 +100,17 @@ pub(crate) struct Kernel {
     /// The value of a point that does not escape (`max`, or `max`·16 when smooth).
     pub(super) inside: u32,
     pub(super) smooth: bool,
+    /// Fractint's `outside=` and `inside=` (see `modes`).
+    pub(super) outside: Outside,
+    pub(super) inside_mode: Inside,
+    /// Whether escaping orbits are run again for their distance (see `distance`): the
+    /// view asks for a width (`near_log2`) or shades by distance.
+    pub(super) estimates: bool,
+    /// log₂ of the width in pixels within which a point is drawn as the set, Q16.
+    pub(super) near_log2: Option<i32>,
+    pub(super) distance_shading: bool,
+    /// log₂ of the pixel spacing, Q16.
+    pub(super) spacing_log2: i32,
     /// The Julia parameter, or `None` for the Mandelbrot set.
     pub(super) julia: Option<(i64, i64)>,
     /// How close a repeat must be (0: exactly).
@@ -133,6 +146,15 @@ impl Kernel {
             max: view.max_iterations,
             inside: u32::from(view.inside_value()),
             smooth: view.shading == Shading::Smooth,
+            outside: view.outside,
+            inside_mode: view.inside,
+            estimates: view.estimates_distance(),
+            near_log2: match view.distance {
+                0 => None,
+                width => log2(u64::from(width), 8),
+            },
+            distance_shading: view.shading == Shading::Distance,
+            spacing_log2: log2(view.spacing.unsigned_abs(), 60).unwrap_or(0),
             julia: match view.fractal {
                 Fractal::Mandelbrot => None,
                 Fractal::Julia { re, im } => {
@@ -143,8 +165,9 @@ impl Kernel {
             tolerance: from_q60(tolerance, frac),
             plain: FIRST_SAVE.min(view.max_iterations),
         };
-        if kernel.is_dust() {
-            // No orbit settles into a cycle: its pixels are never tested for repeats.
+        if kernel.inside_mode != Inside::MaxIter || kernel.is_dust() {
+            // An inside mode's value is z at the cap; or no orbit settles into a cycle:
+            // its pixels are never tested for repeats.
             return Self {
                 plain: kernel.max,
                 ..kernel
@@ -167,6 +190,9 @@ impl Kernel {
             max: CRITICAL_STEPS,
             inside: u32::MAX,
             smooth: false,
+            outside: Outside::Iter,
+            inside_mode: Inside::MaxIter,
+            estimates: false,
             ..*self
         };
         critical.dwell(Part(0), Part(0)).dwell != u32::MAX
@@ -177,9 +203,14 @@ impl Kernel {
     /// dwell above k is connected there, so a region lies inside another only where a
     /// pixel grid breaks a connection narrower than a pixel. A Julia set's filaments break
     /// often at display sizes, and smooth values change every few cells, where following
-    /// outlines costs more than subdivision's scans (docs/performance.md).
+    /// outlines costs more than subdivision's scans (docs/performance.md); Fractint's
+    /// modes' values change as often.
     pub(crate) const fn traceable(&self) -> bool {
-        self.julia.is_none() && !self.smooth
+        self.julia.is_none()
+            && !self.smooth
+            && matches!(self.outside, Outside::Iter)
+            && matches!(self.inside_mode, Inside::MaxIter)
+            && !self.estimates
     }
 
     /// The tier the kernel computes in.

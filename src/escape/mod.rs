@@ -30,9 +30,11 @@
 //! ```
 
 pub(crate) mod arithmetic;
+pub(crate) mod distance;
 pub(crate) mod drawing;
 pub(crate) mod emit;
 pub(crate) mod kernel;
+pub(crate) mod modes;
 pub(crate) mod orbit;
 pub(crate) mod perturbation;
 pub(crate) mod render;
@@ -45,8 +47,10 @@ pub(crate) mod trace;
 pub(crate) mod view;
 pub(crate) mod zoom;
 
+pub use distance::DISTANCE_INSIDE;
 pub use drawing::{EscapeTime, Painter};
 pub use kernel::MAX_FAST_TOLERANCE;
+pub use modes::{Inside, Outside, PERIOD_SEARCH, PERIOD_TOLERANCE};
 pub use perturbation::{ReferenceOrbit, REFERENCE_POINT_BYTES};
 pub use render::{Algorithm, Progress, Render, RenderStats, TILE, TILE_CELLS, TILE_ROWS};
 pub use scaled::ReferencePoint;

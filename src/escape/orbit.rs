@@ -15,6 +15,7 @@ use core::marker::PhantomData;
 
 use super::arithmetic::*;
 use super::kernel::{Kernel, Kind, Orbit, Part};
+use super::modes::{Inside, Outside};
 use super::view::SMOOTH_FRACTION_BITS;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 use crate::math::wide::mul_i32_wide;
@@ -118,16 +119,16 @@ impl TierOrbit for Called<'_> {
 }
 
 /// An orbit point and its squares.
-struct Z<A: Arithmetic> {
-    x: A::Value,
-    y: A::Value,
+pub(super) struct Z<A: Arithmetic> {
+    pub(super) x: A::Value,
+    pub(super) y: A::Value,
     x2: A::Product,
     y2: A::Product,
 }
 
 impl<A: Arithmetic> Z<A> {
     #[inline(always)]
-    fn new(x: A::Value, y: A::Value) -> Self {
+    pub(super) fn new(x: A::Value, y: A::Value) -> Self {
         Self {
             x,
             y,
@@ -143,7 +144,7 @@ impl<A: Arithmetic> Z<A> {
 
     /// One step, z ← z² + c, then its squares; true if it escaped.
     #[inline(always)]
-    fn step(&mut self, cr: A::Value, ci: A::Value) -> bool {
+    pub(super) fn step(&mut self, cr: A::Value, ci: A::Value) -> bool {
         (self.x, self.y) = A::square_plus((self.x, self.y), (self.x2, self.y2), (cr, ci));
         self.x2 = A::mul(self.x, self.x);
         self.y2 = A::mul(self.y, self.y);
@@ -175,15 +176,7 @@ impl Kernel {
             n += 1;
             z.step(c.0, c.1);
         }
-        Orbit {
-            dwell: if self.smooth {
-                let q28 = |(x, y): (i64, i64)| (HighWords::q28(x), HighWords::q28(y));
-                smooth_value(n, q28((z.x, z.y)), q28(c), self.max, self.inside)
-            } else {
-                n.max(1)
-            },
-            iterations: n,
-        }
+        escaped::<HighWords, false>(self, n, (z.x, z.y), c, c)
     }
 }
 
@@ -222,6 +215,9 @@ struct Orbiting<'k, A: Arithmetic, const TRACEABLE: bool> {
     /// Passed by value to the escape's valuation: held by reference, it was kept in
     /// memory and stored on every pixel's way in.
     c: (A::Value, A::Value),
+    /// Where the orbit started (z₁ = c, or a Julia set's z₀): distance estimation runs it
+    /// again from there.
+    first: (A::Value, A::Value),
     /// The steps taken.
     n: u32,
     /// How close a repeat comes to a saved point, and twice that: orbit points compared
@@ -239,12 +235,16 @@ impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
         let julia = if TRACEABLE { None } else { kernel.julia };
         let (c, (x, y), n) = match julia {
             None => {
-                if in_cardioid_or_bulb(A::q28(re), A::q28(im)) {
+                // An inside mode's value is z at the cap: computed, not known.
+                let known = TRACEABLE || kernel.inside_mode == Inside::MaxIter;
+                if known && in_cardioid_or_bulb(A::q28(re), A::q28(im)) {
                     return Err(Orbit::inside_after(kernel, 0));
                 }
-                // The upper half-plane twin: the same dwell, exactly (see the module docs).
+                // The upper half-plane twin: the same dwell, exactly (see the module docs),
+                // unless the outside mode tells a point from its conjugate (not mirrored).
                 // The first step is free: z₁ = c.
-                let c = (re, im.abs());
+                let twin = TRACEABLE || kernel.outside.symmetric();
+                let c = (re, if twin { im.abs() } else { im });
                 (c, c, 1)
             }
             Some((kr, ki)) => (
@@ -258,6 +258,7 @@ impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
             kernel,
             z: Z::new(x, y),
             c,
+            first: (x, y),
             n,
             tolerance,
             span: tolerance.twice(),
@@ -277,15 +278,32 @@ impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
             self.stretches()
         };
         match ended {
-            Ok(()) => Orbit::inside_after(self.kernel, self.kernel.max),
+            Ok(()) => self.at_cap(),
             Err(orbit) => orbit,
+        }
+    }
+
+    /// The value of the orbit at the cap, not escaped: the cap, or the inside mode's value
+    /// of z there.
+    #[inline(always)]
+    fn at_cap(&self) -> Orbit {
+        let kernel = self.kernel;
+        if TRACEABLE || kernel.inside_mode == Inside::MaxIter {
+            return Orbit::inside_after(kernel, kernel.max);
+        }
+        let q28 = |(x, y): (A::Value, A::Value)| (A::q28(x), A::q28(y));
+        Orbit {
+            dwell: kernel
+                .inside_mode
+                .value(q28((self.z.x, self.z.y)), q28(self.c), kernel.max),
+            iterations: kernel.max,
         }
     }
 
     /// The value of the orbit, escaped at step `n`.
     #[inline(always)]
     fn escaped_at(&self, n: u32) -> Orbit {
-        escaped::<A, TRACEABLE>(self.kernel, n, (self.z.x, self.z.y), self.c)
+        escaped::<A, TRACEABLE>(self.kernel, n, (self.z.x, self.z.y), self.c, self.first)
     }
 
     /// Takes step `n`; the orbit ends if it escapes.
@@ -471,16 +489,30 @@ impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
     }
 }
 
-/// The value of an orbit of c that escaped at step `n` at z.
+/// The value of an orbit of c from `first` that escaped at step `n` at z.
 #[inline(always)]
 fn escaped<A: Arithmetic, const TRACEABLE: bool>(
     kernel: &Kernel,
     n: u32,
     (x, y): (A::Value, A::Value),
     (cr, ci): (A::Value, A::Value),
+    first: (A::Value, A::Value),
 ) -> Orbit {
-    Orbit {
-        dwell: if !TRACEABLE && kernel.smooth {
+    let mut rerun = 0;
+    if !TRACEABLE && kernel.estimates && n < kernel.max {
+        let (estimated, steps) = kernel.estimated::<A>(n, first, (cr, ci));
+        if let Some(dwell) = estimated {
+            return Orbit {
+                dwell,
+                iterations: n + steps,
+            };
+        }
+        rerun = steps;
+    }
+    let orbit = Orbit {
+        dwell: if TRACEABLE {
+            n.max(1)
+        } else if kernel.smooth {
             smooth_value(
                 n,
                 (A::q28(x), A::q28(y)),
@@ -488,10 +520,16 @@ fn escaped<A: Arithmetic, const TRACEABLE: bool>(
                 kernel.max,
                 kernel.inside,
             )
+        } else if kernel.outside != Outside::Iter {
+            kernel.outside.value(n, (A::q28(x), A::q28(y)), kernel.max)
         } else {
             n.max(1)
         },
         iterations: n,
+    };
+    Orbit {
+        iterations: n + rerun,
+        ..orbit
     }
 }
 

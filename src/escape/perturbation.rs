@@ -30,6 +30,7 @@
 
 use super::kernel::MAX_FAST_TOLERANCE;
 use super::kernel::{Kernel, Orbit, Periodicity};
+use super::modes::Outside;
 use super::orbit::{in_cardioid_or_bulb, smooth_value};
 use super::scaled::{
     clamp_i32, escaped, may_rebase, normalise, rebased, step, to_q28, ReferencePoint, Scaled,
@@ -162,6 +163,8 @@ pub(crate) struct Perturbation<'r> {
     max: u32,
     inside: u32,
     smooth: bool,
+    /// Fractint's `outside=` (see `modes`).
+    outside: Outside,
     series: Series,
     finish: Option<Finish>,
     /// Repeats: exact (`None`), or within 2^`repeat_log2` (a sixteenth of a pixel's
@@ -226,6 +229,7 @@ impl<'r> Perturbation<'r> {
             max: view.max_iterations,
             inside: u32::from(view.inside_value()),
             smooth: view.shading == Shading::Smooth,
+            outside: view.outside,
             series: Series::NONE,
             finish: None,
             // Half the spacing is at least 2^(61 - exponent): a sixteenth of the spacing at
@@ -338,7 +342,7 @@ impl<'r> Perturbation<'r> {
                 let dwell = if self.smooth {
                     smooth_value(n, z, point, self.max, self.inside)
                 } else {
-                    n
+                    self.outside.value(n, z, self.max)
                 };
                 return result(
                     Orbit {

@@ -22,6 +22,7 @@ use embedded_graphics::{prelude::*, primitives::Rectangle};
 
 use super::emit::Order;
 use super::kernel::{Kernel, Orbit, Part};
+use super::modes::Inside;
 use super::perturbation::{Perturbation, ReferenceOrbit};
 use super::render::{
     coordinate, Algorithm, Pixels, Progress, Render, RenderStats, TILE, TILE_ROWS,
@@ -29,7 +30,7 @@ use super::render::{
 use super::scaled::ReferencePoint;
 use super::tile::{AnyCells, Cells};
 use super::view::{Symmetry, View};
-use crate::error::Error;
+use crate::error::{Error, ViewError};
 use crate::render::sink::DwellSink;
 
 impl Render<'static> {
@@ -111,6 +112,9 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         algorithm: Algorithm,
         storage: &'r mut [ReferencePoint],
     ) -> Result<Self, Error> {
+        if view.inside != Inside::MaxIter || view.estimates_distance() {
+            return Err(Error::View(ViewError::NotWithPerturbation));
+        }
         let reference = ReferenceOrbit::compute(&view, storage)?;
         Ok(Self::with_pixels(
             view,

@@ -43,6 +43,11 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
                 return None;
             }
         }
+        // With distance estimation a block whose border escapes may hide a strand drawn
+        // as the set: only an inside border fills.
+        if self.view.estimates_distance() && first != self.view.inside_value() {
+            return None;
+        }
         Some(first)
     }
 

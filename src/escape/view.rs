@@ -3,6 +3,8 @@
 
 use embedded_graphics::geometry::Size;
 
+use super::distance::DISTANCE_INSIDE;
+use super::modes::{Inside, Outside};
 use crate::error::{Error, FitError, ViewError};
 use crate::math::wide::{div_round, mul_wide, shift_round};
 use crate::math::{Coord, DeepCoord};
@@ -178,6 +180,10 @@ pub enum Shading {
     /// in fixed point with a logarithm table (`log₂`, 64 entries), only for escaping
     /// pixels, once each: no floats, the same bits on every core.
     Smooth,
+    /// The estimated distance to the set (see [`View::with_distance`]) on a log scale:
+    /// 16 values a doubling, 1 at 1/16 of a pixel, 65 at one pixel, up to 255; the set
+    /// [`DISTANCE_INSIDE`] (256). Escaping orbits are computed twice.
+    Distance,
 }
 
 /// A view: a fractal, a centre, a width along the real axis, and a size in pixels.
@@ -195,6 +201,11 @@ pub struct View {
     /// The tier the automatic rule chose.
     automatic: Tier,
     pub(crate) shading: Shading,
+    /// Fractint's `inside=` and `outside=`.
+    pub(crate) inside: Inside,
+    pub(crate) outside: Outside,
+    /// Distance estimation's width in 256ths of a pixel (0: off).
+    pub(crate) distance: u16,
     /// The centre and spacing to all the bits given (perturbation's reference and offsets;
     /// the fixed tiers read the Q60 ones above).
     pub(crate) deep_centre: (DeepCoord, DeepCoord),
@@ -272,6 +283,9 @@ impl View {
             tier,
             automatic: tier,
             shading: Shading::Dwell,
+            inside: Inside::MaxIter,
+            outside: Outside::Iter,
+            distance: 0,
             deep_centre: (
                 DeepCoord::from_coord(centre.0),
                 DeepCoord::from_coord(centre.1),
@@ -396,6 +410,9 @@ impl View {
     /// sixteenths of an iteration in 16 bits, so a smooth view's cap is at most
     /// [`View::MAX_SMOOTH_ITERATIONS`].
     pub fn with_shading(mut self, shading: Shading) -> Result<Self, Error> {
+        if shading != Shading::Dwell && self.outside != Outside::Iter {
+            return Err(Error::View(ViewError::OutsideModeWithSmooth));
+        }
         if shading == Shading::Smooth && self.max_iterations > MAX_SMOOTH_ITERATIONS {
             return Err(Error::View(ViewError::SmoothIterationsOutOfRange {
                 value: self.max_iterations,
@@ -411,12 +428,85 @@ impl View {
         self.shading
     }
 
+    /// Values pixels that never escape as Fractint's `inside=` mode does (the cap, the
+    /// palette's inside colour, by default). Any mode but `MaxIter` runs every inside orbit
+    /// to the cap, with neither the cardioid test nor the repeat test (its value is z
+    /// there), and draws a Mandelbrot view by subdivision rather than by tracing.
+    #[must_use]
+    pub const fn with_inside(mut self, inside: Inside) -> Self {
+        self.inside = inside;
+        self
+    }
+
+    /// Values escaping pixels as Fractint's `outside=` mode does (their dwell, by
+    /// default). `Imag`, `Mult` and `Summ` differ between c and its conjugate, so a view on
+    /// the real axis is computed whole instead of mirrored. Outside modes colour dwells:
+    /// with smooth shading, an error.
+    pub fn with_outside(mut self, outside: Outside) -> Result<Self, Error> {
+        if outside != Outside::Iter && self.shading != Shading::Dwell {
+            return Err(Error::View(ViewError::OutsideModeWithSmooth));
+        }
+        self.outside = outside;
+        Ok(self)
+    }
+
+    /// Draws every escaping pixel whose estimated distance to the set, d ≈ |z|·ln|z| /
+    /// |dz/dc| (|dz/dz₀| for a Julia set), is below `width_256ths`/256 of a pixel as the
+    /// set; 0 turns it off. Fractint's default is 0.71 of a pixel (182/256). Strands
+    /// thinner than a pixel then stay connected, on a one-bit panel too. Such a pixel's
+    /// value is one above the inside value (at most 65,535): every palette paints values
+    /// from the inside value up as the set, and the render tells it from the set itself.
+    ///
+    /// Each escaping orbit is run again with its derivative (see the `distance` module),
+    /// and the render fills only the blocks whose border is all inside the set (the set
+    /// is full, so their pixels are too): a block whose border escapes, or is only near
+    /// the set, may hide a strand or a gap, so its pixels are computed, and tracing is off.
+    /// Not with perturbation: [`Render::perturbed`](crate::escape::Render::perturbed)
+    /// refuses it.
+    #[must_use]
+    pub const fn with_distance(mut self, width_256ths: u16) -> Self {
+        self.distance = width_256ths;
+        self
+    }
+
+    /// Distance estimation's width in 256ths of a pixel (0: off).
+    pub const fn distance(&self) -> u16 {
+        self.distance
+    }
+
+    /// Whether escaping orbits are run again for their distance: a width or distance
+    /// shading.
+    pub(crate) fn estimates_distance(&self) -> bool {
+        self.distance != 0 || self.shading == Shading::Distance
+    }
+
+    /// Fractint's `inside=` mode.
+    pub const fn inside(&self) -> Inside {
+        self.inside
+    }
+
+    /// Fractint's `outside=` mode.
+    pub const fn outside(&self) -> Outside {
+        self.outside
+    }
+
+    /// This view with dwells alone: no smooth shading, modes or distance estimation.
+    #[must_use]
+    pub const fn dwells_only(mut self) -> Self {
+        self.shading = Shading::Dwell;
+        self.inside = Inside::MaxIter;
+        self.outside = Outside::Iter;
+        self.distance = 0;
+        self
+    }
+
     /// The value of a pixel that did not escape: the cap, or the cap in sixteenths when
     /// smooth. Every escaping pixel's value is below it and above 0.
     pub const fn inside_value(&self) -> u16 {
         let value = match self.shading {
             Shading::Dwell => self.max_iterations,
             Shading::Smooth => self.max_iterations << SMOOTH_FRACTION_BITS,
+            Shading::Distance => DISTANCE_INSIDE as u32,
         };
         if value > u16::MAX as u32 {
             u16::MAX
@@ -538,7 +628,11 @@ impl View {
     pub(crate) const fn symmetry(&self) -> Symmetry {
         match self.fractal {
             // c and its conjugate have the same dwell.
-            Fractal::Mandelbrot if self.centre.1.to_bits() == 0 && self.deep_centre.1.is_zero() => {
+            Fractal::Mandelbrot
+                if self.centre.1.to_bits() == 0
+                    && self.deep_centre.1.is_zero()
+                    && self.outside.symmetric() =>
+            {
                 Symmetry::MirrorRows
             }
             // z0 and -z0 have the same z1, so the same dwell.

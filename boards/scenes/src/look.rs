@@ -283,8 +283,11 @@ impl Scene {
                 match (escape.shading, view.tier()) {
                     (_, Tier::Perturbation) => draw_perturbed(target, look, view),
                     (Shading::Dwell, _) => draw_escape::<D, 16>(target, look, view),
-                    // 16 entries a dwell: the same colours at whole dwells.
-                    (Shading::Smooth, _) => draw_escape::<D, 256>(target, look, view),
+                    // 16 entries a dwell: the same colours at whole dwells; distances
+                    // take 256 values.
+                    (Shading::Smooth | Shading::Distance, _) => {
+                        draw_escape::<D, 256>(target, look, view)
+                    }
                 }
             }
         }
