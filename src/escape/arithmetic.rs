@@ -98,6 +98,8 @@ pub(super) trait Arithmetic {
         x2 + y2 > Self::FOUR
     }
     fn q28(v: Self::Value) -> i32;
+    /// A value in Q60, truncated from `Wide` (distance estimation's start).
+    fn q60(v: Self::Value) -> i64;
     /// Whether a step is a few 32-bit multiplies: then the repeat-testing loop takes four
     /// steps a turn and tests once, which leaves the turn's constants in registers; a
     /// 64-bit tier keeps a test after each step, whose values four a turn would spill
@@ -156,6 +158,9 @@ impl Arithmetic for Narrow {
     fn q28(v: i32) -> i32 {
         v << 16
     }
+    fn q60(v: i32) -> i64 {
+        i64::from(v) << 48
+    }
 }
 
 impl<const ROUNDED: bool> Arithmetic for HighWord<ROUNDED> {
@@ -188,6 +193,9 @@ impl<const ROUNDED: bool> Arithmetic for HighWord<ROUNDED> {
     #[inline(always)]
     fn q28(v: i32) -> i32 {
         v
+    }
+    fn q60(v: i32) -> i64 {
+        i64::from(v) << 32
     }
 }
 
@@ -236,6 +244,9 @@ impl Arithmetic for Standard {
     fn q28(v: i32) -> i32 {
         v
     }
+    fn q60(v: i32) -> i64 {
+        i64::from(v) << 32
+    }
 }
 
 /// `c + (p >> shift)` in an i32 (0 < shift < 32; the sum fits, as the orbit's invariant
@@ -268,6 +279,9 @@ impl Arithmetic for Deep {
     fn q28(v: i64) -> i32 {
         shift_round_i64(v, 32) as i32
     }
+    fn q60(v: i64) -> i64 {
+        v
+    }
 }
 
 impl Arithmetic for Wide {
@@ -291,6 +305,9 @@ impl Arithmetic for Wide {
     #[inline(always)]
     fn q28(v: i128) -> i32 {
         shift_round(v, 96) as i32
+    }
+    fn q60(v: i128) -> i64 {
+        (v >> 64) as i64
     }
 }
 
@@ -337,6 +354,9 @@ impl Arithmetic for HighWords {
     #[inline(always)]
     fn q28(v: i64) -> i32 {
         Deep::q28(v)
+    }
+    fn q60(v: i64) -> i64 {
+        v
     }
 }
 

@@ -1,15 +1,15 @@
 //! Distance estimation: how far an escaping point lies from the set, d ≈ |z|·ln|z| / |dz|,
 //! so strands thinner than a pixel can be drawn as the set (Fractint's `distest`).
 //!
-//! The orbit is run again from its start in the tier's own arithmetic, to the same escape,
-//! with the derivative dz (dz ← 2·z·dz + 1 for the Mandelbrot set, from dz₁ = 1; dz ← 2·z·dz
-//! for a Julia set, from dz₀ = 1) carried beside it as a mantissa pair and a shared exponent,
-//! since it grows as fast as the orbit runs. Past the escape both go on to |z| ≥ 256, where
-//! the estimate holds, and d is compared through the log table: no floats.
+//! The orbit is run again from its start in Q60 with products' high words (perturbation's
+//! finish: within 2⁻⁵⁵ a product; one copy of the code for every tier), with the derivative dz (dz ← 2·z·dz + 1 for the Mandelbrot set, from
+//! dz₁ = 1; dz ← 2·z·dz for a Julia set, from dz₀ = 1) carried beside it as a mantissa pair
+//! and a shared exponent, since it grows as fast as the orbit runs. Past the escape both
+//! go on to |z| ≥ 256, where the estimate holds, and d is compared through the log table:
+//! no floats.
 
-use super::arithmetic::Arithmetic;
+use super::arithmetic::{Arithmetic, HighWords};
 use super::kernel::Kernel;
-use super::orbit::Z;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 
 /// log₂(ln 2 / 2) in Q16: ln|z| = log₂|z|² · ln 2 / 2.
@@ -74,28 +74,32 @@ impl Derivative {
 }
 
 impl Kernel {
-    /// log₂ of the estimated distance of the orbit from `first` (z₁ = c for the Mandelbrot
-    /// set, the pixel z₀ for a Julia set), which escaped at step `n`, in pixels, Q16: d ≈
-    /// |z|·ln|z| / |dz| over the pixel spacing. Also the steps it took.
-    pub(super) fn log2_distance<A: Arithmetic>(
-        &self,
-        n: u32,
-        first: (A::Value, A::Value),
-        c: (A::Value, A::Value),
-    ) -> (Option<i64>, u32) {
+    /// log₂ of the estimated distance, in pixels, of the orbit from `first` (z₁ = c for
+    /// the Mandelbrot set, the pixel z₀ for a Julia set; Q60), Q16: d ≈ |z|·ln|z| / |dz|
+    /// over the pixel spacing; `None` if the orbit does not escape by the cap. Also the
+    /// steps it took.
+    fn log2_distance(&self, first: (i64, i64), c: (i64, i64)) -> (Option<i64>, u32) {
         let mandelbrot = self.julia.is_none();
-        let q28 = |v: A::Value| i64::from(A::q28(v));
-        let mut z = Z::<A>::new(first.0, first.1);
+        let mut z = first;
         let mut dz = Derivative::ONE;
         let mut k = u32::from(mandelbrot);
-        while k < n {
-            dz.step((q28(z.x), q28(z.y)), 28, mandelbrot);
-            z.step(c.0, c.1);
+        loop {
+            let (x2, y2) = (HighWords::mul(z.0, z.0), HighWords::mul(z.1, z.1));
+            if HighWords::escapes(x2, y2) {
+                break;
+            }
+            if k >= self.max {
+                return (None, k);
+            }
+            dz.step((z.0 >> 32, z.1 >> 32), 28, mandelbrot);
+            z = HighWords::square_plus(z, (x2, y2), c);
             k += 1;
         }
+        let (x, y) = z;
         // On to |z| ≥ 256 in Q20, as the smooth value goes (`smooth_value`).
-        let (cr, ci) = (q28(c.0) >> 8, q28(c.1) >> 8);
-        let (mut x, mut y) = (q28(z.x) >> 8, q28(z.y) >> 8);
+        let q20 = |v: i64| v >> 40;
+        let (cr, ci) = (q20(c.0), q20(c.1));
+        let (mut x, mut y) = (q20(x), q20(y));
         let mut steps = 0;
         while steps < STEPS_PAST_ESCAPE && x.abs() < RADIUS_Q20 && y.abs() < RADIUS_Q20 {
             let (x2, y2) = (x * x, y * y);
@@ -114,23 +118,19 @@ impl Kernel {
             let numerator = log_square / 2 + log_log + LOG2_HALF_LN2;
             Some(numerator - dz.log2_magnitude()? - i64::from(self.spacing_log2))
         })();
-        (estimate, n + steps)
+        (estimate, k + steps)
     }
 
-    /// The value of an escaped orbit as distance estimation has it: one above the inside
-    /// value if it lies within the estimate's width of the set (drawn as the set, told
-    /// from it), the distance shading's value if the view shades by distance; `None` for
-    /// the ordinary value. Also the steps the estimate took.
-    #[inline(never)]
-    pub(super) fn estimated<A: Arithmetic>(
-        &self,
-        n: u32,
-        first: (A::Value, A::Value),
-        c: (A::Value, A::Value),
-    ) -> (Option<u32>, u32) {
-        let (log2_pixels, steps) = self.log2_distance::<A>(n, first, c);
+    /// The value of an escaped orbit from `first` (Q60) as distance estimation has it:
+    /// one above the inside value if it lies within the estimate's width of the set (drawn
+    /// as the set, told from it), the distance shading's value if the view shades by
+    /// distance; `None` for the ordinary value. Also the steps the estimate took.
+    pub(super) fn estimated(&self, first: (i64, i64), c: (i64, i64)) -> (Option<u32>, u32) {
+        let (log2_pixels, steps) = self.log2_distance(first, c);
+        // The orbit run again in Q60 may not escape where the tier's did (a point at the
+        // boundary): the nearest the shading has, or the ordinary value.
         let Some(log2_pixels) = log2_pixels else {
-            return (None, steps);
+            return (self.distance_shading.then_some(1), steps);
         };
         if self
             .near_log2

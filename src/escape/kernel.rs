@@ -103,6 +103,9 @@ pub(crate) struct Kernel {
     /// Fractint's `outside=` and `inside=` (see `modes`).
     pub(super) outside: Outside,
     pub(super) inside_mode: Inside,
+    /// Whether an escaping orbit's value is its dwell: no smooth value or outside mode to
+    /// compute.
+    pub(super) plain_escape: bool,
     /// Whether escaping orbits are run again for their distance (see `distance`): the
     /// view asks for a width (`near_log2`) or shades by distance.
     pub(super) estimates: bool,
@@ -148,6 +151,7 @@ impl Kernel {
             smooth: view.shading == Shading::Smooth,
             outside: view.outside,
             inside_mode: view.inside,
+            plain_escape: view.shading != Shading::Smooth && view.outside == Outside::Iter,
             estimates: view.estimates_distance(),
             near_log2: match view.distance {
                 0 => None,
@@ -193,6 +197,7 @@ impl Kernel {
             outside: Outside::Iter,
             inside_mode: Inside::MaxIter,
             estimates: false,
+            plain_escape: true,
             ..*self
         };
         critical.dwell(Part(0), Part(0)).dwell != u32::MAX

@@ -15,7 +15,7 @@ use core::marker::PhantomData;
 
 use super::arithmetic::*;
 use super::kernel::{Kernel, Kind, Orbit, Part};
-use super::modes::{Inside, Outside};
+use super::modes::Inside;
 use super::view::SMOOTH_FRACTION_BITS;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 use crate::math::wide::mul_i32_wide;
@@ -119,16 +119,16 @@ impl TierOrbit for Called<'_> {
 }
 
 /// An orbit point and its squares.
-pub(super) struct Z<A: Arithmetic> {
-    pub(super) x: A::Value,
-    pub(super) y: A::Value,
+struct Z<A: Arithmetic> {
+    x: A::Value,
+    y: A::Value,
     x2: A::Product,
     y2: A::Product,
 }
 
 impl<A: Arithmetic> Z<A> {
     #[inline(always)]
-    pub(super) fn new(x: A::Value, y: A::Value) -> Self {
+    fn new(x: A::Value, y: A::Value) -> Self {
         Self {
             x,
             y,
@@ -144,7 +144,7 @@ impl<A: Arithmetic> Z<A> {
 
     /// One step, z ← z² + c, then its squares; true if it escaped.
     #[inline(always)]
-    pub(super) fn step(&mut self, cr: A::Value, ci: A::Value) -> bool {
+    fn step(&mut self, cr: A::Value, ci: A::Value) -> bool {
         (self.x, self.y) = A::square_plus((self.x, self.y), (self.x2, self.y2), (cr, ci));
         self.x2 = A::mul(self.x, self.x);
         self.y2 = A::mul(self.y, self.y);
@@ -176,7 +176,7 @@ impl Kernel {
             n += 1;
             z.step(c.0, c.1);
         }
-        escaped::<HighWords, false>(self, n, (z.x, z.y), c, c)
+        escaped::<HighWords, false>(self, n, (z.x, z.y), c)
     }
 }
 
@@ -197,9 +197,33 @@ fn orbit<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64
 /// compile away.
 #[inline(always)]
 fn orbit_in_line<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64, im: i64) -> Orbit {
-    match Orbiting::<A, TRACEABLE>::start(kernel, re, im) {
+    let orbit = match Orbiting::<A, TRACEABLE>::start(kernel, re, im) {
         Ok(orbiting) => orbiting.run(),
         Err(orbit) => orbit,
+    };
+    if !TRACEABLE && kernel.estimates {
+        return estimated_in_tier::<A>(kernel, re, im, orbit);
+    }
+    orbit
+}
+
+/// `orbit`, of the point (`re`, `im`) in tier `A`'s units, as distance estimation has it
+/// (see [`Kernel::estimated`]): out of line, after the orbit, so the orbit's loops carry
+/// nothing for it. An orbit escaped if it stopped before the cap with a value other than
+/// the inside value (inside modes test no repeats, so their orbits reach the cap).
+#[inline(never)]
+fn estimated_in_tier<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64, orbit: Orbit) -> Orbit {
+    if orbit.iterations >= kernel.max || orbit.dwell == kernel.inside {
+        return orbit;
+    }
+    let q60 = |units: i64| A::q60(A::Value::from_units(units));
+    let pixel = (q60(re), q60(im));
+    // z₁ = c for the Mandelbrot set; a Julia set's pixel is z₀.
+    let c = kernel.julia.map_or(pixel, |(kr, ki)| (q60(kr), q60(ki)));
+    let (estimated, steps) = kernel.estimated(pixel, c);
+    Orbit {
+        dwell: estimated.unwrap_or(orbit.dwell),
+        iterations: orbit.iterations + steps,
     }
 }
 
@@ -215,9 +239,6 @@ struct Orbiting<'k, A: Arithmetic, const TRACEABLE: bool> {
     /// Passed by value to the escape's valuation: held by reference, it was kept in
     /// memory and stored on every pixel's way in.
     c: (A::Value, A::Value),
-    /// Where the orbit started (z₁ = c, or a Julia set's z₀): distance estimation runs it
-    /// again from there.
-    first: (A::Value, A::Value),
     /// The steps taken.
     n: u32,
     /// How close a repeat comes to a saved point, and twice that: orbit points compared
@@ -258,7 +279,6 @@ impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
             kernel,
             z: Z::new(x, y),
             c,
-            first: (x, y),
             n,
             tolerance,
             span: tolerance.twice(),
@@ -291,19 +311,13 @@ impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
         if TRACEABLE || kernel.inside_mode == Inside::MaxIter {
             return Orbit::inside_after(kernel, kernel.max);
         }
-        let q28 = |(x, y): (A::Value, A::Value)| (A::q28(x), A::q28(y));
-        Orbit {
-            dwell: kernel
-                .inside_mode
-                .value(q28((self.z.x, self.z.y)), q28(self.c), kernel.max),
-            iterations: kernel.max,
-        }
+        inside_in_tier::<A>(kernel, (self.z.x, self.z.y), self.c)
     }
 
     /// The value of the orbit, escaped at step `n`.
     #[inline(always)]
     fn escaped_at(&self, n: u32) -> Orbit {
-        escaped::<A, TRACEABLE>(self.kernel, n, (self.z.x, self.z.y), self.c, self.first)
+        escaped::<A, TRACEABLE>(self.kernel, n, (self.z.x, self.z.y), self.c)
     }
 
     /// Takes step `n`; the orbit ends if it escapes.
@@ -489,28 +503,17 @@ impl<'k, A: Arithmetic, const TRACEABLE: bool> Orbiting<'k, A, TRACEABLE> {
     }
 }
 
-/// The value of an orbit of c from `first` that escaped at step `n` at z.
+/// The value of an orbit of c that escaped at step `n` at z: its dwell, its smooth value,
+/// or its outside mode's value.
 #[inline(always)]
 fn escaped<A: Arithmetic, const TRACEABLE: bool>(
     kernel: &Kernel,
     n: u32,
     (x, y): (A::Value, A::Value),
     (cr, ci): (A::Value, A::Value),
-    first: (A::Value, A::Value),
 ) -> Orbit {
-    let mut rerun = 0;
-    if !TRACEABLE && kernel.estimates && n < kernel.max {
-        let (estimated, steps) = kernel.estimated::<A>(n, first, (cr, ci));
-        if let Some(dwell) = estimated {
-            return Orbit {
-                dwell,
-                iterations: n + steps,
-            };
-        }
-        rerun = steps;
-    }
-    let orbit = Orbit {
-        dwell: if TRACEABLE {
+    Orbit {
+        dwell: if TRACEABLE || kernel.plain_escape {
             n.max(1)
         } else if kernel.smooth {
             smooth_value(
@@ -520,16 +523,24 @@ fn escaped<A: Arithmetic, const TRACEABLE: bool>(
                 kernel.max,
                 kernel.inside,
             )
-        } else if kernel.outside != Outside::Iter {
-            kernel.outside.value(n, (A::q28(x), A::q28(y)), kernel.max)
         } else {
-            n.max(1)
+            kernel.outside.value(n, (A::q28(x), A::q28(y)), kernel.max)
         },
         iterations: n,
-    };
+    }
+}
+
+/// [`Inside::value`] from a tier's values, out of line.
+#[inline(never)]
+fn inside_in_tier<A: Arithmetic>(
+    kernel: &Kernel,
+    z: (A::Value, A::Value),
+    c: (A::Value, A::Value),
+) -> Orbit {
+    let q28 = |(x, y): (A::Value, A::Value)| (A::q28(x), A::q28(y));
     Orbit {
-        iterations: n + rerun,
-        ..orbit
+        dwell: kernel.inside_mode.value(q28(z), q28(c), kernel.max),
+        iterations: kernel.max,
     }
 }
 

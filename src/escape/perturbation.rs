@@ -341,6 +341,8 @@ impl<'r> Perturbation<'r> {
             if let Some(z) = escaped(next, delta) {
                 let dwell = if self.smooth {
                     smooth_value(n, z, point, self.max, self.inside)
+                } else if self.outside == Outside::Iter {
+                    n
                 } else {
                     self.outside.value(n, z, self.max)
                 };
