@@ -73,6 +73,9 @@ enum AnimationKind {
     Zoom(ZoomOptions),
     /// Colour cycling: one view, its gradient turned a step each frame
     Palette(PaletteOptions),
+    /// XaoS's autopilot: from the whole set, zooming towards where the set meets the
+    /// outside, backing out when stuck, reusing each frame's lines; seeded
+    Autopilot(AutopilotOptions),
     /// An L-system growing: a plain one an order a frame; a parametric `.lsys` one
     /// continuously from order 0 (its new modules growing in between orders) over
     /// --frames [default: 8 an order, and one]
@@ -149,6 +152,28 @@ struct PaletteOptions {
     step: u16,
     #[command(flatten)]
     view: AnimatedView,
+    #[command(flatten)]
+    frames: FrameOptions,
+}
+
+#[derive(Debug, Args)]
+struct AutopilotOptions {
+    /// The seed of the autopilot's choices
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    seed: u64,
+    /// The Julia parameter k, RE,IM (a Julia set instead of the Mandelbrot set)
+    #[arg(long = "c", value_name = "RE,IM", allow_hyphen_values = true, value_parser = crate::common::parse_pair)]
+    c: Option<(String, String)>,
+    /// Reuse a line of the previous frame within this share of a pixel, in percent
+    #[arg(long, value_name = "PERCENT", default_value_t = 100)]
+    tolerance: u32,
+    /// Iteration cap, 1 to 65535
+    #[arg(long = "max-iter", value_name = "N", default_value_t = 256, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=65535))]
+    max_iterations: u32,
+    /// The colours
+    #[arg(long, value_enum, default_value = "classic")]
+    palette: PaletteName,
     #[command(flatten)]
     frames: FrameOptions,
 }
@@ -274,6 +299,15 @@ enum Animation {
         /// Whether every pixel of every frame is computed (`--exact`).
         exact: bool,
     },
+    /// XaoS's autopilot from `view` (the whole set), seeded.
+    Autopilot {
+        /// The first view.
+        view: Escape,
+        /// The seed (`--seed`).
+        seed: u64,
+        /// How close a reused line must be, in percent of a pixel (`--tolerance`).
+        tolerance: u32,
+    },
     /// One view, its gradient turned by `step` entries a frame.
     Palette {
         /// The view.
@@ -369,6 +403,26 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
             },
             options.frames,
         ),
+        AnimationKind::Autopilot(options) => {
+            let (centre, width) = match options.c {
+                None => (("-0.75", "0"), "3.5"),
+                Some(_) => (("0", "0"), "3.2"),
+            };
+            let view = AnimatedView {
+                centre: (centre.0.to_string(), centre.1.to_string()),
+                width: width.to_string(),
+                max_iterations: options.max_iterations,
+                palette: options.palette,
+            };
+            (
+                Animation::Autopilot {
+                    view: animated(options.c, view),
+                    seed: options.seed,
+                    tolerance: options.tolerance,
+                },
+                options.frames,
+            )
+        }
         AnimationKind::Palette(options) => (
             Animation::Palette {
                 view: animated(options.c, options.view),
@@ -526,14 +580,14 @@ fn animate(arguments: &AnimationPlan) -> Result<(), String> {
             Ok::<(), String>(())
         });
         let stats = |detail: String| {
-            if arguments.stats {
-                format!(
-                    "frames={}{detail} elapsed_ms={:.3}\n",
-                    arguments.frames,
-                    started.elapsed().as_secs_f64() * 1e3
-                )
-            } else {
-                String::new()
+            let (frames, elapsed) = (arguments.frames, started.elapsed().as_secs_f64() * 1e3);
+            match (arguments.stats, &arguments.kind) {
+                (false, _) => String::new(),
+                // Its line ends with `last_width=`, as its issue names it.
+                (true, Animation::Autopilot { .. }) => {
+                    format!("frames={frames} elapsed_ms={elapsed:.3}{detail}\n")
+                }
+                (true, _) => format!("frames={frames}{detail} elapsed_ms={elapsed:.3}\n"),
             }
         };
         let written = write(&receiver, arguments, stats);
@@ -572,6 +626,17 @@ fn make(arguments: &AnimationPlan, size: Size, emit: &Emit<'_>) -> Result<String
                 emit,
             )
         }
+        Animation::Autopilot {
+            view,
+            seed,
+            tolerance,
+        } => autopilot(
+            &escape_scene::request(view, size),
+            *seed,
+            *tolerance,
+            arguments.frames,
+            emit,
+        ),
         Animation::Palette { view, step } => palette_cycle(
             &escape_scene::request(view, size),
             *step,
@@ -804,6 +869,46 @@ fn zoom(
     Ok(format!(
         " computed_share={share:.4} last_width={}",
         widths.last().map_or("", String::as_str)
+    ))
+}
+
+/// XaoS's autopilot (`escape::Autopilot`) from the request's view: each frame the next
+/// view from the last picture, the frame moved in place and its lines reused within
+/// `tolerance` % of a pixel.
+fn autopilot(
+    request: &Request<'_>,
+    seed: u64,
+    tolerance: u32,
+    frames: u32,
+    emit: &Emit<'_>,
+) -> Result<String, String> {
+    let (mut view, palette) = escape_scene::view_at(request, request.width)?;
+    let pixels = (request.size.width * request.size.height) as usize;
+    let mut values = vec![0u16; pixels];
+    let mut columns = vec![ZoomLine::default(); request.size.width as usize];
+    let mut rows = vec![ZoomLine::default(); request.size.height as usize];
+    let mut frame =
+        ZoomFrame::new(view, &mut values, &mut columns, &mut rows).map_err(|e| e.to_string())?;
+    let mut pilot = tinyfractal::escape::Autopilot::new(seed);
+    let (mut computed, mut total) = (0u64, 0u64);
+    for index in 0..frames {
+        if index > 0 {
+            view = pilot
+                .next(&view, frame.values())
+                .map_err(|e| e.to_string())?;
+        }
+        let stats = frame
+            .advance(view, Some(tolerance))
+            .map_err(|e| e.to_string())?;
+        computed += u64::from(stats.computed);
+        total += u64::from(stats.computed + stats.reused);
+        emit.frame(escape_scene::paint(&view, frame.values(), &palette))?;
+    }
+    let share = computed as f64 / total.max(1) as f64;
+    let width = view.spacing().to_f64() * f64::from(request.size.width);
+    Ok(format!(
+        " computed_share={share:.4} backed_out={} last_width={width:e}",
+        pilot.backed_out()
     ))
 }
 

@@ -17,7 +17,7 @@ use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::{
-    escape::{Algorithm, Painter, Render},
+    escape::{Algorithm, Autopilot, Painter, Render},
     render::{DwellBuffer, DwellSink},
     Coord, View,
 };
@@ -67,6 +67,8 @@ pub enum Input {
     Histogram,
     /// `c`: colour cycling on or off.
     ToggleCycling,
+    /// `a`: XaoS's autopilot on or off: each finished picture, the view it steers to next.
+    Autopilot,
     /// `j`: the Julia set of the point under the mouse (or back to the Mandelbrot set).
     JuliaAt(Point),
     /// `s`: save the picture as a PNG.
@@ -344,6 +346,9 @@ pub struct Explorer {
     pub message: String,
     /// What a gallery scene's picture reports (its order, tier, ...).
     detail: String,
+    /// `a`: the autopilot flying, and how many flights were started (each its own seed).
+    autopilot: Option<Autopilot>,
+    flights: u64,
 }
 
 impl Explorer {
@@ -397,6 +402,8 @@ impl Explorer {
             save_pending: false,
             message: String::new(),
             detail: String::new(),
+            autopilot: None,
+            flights: 0,
         };
         explorer.restart();
         explorer
@@ -453,6 +460,16 @@ impl Explorer {
                     Input::Histogram => state.palette = HISTOGRAM,
                     Input::ToggleCycling => {
                         state.cycling = !state.cycling;
+                        redraw = false;
+                    }
+                    Input::Autopilot => {
+                        self.autopilot = match self.autopilot {
+                            Some(_) => None,
+                            None => {
+                                self.flights += 1;
+                                Some(Autopilot::new(self.flights))
+                            }
+                        };
                         redraw = false;
                     }
                     Input::JuliaAt(p) => match state.julia {
@@ -566,6 +583,7 @@ impl Explorer {
         let size = self.size;
         let mut picture = display.cropped(&Rectangle::new(Point::zero(), size));
         let mut drawn = None;
+        let mut steer = false;
         match &mut self.subject {
             Subject::Escape(state) => {
                 if let Some((render, view, palette)) = &mut self.render {
@@ -581,6 +599,17 @@ impl Explorer {
                         };
                         let Ok(_) = render.step(&mut sink, budget);
                         self.elapsed = self.started.elapsed();
+                    } else if let Some(pilot) = &mut self.autopilot {
+                        // A finished picture: the next view the autopilot steers to.
+                        match pilot.next(view, &self.values) {
+                            Ok(next) => {
+                                let spacing = next.spacing().to_f64();
+                                state.centre = (next.centre().0.to_f64(), next.centre().1.to_f64());
+                                state.width = spacing * f64::from(size.width);
+                                steer = true;
+                            }
+                            Err(error) => self.message = error.to_string(),
+                        }
                     } else if state.cycling {
                         // Cycling repaints the finished picture from its values.
                         escape_scene::paint_into(&mut picture, view, &self.values, palette);
@@ -628,6 +657,9 @@ impl Explorer {
                 Err(error) => self.message = error,
             }
             self.elapsed = self.started.elapsed().max(Duration::from_nanos(1));
+        }
+        if steer {
+            self.restart();
         }
         if self.save_pending && self.is_complete() {
             self.save_pending = false;

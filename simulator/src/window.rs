@@ -154,6 +154,7 @@ fn explore_window(arguments: &ExploreOptions) -> Result<(), String> {
                         Keycode::P => Some(Input::NextPalette),
                         Keycode::C => Some(Input::ToggleCycling),
                         Keycode::H => Some(Input::Histogram),
+                        Keycode::A => Some(Input::Autopilot),
                         Keycode::J => Some(Input::JuliaAt(mouse)),
                         Keycode::S => Some(Input::Save),
                         Keycode::R => Some(Input::Reset),

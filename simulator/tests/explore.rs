@@ -278,3 +278,24 @@ fn gallery_scenes_page_and_move_their_own_parameter() {
         .unwrap()
         .contains("sierpinski-carpet"));
 }
+
+/// `a`: the autopilot steers each finished picture to the next, narrower view; `a` again
+/// stops it where it is.
+#[test]
+fn the_autopilot_flies_and_stops() {
+    let mut display = window();
+    let mut explorer = Explorer::escape(EscapeState::default(), SIZE);
+    let start = state(&explorer).width;
+    explorer.input(Input::Autopilot);
+    for _ in 0..20 {
+        finish(&mut explorer, &mut display, 1 << 40);
+        // The finished picture's tick steers; the next ticks render the new view.
+        explorer.tick(&mut display, 1 << 40);
+    }
+    let flown = state(&explorer).width;
+    assert!(flown < start * 0.5, "{flown} from {start}");
+    explorer.input(Input::Autopilot);
+    finish(&mut explorer, &mut display, 1 << 40);
+    explorer.tick(&mut display, 1 << 40);
+    assert_eq!(state(&explorer).width, flown, "stopped where it was");
+}

@@ -10,6 +10,7 @@
 
 use super::arithmetic::{Arithmetic, HighWords};
 use super::kernel::Kernel;
+use super::view::DISTANCE_INSIDE;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 
 /// log₂(ln 2 / 2) in Q16: ln|z| = log₂|z|² · ln 2 / 2.
@@ -20,10 +21,6 @@ const STEPS_PAST_ESCAPE: u32 = 32;
 
 /// The escape radius of the estimate, in Q20.
 const RADIUS_Q20: i64 = 256 << 20;
-
-/// The distance shading's values: 16 a doubling of the distance, 1 at 1/16 of a pixel,
-/// 65 at one pixel, up to 255; the set (and points within the estimate's width) 256.
-pub const DISTANCE_INSIDE: u16 = 256;
 
 /// A derivative as a mantissa pair in Q30 and a shared exponent: (x + iy)·2^e, the larger
 /// mantissa kept in [2²⁹, 2³¹) while e > −30.

@@ -30,6 +30,7 @@
 //! ```
 
 pub(crate) mod arithmetic;
+pub(crate) mod autopilot;
 pub(crate) mod distance;
 pub(crate) mod drawing;
 pub(crate) mod emit;
@@ -47,12 +48,12 @@ pub(crate) mod trace;
 pub(crate) mod view;
 pub(crate) mod zoom;
 
-pub use distance::DISTANCE_INSIDE;
+pub use autopilot::{Autopilot, BACK_OUT, KEEP_RADIUS, NARROWING, STEER};
 pub use drawing::{EscapeTime, Painter};
 pub use kernel::MAX_FAST_TOLERANCE;
 pub use modes::{Inside, Outside, PERIOD_SEARCH, PERIOD_TOLERANCE};
 pub use perturbation::{ReferenceOrbit, REFERENCE_POINT_BYTES};
 pub use render::{Algorithm, Progress, Render, RenderStats, TILE, TILE_CELLS, TILE_ROWS};
 pub use scaled::ReferencePoint;
-pub use view::{Fractal, Shading, Tier, View, SMOOTH_FRACTION_BITS};
+pub use view::{Fractal, Shading, Tier, View, DISTANCE_INSIDE, SMOOTH_FRACTION_BITS};
 pub use zoom::{ReuseStats, ZoomFrame, ZoomLine, ZoomValue};

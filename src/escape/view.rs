@@ -3,7 +3,6 @@
 
 use embedded_graphics::geometry::Size;
 
-use super::distance::DISTANCE_INSIDE;
 use super::modes::{Inside, Outside};
 use crate::error::{Error, FitError, ViewError};
 use crate::math::wide::{div_round, mul_wide, shift_round};
@@ -14,6 +13,10 @@ pub(crate) const MAX_ITERATIONS: u32 = u16::MAX as u32;
 
 /// [`View::MAX_SMOOTH_ITERATIONS`], for the crate's own types and arrays.
 pub(crate) const MAX_SMOOTH_ITERATIONS: u32 = (u16::MAX as u32) >> SMOOTH_FRACTION_BITS;
+
+/// The inside value of the distance shading ([`Shading::Distance`]), whose values are 16
+/// a doubling of the distance, 1 at 1/16 of a pixel, 65 at one pixel, up to 255.
+pub const DISTANCE_INSIDE: u16 = 256;
 
 /// Fractional bits of a smooth value: sixteenths of an iteration.
 pub const SMOOTH_FRACTION_BITS: u32 = 4;

@@ -165,7 +165,10 @@ impl<'a, V: ZoomValue> ZoomFrame<'a, V> {
                 return Err(Error::Fit(FitError::BufferTooSmall { needed, given }));
             }
         }
-        let largest = view.inside_value();
+        // Distance estimation draws the pixels near the set one above the inside value.
+        let largest = view
+            .inside_value()
+            .saturating_add(u16::from(view.distance != 0));
         if largest > V::MAX {
             return Err(Error::Fit(FitError::CellTooNarrow {
                 largest: largest.into(),
@@ -326,6 +329,9 @@ fn compatible(old: &View, new: &View) -> bool {
     old.fractal == new.fractal
         && old.max_iterations == new.max_iterations
         && old.shading == new.shading
+        && old.inside == new.inside
+        && old.outside == new.outside
+        && old.distance == new.distance
         && old.size == new.size
 }
 
