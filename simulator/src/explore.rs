@@ -308,6 +308,7 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             frames,
             shrink,
             tolerance_percent,
+            pilot,
         } => Scene::Zoom {
             centre,
             width,
@@ -316,6 +317,7 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             frames,
             shrink,
             tolerance_percent,
+            pilot,
         },
         // Nothing of its own to step: the figure and the curves stay as they are.
         unchanged @ (Scene::Walk { .. } | Scene::Bezier { .. } | Scene::Particles { .. }) => {

@@ -242,6 +242,7 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
             shading,
             tier,
             one_bit,
+            distance,
         }) => {
             let request = crate::escape_scene::Request {
                 julia,
@@ -253,7 +254,10 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
                 tier,
                 palette: entry.palette,
                 palette_file: None,
-                modes: crate::escape_scene::Modes::default(),
+                modes: crate::escape_scene::Modes {
+                    distance,
+                    ..Default::default()
+                },
             };
             crate::escape_scene::render(&request).and_then(|rendered| {
                 if rendered.view.shading() != shading {

@@ -15,6 +15,7 @@
 use embedded_graphics::geometry::Size;
 
 use super::view::{Tier, View};
+use super::zoom::ZoomValue;
 use crate::error::Error;
 use crate::math::{Coord, Generator};
 
@@ -63,11 +64,11 @@ impl Autopilot {
         self.target
     }
 
-    /// The view after `view`, whose picture is `values` (row by row, as a render leaves
-    /// them): narrower and closer to the target, or wider if stuck. The view keeps its
+    /// The view after `view`, whose picture is `values` (row by row, as a render or a
+    /// [`ZoomFrame`](super::ZoomFrame) leaves them): narrower and closer to the target, or wider if stuck. The view keeps its
     /// fractal, size, cap, shading and modes. Errors only if the stored view cannot be
     /// rebuilt (it was made by [`View::new`], so it can).
-    pub fn next(&mut self, view: &View, values: &[u16]) -> Result<View, Error> {
+    pub fn next<V: ZoomValue>(&mut self, view: &View, values: &[V]) -> Result<View, Error> {
         let size = view.size();
         let inside = view.inside_value();
         let edges = |i0: u32, i1: u32, j0: u32, j1: u32| Edges {
@@ -175,18 +176,25 @@ fn pixel_of(view: &View, p: (i64, i64)) -> (i64, i64) {
 
 /// The edge pixels of a rectangle of a frame (columns `area.0..area.1`, rows
 /// `area.2..area.3`).
-#[derive(Clone, Copy)]
-struct Edges<'a> {
-    values: &'a [u16],
+struct Edges<'a, V> {
+    values: &'a [V],
     size: Size,
     inside: u16,
     area: (u32, u32, u32, u32),
 }
 
-impl Edges<'_> {
+impl<V> Clone for Edges<'_, V> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<V> Copy for Edges<'_, V> {}
+
+impl<V: ZoomValue> Edges<'_, V> {
     fn is_inside(&self, i: u32, j: u32) -> Option<bool> {
         let index = j as usize * self.size.width as usize + i as usize;
-        self.values.get(index).map(|&v| v >= self.inside)
+        self.values.get(index).map(|&v| v.value() >= self.inside)
     }
 
     fn is_edge(&self, i: u32, j: u32) -> bool {

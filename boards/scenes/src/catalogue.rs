@@ -203,6 +203,10 @@ pub enum Scene {
         shrink: (u32, u32),
         /// How far (in % of a pixel) a line may be from the one it takes.
         tolerance_percent: u32,
+        /// XaoS's autopilot with this seed steers each frame instead (`escape::Autopilot`,
+        /// from `centre` and `width`; `shrink` unused), with the scenes' `panels` feature;
+        /// without it such a scene draws the background and does no work.
+        pilot: Option<u64>,
     },
 }
 
@@ -291,6 +295,9 @@ pub struct EscapeScene {
     /// Shown on a one-bit panel (an SSD1306) by this dithering, or `None` in the look's
     /// colours.
     pub one_bit: Option<Dither>,
+    /// Distance estimation's width in 256ths of a pixel (`View::with_distance`), 0 for
+    /// none.
+    pub distance: u16,
 }
 
 impl EscapeScene {
@@ -318,6 +325,7 @@ impl EscapeScene {
             None => view,
         })
         .and_then(|view| view.with_shading(self.shading))
+        .map(|view| view.with_distance(self.distance))
     }
 
     /// The same view with `shading` (smooth shading keeps the cap within
@@ -512,6 +520,7 @@ const fn escape(
             shading: Shading::Dwell,
             tier: None,
             one_bit: None,
+            distance: 0,
         }),
         size,
         palette,
@@ -545,6 +554,22 @@ const fn one_bit(name: &'static str, entry: Entry) -> Entry {
             entry,
             EscapeScene {
                 one_bit: Some(Dither::Bayer8),
+                ..escape
+            },
+        )
+    }
+}
+
+/// `entry`, an escape-time view, with distance estimation at Fractint's width (0.71 of a
+/// pixel, 182/256).
+const fn estimated(name: &'static str, entry: Entry) -> Entry {
+    let escape = escape_of(entry);
+    Entry {
+        name,
+        ..adjusted(
+            entry,
+            EscapeScene {
+                distance: 182,
                 ..escape
             },
         )
@@ -1060,6 +1085,26 @@ const fn zoom(
             frames,
             shrink: (20, 21),
             tolerance_percent,
+            pilot: None,
+        },
+        size: OLED,
+        palette: "fire",
+    }
+}
+
+/// XaoS's autopilot from the whole set with `seed`, `frames` frames at 200 iterations on
+/// the OLED, reusing lines within a pixel.
+const fn pilot(name: &'static str, seed: u64, frames: u32) -> Entry {
+    Entry {
+        name,
+        scene: Scene::Zoom {
+            centre: MANDELBROT_CENTRE,
+            width: "3.5",
+            max_iterations: 200,
+            frames,
+            shrink: (20, 21),
+            tolerance_percent: 100,
+            pilot: Some(seed),
         },
         size: OLED,
         palette: "fire",
@@ -1076,20 +1121,32 @@ pub const DISPLAY_SCENES: [Entry; 2] = [
     escape("julia", JULIA_K, ("0", "0"), "3.2", 100, GALLERY_SIZE, "classic"),
 ];
 
-/// Panels of fewer colours: the OLED's Mandelbrot on a one-bit SSD1306 of its size.
+/// Panels of fewer colours, and the escape-time features made for them: the OLED's
+/// Mandelbrot on a one-bit SSD1306 of its size; the seahorse valley there without and with
+/// distance estimation (its strands held together), and the full view with it at the OLED's
+/// and a display's size (what the estimate costs); XaoS's autopilot flying 48 frames.
 ///
 /// Dithered by Bayer's 8×8 matrix; measured by the newer families' firmware (the
 /// dithering target is a second copy of the escape-time engine, beyond the other build's
 /// flash).
-pub const PANEL_SCENES: [Entry; 1] = [one_bit(
-    "mandelbrot-1bit",
-    escape(
-        "mandelbrot",
-        None,
-        MANDELBROT_CENTRE,
-        "3.5",
-        64,
-        OLED,
-        "classic",
-    ),
-)];
+#[rustfmt::skip]
+pub const PANEL_SCENES: [Entry; 7] = [
+    one_bit("mandelbrot-1bit", escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic")),
+    one_bit("seahorse-1bit", SEAHORSE),
+    one_bit("seahorse-distance-1bit", estimated("seahorse", SEAHORSE)),
+    one_bit("mandelbrot-distance-1bit", estimated("mandelbrot", escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"))),
+    one_bit("mandelbrot-1bit", escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic")),
+    one_bit("mandelbrot-distance-1bit", estimated("mandelbrot", escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"))),
+    pilot("autopilot", 1, 48),
+];
+
+/// The seahorse valley on the OLED, 1,000 iterations: strands thinner than its pixels.
+const SEAHORSE: Entry = escape(
+    "seahorse",
+    None,
+    ("-0.7435", "0.1314"),
+    "0.01",
+    1000,
+    OLED,
+    "classic",
+);

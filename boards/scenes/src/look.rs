@@ -168,7 +168,12 @@ impl Scene {
     ) -> Option<Result<Work, DrawError<D::Error>>>
     where
         D: DrawTarget,
+        D::Color: From<Rgb888>,
     {
+        #[cfg(feature = "panels")]
+        if let Scene::Zoom { pilot: Some(_), .. } = self {
+            return Some(draw_zoom(target, look, self, || {}));
+        }
         #[cfg(feature = "panels")]
         if let Scene::Escape(escape) = self {
             if let Some(dither) = escape.one_bit {
@@ -901,10 +906,19 @@ where
         frames,
         shrink: (numerator, denominator),
         tolerance_percent,
+        pilot,
     } = *scene
     else {
         return Ok(Work::Frames(0));
     };
+    // The autopilot is the `panels` feature's: without it its scene draws nothing.
+    #[cfg(feature = "panels")]
+    let mut pilot = pilot.map(tinyfractal::escape::Autopilot::new);
+    #[cfg(not(feature = "panels"))]
+    if pilot.is_some() {
+        target.clear(look.background).map_err(DrawError::Target)?;
+        return Ok(Work::Frames(0));
+    }
     let size = target.bounding_box().size;
     // Every catalogue number parses: `zoom()` asserts it when the tables compile.
     let deep = |text: &str| DeepCoord::parse(text).unwrap_or_default();
@@ -917,9 +931,21 @@ where
     let mut width = i128::from(Coord::parse(width).unwrap_or_default().to_bits());
     let gradient = look.gradient::<16>()?;
     let (columns, rows) = lines.split_at_mut(lines.len().min(size.width as usize));
-    let mut frame = ZoomFrame::new(view_of(width)?, values, columns, rows)?;
+    let mut view = view_of(width)?;
+    let mut frame = ZoomFrame::new(view, values, columns, rows)?;
     for index in 0..frames {
-        let view = view_of(width)?;
+        // The autopilot steers from the second frame on; a zoom narrows by `shrink`.
+        #[cfg(feature = "panels")]
+        let steered = match &mut pilot {
+            Some(pilot) if index > 0 => Some(pilot.next(&view, frame.values())?),
+            _ => None,
+        };
+        #[cfg(not(feature = "panels"))]
+        let steered: Option<View> = None;
+        view = match steered {
+            Some(next) => next,
+            None => view_of(width)?,
+        };
         // The last frame takes only lines at exactly its points: it is exact.
         let tolerance = if index + 1 == frames {
             0
