@@ -43,8 +43,15 @@ fn carpet_is_exact_at_three_to_the_order_pixels() {
             .unwrap();
         assert_eq!(stats.squares, 8u64.pow(order));
         assert_eq!(stats.holes, (8u64.pow(order) - 1) / 7);
-        // One fill_solid per square, every pixel once.
-        assert_eq!(frame.fill_solid_calls as u64, stats.squares + stats.holes);
+        // Every pixel once: a fill_solid per hole, and per last-level group of eight kept
+        // squares four (its top and bottom rows whole, its middle row's two).
+        let groups = if order == 0 { 1 } else { 8u64.pow(order - 1) };
+        let ink_fills = if order == 0 { 1 } else { 4 * groups };
+        assert_eq!(
+            frame.fill_solid_calls as u64,
+            ink_fills + stats.holes,
+            "order {order}"
+        );
         assert_eq!(frame.draw_iter_pixels, 0);
         assert_eq!(frame.run_pixels, (side * side) as usize);
         for y in 0..side {
@@ -87,6 +94,46 @@ fn carpet_at_other_sizes_keeps_eight_ninths_per_order() {
         // Outside the square: untouched.
         assert_eq!(frame.pixel(0, 100), Some(UNPAINTED));
         assert_eq!(frame.pixel(259, 100), Some(UNPAINTED));
+    }
+}
+
+/// At sizes that are no power of 3, every pixel as the documented rule has it: cell i of
+/// level k spans ⌊S·i/3ᵏ⌋ to ⌊S·(i + 1)/3ᵏ⌋, and a pixel is removed when at some level both
+/// of its cells' indices are 1 modulo 3 (the model finds each cell by scanning the edges).
+#[test]
+fn carpet_cells_follow_the_edge_rule_at_any_size() {
+    for (side, order) in [(200u32, 4u32), (100, 3), (82, 4), (250, 5), (64, 3)] {
+        let mut frame = Frame::filled(Size::new(side, side), UNPAINTED);
+        Carpet::new(order)
+            .fit(frame.bounding_box(), INK, PAPER)
+            .unwrap()
+            .draw(&mut frame)
+            .unwrap();
+        // The index of the cell of level k that pixel p lies in.
+        let cell = |p: u32, k: u32| {
+            let cells = 3u64.pow(k);
+            (0..cells)
+                .find(|&i| {
+                    let (from, to) = (
+                        u64::from(side) * i / cells,
+                        u64::from(side) * (i + 1) / cells,
+                    );
+                    (from..to).contains(&u64::from(p))
+                })
+                .unwrap()
+        };
+        for y in 0..side {
+            for x in 0..side {
+                let removed = (1..=order).any(|k| cell(x, k) % 3 == 1 && cell(y, k) % 3 == 1);
+                let expected = if removed { PAPER } else { INK };
+                let at = (x as i32, y as i32);
+                assert_eq!(
+                    frame.pixel(at.0, at.1),
+                    Some(expected),
+                    "{side} px order {order}: {at:?}"
+                );
+            }
+        }
     }
 }
 

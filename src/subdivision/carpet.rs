@@ -9,7 +9,7 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::order::{centred_square, check_order, depth_first, power};
+use super::order::{centred_square, check_order, depth_first, power, MAX_SUBDIVISION_ORDER};
 use crate::error::Error;
 
 /// The Sierpiński carpet at an order.
@@ -59,7 +59,7 @@ impl Carpet {
 }
 
 /// A carpet fitted to a square: an embedded-graphics [`Drawable`] that paints every pixel
-/// of the square once, one `fill_solid` per square.
+/// of the square once, a `fill_solid` per hole and per row of kept squares.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct CarpetDrawing<C> {
     order: u32,
@@ -68,16 +68,83 @@ pub struct CarpetDrawing<C> {
     background: C,
 }
 
+/// A cell edge's exact position S·k/3ᴸ at its level L, as a whole number of pixels and a
+/// remainder in 3ᴸths: children's edges come from their parent's by additions (no division
+/// a cell, a library call on Cortex-M0), and the pixel is the whole part, ⌊S·k/3ᴸ⌋.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+struct Edge {
+    whole: u32,
+    part: u32,
+}
+
+/// A level's cell side S/3ᴸ as a whole and a remainder in 3ᴸths, and 3ᴸ.
+#[derive(Debug, Clone, Copy, Default)]
+struct Step {
+    whole: u32,
+    part: u32,
+    cells: u32,
+}
+
+impl Edge {
+    /// The parent's edge (in 3ᴸ⁻¹ths) `count` cells of `step` (level L) further on.
+    #[inline(always)]
+    fn advanced(self, step: Step, count: u32) -> Self {
+        let mut edge = Self {
+            whole: self.whole + count * step.whole,
+            part: 3 * self.part + count * step.part,
+        };
+        // 3·part < 3ᴸ and count·step.part ≤ 3·(3ᴸ − 1): at most three carries.
+        for _ in 0..3 {
+            if edge.part >= step.cells {
+                edge.part -= step.cells;
+                edge.whole += 1;
+            }
+        }
+        edge
+    }
+
+    /// This edge one cell of `step` further on, at the same level.
+    #[inline(always)]
+    fn next(self, step: Step) -> u32 {
+        self.whole + step.whole + u32::from(self.part + step.part >= step.cells)
+    }
+}
+
 impl<C: PixelColor> CarpetDrawing<C> {
-    /// The pixels of cell (i, j) of a level with `cells` cells across.
-    fn cell(&self, (i, j): (u64, u64), cells: u64) -> Rectangle {
-        let side = u64::from(self.square.size.width);
-        let edge = |k: u64| (side * k / cells) as i32;
-        let (x0, x1, y0, y1) = (edge(i), edge(i + 1), edge(j), edge(j + 1));
+    /// The pixels of the cell whose left and top edges are `x` and `y`, of a level of
+    /// `step`.
+    fn cell(&self, (x, y): (Edge, Edge), step: Step) -> Rectangle {
+        self.pixels((x.whole, y.whole), (x.next(step), y.next(step)))
+    }
+
+    /// The pixels from `(x0, y0)` to `(x1, y1)`, exclusive, in the square.
+    fn pixels(&self, (x0, y0): (u32, u32), (x1, y1): (u32, u32)) -> Rectangle {
         Rectangle::new(
-            self.square.top_left + Point::new(x0, y0),
-            Size::new((x1 - x0) as u32, (y1 - y0) as u32),
+            self.square.top_left + Point::new(x0 as i32, y0 as i32),
+            Size::new(x1 - x0, y1 - y0),
         )
+    }
+
+    /// A cell of the level above the last (edges `x`, `y`) and its nine children of the
+    /// last level (`step`): the top and bottom rows of three as one rectangle each, the
+    /// middle row as its two squares and the hole between, every pixel once.
+    fn group<D: DrawTarget<Color = C>>(
+        &self,
+        target: &mut D,
+        (x, y): (Edge, Edge),
+        step: Step,
+        stats: &mut CarpetStats,
+    ) -> Result<(), D::Error> {
+        let edges = |e: Edge| [0, 1, 2, 3].map(|k| e.advanced(step, k).whole);
+        let ([x0, x1, x2, x3], [y0, y1, y2, y3]) = (edges(x), edges(y));
+        target.fill_solid(&self.pixels((x0, y0), (x3, y1)), self.ink)?;
+        target.fill_solid(&self.pixels((x0, y1), (x1, y2)), self.ink)?;
+        target.fill_solid(&self.pixels((x1, y1), (x2, y2)), self.background)?;
+        target.fill_solid(&self.pixels((x2, y1), (x3, y2)), self.ink)?;
+        target.fill_solid(&self.pixels((x0, y2), (x3, y3)), self.ink)?;
+        stats.squares += 8;
+        stats.holes += 1;
+        Ok(())
     }
 }
 
@@ -92,7 +159,10 @@ impl<C: PixelColor> Drawable for CarpetDrawing<C> {
     type Output = CarpetStats;
 
     /// Depth first (`depth_first`): the 9 children of a kept cell in row order, the centre
-    /// painted as a hole, the others split again or, at the last level, painted in ink.
+    /// painted as a hole, the others split again or, above the last level, drawn as a group
+    /// of the last level's squares: the top and bottom rows of three as one rectangle
+    /// each, the middle row's two squares and the hole apart, so every pixel is painted
+    /// once, in five calls a group instead of nine.
     fn draw<D>(&self, target: &mut D) -> Result<CarpetStats, D::Error>
     where
         D: DrawTarget<Color = C>,
@@ -103,16 +173,34 @@ impl<C: PixelColor> Drawable for CarpetDrawing<C> {
             stats.squares = 1;
             return Ok(stats);
         }
-        depth_first(self.order, 9, |level, (x, y): (u64, u64), child| {
-            let c = u64::from(child);
-            let at = (3 * x + c % 3, 3 * y + c / 3);
-            let cells = power(3, level);
+        // Each level's cell side, found once: S = whole·3ᴸ + part, 3ᴸ at most S (`fit`
+        // checks), so every sum below fits 32 bits.
+        let side = self.square.size.width;
+        let mut steps = [Step::default(); MAX_SUBDIVISION_ORDER as usize + 1];
+        let mut cells = 1u32;
+        for step in steps.iter_mut().skip(1).take(self.order as usize) {
+            cells = cells.saturating_mul(3);
+            *step = Step {
+                whole: side / cells,
+                part: side % cells,
+                cells,
+            };
+        }
+        let last = steps.get(self.order as usize).copied().unwrap_or_default();
+        if self.order == 1 {
+            self.group(target, (Edge::default(), Edge::default()), last, &mut stats)?;
+            return Ok(stats);
+        }
+        // Down to the groups (the cells above the last level), each drawn whole.
+        depth_first(self.order - 1, 9, |level, (x, y): (Edge, Edge), child| {
+            let step = steps.get(level as usize).copied().unwrap_or_default();
+            let c = u32::from(child);
+            let at = (x.advanced(step, c % 3), y.advanced(step, c / 3));
             if c == 4 {
-                target.fill_solid(&self.cell(at, cells), self.background)?;
+                target.fill_solid(&self.cell(at, step), self.background)?;
                 stats.holes += 1;
-            } else if level == self.order {
-                target.fill_solid(&self.cell(at, cells), self.ink)?;
-                stats.squares += 1;
+            } else if level + 1 == self.order {
+                self.group(target, at, last, &mut stats)?;
             } else {
                 return Ok(Some(at));
             }

@@ -2,8 +2,9 @@
 //! f32 and fixed-point baselines) into a checksum target and reports, over semihosting,
 //! one line per scene: instructions, work, checksum and stack high-water mark. The build
 //! with `--features newer` measures the newer families' scenes (noise, reaction–diffusion,
-//! the attractors) and only them, the other build every other scene: together they would
-//! overflow the micro:bit's 256 KiB of flash.
+//! the attractors, the panels) and only them, the build with `--features shapes`
+//! Sierpiński's shapes and the walking figure with their baselines, the other build every
+//! other scene: together they would overflow the micro:bit's 256 KiB of flash.
 //!
 //! Under QEMU with `-icount shift=0` each instruction is one virtual nanosecond. SysTick
 //! runs from the core clock, so its ticks are proportional to instructions; the ratio is
@@ -28,14 +29,18 @@ mod firmware {
     #[cfg(feature = "newer")]
     use tinyfractal::Real;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
-    #[cfg(not(feature = "newer"))]
+    #[cfg(not(any(feature = "newer", feature = "shapes")))]
     use tinyfractal_scenes::naive::{fern_f32, fern_fixed};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::naive::{
         fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
     };
+    #[cfg(feature = "shapes")]
+    use tinyfractal_scenes::naive::{carpet_f32, carpet_fixed, gasket_f32, gasket_fixed};
+    #[cfg(feature = "shapes")]
+    use tinyfractal_scenes::{Shape, SCENES};
     use tinyfractal_scenes::{Scene, Work, GREY};
-    #[cfg(not(feature = "newer"))]
+    #[cfg(not(any(feature = "newer", feature = "shapes")))]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::{DYNAMICS_SCENES, TEXTURE_SCENES};
@@ -46,7 +51,7 @@ mod firmware {
     enum Baseline {
         Escape(BaselineView),
         /// The lecture's fern by the chaos game: the points.
-        #[cfg(not(feature = "newer"))]
+        #[cfg(not(any(feature = "newer", feature = "shapes")))]
         Fern(u32),
         /// fBm of Perlin's 2D noise: the permutation's seed, octaves, lattice cells across.
         #[cfg(feature = "newer")]
@@ -60,6 +65,9 @@ mod firmware {
         /// A fountain's frames.
         #[cfg(feature = "newer")]
         Fountain(u32),
+        /// Sierpiński's carpet (true) or gasket at an order.
+        #[cfg(feature = "shapes")]
+        Subdivision(bool, u32),
     }
 
     impl Baseline {
@@ -106,7 +114,12 @@ mod firmware {
                     kind: kind @ (Kind::Henon | Kind::Lorenz),
                     points,
                 } => Some(Self::Attractor(kind, points as u32)),
-                #[cfg(not(feature = "newer"))]
+                #[cfg(feature = "shapes")]
+                Scene::Subdivision {
+                    shape: shape @ (Shape::Carpet | Shape::Gasket),
+                    order,
+                } => Some(Self::Subdivision(shape == Shape::Carpet, order)),
+                #[cfg(not(any(feature = "newer", feature = "shapes")))]
                 Scene::Ifs {
                     system: "fern",
                     points,
@@ -240,8 +253,14 @@ mod firmware {
             .iter()
             .chain(&DYNAMICS_SCENES)
             .chain(&tinyfractal_scenes::PANEL_SCENES);
-        #[cfg(not(feature = "newer"))]
-        let every_core = SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES);
+        #[cfg(feature = "shapes")]
+        let every_core = SCENES.iter().filter(|entry| entry.scene.is_shape());
+        #[cfg(not(any(feature = "newer", feature = "shapes")))]
+        let every_core = SCENES
+            .iter()
+            .filter(|entry| !entry.scene.is_shape())
+            .chain(&DISPLAY_SCENES)
+            .chain(&ZOOM_SCENES);
         for entry in every_core {
             // The baseline's view (parsed from decimal text) only for a scene measured.
             if !selected(entry.name, entry.size) {
@@ -257,19 +276,25 @@ mod firmware {
                     .or_else(|| entry.scene.draw_dynamics(target, &GREY))
                     .or_else(|| entry.scene.draw_panel(target, &GREY))
                     .unwrap_or(Ok(Work::Samples(0)));
-                #[cfg(not(feature = "newer"))]
+                // The shapes' build reaches only the shapes' code.
+                #[cfg(feature = "shapes")]
+                return entry
+                    .scene
+                    .draw_shape(target, &GREY)
+                    .unwrap_or(Ok(Work::Segments(0)));
+                #[cfg(not(any(feature = "newer", feature = "shapes")))]
                 entry.scene.draw(target, &GREY)
             });
         }
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
-        #[cfg(all(measure_general, not(feature = "newer")))]
+        #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.draw(target, &GREY)
             });
         }
         // Perturbation's views, where the RAM holds a reference orbit (not the micro:bit's).
-        #[cfg(all(measure_general, not(feature = "newer")))]
+        #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
         for entry in tinyfractal_scenes::DEEP_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.scene.draw(target, &GREY)
@@ -349,7 +374,24 @@ mod firmware {
                     fountain_f32(frames, target);
                 });
             }
-            #[cfg(not(feature = "newer"))]
+            #[cfg(feature = "shapes")]
+            Some(Baseline::Subdivision(carpet, order)) => {
+                f32_cost = run(&mut |target| {
+                    if carpet {
+                        carpet_f32(order, target);
+                    } else {
+                        gasket_f32(order, target);
+                    }
+                });
+                fixed_cost = run(&mut |target| {
+                    if carpet {
+                        carpet_fixed(order, target);
+                    } else {
+                        gasket_fixed(order, target);
+                    }
+                });
+            }
+            #[cfg(not(any(feature = "newer", feature = "shapes")))]
             Some(Baseline::Fern(points)) => {
                 f32_cost = run(&mut |target| {
                     fern_f32(points, target);

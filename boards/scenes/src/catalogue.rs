@@ -211,6 +211,13 @@ pub enum Scene {
 }
 
 impl Scene {
+    /// Whether the scene is one of Sierpiński's shapes or the walking figure: the scenes'
+    /// `shapes` feature, measured by the measuring firmware's build of their own beside
+    /// their baselines.
+    pub const fn is_shape(&self) -> bool {
+        matches!(self, Self::Subdivision { .. } | Self::Walk { .. })
+    }
+
     /// What the scene's [`Work`](crate::Work) counts, singular: `segment`, `point`,
     /// `iteration`, `frame`, `square`, `triangle`, `cube`, `height`, `line`, `sample` or
     /// `cell-step`.
@@ -1121,10 +1128,12 @@ pub const DISPLAY_SCENES: [Entry; 2] = [
     escape("julia", JULIA_K, ("0", "0"), "3.2", 100, GALLERY_SIZE, "classic"),
 ];
 
-/// Panels of fewer colours, and the escape-time features made for them: the OLED's
-/// Mandelbrot on a one-bit SSD1306 of its size; the seahorse valley there without and with
-/// distance estimation (its strands held together), and the full view with it at the OLED's
-/// and a display's size (what the estimate costs); XaoS's autopilot flying 48 frames.
+/// Panels of fewer colours, and the escape-time features made for them.
+///
+/// The OLED's Mandelbrot on a one-bit SSD1306 of its size; the seahorse valley there
+/// without and with distance estimation (its strands held together), and the full view
+/// with it at the OLED's and a display's size (what the estimate costs); XaoS's autopilot
+/// flying 48 frames.
 ///
 /// Dithered by Bayer's 8×8 matrix; measured by the newer families' firmware (the
 /// dithering target is a second copy of the escape-time engine, beyond the other build's

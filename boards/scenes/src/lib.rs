@@ -13,6 +13,7 @@ mod dynamics;
 mod look;
 pub mod measure;
 pub mod naive;
+mod shapes;
 mod wait;
 
 pub use catalogue::{

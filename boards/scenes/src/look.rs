@@ -1,6 +1,5 @@
 //! Drawing a scene on a display: one [`Look`] per display says which colours to use.
 
-use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::{
     pixelcolor::{Gray4, GrayColor, Rgb565, Rgb888},
     prelude::*,
@@ -9,18 +8,18 @@ use tinyfractal::error::FitError;
 use tinyfractal::{
     error::DrawError,
     escape::{ReferencePoint, Shading, Tier, ZoomFrame, ZoomLine},
-    figure::{walk as walk_pose, BODY},
     ifs::IfsPicture,
     lsystem::{Cell, DEFAULT_DEPTH, DEFAULT_STACK},
     math::DeepCoord,
     noise::{Octaves, Texture},
     render::{Colors, Gradient, Orientation, Shade},
     terrain::Displacement,
-    Carpet, Coord, Error, EscapeTime, Figure, Fractal, Gasket, Ifs, IfsFile, LSystem, LsysFile,
-    ParametricGrammar, ParametricLSystem, Real, SierpinskiCube, Terrain, TerrainMap, View,
+    Coord, Error, EscapeTime, Fractal, Ifs, IfsFile, LSystem, LsysFile, ParametricGrammar,
+    ParametricLSystem, Real, Terrain, TerrainMap, View,
 };
 
-use crate::catalogue::{GeneralEntry, Scene, Shape, System, CUBE_COLOUR};
+use crate::catalogue::{GeneralEntry, Scene, System};
+use crate::shapes::{draw_subdivision, draw_walk};
 
 /// Expansion-table cells an L-system scene is measured with (96 bytes each, on the stack while
 /// it draws: 3.75 KiB).
@@ -189,6 +188,28 @@ impl Scene {
         None
     }
 
+    /// Draws one of Sierpiński's shapes or the walking figure as [`Scene::draw`] does,
+    /// without reaching the other families' code; `None` for any other scene.
+    ///
+    /// A firmware that measures only the shapes calls this, so its flash holds only them.
+    pub fn draw_shape<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+    ) -> Option<Result<Work, DrawError<D::Error>>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
+        match *self {
+            Scene::Subdivision { shape, order } => {
+                Some(draw_subdivision(target, look, shape, order))
+            }
+            Scene::Walk { frames } => Some(draw_walk(target, look, frames, || {})),
+            _ => None,
+        }
+    }
+
     /// Draws a texture scene (Perlin noise, reaction–diffusion) as [`Scene::draw`] does,
     /// without reaching the other families' code; `None` for any other scene.
     ///
@@ -299,78 +320,6 @@ impl Scene {
     }
 }
 
-/// A Sierpiński carpet, gasket or cube over the whole target, out of line. The carpet and
-/// gasket paint their box (ink and background) and the cube its target; what is left of
-/// the target around the carpet's square or the gasket's box is cleared first.
-#[inline(never)]
-fn draw_subdivision<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    shape: Shape,
-    order: u32,
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-    D::Color: From<Rgb888>,
-{
-    let area = target.bounding_box();
-    let cells = match shape {
-        Shape::Carpet => {
-            let drawing = Carpet::new(order).fit(area, look.ink, look.background)?;
-            clear_around(target, area, drawing.bounding_box(), look.background)?;
-            drawing.draw(target).map_err(DrawError::Target)?.squares
-        }
-        Shape::Gasket => {
-            let drawing = Gasket::new(order).fit(area, look.ink, look.background)?;
-            clear_around(target, area, drawing.bounding_box(), look.background)?;
-            drawing.draw(target).map_err(DrawError::Target)?.triangles
-        }
-        Shape::Cube(variant) => {
-            SierpinskiCube::new(order, variant)
-                .fit(area, CUBE_COLOUR, look.background)?
-                .draw(target)
-                .map_err(DrawError::Target)?
-                .cubes
-        }
-    };
-    Ok(Work::Cells(cells))
-}
-
-/// Clears the parts of `area` outside `inner` (the bands beside or above and below it).
-fn clear_around<D: DrawTarget>(
-    target: &mut D,
-    area: Rectangle,
-    inner: Rectangle,
-    background: D::Color,
-) -> Result<(), DrawError<D::Error>> {
-    let (Some(outer_end), Some(inner_end)) = (area.bottom_right(), inner.bottom_right()) else {
-        return Ok(());
-    };
-    let bands = [
-        Rectangle::with_corners(area.top_left, Point::new(outer_end.x, inner.top_left.y - 1)),
-        Rectangle::with_corners(Point::new(area.top_left.x, inner_end.y + 1), outer_end),
-        Rectangle::with_corners(
-            Point::new(area.top_left.x, inner.top_left.y),
-            Point::new(inner.top_left.x - 1, inner_end.y),
-        ),
-        Rectangle::with_corners(
-            Point::new(inner_end.x + 1, inner.top_left.y),
-            Point::new(outer_end.x, inner_end.y),
-        ),
-    ];
-    for band in bands {
-        // `with_corners` swaps corners given in the wrong order: an empty band comes out
-        // reversed, so keep only bands really outside `inner`.
-        if band.size.width > 0 && band.size.height > 0 && band.intersection(&inner).is_zero_sized()
-        {
-            target
-                .fill_solid(&band, background)
-                .map_err(DrawError::Target)?;
-        }
-    }
-    Ok(())
-}
-
 /// Midpoint-displacement terrain over the whole target: a profile in `look.ink` under a
 /// `look.background` sky, or a landscape in its height bands.
 fn draw_terrain<D>(
@@ -412,47 +361,6 @@ where
     let drawing =
         TerrainMap::new(samples, displacement).fit(target.bounding_box(), &mut heights)?;
     drawing.draw(target).map_err(DrawError::Target)
-}
-
-/// The walk cycle in `look.ink`, out of line: `frames` frames fitted once over all of
-/// them, each frame erasing the last one's lines (drawn again in the background) before
-/// drawing its own, so the display is cleared once, not every frame. What stays on the
-/// target is the last frame alone.
-#[inline(never)]
-fn draw_walk<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    frames: u32,
-    mut between_frames: impl FnMut(),
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-{
-    target.clear(look.background).map_err(DrawError::Target)?;
-    // Frame k of n at k/n of a stride (none for n = 0).
-    let pose = |frame: u32| Real::from_ratio(i64::from(frame), i64::from(frames)).map(walk_pose);
-    let Some(first) = pose(0) else {
-        return Ok(Work::Segments(0));
-    };
-    let (ink, paper) = ([look.ink], [look.background]);
-    let drawing = Figure::new(&BODY, first).fit_poses(
-        target.bounding_box(),
-        &ink,
-        (1..frames).filter_map(pose),
-    )?;
-    let eraser =
-        drawing.with_palette(Colors::new(&paper).ok_or(Error::Fit(FitError::EmptyPalette))?);
-    let mut lines = 0;
-    let mut last = None;
-    for frame in (0..frames).filter_map(pose) {
-        if let Some(last) = last {
-            eraser.with_pose(last).try_draw(target)?;
-        }
-        lines += drawing.with_pose(frame).try_draw(target)?;
-        last = Some(frame);
-        between_frames();
-    }
-    Ok(Work::Segments(lines))
 }
 
 /// An L-system in `look.ink`, out of line: each family's frame is on the stack only while
@@ -584,6 +492,8 @@ impl<D: DrawTarget> DrawTarget for OneBit<'_, D> {
 
 #[cfg(feature = "panels")]
 use embedded_graphics::pixelcolor::BinaryColor;
+#[cfg(feature = "panels")]
+use embedded_graphics::primitives::Rectangle;
 #[cfg(feature = "panels")]
 use tinyfractal::render::{Dither, Dithered};
 

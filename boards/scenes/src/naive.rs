@@ -2,8 +2,10 @@
 //!
 //! Perlin's reference code in `f32` as an Arduino sketch ports it, a first Gray–Scott
 //! sketch in `f32`, the Hénon map and the Lorenz flow as sketches iterate them, and the
-//! lecture's fern by the chaos game in `f32` and in careful Q16.16. Each draws its picture pixel by pixel into the target, as such
-//! sketches do.
+//! lecture's fern by the chaos game in `f32` and in careful Q16.16. Each draws its picture
+//! pixel by pixel into the target, as such sketches do; Sierpiński's carpet and gasket,
+//! recursive in `f32` and in Q16.16, fill their last level's squares and triangles with
+//! embedded-graphics' styled primitives (Adafruit's `fillRect` and `fillTriangle`).
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 
@@ -381,4 +383,162 @@ pub fn fern_fixed<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> 
         }
     }
     u64::from(points)
+}
+
+/// A value in Q16.16 from an integer.
+const fn q16_of(value: i32) -> i32 {
+    value << 16
+}
+
+/// The largest square centred in `target`: its top-left corner and side, in pixels.
+fn centred_square<D: DrawTarget>(target: &D) -> (i32, i32, i32) {
+    let size = target.bounding_box().size;
+    let side = size.width.min(size.height) as i32;
+    (
+        (size.width as i32 - side) / 2,
+        (size.height as i32 - side) / 2,
+        side,
+    )
+}
+
+/// A filled rectangle as a sketch draws one: embedded-graphics' styled primitive
+/// (Adafruit's `fillRect`).
+fn fill_rect<D: DrawTarget<Color = Gray4>>(target: &mut D, (x, y): (i32, i32), (w, h): (i32, i32)) {
+    use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
+    let size = Size::new(w.max(0) as u32, h.max(0) as u32);
+    let _ = Rectangle::new(Point::new(x, y), size)
+        .into_styled(PrimitiveStyle::with_fill(Gray4::WHITE))
+        .draw(target);
+}
+
+/// Sierpiński's carpet as a sketch writes it, in `f32`.
+///
+/// The screen cleared, the largest centred square divided in nine to `order`, the middle
+/// left out, each kept square of the last level filled; returns the squares drawn
+/// (8^order).
+pub fn carpet_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
+    // A sketch clears the screen first: the picture is every pixel, as the scene's.
+    let _ = target.clear(Gray4::BLACK);
+    fn square<D: DrawTarget<Color = Gray4>>(
+        target: &mut D,
+        (x, y, side): (f32, f32, f32),
+        depth: u32,
+    ) -> u64 {
+        if depth == 0 {
+            let (left, top) = (x as i32, y as i32);
+            let size = ((x + side) as i32 - left, (y + side) as i32 - top);
+            fill_rect(target, (left, top), size);
+            return 1;
+        }
+        let third = side / 3.0;
+        let mut drawn = 0;
+        for row in 0..3 {
+            for column in 0..3 {
+                if row != 1 || column != 1 {
+                    let at = (x + column as f32 * third, y + row as f32 * third, third);
+                    drawn += square(target, at, depth - 1);
+                }
+            }
+        }
+        drawn
+    }
+    let (x, y, side) = centred_square(target);
+    square(target, (x as f32, y as f32, side as f32), order)
+}
+
+/// The carpet as a careful fixed-point sketch writes it: the same recursion in Q16.16.
+pub fn carpet_fixed<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
+    // A sketch clears the screen first: the picture is every pixel, as the scene's.
+    let _ = target.clear(Gray4::BLACK);
+    fn square<D: DrawTarget<Color = Gray4>>(
+        target: &mut D,
+        (x, y, side): (i32, i32, i32),
+        depth: u32,
+    ) -> u64 {
+        if depth == 0 {
+            let (left, top) = (x >> 16, y >> 16);
+            let size = (((x + side) >> 16) - left, ((y + side) >> 16) - top);
+            fill_rect(target, (left, top), size);
+            return 1;
+        }
+        let third = side / 3;
+        let mut drawn = 0;
+        for row in 0..3 {
+            for column in 0..3 {
+                if row != 1 || column != 1 {
+                    let at = (x + column * third, y + row * third, third);
+                    drawn += square(target, at, depth - 1);
+                }
+            }
+        }
+        drawn
+    }
+    let (x, y, side) = centred_square(target);
+    square(target, (q16_of(x), q16_of(y), q16_of(side)), order)
+}
+
+/// A filled triangle as a sketch draws one: embedded-graphics' styled primitive
+/// (Adafruit's `fillTriangle`).
+fn fill_triangle<D: DrawTarget<Color = Gray4>>(target: &mut D, corners: [(i32, i32); 3]) {
+    use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
+    let [a, b, c] = corners.map(|(x, y)| Point::new(x, y));
+    let _ = Triangle::new(a, b, c)
+        .into_styled(PrimitiveStyle::with_fill(Gray4::WHITE))
+        .draw(target);
+}
+
+/// Sierpiński's gasket as a sketch writes it, in `f32`.
+///
+/// The screen cleared, the triangle on the centred square's base with its apex at the top,
+/// split at its sides' midpoints to `order`, each corner triangle of the last level filled;
+/// returns the triangles drawn (3^order).
+pub fn gasket_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
+    // A sketch clears the screen first: the picture is every pixel, as the scene's.
+    let _ = target.clear(Gray4::BLACK);
+    fn triangle<D: DrawTarget<Color = Gray4>>(
+        target: &mut D,
+        corners: [(f32, f32); 3],
+        depth: u32,
+    ) -> u64 {
+        if depth == 0 {
+            fill_triangle(target, corners.map(|(x, y)| (x as i32, y as i32)));
+            return 1;
+        }
+        let [a, b, c] = corners;
+        let mid = |p: (f32, f32), q: (f32, f32)| ((p.0 + q.0) * 0.5, (p.1 + q.1) * 0.5);
+        let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
+        triangle(target, [a, ab, ca], depth - 1)
+            + triangle(target, [ab, b, bc], depth - 1)
+            + triangle(target, [ca, bc, c], depth - 1)
+    }
+    let (x, y, side) = centred_square(target);
+    let (x, y, side) = (x as f32, y as f32, side as f32);
+    let corners = [(x + side * 0.5, y), (x, y + side), (x + side, y + side)];
+    triangle(target, corners, order)
+}
+
+/// The gasket as a careful fixed-point sketch writes it: the same recursion in Q16.16.
+pub fn gasket_fixed<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
+    // A sketch clears the screen first: the picture is every pixel, as the scene's.
+    let _ = target.clear(Gray4::BLACK);
+    fn triangle<D: DrawTarget<Color = Gray4>>(
+        target: &mut D,
+        corners: [(i32, i32); 3],
+        depth: u32,
+    ) -> u64 {
+        if depth == 0 {
+            fill_triangle(target, corners.map(|(x, y)| (x >> 16, y >> 16)));
+            return 1;
+        }
+        let [a, b, c] = corners;
+        let mid = |p: (i32, i32), q: (i32, i32)| ((p.0 + q.0) >> 1, (p.1 + q.1) >> 1);
+        let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
+        triangle(target, [a, ab, ca], depth - 1)
+            + triangle(target, [ab, b, bc], depth - 1)
+            + triangle(target, [ca, bc, c], depth - 1)
+    }
+    let (x, y, side) = centred_square(target);
+    let (x, y, side) = (q16_of(x), q16_of(y), q16_of(side));
+    let corners = [(x + side / 2, y), (x, y + side), (x + side, y + side)];
+    triangle(target, corners, order)
 }

@@ -70,14 +70,15 @@ fn repository() -> PathBuf {
 }
 
 /// Builds the measuring firmware for one core, from its own folder (see its Cargo.toml):
-/// the newer families' build (textures, dynamics), or the other scenes'.
-fn build(core: &Core, newer: bool) -> PathBuf {
+/// the newer families' build (textures, dynamics, panels: `Some("newer")`), the shapes'
+/// (`Some("shapes")`), or the other scenes' (`None`).
+fn build(core: &Core, features: Option<&str>) -> PathBuf {
     let folder = repository().join("boards/qemu-measure");
     tools::ensure_target(&folder, core.target);
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let mut args = vec!["build", "--release", "--target", core.target];
-    if newer {
-        args.extend(["--features", "newer"]);
+    if let Some(features) = features {
+        args.extend(["--features", features]);
     }
     let status = Command::new(cargo)
         .current_dir(&folder)
@@ -252,10 +253,14 @@ fn every_core_draws_the_host_picture_and_fits() {
             work,
         )
     };
-    // In the order the firmware's two builds measure them: every scene but the newer
-    // families' (then, beyond the M0, the general engine's and perturbation's), then the
-    // textures and the dynamics.
-    let every_core_scenes = SCENES.iter().chain(&DISPLAY_SCENES).chain(&ZOOM_SCENES);
+    // In the order the firmware's three builds measure them: every scene but the newer
+    // families' and the shapes (then, beyond the M0, the general engine's and
+    // perturbation's), then the textures, the dynamics and the panels, then the shapes.
+    let every_core_scenes = SCENES
+        .iter()
+        .filter(|entry| !entry.scene.is_shape())
+        .chain(&DISPLAY_SCENES)
+        .chain(&ZOOM_SCENES);
     let mut host: Vec<Expected> = every_core_scenes.map(expected).collect();
     let every_core = host.len();
     for entry in &GENERAL_SCENES {
@@ -274,20 +279,26 @@ fn every_core_draws_the_host_picture_and_fits() {
         .chain(&PANEL_SCENES)
         .map(expected)
         .collect();
+    let shapes: Vec<Expected> = SCENES
+        .iter()
+        .filter(|entry| entry.scene.is_shape())
+        .map(expected)
+        .collect();
 
     let mut json = String::from("[\n");
     let mut table = String::new();
     // (core, scene) → (stack, static RAM), for the perturbation RAM claims below.
     let mut stacks = BTreeMap::new();
     for core in &CORES {
-        for newer_build in [false, true] {
-            let elf = build(core, newer_build);
+        for features in [None, Some("newer"), Some("shapes")] {
+            let elf = build(core, features);
             let (text, data, bss) = sizes(&elf);
             let records = run(core, &elf);
-            let expected: &[Expected] = match (newer_build, core.target.starts_with("thumbv6m")) {
-                (true, _) => &newer,
-                (false, true) => &host[..every_core],
-                (false, false) => &host,
+            let expected: &[Expected] = match (features, core.target.starts_with("thumbv6m")) {
+                (Some("newer"), _) => &newer,
+                (Some(_), _) => &shapes,
+                (None, true) => &host[..every_core],
+                (None, false) => &host,
             };
             assert_eq!(
                 records.len(),
@@ -343,17 +354,16 @@ fn every_core_draws_the_host_picture_and_fits() {
                 ratio(&record["baseline_fixed20"]),
             );
             }
-            // Budgets with room to spare: sixty-three sixty-fourths of flash (this firmware
-            // carries every engine but the newer families' (their own build), both baselines, the perturbation's series and finish, the
+            // Budgets with room to spare: thirty-one thirty-seconds of flash (this firmware
+            // carries every engine but the newer families' and the shapes' (builds of their
+            // own), both baselines, the perturbation's series and finish, the
             // zoom and the expansion table, which no board's firmware does: it outgrew the
             // LM3S6965's 256 KiB, so Cortex-M3 runs it on the MPS2 image's 4 MiB; the OLED
             // board's own firmware takes about 210 KiB of the LM3S6965's), seven eighths
             // of RAM with the deepest stack (the zoom's frame, 10.5 KiB of a byte a pixel and
             // its lines, is the micro:bit's deepest: 13.3 KiB of 16 with its callers).
-            // (Thirty-one thirty-seconds until the escape-time modes and distance
-            // estimation took 7 KiB more of Cortex-M0's.)
             assert!(
-                text + data <= core.flash * 63 / 64,
+                text + data <= core.flash * 31 / 32,
                 "{}: {text} + {data} bytes of flash",
                 core.name
             );
@@ -365,7 +375,11 @@ fn every_core_draws_the_host_picture_and_fits() {
             println!(
                 "{}{}: text {text}, data {data}, bss {bss}, deepest stack {deepest_stack}",
                 core.name,
-                if newer_build { " (newer families)" } else { "" }
+                match features {
+                    Some("newer") => " (newer families)",
+                    Some(_) => " (shapes)",
+                    None => "",
+                }
             );
         }
     }

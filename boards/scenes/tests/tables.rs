@@ -365,6 +365,23 @@ fn shapes_table(records: &[Value], results: &Value) -> String {
                 thousands(instructions),
             ));
         }
+        // The sketches beside it (naive.rs): recursive in f32, and in careful Q16.16.
+        for record in records.iter().filter(|r| r["scene"] == scene) {
+            let core = record["core"].as_str().unwrap_or("?");
+            let work = record["work"].as_u64().unwrap_or(1).max(1);
+            for (key, sketch) in [
+                ("baseline_f32", "the naive f32 sketch"),
+                ("baseline_fixed20", "a careful Q16.16 sketch"),
+            ] {
+                if let Some(cost) = record[key].as_u64() {
+                    table.push_str(&format!(
+                        "| {core} | {what}, {sketch} | {} instructions | {} per {unit} |\n",
+                        thousands(cost),
+                        thousands(cost / work),
+                    ));
+                }
+            }
+        }
     }
     table
 }
