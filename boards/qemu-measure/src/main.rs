@@ -36,7 +36,9 @@ mod firmware {
         fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
     };
     #[cfg(feature = "shapes")]
-    use tinyfractal_scenes::naive::{carpet_f32, carpet_fixed, gasket_f32, gasket_fixed};
+    use tinyfractal_scenes::naive::{
+        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed,
+    };
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::{Shape, SCENES};
     use tinyfractal_scenes::{Scene, Work, GREY};
@@ -68,6 +70,9 @@ mod firmware {
         /// Sierpiński's carpet (true) or gasket at an order.
         #[cfg(feature = "shapes")]
         Subdivision(bool, u32),
+        /// The walking figure's frames.
+        #[cfg(feature = "shapes")]
+        Figure(u32),
     }
 
     impl Baseline {
@@ -119,6 +124,8 @@ mod firmware {
                     shape: shape @ (Shape::Carpet | Shape::Gasket),
                     order,
                 } => Some(Self::Subdivision(shape == Shape::Carpet, order)),
+                #[cfg(feature = "shapes")]
+                Scene::Walk { frames } => Some(Self::Figure(frames)),
                 #[cfg(not(any(feature = "newer", feature = "shapes")))]
                 Scene::Ifs {
                     system: "fern",
@@ -389,6 +396,12 @@ mod firmware {
                     } else {
                         gasket_fixed(order, target);
                     }
+                });
+            }
+            #[cfg(feature = "shapes")]
+            Some(Baseline::Figure(frames)) => {
+                f32_cost = run(&mut |target| {
+                    figure_f32(frames, target);
                 });
             }
             #[cfg(not(any(feature = "newer", feature = "shapes")))]

@@ -5,9 +5,12 @@
 //! lecture's fern by the chaos game in `f32` and in careful Q16.16. Each draws its picture
 //! pixel by pixel into the target, as such sketches do; Sierpiński's carpet and gasket,
 //! recursive in `f32` and in Q16.16, fill their last level's squares and triangles with
-//! embedded-graphics' styled primitives (Adafruit's `fillRect` and `fillTriangle`).
+//! embedded-graphics' styled primitives (Adafruit's `fillRect` and `fillTriangle`).; the
+//! walking figure by a float matrix stack draws lines and circles with them (`drawLine`,
+//! `drawCircle`).
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
+use micromath::F32Ext;
 
 /// A grey for a value in [0, 1].
 fn grey(value: f32) -> Gray4 {
@@ -541,4 +544,160 @@ pub fn gasket_fixed<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) ->
     let (x, y, side) = (q16_of(x), q16_of(y), q16_of(side));
     let corners = [(x + side / 2, y), (x, y + side), (x + side, y + side)];
     triangle(target, corners, order)
+}
+
+/// A 2D affine map as a sketch's matrix stack keeps it: x′ = a·x + b·y + tx,
+/// y′ = c·x + d·y + ty.
+#[derive(Clone, Copy)]
+struct Matrix([f32; 6]);
+
+impl Matrix {
+    /// This map after a move by `(x, y)` and a turn by `degrees`, as `translate` then
+    /// `rotate` compose on a sketch's stack.
+    fn then(self, (x, y): (f32, f32), degrees: f32) -> Self {
+        let [a, b, c, d, tx, ty] = self.0;
+        let radians = degrees * (core::f32::consts::PI / 180.0);
+        let (sin, cos) = (F32Ext::sin(radians), F32Ext::cos(radians));
+        let (tx, ty) = (a * x + b * y + tx, c * x + d * y + ty);
+        Self([
+            a * cos + b * sin,
+            -a * sin + b * cos,
+            c * cos + d * sin,
+            -c * sin + d * cos,
+            tx,
+            ty,
+        ])
+    }
+
+    /// A point of the part's frame in pixels.
+    fn pixel(&self, (x, y): (f32, f32)) -> Point {
+        let [a, b, c, d, tx, ty] = self.0;
+        Point::new((a * x + b * y + tx) as i32, (c * x + d * y + ty) as i32)
+    }
+}
+
+/// The walking figure's joints at `time` (cycles), in degrees, as the lecture's walk has
+/// them: hips ±25° in opposition, knees bending on the way forward, arms against the legs.
+fn walk_angles(time: f32) -> [f32; 8] {
+    let swing =
+        |amplitude: f32, phase: f32| amplitude * F32Ext::sin(phase * core::f32::consts::TAU);
+    let bend = |phase: f32| -swing(35.0, phase + 0.25).max(0.0);
+    let other = time + 0.5;
+    [
+        swing(25.0, time),         // left hip
+        swing(25.0, other),        // right hip
+        bend(time),                // left knee
+        bend(other),               // right knee
+        swing(20.0, other),        // left shoulder
+        swing(20.0, time),         // right shoulder
+        swing(10.0, other) + 10.0, // left elbow
+        swing(10.0, time) + 10.0,  // right elbow
+    ]
+}
+
+/// A bone of the figure: a line from `from` to `to` in its part's frame, with
+/// embedded-graphics' `Line` (a sketch's `drawLine`).
+fn bone<D: DrawTarget<Color = Gray4>>(
+    target: &mut D,
+    m: &Matrix,
+    ends: [(f32, f32); 2],
+    color: Gray4,
+) -> u64 {
+    use embedded_graphics::primitives::{Line, PrimitiveStyle};
+    let _ = Line::new(m.pixel(ends[0]), m.pixel(ends[1]))
+        .into_styled(PrimitiveStyle::with_stroke(color, 1))
+        .draw(target);
+    1
+}
+
+/// A box `length` along and `width` across its part's x axis: four bones.
+fn boxed<D: DrawTarget<Color = Gray4>>(
+    target: &mut D,
+    m: &Matrix,
+    (length, width): (f32, f32),
+    color: Gray4,
+) -> u64 {
+    let w = width / 2.0;
+    let corners = [(0.0, -w), (length, -w), (length, w), (0.0, w)];
+    (0..4)
+        .map(|k| bone(target, m, [corners[k], corners[(k + 1) % 4]], color))
+        .sum()
+}
+
+/// A circle of `radius` whose leftmost point is its part's origin, with embedded-graphics'
+/// `Circle` (a sketch's `drawCircle`).
+fn round<D: DrawTarget<Color = Gray4>>(
+    target: &mut D,
+    m: &Matrix,
+    radius: f32,
+    scale: f32,
+    color: Gray4,
+) -> u64 {
+    use embedded_graphics::primitives::{Circle, PrimitiveStyle};
+    let diameter = (2.0 * radius * scale) as u32;
+    let _ = Circle::with_center(m.pixel((radius, 0.0)), diameter.max(1))
+        .into_styled(PrimitiveStyle::with_stroke(color, 1))
+        .draw(target);
+    1
+}
+
+/// One pose of the figure by a float matrix stack, every part in `color`. Returns the
+/// lines and circles drawn.
+fn figure_pose<D: DrawTarget<Color = Gray4>>(target: &mut D, time: f32, color: Gray4) -> u64 {
+    let [left_hip, right_hip, left_knee, right_knee, left_shoulder, right_shoulder, left_elbow, right_elbow] =
+        walk_angles(time);
+    // The hips a little above the picture's middle, a tenth of its height a unit, y down.
+    let size = target.bounding_box().size;
+    let scale = size.height as f32 / 10.0;
+    let root = Matrix([
+        scale,
+        0.0,
+        0.0,
+        -scale,
+        size.width as f32 / 2.0,
+        size.height as f32 * 0.45,
+    ]);
+    let hips = root.then((0.0, 0.0), 90.0);
+    let mut drawn = boxed(target, &hips, (0.3, 0.8), color);
+    let torso = hips.then((0.3, 0.0), -5.0);
+    drawn += boxed(target, &torso, (3.0, 1.0), color);
+    let neck = torso.then((3.0, 0.0), 0.0);
+    drawn += bone(target, &neck, [(0.0, 0.0), (0.4, 0.0)], color);
+    drawn += round(target, &neck.then((0.4, 0.0), 0.0), 0.6, scale, color);
+    for (shoulder, elbow) in [(left_shoulder, left_elbow), (right_shoulder, right_elbow)] {
+        let upper = torso.then((2.8, 0.0), -175.0 + shoulder);
+        drawn += bone(target, &upper, [(0.0, 0.0), (1.5, 0.0)], color);
+        let fore = upper.then((1.5, 0.0), 20.0 + elbow);
+        drawn += bone(target, &fore, [(0.0, 0.0), (1.3, 0.0)], color);
+        drawn += round(target, &fore.then((1.3, 0.0), 0.0), 0.2, scale, color);
+    }
+    for (side, hip, knee) in [(0.25, left_hip, left_knee), (-0.25, right_hip, right_knee)] {
+        let thigh = hips.then((0.0, side), 180.0 + hip);
+        drawn += bone(target, &thigh, [(0.0, 0.0), (1.8, 0.0)], color);
+        let shin = thigh.then((1.8, 0.0), knee);
+        drawn += bone(target, &shin, [(0.0, 0.0), (1.8, 0.0)], color);
+        let foot = shin.then((1.8, 0.0), 90.0);
+        drawn += bone(target, &foot, [(0.0, 0.0), (0.6, 0.0)], color);
+    }
+    drawn
+}
+
+/// The walking figure as a sketch writes it: a float matrix stack.
+///
+/// Each part's map is its parent's times a move and a turn (sines from `micromath`);
+/// `frames` frames of one walk cycle, each erasing the last by drawing it again in black,
+/// as the scene does. Returns the lines and circles drawn (erasing not counted).
+pub fn figure_f32<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -> u64 {
+    let _ = target.clear(Gray4::BLACK);
+    let mut drawn = 0;
+    let mut last = None;
+    for frame in 0..frames {
+        let time = frame as f32 / frames.max(1) as f32;
+        if let Some(last) = last {
+            figure_pose(target, last, Gray4::BLACK);
+        }
+        drawn += figure_pose(target, time, Gray4::WHITE);
+        last = Some(time);
+    }
+    drawn
 }

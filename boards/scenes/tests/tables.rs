@@ -398,11 +398,16 @@ fn figure_table(records: &[Value]) -> String {
         .unwrap_or(1)
         .max(1);
     let mut table = format!(
-        "| core | {frames} frames (fit once, erase and draw each) | per frame | per line drawn |\n|---|---|---|---|\n",
+        "| core | {frames} frames (fit once, erase and draw each) | per frame | per line drawn | a float matrix stack's frame (naive.rs) |\n|---|---|---|---|---|\n",
     );
     for (core, instructions, per_line) in cortex_m_rows(records, "walking-figure") {
+        let sketch = records
+            .iter()
+            .find(|r| r["scene"] == "walking-figure" && r["core"] == core)
+            .and_then(|r| r["baseline_f32"].as_u64())
+            .map_or("-".to_string(), |cost| thousands(cost / frames));
         table.push_str(&format!(
-            "| {core} | {} instructions | {} | {per_line} |\n",
+            "| {core} | {} instructions | {} | {per_line} | {sketch} |\n",
             thousands(instructions),
             thousands(instructions / frames),
         ));
