@@ -19,7 +19,6 @@ use tinyfractal::{
 };
 
 use crate::catalogue::{GeneralEntry, Scene, System};
-use crate::shapes::{draw_subdivision, draw_walk};
 
 /// Expansion-table cells an L-system scene is measured with (96 bytes each, on the stack while
 /// it draws: 3.75 KiB).
@@ -144,7 +143,7 @@ impl Scene {
         D::Color: From<Rgb888>,
     {
         match *self {
-            Scene::Walk { frames } => draw_walk(target, look, frames, between_frames),
+            Scene::Walk { .. } => self.draw_shape_frames(target, look, between_frames),
             Scene::Zoom { .. } => draw_zoom(target, look, self, between_frames),
             Scene::NoiseFlight { .. } => draw_flight(target, look, self, between_frames),
             Scene::Particles { .. } => self
@@ -186,28 +185,6 @@ impl Scene {
         }
         let _ = (target, look);
         None
-    }
-
-    /// Draws one of Sierpiński's shapes or the walking figure as [`Scene::draw`] does,
-    /// without reaching the other families' code; `None` for any other scene.
-    ///
-    /// A firmware that measures only the shapes calls this, so its flash holds only them.
-    pub fn draw_shape<D>(
-        &self,
-        target: &mut D,
-        look: &Look<'_, D::Color>,
-    ) -> Option<Result<Work, DrawError<D::Error>>>
-    where
-        D: DrawTarget,
-        D::Color: From<Rgb888>,
-    {
-        match *self {
-            Scene::Subdivision { shape, order } => {
-                Some(draw_subdivision(target, look, shape, order))
-            }
-            Scene::Walk { frames } => Some(draw_walk(target, look, frames, || {})),
-            _ => None,
-        }
     }
 
     /// Draws a texture scene (Perlin noise, reaction–diffusion) as [`Scene::draw`] does,
@@ -281,13 +258,13 @@ impl Scene {
                 target.clear(look.background).map_err(DrawError::Target)?;
                 draw_ifs(target, look, (source, system), points, seed)
             }
-            Scene::Subdivision { shape, order } => draw_subdivision(target, look, shape, order),
+            Scene::Subdivision { .. } => self.draw_shape_frames(target, look, || {}),
             Scene::Terrain {
                 displacement,
                 samples,
                 map,
             } => draw_terrain(target, look, displacement, samples, map),
-            Scene::Walk { frames } => draw_walk(target, look, frames, || {}),
+            Scene::Walk { .. } => self.draw_shape_frames(target, look, || {}),
             Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
             Scene::Noise { .. }
             | Scene::Reaction { .. }

@@ -14,14 +14,59 @@ use tinyfractal::{
     Carpet, Error, Figure, Gasket, Real, SierpinskiCube,
 };
 
-use crate::catalogue::Shape;
 #[cfg(feature = "shapes")]
 use crate::catalogue::CUBE_COLOUR;
+use crate::catalogue::{Scene, Shape};
 use crate::look::{Look, Work};
+
+impl Scene {
+    /// Draws one of Sierpiński's shapes or the walking figure as [`Scene::draw`] does,
+    /// without reaching the other families' code; `None` for any other scene.
+    ///
+    /// A firmware that measures only the shapes calls this, so its flash holds only them.
+    pub fn draw_shape<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+    ) -> Option<Result<Work, DrawError<D::Error>>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
+        match *self {
+            Scene::Subdivision { .. } | Scene::Walk { .. } => {
+                Some(self.draw_shape_frames(target, look, || {}))
+            }
+            _ => None,
+        }
+    }
+
+    /// A shape as [`draw_shape`](Self::draw_shape) draws it, calling `between_frames`
+    /// after each of the figure's frames; the background and no work for any other scene.
+    pub(crate) fn draw_shape_frames<D>(
+        &self,
+        target: &mut D,
+        look: &Look<'_, D::Color>,
+        between_frames: impl FnMut(),
+    ) -> Result<Work, DrawError<D::Error>>
+    where
+        D: DrawTarget,
+        D::Color: From<Rgb888>,
+    {
+        match *self {
+            Scene::Subdivision { shape, order } => draw_subdivision(target, look, shape, order),
+            Scene::Walk { frames } => draw_walk(target, look, frames, between_frames),
+            _ => {
+                target.clear(look.background).map_err(DrawError::Target)?;
+                Ok(Work::Cells(0))
+            }
+        }
+    }
+}
 
 /// Without the `shapes` feature: the background, no work.
 #[cfg(not(feature = "shapes"))]
-pub(crate) fn draw_subdivision<D>(
+fn draw_subdivision<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
     _: Shape,
@@ -37,7 +82,7 @@ where
 
 /// Without the `shapes` feature: the background, no work.
 #[cfg(not(feature = "shapes"))]
-pub(crate) fn draw_walk<D>(
+fn draw_walk<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
     _: u32,
@@ -55,7 +100,7 @@ where
 /// gasket paint their box (ink and background) and the cube its target; what is left of
 /// the target around the carpet's square or the gasket's box is cleared first.
 #[inline(never)]
-pub(crate) fn draw_subdivision<D>(
+fn draw_subdivision<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
     shape: Shape,
@@ -130,7 +175,7 @@ fn clear_around<D: DrawTarget>(
 /// drawing its own, so the display is cleared once, not every frame. What stays on the
 /// target is the last frame alone.
 #[inline(never)]
-pub(crate) fn draw_walk<D>(
+fn draw_walk<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
     frames: u32,
