@@ -3,8 +3,9 @@
 //! An escape-time render splits into parts (rows, or columns of tiles), each part rendered
 //! on one of rayon's threads into its own strip of the picture, the strips then copied in.
 //!
-//! A perturbed view renders whole, on one thread: not split yet (its parts would each
-//! compute the reference orbit again, and its tiles are not the fixed tiers').
+//! A perturbed view computes its reference orbit (and series) once, in one render that each
+//! part then clones: the parts share the orbit, read only, and count their units from
+//! that render's own tiles.
 
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
@@ -76,16 +77,23 @@ pub(crate) fn render_parts(
     values: &mut [u16],
 ) -> Result<RenderStats, String> {
     let threads = u32::try_from(rayon::current_num_threads()).unwrap_or(1);
-    let (units, grain) = Render::new(view, algorithm).parts();
+    // The render every part clones: a perturbed one with its reference orbit computed.
+    let perturbed = view.tier() == Tier::Perturbation;
+    let points = if perturbed {
+        ReferenceOrbit::points_needed(&view)
+    } else {
+        0
+    };
+    let mut reference = vec![ReferencePoint::default(); points];
+    let base = if perturbed {
+        Render::perturbed(view, algorithm, &mut reference).map_err(|e| e.to_string())?
+    } else {
+        Render::new(view, algorithm)
+    };
+    let (units, grain) = base.parts();
     let grain = grain.max(1);
     let groups = units.div_ceil(grain);
-    // A perturbed render in one part, on one thread (not split yet).
-    let perturbed = view.tier() == Tier::Perturbation;
-    let pieces = if perturbed {
-        1
-    } else {
-        (threads * PARTS_A_THREAD).clamp(1, groups.max(1))
-    };
+    let pieces = (threads * PARTS_A_THREAD).clamp(1, groups.max(1));
     let parts: Vec<(Strip, RenderStats)> = (0..pieces)
         .into_par_iter()
         .map(|piece| {
@@ -97,20 +105,8 @@ pub(crate) fn render_parts(
                 area,
                 values: vec![0; cells],
             };
-            let stats = if perturbed {
-                // The whole render (its tiles are not the fixed tiers', whose parts these
-                // are).
-                let points = ReferenceOrbit::points_needed(&view);
-                let mut reference = vec![ReferencePoint::default(); points];
-                let mut render = Render::perturbed(view, algorithm, &mut reference)
-                    .map_err(|e| e.to_string())?;
-                let Ok(stats) = render.run(&mut strip);
-                stats
-            } else {
-                let Ok(stats) = Render::new(view, algorithm).run_part(&mut strip, units);
-                stats
-            };
-            Ok((strip, stats))
+            let Ok(stats) = base.clone().run_part(&mut strip, units);
+            Ok::<_, String>((strip, stats))
         })
         .collect::<Result<_, String>>()?;
     // The strips copied in a row of the picture at a time, the rows on every thread.
@@ -169,5 +165,56 @@ pub fn with_threads<T: Send>(
             .build()
             .map_err(|e| format!("--threads {n}: the threads could not start: {e}"))
             .map(|pool| pool.install(work)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use tinyfractal::math::DeepCoord;
+    use tinyfractal::Fractal;
+
+    /// A perturbed view split into parts on several threads is the one render's picture,
+    /// pixel for pixel, and its stats are that render's: the parts share one reference
+    /// orbit and count their units from the perturbed render's own tiles.
+    #[test]
+    fn a_perturbed_view_in_parts_is_the_whole_render() {
+        let deep = |text: &str| DeepCoord::parse(text).unwrap();
+        let view = View::deep(
+            Fractal::Mandelbrot,
+            (
+                deep("-0.1010963638456221610257854457386225654638"),
+                deep("0.9562865108091415007710960577299774358098"),
+            ),
+            deep("1e-30"),
+            Size::new(150, 97),
+            1000,
+        )
+        .unwrap();
+        assert_eq!(view.tier(), Tier::Perturbation);
+        for algorithm in [Algorithm::Fast, Algorithm::Exact] {
+            let mut whole = vec![0u16; 150 * 97];
+            let mut reference =
+                vec![ReferencePoint::default(); ReferenceOrbit::points_needed(&view)];
+            let Ok(expected) = Render::perturbed(view, algorithm, &mut reference)
+                .unwrap()
+                .run(&mut DwellBuffer::new(&mut whole, 150));
+            let mut parts = vec![0u16; 150 * 97];
+            let stats = with_threads(Some(3), || render_parts(view, algorithm, &mut parts))
+                .unwrap()
+                .unwrap();
+            assert!(whole == parts, "{algorithm:?}: the pictures differ");
+            assert!(!whole.contains(&0), "{algorithm:?}: a pixel left unwritten");
+            assert_eq!(
+                (stats.iterations, stats.pixels, stats.rebases, stats.skipped),
+                (
+                    expected.iterations,
+                    expected.pixels,
+                    expected.rebases,
+                    expected.skipped
+                ),
+                "{algorithm:?}"
+            );
+        }
     }
 }

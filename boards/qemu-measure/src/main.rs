@@ -29,19 +29,19 @@ mod firmware {
     #[cfg(feature = "newer")]
     use tinyfractal::Real;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
+    #[cfg(feature = "shapes")]
+    use tinyfractal_scenes::naive::{
+        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed,
+    };
     #[cfg(not(any(feature = "newer", feature = "shapes")))]
     use tinyfractal_scenes::naive::{fern_f32, fern_fixed};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::naive::{
         fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
     };
-    #[cfg(feature = "shapes")]
-    use tinyfractal_scenes::naive::{
-        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed,
-    };
+    use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::{Shape, SCENES};
-    use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(not(any(feature = "newer", feature = "shapes")))]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
     #[cfg(feature = "newer")]
