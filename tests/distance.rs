@@ -2,10 +2,15 @@
 //! run on to |z| ≥ 256 as documented), on several views: the pixels drawn as the set, the
 //! distance shading, the inside kept, and the strands a one-bit panel keeps connected.
 
+mod common;
+
+use common::{
+    escape_values as values, escape_view as view, julia_parameter as julia_of,
+    sample_point as point,
+};
 use tinyfractal::{
     error::ViewError,
     escape::{Algorithm, Render, Shading, DISTANCE_INSIDE},
-    render::DwellBuffer,
     Coord, Error, Fractal, View,
 };
 
@@ -41,41 +46,6 @@ fn model_distance(julia: Option<(f64, f64)>, p: (f64, f64), max: u32, spacing: f
     let modulus = (z.0 * z.0 + z.1 * z.1).sqrt();
     let derivative = (dz.0 * dz.0 + dz.1 * dz.1).sqrt();
     Some(modulus * modulus.ln() / derivative / spacing)
-}
-
-fn view(fractal: Fractal, centre: (f64, f64), width: f64, size: (u32, u32), max: u32) -> View {
-    let c = |v: f64| Coord::from_f64(v).unwrap();
-    View::new(
-        fractal,
-        (c(centre.0), c(centre.1)),
-        c(width),
-        embedded_graphics::geometry::Size::new(size.0, size.1),
-        max,
-    )
-    .unwrap()
-}
-
-fn values(view: View, algorithm: Algorithm) -> Vec<u16> {
-    let size = view.size();
-    let mut values = vec![0; (size.width * size.height) as usize];
-    let Ok(_) = Render::new(view, algorithm).run(&mut DwellBuffer::new(&mut values, size.width));
-    values
-}
-
-fn point(view: &View, i: u32, j: u32) -> (f64, f64) {
-    let (size, d) = (view.size(), view.spacing().to_f64());
-    let (re, im) = view.centre();
-    (
-        re.to_f64() + (f64::from(i) + 0.5 - f64::from(size.width) / 2.0) * d,
-        im.to_f64() - (f64::from(j) + 0.5 - f64::from(size.height) / 2.0) * d,
-    )
-}
-
-fn julia_of(view: &View) -> Option<(f64, f64)> {
-    match view.fractal() {
-        Fractal::Mandelbrot => None,
-        Fractal::Julia { re, im } => Some((re.to_f64(), im.to_f64())),
-    }
 }
 
 fn views() -> Vec<View> {

@@ -2,10 +2,15 @@
 //! written here: every mode, on Mandelbrot and Julia views, in the halves a mirror would
 //! copy; and the combinations that are refused.
 
+mod common;
+
+use common::{
+    escape_values as values, escape_view as view, julia_parameter as julia_of,
+    sample_point as point,
+};
 use tinyfractal::{
     error::ViewError,
     escape::{Algorithm, Inside, Outside, Render, Shading, PERIOD_SEARCH, PERIOD_TOLERANCE},
-    render::DwellBuffer,
     Coord, Error, Fractal, View,
 };
 
@@ -76,42 +81,6 @@ fn model_inside(mode: Inside, z: (f64, f64), c: (f64, f64), max: u32) -> u32 {
             max
         }
         _ => unreachable!(),
-    }
-}
-
-fn view(fractal: Fractal, centre: (f64, f64), width: f64, size: (u32, u32), max: u32) -> View {
-    let c = |v: f64| Coord::from_f64(v).unwrap();
-    View::new(
-        fractal,
-        (c(centre.0), c(centre.1)),
-        c(width),
-        embedded_graphics::geometry::Size::new(size.0, size.1),
-        max,
-    )
-    .unwrap()
-}
-
-fn values(view: View, algorithm: Algorithm) -> Vec<u16> {
-    let size = view.size();
-    let mut values = vec![0; (size.width * size.height) as usize];
-    let Ok(_) = Render::new(view, algorithm).run(&mut DwellBuffer::new(&mut values, size.width));
-    values
-}
-
-/// The sample point of pixel (i, j), as the view defines it.
-fn point(view: &View, i: u32, j: u32) -> (f64, f64) {
-    let (size, d) = (view.size(), view.spacing().to_f64());
-    let (re, im) = view.centre();
-    (
-        re.to_f64() + (f64::from(i) + 0.5 - f64::from(size.width) / 2.0) * d,
-        im.to_f64() - (f64::from(j) + 0.5 - f64::from(size.height) / 2.0) * d,
-    )
-}
-
-fn julia_of(view: &View) -> Option<(f64, f64)> {
-    match view.fractal() {
-        Fractal::Mandelbrot => None,
-        Fractal::Julia { re, im } => Some((re.to_f64(), im.to_f64())),
     }
 }
 

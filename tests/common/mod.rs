@@ -350,3 +350,52 @@ impl<T: DrawTarget + OriginDimensions> DrawTarget for Counting<T> {
         self.inner.fill_contiguous(area, colors)
     }
 }
+
+/// An escape-time view from f64 numbers (every test view is within `Coord`'s range).
+pub fn escape_view(
+    fractal: tinyfractal::Fractal,
+    centre: (f64, f64),
+    width: f64,
+    size: (u32, u32),
+    max: u32,
+) -> tinyfractal::View {
+    let c = |v: f64| tinyfractal::Coord::from_f64(v).unwrap();
+    tinyfractal::View::new(
+        fractal,
+        (c(centre.0), c(centre.1)),
+        c(width),
+        Size::new(size.0, size.1),
+        max,
+    )
+    .unwrap()
+}
+
+/// Every pixel's value of `view`, row by row, by `algorithm`.
+pub fn escape_values(
+    view: tinyfractal::View,
+    algorithm: tinyfractal::escape::Algorithm,
+) -> Vec<u16> {
+    let size = view.size();
+    let mut values = vec![0; (size.width * size.height) as usize];
+    let mut sink = tinyfractal::render::DwellBuffer::new(&mut values, size.width);
+    let Ok(_) = tinyfractal::escape::Render::new(view, algorithm).run(&mut sink);
+    values
+}
+
+/// The sample point of pixel (i, j), as the view defines it, in f64.
+pub fn sample_point(view: &tinyfractal::View, i: u32, j: u32) -> (f64, f64) {
+    let (size, d) = (view.size(), view.spacing().to_f64());
+    let (re, im) = view.centre();
+    (
+        re.to_f64() + (f64::from(i) + 0.5 - f64::from(size.width) / 2.0) * d,
+        im.to_f64() - (f64::from(j) + 0.5 - f64::from(size.height) / 2.0) * d,
+    )
+}
+
+/// A view's Julia parameter in f64, or `None` for the Mandelbrot set.
+pub fn julia_parameter(view: &tinyfractal::View) -> Option<(f64, f64)> {
+    match view.fractal() {
+        tinyfractal::Fractal::Mandelbrot => None,
+        tinyfractal::Fractal::Julia { re, im } => Some((re.to_f64(), im.to_f64())),
+    }
+}
