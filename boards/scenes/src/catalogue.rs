@@ -554,13 +554,18 @@ const fn perturbed(name: &'static str, entry: Entry) -> Entry {
 
 /// `entry`, an escape-time view, shown on a one-bit panel by Bayer's 8×8 dither.
 const fn one_bit(name: &'static str, entry: Entry) -> Entry {
+    one_bit_by(name, entry, Dither::Bayer8)
+}
+
+/// `entry`, an escape-time view, shown on a one-bit panel by `dither`.
+const fn one_bit_by(name: &'static str, entry: Entry, dither: Dither) -> Entry {
     let escape = escape_of(entry);
     Entry {
         name,
         ..adjusted(
             entry,
             EscapeScene {
-                one_bit: Some(Dither::Bayer8),
+                one_bit: Some(dither),
                 ..escape
             },
         )
@@ -1130,7 +1135,8 @@ pub const DISPLAY_SCENES: [Entry; 2] = [
 
 /// Panels of fewer colours, and the escape-time features made for them.
 ///
-/// The OLED's Mandelbrot on a one-bit SSD1306 of its size; the seahorse valley there
+/// The OLED's Mandelbrot on a one-bit SSD1306 of its size, dithered and (what dithering
+/// adds to) each pixel to its nearest colour; the seahorse valley there
 /// without and with distance estimation (its strands held together), and the full view
 /// with it at the OLED's and a display's size (what the estimate costs); XaoS's autopilot
 /// flying 48 frames.
@@ -1139,8 +1145,9 @@ pub const DISPLAY_SCENES: [Entry; 2] = [
 /// dithering target is a second copy of the escape-time engine, beyond the other build's
 /// flash).
 #[rustfmt::skip]
-pub const PANEL_SCENES: [Entry; 7] = [
+pub const PANEL_SCENES: [Entry; 8] = [
     one_bit("mandelbrot-1bit", escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic")),
+    one_bit_by("mandelbrot-1bit-nearest", escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"), Dither::None),
     one_bit("seahorse-1bit", SEAHORSE),
     one_bit("seahorse-distance-1bit", estimated("seahorse", SEAHORSE)),
     one_bit("mandelbrot-distance-1bit", estimated("mandelbrot", escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"))),
