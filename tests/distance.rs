@@ -48,6 +48,16 @@ fn model_distance(julia: Option<(f64, f64)>, p: (f64, f64), max: u32, spacing: f
     Some(modulus * modulus.ln() / derivative / spacing)
 }
 
+/// [`model_distance`] of pixel (i, j) of `view`, at its cap, in its pixels.
+fn pixel_distance(view: &View, i: u32, j: u32) -> Option<f64> {
+    model_distance(
+        julia_of(view),
+        point(view, i, j),
+        view.max_iterations(),
+        view.spacing().to_f64(),
+    )
+}
+
 fn views() -> Vec<View> {
     vec![
         view(Fractal::Mandelbrot, (-0.75, 0.0), 3.5, (160, 120), 256),
@@ -85,12 +95,7 @@ fn pixels_near_the_set_are_the_models() {
             for j in 0..size.height {
                 for i in 0..size.width {
                     let index = (j * size.width + i) as usize;
-                    let distance = model_distance(
-                        julia_of(&view),
-                        point(&view, i, j),
-                        max,
-                        view.spacing().to_f64(),
-                    );
+                    let distance = pixel_distance(&view, i, j);
                     let Some(distance) = distance else {
                         // Every inside pixel stays inside.
                         if plain[index] == max as u16 {
@@ -129,12 +134,7 @@ fn distance_shading_follows_the_model() {
         for j in 0..size.height {
             for i in 0..size.width {
                 let index = (j * size.width + i) as usize;
-                let distance = model_distance(
-                    julia_of(&view),
-                    point(&view, i, j),
-                    view.max_iterations(),
-                    view.spacing().to_f64(),
-                );
+                let distance = pixel_distance(&view, i, j);
                 let want = match distance {
                     None => DISTANCE_INSIDE as f64,
                     Some(d) => (1.0 + (16.0 * (d.log2() + 4.0)).floor()).clamp(1.0, 255.0),

@@ -14,9 +14,9 @@ use tinyfractal::{
     Carpet, Error, Figure, Gasket, Real, SierpinskiCube,
 };
 
+use crate::catalogue::Scene;
 #[cfg(feature = "shapes")]
-use crate::catalogue::CUBE_COLOUR;
-use crate::catalogue::{Scene, Shape};
+use crate::catalogue::{Shape, CUBE_COLOUR};
 use crate::look::{Look, Work};
 
 impl Scene {
@@ -54,45 +54,22 @@ impl Scene {
         D::Color: From<Rgb888>,
     {
         match *self {
+            #[cfg(feature = "shapes")]
             Scene::Subdivision { shape, order } => draw_subdivision(target, look, shape, order),
+            #[cfg(feature = "shapes")]
             Scene::Walk { frames } => draw_walk(target, look, frames, between_frames),
+            // Any other scene, or a shape without the `shapes` feature: the background, no
+            // work.
             _ => {
+                let _ = between_frames;
                 target.clear(look.background).map_err(DrawError::Target)?;
-                Ok(Work::Cells(0))
+                Ok(match self {
+                    Scene::Walk { .. } => Work::Segments(0),
+                    _ => Work::Cells(0),
+                })
             }
         }
     }
-}
-
-/// Without the `shapes` feature: the background, no work.
-#[cfg(not(feature = "shapes"))]
-fn draw_subdivision<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    _: Shape,
-    _: u32,
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-    D::Color: From<Rgb888>,
-{
-    target.clear(look.background).map_err(DrawError::Target)?;
-    Ok(Work::Cells(0))
-}
-
-/// Without the `shapes` feature: the background, no work.
-#[cfg(not(feature = "shapes"))]
-fn draw_walk<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    _: u32,
-    _: impl FnMut(),
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-{
-    target.clear(look.background).map_err(DrawError::Target)?;
-    Ok(Work::Segments(0))
 }
 
 #[cfg(feature = "shapes")]
