@@ -126,7 +126,7 @@ impl Outside {
     /// at the cap counts as inside, as its dwell does.
     pub(crate) fn value(self, n: u32, z: (i32, i32), max: u32) -> u32 {
         const ONE: i64 = 1 << 28;
-        if self == Self::Iter || n >= max {
+        if n >= max {
             return n.max(1);
         }
         let (x, y) = (i64::from(z.0), i64::from(z.1));
