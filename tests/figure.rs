@@ -101,7 +101,9 @@ fn poses_and_drawing() {
     let mut display = MockDisplay::new();
     display.set_allow_overdraw(true);
     let drawn = drawing.draw(&mut display).unwrap();
-    assert!(drawn > 30, "{drawn} lines");
+    // Two boxes (hips, torso) of four lines, ten limbs (two arms of two parts, two legs
+    // of three), the neck, and three circles (head, hands).
+    assert_eq!(drawn, 2 * 4 + (2 * 2 + 2 * 3) + 1 + 3, "lines and circles");
     assert_eq!(display.affected_area(), drawing.bounding_box());
 }
 

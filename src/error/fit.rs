@@ -35,7 +35,13 @@ pub enum FitError {
         /// The largest value a cell holds.
         cell_max: u32,
     },
+    /// On this target a part of the picture would be [`MAX_PART_PIXELS`] pixels long or
+    /// more: longer than the pixel walk's 16.16 fixed point holds.
+    PartTooLong,
 }
+
+/// The longest part of a figure, in pixels of the target, that its walk holds.
+pub const MAX_PART_PIXELS: u32 = 1 << 15;
 
 impl fmt::Display for FitError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -57,6 +63,11 @@ impl fmt::Display for FitError {
                 f,
                 "the view's values reach {largest} but a cell holds at most {cell_max}: use \
                  u16 cells or a lower iteration cap"
+            ),
+            Self::PartTooLong => write!(
+                f,
+                "on this target a part of the figure would be {MAX_PART_PIXELS} pixels long or \
+                 more, beyond its walk's fixed point: fit it into a smaller area"
             ),
         }
     }

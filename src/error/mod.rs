@@ -17,7 +17,7 @@ mod read;
 mod view;
 mod walk;
 
-pub use fit::FitError;
+pub use fit::{FitError, MAX_PART_PIXELS};
 pub use location::Location;
 pub use parameter::ParameterError;
 pub use read::{ReadError, ReadWarning, Unsupported};

@@ -2,7 +2,7 @@
 //! forearms → hands) and lower body (thighs → shins → feet), facing +x, in units of about
 //! a tenth of its height; and its poses: standing, a walk cycle, a wave.
 
-use super::hierarchy::{Part, Pose, Shape};
+use super::part::{Part, Pose, Shape};
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 

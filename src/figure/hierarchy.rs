@@ -10,63 +10,13 @@ use crate::math::affine::Affine2;
 use crate::math::Real;
 use crate::render::fit::DEFAULT_MARGIN;
 use crate::render::palette::{Colors, Palette};
-use crate::render::raster::draw_line;
+use crate::render::raster::{draw_line_on, PendingRun};
 use crate::render::space::{Segment3, SpaceFit};
 
-/// [`Figure::MAX_DEPTH`], for the crate's own types and arrays.
-pub(crate) const MAX_FIGURE_DEPTH: usize = 8;
-
-/// [`Figure::MAX_JOINTS`], for the crate's own types and arrays.
-pub(crate) const MAX_JOINTS: usize = 16;
-
-/// What a part looks like, in its own units along +x from its joint.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Shape {
-    /// A line from the joint to (length, 0).
-    Line {
-        /// Its length.
-        length: Real,
-    },
-    /// A box from (0, −width/2) to (length, width/2).
-    Box {
-        /// Along the part.
-        length: Real,
-        /// Across it.
-        width: Real,
-    },
-    /// A circle of `radius` about (radius, 0): a head on a neck.
-    Circle {
-        /// Its radius.
-        radius: Real,
-    },
-}
-
-/// A part of a figure: a shape, the joint that turns it (an index into the pose's angles),
-/// where on its parent it is attached, its rest angle, and its children.
-#[derive(Debug, Clone, Copy)]
-pub struct Part {
-    /// Its name (for `--segments` and errors).
-    pub name: &'static str,
-    /// What it looks like.
-    pub shape: Shape,
-    /// Where it hangs on its parent, in the parent's units.
-    pub attach: (Real, Real),
-    /// Its angle to its parent at rest, degrees.
-    pub rest: Real,
-    /// The pose's angle added to the rest angle (`None`: rigid).
-    pub joint: Option<usize>,
-    /// Its colour index.
-    pub color: u8,
-    /// The parts attached to it.
-    pub children: &'static [Part],
-}
-
-/// Joint angles in degrees, by joint index.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct Pose {
-    /// The angles.
-    pub angles: [Real; MAX_JOINTS],
-}
+use super::part::{Part, Pose, Shape};
+use super::part::{MAX_FIGURE_DEPTH, MAX_JOINTS};
+use super::pixels::{pixel, Fixed, Outline, PixelWalk, Traced};
+use crate::render::circle::draw_circle;
 
 /// One drawn line of a figure, with the part it belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -148,6 +98,14 @@ impl Figure {
         &self,
         mut visit: impl FnMut(FigureLine) -> Result<(), Error>,
     ) -> Result<(), Error> {
+        self.for_each_placed(|part, map| draw_part(part, map, &mut visit))
+    }
+
+    /// Every part with its map (parts' units to world units), depth first.
+    fn for_each_placed(
+        &self,
+        mut visit: impl FnMut(&'static Part, &Affine2) -> Result<(), Error>,
+    ) -> Result<(), Error> {
         // Each entry: a part, the map of its parent, and the next child to visit.
         let mut stack: Vec<(&'static Part, Affine2, usize), MAX_FIGURE_DEPTH> = Vec::new();
         let full = Error::Walk(WalkError::StackTooDeep {
@@ -168,7 +126,7 @@ impl Figure {
             Ok(map)
         };
         let map = place(self.root, &Affine2::IDENTITY)?;
-        draw_part(self.root, &map, &mut visit)?;
+        visit(self.root, &map)?;
         stack.push((self.root, map, 0)).map_err(|_| full)?;
         while let Some(top) = stack.last_mut() {
             let (part, map, next) = *top;
@@ -178,7 +136,7 @@ impl Figure {
             };
             top.2 += 1;
             let child_map = place(child, &map)?;
-            draw_part(child, &child_map, &mut visit)?;
+            visit(child, &child_map)?;
             stack.push((child, child_map, 0)).map_err(|_| full)?;
         }
         Ok(())
@@ -206,32 +164,52 @@ impl Figure {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
         let palette = Colors::new(palette).ok_or(Error::Fit(FitError::EmptyPalette))?;
-        let mut corners = None;
-        self.widen(&mut corners)?;
-        for pose in poses {
-            Self::new(self.root, pose).widen(&mut corners)?;
+        // Measured in the pixel walk's arithmetic on a provisional plane (one 64-bit walk
+        // a pose, not a `Real` one), then read back into units.
+        let (measuring, back) = PixelWalk::measuring(self.root);
+        let mut corners: Option<[Fixed; 2]> = None;
+        for pose in core::iter::once(self.pose).chain(poses) {
+            measuring.walk(self.root, &pose, |traced| {
+                let mut widen = |(x, y): Fixed| {
+                    let [low, high] = corners.get_or_insert([(x, y); 2]);
+                    *low = (low.0.min(x), low.1.min(y));
+                    *high = (high.0.max(x), high.1.max(y));
+                };
+                match traced.outline {
+                    Outline::Path { points, .. } => points.iter().copied().for_each(widen),
+                    Outline::Circle { centre, radius } => {
+                        widen((centre.0 - radius, centre.1 - radius));
+                        widen((centre.0 + radius, centre.1 + radius));
+                    }
+                }
+            })?;
         }
-        let [low, high] = corners.unwrap_or([[Real::ZERO; 3]; 2]);
-        let space = SpaceFit::front_box(low, high, &area, DEFAULT_MARGIN)?;
+        let [low, high] = corners.unwrap_or([(0, 0); 2]);
+        let unit = |v: i64| -> Result<Real, Error> {
+            let bits = if back >= 0 {
+                v.checked_mul(1i64.checked_shl(back.unsigned_abs()).unwrap_or(0))
+                    .filter(|_| back < 63)
+            } else {
+                Some(v >> back.unsigned_abs().min(63))
+            };
+            bits.map(Real::from_bits)
+                .ok_or(Error::Walk(WalkError::Overflow))
+        };
+        let space = SpaceFit::front_box(
+            [unit(low.0)?, unit(low.1)?, Real::ZERO],
+            [unit(high.0)?, unit(high.1)?, Real::ZERO],
+            &area,
+            DEFAULT_MARGIN,
+        )?;
+        let walk = space
+            .front_linear()
+            .and_then(|(scale, origin)| PixelWalk::fitted(self.root, scale, origin))
+            .ok_or(Error::Fit(FitError::PartTooLong))?;
         Ok(FigureDrawing {
             figure: *self,
             space,
+            walk,
             palette,
-        })
-    }
-
-    /// Widens `corners` (the lowest and highest x and y, z = 0) to the ends of every line:
-    /// one walk, no list of lines.
-    fn widen(&self, corners: &mut Option<[[Real; 3]; 2]>) -> Result<(), Error> {
-        self.for_each_line(|line| {
-            for p in [line.segment.start, line.segment.end] {
-                let [low, high] = corners.get_or_insert([p, p]);
-                low[0] = low[0].min(p[0]);
-                low[1] = low[1].min(p[1]);
-                high[0] = high[0].max(p[0]);
-                high[1] = high[1].max(p[1]);
-            }
-            Ok(())
         })
     }
 }
@@ -260,6 +238,8 @@ fn draw_part(
 pub struct FigureDrawing<P> {
     figure: Figure,
     space: SpaceFit,
+    /// The walk in the fit's pixels.
+    walk: PixelWalk,
     palette: P,
 }
 
@@ -280,6 +260,7 @@ impl<P> FigureDrawing<P> {
         FigureDrawing {
             figure: self.figure,
             space: self.space,
+            walk: self.walk,
             palette,
         }
     }
@@ -294,23 +275,52 @@ impl<P: Palette> FigureDrawing<P> {
         let clip = target.bounding_box();
         let mut drawn = 0u64;
         let mut failed = None;
-        self.figure.for_each_line(|line| {
-            let ((from, _), (to, _)) = (
-                self.space.place(line.segment.start),
-                self.space.place(line.segment.end),
-            );
-            let color = self.palette.color(u16::from(line.segment.color), u16::MAX);
-            if let Err(error) = draw_line(target, from, to, false, color, &clip) {
+        let mut run = PendingRun::default();
+        let draw = |traced: Traced<'_>| {
+            let color = self.palette.color(u16::from(traced.color), u16::MAX);
+            let result = draw_outline(target, &mut run, traced, color, &clip);
+            if let Err(error) = result {
                 failed.get_or_insert(error);
             }
-            drawn += 1;
-            Ok(())
-        })?;
+            drawn += traced.outline.drawn();
+        };
+        self.walk.walk(self.figure.root, &self.figure.pose, draw)?;
+        run.send(target).map_err(DrawError::Target)?;
         match failed {
             Some(error) => Err(DrawError::Target(error)),
             None => Ok(drawn),
         }
     }
+}
+
+/// Draws an outline: a path's lines each from the last one's end (its first pixel
+/// already drawn), short steps joined into runs; a circle by the circle rasteriser.
+fn draw_outline<D: DrawTarget>(
+    target: &mut D,
+    run: &mut PendingRun<D::Color>,
+    traced: Traced<'_>,
+    color: D::Color,
+    clip: &Rectangle,
+) -> Result<(), D::Error> {
+    let (points, closed) = match traced.outline {
+        Outline::Path { points, closed } => (points, closed),
+        Outline::Circle { centre, radius } => {
+            run.send(target)?;
+            return draw_circle(target, centre, radius, color, clip);
+        }
+    };
+    let at = |(x, y): Fixed| Point::new(pixel(x), pixel(y));
+    let Some(&first) = points.first() else {
+        return Ok(());
+    };
+    let closing = closed.then_some(first);
+    let mut last = at(first);
+    for (index, &point) in points.iter().skip(1).chain(closing.iter()).enumerate() {
+        let next = at(point);
+        draw_line_on(target, run, last, next, index > 0, color, clip)?;
+        last = next;
+    }
+    Ok(())
 }
 
 impl<P> Dimensions for FigureDrawing<P> {
@@ -328,5 +338,130 @@ impl<P: Palette> Drawable for FigureDrawing<P> {
         D: DrawTarget<Color = P::Color>,
     {
         only_target_errors(self.try_draw(target))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::FitError;
+    use crate::figure::{walk, BODY};
+    use crate::render::circle::drawn_as_circle;
+    use embedded_graphics::mock_display::MockDisplay;
+    use embedded_graphics::pixelcolor::BinaryColor;
+
+    /// The pixels a drawing lights, and how many lines and circles it counts.
+    fn lit<P: Palette<Color = BinaryColor>>(
+        drawing: &FigureDrawing<P>,
+    ) -> (MockDisplay<BinaryColor>, u64) {
+        let mut display = MockDisplay::new();
+        display.set_allow_overdraw(true);
+        let lines = drawing.try_draw(&mut display).unwrap();
+        (display, lines)
+    }
+
+    /// The model: the figure drawn by the `Real` walk of [`Figure::for_each_placed`] (maps
+    /// of Q32.32 with 128-bit products), each point placed by the fit's scale and origin in
+    /// `Real`, through the same rasterisers.
+    fn by_real_walk(
+        drawing: &FigureDrawing<Colors<'_, BinaryColor>>,
+    ) -> (MockDisplay<BinaryColor>, u64) {
+        let mut target = MockDisplay::new();
+        target.set_allow_overdraw(true);
+        let clip = target.bounding_box();
+        let (mut run, mut drawn) = (PendingRun::default(), 0);
+        let (scale, origin) = drawing.space.front_linear().unwrap();
+        let on_target = |[x, y, _]: [Real; 3]| -> Fixed {
+            let scaled = |v: Real| v.checked_mul(scale).unwrap();
+            let q16 = |v: Real| (v.to_bits() >> 15).wrapping_add(1) >> 1;
+            (
+                q16(origin.0.saturating_add(scaled(x))),
+                q16(origin.1.saturating_sub(scaled(y))),
+            )
+        };
+        let mut draw = |traced: Traced<'_>| {
+            draw_outline(&mut target, &mut run, traced, BinaryColor::On, &clip).unwrap();
+            drawn += traced.outline.drawn();
+        };
+        drawing
+            .figure
+            .for_each_placed(|part, map| {
+                if let Shape::Circle { radius } = part.shape {
+                    let centre = on_target(map.apply(radius, Real::ZERO)?);
+                    let scaled = radius.checked_mul(scale).unwrap().abs();
+                    let radius = (scaled.to_bits() >> 15).saturating_add(1) >> 1;
+                    assert!(drawn_as_circle(radius));
+                    draw(Traced {
+                        outline: Outline::Circle { centre, radius },
+                        color: part.color,
+                    });
+                    return Ok(());
+                }
+                let mut points: Vec<Fixed, 16> = Vec::new();
+                let outline = outline(part.shape);
+                let closed = outline.len() > 1;
+                for (index, &(from, to)) in outline.iter().enumerate() {
+                    if index == 0 {
+                        points.push(on_target(map.apply(from.0, from.1)?)).unwrap();
+                    }
+                    if !closed || index + 1 < outline.len() {
+                        points.push(on_target(map.apply(to.0, to.1)?)).unwrap();
+                    }
+                }
+                draw(Traced {
+                    outline: Outline::Path {
+                        points: &points,
+                        closed,
+                    },
+                    color: part.color,
+                });
+                Ok(())
+            })
+            .unwrap();
+        run.send(&mut target).unwrap();
+        (target, drawn)
+    }
+
+    /// The walk in the fit's pixels lights the pixels the `Real` walk's placed points do,
+    /// in every pose of the walk cycle and of a wild one, at several sizes and offsets.
+    #[test]
+    fn the_pixel_walk_draws_the_real_walks_picture() {
+        let areas = [
+            Rectangle::new(Point::zero(), Size::new(64, 64)),
+            Rectangle::new(Point::new(3, 5), Size::new(57, 41)),
+            Rectangle::new(Point::new(1, 0), Size::new(20, 63)),
+            Rectangle::new(Point::zero(), Size::new(9, 7)),
+        ];
+        let mut wild = Pose::default();
+        for (k, angle) in wild.angles.iter_mut().enumerate() {
+            *angle = Real::from_ratio(7919 * k as i64 % 720 - 360, 1).unwrap();
+        }
+        let poses = (0..24)
+            .map(|k| walk(Real::from_ratio(k, 24).unwrap()))
+            .chain([wild, Pose::default()]);
+        for area in areas {
+            for pose in poses.clone() {
+                let drawing = Figure::new(&BODY, pose)
+                    .fit(area, &[BinaryColor::On])
+                    .unwrap();
+                let ((pixels, lines), (model, model_lines)) =
+                    (lit(&drawing), by_real_walk(&drawing));
+                assert_eq!(lines, model_lines);
+                pixels.assert_eq(&model);
+            }
+        }
+    }
+
+    /// A figure fitted to 400,000 pixels has limbs too long for the pixel walk's 32 bits:
+    /// a typed error, not a wrong picture.
+    #[test]
+    fn a_figure_beyond_the_pixel_walk_is_refused() {
+        let area = Rectangle::new(Point::zero(), Size::new(400_000, 400_000));
+        let fitted = Figure::new(&BODY, Pose::default()).fit(area, &[BinaryColor::On]);
+        assert_eq!(fitted.err(), Some(Error::Fit(FitError::PartTooLong)));
+        let area = Rectangle::new(Point::zero(), Size::new(20_000, 20_000));
+        assert!(Figure::new(&BODY, Pose::default())
+            .fit(area, &[BinaryColor::On])
+            .is_ok());
     }
 }

@@ -4,6 +4,7 @@
 //! (the raw layer under colour), palettes, density pictures, and fitting a picture into a target. This is
 //! also where 3D projection belongs, and the relief drawing every height field shares.
 
+pub(crate) mod circle;
 pub(crate) mod density;
 pub(crate) mod depth;
 pub(crate) mod dither;
