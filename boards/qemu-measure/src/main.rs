@@ -34,7 +34,7 @@ mod firmware {
         carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed,
     };
     #[cfg(not(any(feature = "newer", feature = "shapes")))]
-    use tinyfractal_scenes::naive::{fern_f32, fern_fixed};
+    use tinyfractal_scenes::naive::{fern_f32, fern_fixed, lsystem_f32};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::naive::{
         fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
@@ -55,6 +55,10 @@ mod firmware {
         /// The lecture's fern by the chaos game: the points.
         #[cfg(not(any(feature = "newer", feature = "shapes")))]
         Fern(u32),
+        /// A deterministic L-system: its system, its turn in degrees, order, and whether
+        /// it grows up.
+        #[cfg(not(any(feature = "newer", feature = "shapes")))]
+        LSystem(&'static tinyfractal_scenes::System, f32, u32, bool),
         /// fBm of Perlin's 2D noise: the permutation's seed, octaves, lattice cells across.
         #[cfg(feature = "newer")]
         Noise(u32, u32, f32),
@@ -126,6 +130,21 @@ mod firmware {
                 } => Some(Self::Subdivision(shape == Shape::Carpet, order)),
                 #[cfg(feature = "shapes")]
                 Scene::Walk { frames } => Some(Self::Figure(frames)),
+                // A stochastic system's choices are the engine's own generator: no sketch
+                // draws the same plant.
+                #[cfg(not(any(feature = "newer", feature = "shapes")))]
+                Scene::LSystem {
+                    system,
+                    order,
+                    orientation,
+                } if system.alternatives.is_empty() => {
+                    let degrees = match system.angle {
+                        tinyfractal::Angle::Divisions(n) => 360.0 / f32::from(n.max(1)),
+                        tinyfractal::Angle::Degrees(d) => d.to_f64() as f32,
+                    };
+                    let up = orientation == tinyfractal::render::Orientation::Up;
+                    Some(Self::LSystem(system, degrees, order, up))
+                }
                 #[cfg(not(any(feature = "newer", feature = "shapes")))]
                 Scene::Ifs {
                     system: "fern",
@@ -402,6 +421,13 @@ mod firmware {
             Some(Baseline::Figure(frames)) => {
                 f32_cost = run(&mut |target| {
                     figure_f32(frames, target);
+                });
+            }
+            #[cfg(not(any(feature = "newer", feature = "shapes")))]
+            Some(Baseline::LSystem(system, degrees, order, up)) => {
+                let rules = (system.axiom, system.rules, system.draw_symbols);
+                f32_cost = run(&mut |target| {
+                    lsystem_f32(rules, degrees, order, up, target);
                 });
             }
             #[cfg(not(any(feature = "newer", feature = "shapes")))]

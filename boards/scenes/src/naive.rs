@@ -7,7 +7,8 @@
 //! recursive in `f32` and in Q16.16, fill their last level's squares and triangles with
 //! embedded-graphics' styled primitives (Adafruit's `fillRect` and `fillTriangle`).; the
 //! walking figure by a float matrix stack draws lines and circles with them (`drawLine`,
-//! `drawCircle`).
+//! `drawCircle`); a deterministic L-system expands its string in a byte buffer and draws
+//! it with a float turtle.
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use micromath::F32Ext;
@@ -699,5 +700,137 @@ pub fn figure_f32<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -> 
         drawn += figure_pose(target, time, Gray4::WHITE);
         last = Some(time);
     }
+    drawn
+}
+
+/// The longest string the naive L-system expands, in bytes: one buffer, expanded in place.
+pub const NAIVE_STRING: usize = 8 * 1024;
+
+/// Deepest `[` nesting the naive turtle keeps.
+const NAIVE_TURTLE_STACK: usize = 64;
+
+/// An L-system as a sketch draws it, in `f32`: the string expanded `order` times in a
+/// byte buffer, then read twice by a float turtle, once for its box and once to draw.
+///
+/// The expansion rewrites the buffer in place (the current string moved to the buffer's
+/// end, its expansion written from the start), as a sketch short of RAM does; `F` (and
+/// `draw_symbols`) moves a unit and draws, `f` moves, `+`/`-` turn by `degrees` (the
+/// heading's sine and cosine from `micromath` at each step), `[`/`]` push and pop the
+/// turtle. The box scaled to fit the target less a 2-pixel margin and centred, each line
+/// drawn with embedded-graphics' `Line` (a sketch's `drawLine`). Returns the lines drawn,
+/// or 0 if the string outgrows [`NAIVE_STRING`].
+pub fn lsystem_f32<D: DrawTarget<Color = Gray4>>(
+    (axiom, rules, draw_symbols): (&str, &[(char, &str)], &str),
+    degrees: f32,
+    order: u32,
+    up: bool,
+    target: &mut D,
+) -> u64 {
+    use embedded_graphics::primitives::{Line, PrimitiveStyle};
+    let _ = target.clear(Gray4::BLACK);
+    let mut buffer = [0u8; NAIVE_STRING];
+    let Some(start) = buffer.get_mut(..axiom.len()) else {
+        return 0;
+    };
+    start.copy_from_slice(axiom.as_bytes());
+    let mut length = axiom.len();
+    let body = |symbol: u8| {
+        rules
+            .iter()
+            .find(|(s, _)| *s as u32 == u32::from(symbol))
+            .map(|(_, body)| body.as_bytes())
+    };
+    for _ in 0..order {
+        let grown: usize = buffer[..length]
+            .iter()
+            .map(|&s| body(s).map_or(1, <[u8]>::len))
+            .sum();
+        if grown > NAIVE_STRING {
+            return 0;
+        }
+        // The string to the buffer's end, then its expansion from the start: the writer
+        // never passes the reader, each symbol becoming at least one.
+        buffer.copy_within(..length, NAIVE_STRING - length);
+        let (mut read, mut write) = (NAIVE_STRING - length, 0);
+        while read < NAIVE_STRING {
+            let symbol = buffer[read];
+            read += 1;
+            match body(symbol) {
+                Some(body) => {
+                    buffer[write..write + body.len()].copy_from_slice(body);
+                    write += body.len();
+                }
+                None => {
+                    buffer[write] = symbol;
+                    write += 1;
+                }
+            }
+        }
+        length = grown;
+    }
+    let string = &buffer[..length];
+    let draws = |s: u8| s == b'F' || draw_symbols.as_bytes().contains(&s);
+    let turn = degrees.to_radians();
+    let start_heading = if up {
+        core::f32::consts::FRAC_PI_2
+    } else {
+        0.0
+    };
+    // Walks the string, calling `line` with each drawn line's ends in turtle units.
+    let walk = |line: &mut dyn FnMut((f32, f32), (f32, f32))| {
+        let (mut x, mut y, mut heading) = (0.0f32, 0.0f32, start_heading);
+        let mut stack = [(0.0f32, 0.0f32, 0.0f32); NAIVE_TURTLE_STACK];
+        let mut depth = 0;
+        for &symbol in string {
+            match symbol {
+                b'+' => heading += turn,
+                b'-' => heading -= turn,
+                b'[' if depth < NAIVE_TURTLE_STACK => {
+                    stack[depth] = (x, y, heading);
+                    depth += 1;
+                }
+                b']' if depth > 0 => {
+                    depth -= 1;
+                    (x, y, heading) = stack[depth];
+                }
+                b'f' => {
+                    x += F32Ext::cos(heading);
+                    y += F32Ext::sin(heading);
+                }
+                s if draws(s) => {
+                    let (nx, ny) = (x + F32Ext::cos(heading), y + F32Ext::sin(heading));
+                    line((x, y), (nx, ny));
+                    (x, y) = (nx, ny);
+                }
+                _ => {}
+            }
+        }
+    };
+    let (mut low, mut high) = ((f32::MAX, f32::MAX), (f32::MIN, f32::MIN));
+    walk(&mut |a, b| {
+        for (px, py) in [a, b] {
+            low = (low.0.min(px), low.1.min(py));
+            high = (high.0.max(px), high.1.max(py));
+        }
+    });
+    let size = target.bounding_box().size;
+    let (w, h) = (size.width as f32 - 4.0, size.height as f32 - 4.0);
+    let scale = (w / (high.0 - low.0).max(1e-6)).min(h / (high.1 - low.1).max(1e-6));
+    // Centred: the spare width (or height) split either side.
+    let left = 2.0 + (w - (high.0 - low.0) * scale) / 2.0;
+    let bottom = 2.0 + h - (h - (high.1 - low.1) * scale) / 2.0;
+    let pixel = |(px, py): (f32, f32)| {
+        Point::new(
+            (left + (px - low.0) * scale + 0.5) as i32,
+            (bottom - (py - low.1) * scale + 0.5) as i32,
+        )
+    };
+    let mut drawn = 0;
+    walk(&mut |a, b| {
+        let _ = Line::new(pixel(a), pixel(b))
+            .into_styled(PrimitiveStyle::with_stroke(Gray4::WHITE, 1))
+            .draw(target);
+        drawn += 1;
+    });
     drawn
 }

@@ -1,0 +1,81 @@
+//! The loops a user would write draw the scene's picture: the L-system sketch lights
+//! about the pixels the engine does (its own fit, so not pixel for pixel).
+
+use embedded_graphics::{pixelcolor::Gray4, prelude::*};
+use tinyfractal::{render::Orientation, Angle};
+use tinyfractal_scenes::{naive::lsystem_f32, Scene, System, FERN, GREY, KOCH_SNOWFLAKE};
+use tinyfractal_test_support::frame::Frame;
+
+/// The box of the lit pixels and how many there are.
+fn lit(frame: &Frame<Gray4>, ink: Gray4) -> (Point, Point, usize) {
+    let mut count = 0;
+    let (mut low, mut high) = (
+        Point::new(i32::MAX, i32::MAX),
+        Point::new(i32::MIN, i32::MIN),
+    );
+    for y in 0..frame.size.height as i32 {
+        for x in 0..frame.size.width as i32 {
+            if frame.pixel(x, y) == Some(ink) {
+                count += 1;
+                low = low.component_min(Point::new(x, y));
+                high = high.component_max(Point::new(x, y));
+            }
+        }
+    }
+    (low, high, count)
+}
+
+#[test]
+fn the_lsystem_sketch_draws_the_scenes_picture() {
+    let size = Size::new(128, 64);
+    for (system, order, orientation) in [
+        (&KOCH_SNOWFLAKE, 4, Orientation::Right),
+        (&FERN, 5, Orientation::Up),
+    ] {
+        let system: &'static System = system;
+        let mut ours = Frame::filled(size, GREY.background);
+        let scene = Scene::LSystem {
+            system,
+            order,
+            orientation,
+        };
+        scene.draw(&mut ours, &GREY).unwrap();
+        let degrees = match system.angle {
+            Angle::Divisions(n) => 360.0 / f32::from(n),
+            Angle::Degrees(d) => d.to_f64() as f32,
+        };
+        let mut sketch = Frame::filled(size, Gray4::BLACK);
+        let rules = (system.axiom, system.rules, system.draw_symbols);
+        let lines = lsystem_f32(
+            rules,
+            degrees,
+            order,
+            orientation == Orientation::Up,
+            &mut sketch,
+        );
+        let (low, high, count) = lit(&sketch, Gray4::WHITE);
+        let (our_low, our_high, our_count) = lit(&ours, GREY.ink);
+        // The same lines (the scene counts segments the same way)...
+        let mut count_target = Frame::filled(size, GREY.background);
+        let segments = match scene.draw(&mut count_target, &GREY).unwrap() {
+            tinyfractal_scenes::Work::Segments(n) => n,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(lines, segments);
+        // ...in about the same box (the fits' margins differ by a few pixels)...
+        for (a, b) in [(low, our_low), (high, our_high)] {
+            assert!((a - b).x.abs() <= 4 && (a - b).y.abs() <= 4, "{a:?} {b:?}");
+        }
+        // ...lighting about as many pixels.
+        let ratio = count as f64 / our_count as f64;
+        assert!((0.75..1.33).contains(&ratio), "{count} against {our_count}");
+    }
+}
+
+/// A string longer than the buffer draws nothing, and says so by drawing no line.
+#[test]
+fn an_outgrown_string_draws_nothing() {
+    let mut sketch = Frame::filled(Size::new(32, 32), Gray4::BLACK);
+    let rules = (KOCH_SNOWFLAKE.axiom, KOCH_SNOWFLAKE.rules, "");
+    assert_eq!(lsystem_f32(rules, 60.0, 7, false, &mut sketch), 0);
+}
