@@ -181,6 +181,18 @@ fn cases() -> Vec<Case> {
             });
         }
     }
+    // The whole set on the larger displays (ILI9488's 480×320, 800×480).
+    for size in [(480, 320), (800, 480)] {
+        for max in [64, 100, 256, 1000] {
+            cases.push(Case {
+                julia: None,
+                centre: (-0.75, 0.0),
+                width: 3.5,
+                size,
+                max,
+            });
+        }
+    }
     for (centre, widths) in [
         ((-0.7435, 0.1314), [0.2, 0.02, 0.002, 0.0002]),
         ((0.2818, 0.0108), [0.1, 0.01, 0.001, 0.0001]),
@@ -214,6 +226,18 @@ fn cases() -> Vec<Case> {
     for k in ks {
         for size in sizes {
             for max in [50, 100, 256, 1000] {
+                cases.push(Case {
+                    julia: Some(k),
+                    centre: (0.0, 0.0),
+                    width: 3.2,
+                    size,
+                    max,
+                });
+            }
+        }
+        // The whole Julia set on the larger displays.
+        for size in [(480, 320), (800, 480)] {
+            for max in [50, 100, 256] {
                 cases.push(Case {
                     julia: Some(k),
                     centre: (0.0, 0.0),

@@ -370,7 +370,13 @@ impl View {
         let (zoom_bits, iteration_bits) = rule_bits(spacing, max_iterations);
         Ok(match fractal {
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
-            Fractal::Mandelbrot if zoom_bits + iteration_bits <= 15 => Tier::Standard,
+            // The whole set on a 480- or 800-pixel display at 129–256 iterations (z = 8,
+            // i = 8) keeps 99.9 % in `Standard` too (docs/tiers.md).
+            Fractal::Mandelbrot
+                if zoom_bits + iteration_bits <= 15 || (zoom_bits, iteration_bits) == (8, 8) =>
+            {
+                Tier::Standard
+            }
             // Long orbits of deep views: past z + i = 25 at caps over 256, `Deep`'s 60 bits
             // lose dwells near the boundary, and so do perturbation's 62-bit differences
             // from an exact reference while z < 40, or at caps over 2048 (docs/tiers.md).
@@ -388,9 +394,16 @@ impl View {
             }
             // Rounded 24 bits keep more dwells than f32 on the pool at z = 7, i = 7 (the
             // whole set on a 320-pixel display at 65–128 iterations); elsewhere the pools
-            // need `Standard`, or single views at caps up to 64 lose a pixel or a few.
+            // need `Standard`, or single views at caps up to 64 lose a pixel or a few. At
+            // z = 8, i = 7 (the whole set on a 480- or 800-pixel display at 65–128
+            // iterations) `Medium` holds on the pool but not on every view: `Standard`.
             Fractal::Julia { .. } if zoom_bits == 7 && iteration_bits == 7 => Tier::Medium,
-            Fractal::Julia { .. } if zoom_bits + 7 * iteration_bits <= 56 => Tier::Standard,
+            Fractal::Julia { .. }
+                if zoom_bits + 7 * iteration_bits <= 56
+                    || (zoom_bits, iteration_bits) == (8, 7) =>
+            {
+                Tier::Standard
+            }
             Fractal::Julia { .. }
                 if zoom_bits + iteration_bits > JULIA_DEEP_UNTIL
                     || iteration_bits >= LONG_ORBIT =>

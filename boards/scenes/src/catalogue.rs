@@ -1123,14 +1123,24 @@ const fn pilot(name: &'static str, seed: u64, frames: u32) -> Entry {
     }
 }
 
-/// The escape-time views at a real board's display size (320×240), measured on Cortex-M0/M3/M4
-/// beside the OLED's frames.
+/// The ILI9488's 480×320 panel.
+const ILI9488: Size = Size::new(480, 320);
+
+/// The 800×480 panels of the larger boards (RA8875, the STM32F746's and F769's).
+const PANEL_800X480: Size = Size::new(800, 480);
+
+/// The escape-time views at real boards' display sizes (320×240, 480×320, 800×480),
+/// measured on Cortex-M0/M3/M4 beside the OLED's frames.
 ///
 /// The full Mandelbrot view at 256 iterations and the Julia set k = −0.8 + 0.156i at 100.
 #[rustfmt::skip]
-pub const DISPLAY_SCENES: [Entry; 2] = [
+pub const DISPLAY_SCENES: [Entry; 6] = [
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, GALLERY_SIZE, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.2", 100, GALLERY_SIZE, "classic"),
+    escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, ILI9488, "classic"),
+    escape("julia", JULIA_K, ("0", "0"), "3.2", 100, ILI9488, "classic"),
+    escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 256, PANEL_800X480, "classic"),
+    escape("julia", JULIA_K, ("0", "0"), "3.2", 100, PANEL_800X480, "classic"),
 ];
 
 /// Panels of fewer colours, and the escape-time features made for them.
