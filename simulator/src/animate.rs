@@ -573,12 +573,6 @@ fn animate(arguments: &AnimationPlan) -> Result<(), String> {
     let bar = crate::progress::bar(u64::from(arguments.frames), "frames");
     let (sender, receiver) = sync_channel(1);
     let result = std::thread::scope(|scope| {
-        let maker = scope.spawn(|| {
-            let emit = Emit { sender, bar: &bar };
-            let detail = make(arguments, size, &emit)?;
-            let _ = emit.sender.send(Message::Done(detail));
-            Ok::<(), String>(())
-        });
         let stats = |detail: String| {
             let (frames, elapsed) = (arguments.frames, started.elapsed().as_secs_f64() * 1e3);
             match (arguments.stats, &arguments.kind) {
@@ -590,12 +584,25 @@ fn animate(arguments: &AnimationPlan) -> Result<(), String> {
                 (true, _) => format!("frames={frames}{detail} elapsed_ms={elapsed:.3}\n"),
             }
         };
-        let written = write(&receiver, arguments, stats);
-        // The writer is done: a maker still sending stops at its next frame.
-        drop(receiver);
-        let made = maker
+        // The writer on a thread of its own, the frames made on this one: in the pool that
+        // `--threads` installed, so frames that can be made in parallel use its threads.
+        let writer = scope.spawn(move || {
+            let written = write(&receiver, arguments, stats);
+            // The writer is done: a maker still sending stops at its next frame.
+            drop(receiver);
+            written
+        });
+        let emit = Emit { sender, bar: &bar };
+        let made = make(arguments, size, &emit).and_then(|detail| {
+            emit.sender
+                .send(Message::Done(detail))
+                .map_err(|_| WRITER_STOPPED.to_string())
+        });
+        // The maker is done: a writer still waiting sees the channel close.
+        drop(emit);
+        let written = writer
             .join()
-            .unwrap_or_else(|_| Err("the animation stopped unexpectedly".to_string()));
+            .unwrap_or_else(|_| Err("the animation's writer stopped unexpectedly".to_string()));
         match (made, written) {
             (Err(error), _) if error != WRITER_STOPPED => Err(error),
             (_, written) => written,
@@ -727,7 +734,8 @@ fn noise_frames(
 ) -> Result<String, String> {
     let noise = texture.noise();
     let area = embedded_graphics::primitives::Rectangle::new(Point::zero(), size);
-    for frame in 0..frames {
+    // Each frame its own depth: frames on every thread, in order.
+    let make = |frame: u32| {
         let depth = step
             .checked_mul(Real::from_int(i32::try_from(frame).unwrap_or(i32::MAX)))
             .and_then(|offset| z.checked_add(offset))
@@ -735,8 +743,9 @@ fn noise_frames(
         let drawing = texture.drawing(&noise, Some(depth), area)?;
         let mut picture = Picture::new(size);
         let Ok(()) = drawing.draw(&mut picture);
-        emit.frame(picture)?;
-    }
+        Ok(picture)
+    };
+    crate::parallel::frames_in_order(frames, make, |picture| emit.frame(picture))?;
     Ok(String::new())
 }
 

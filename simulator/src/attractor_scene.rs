@@ -268,14 +268,19 @@ pub fn frames(
     mut emit: impl FnMut(SimulatorDisplay<Rgb888>) -> Result<(), String>,
 ) -> Result<String, String> {
     let mut points = 0;
-    for frame in 0..frames {
+    // Each frame its own turn: frames on every thread, in order.
+    let make = |frame: u32| {
         let degrees = Real::from_ratio(360 * i64::from(frame), i64::from(frames.max(1)))
             .ok_or("the turn is out of range")?;
         let picture = options.picture(degrees).map_err(|e| e.to_string())?;
         let mut target = SimulatorDisplay::new(size);
-        points += options.draw(&picture, &mut target)?.points;
-        emit(target)?;
-    }
+        let drawn = options.draw(&picture, &mut target)?.points;
+        Ok((target, drawn))
+    };
+    crate::parallel::frames_in_order(frames, make, |(target, drawn)| {
+        points += drawn;
+        emit(target)
+    })?;
     Ok(format!(" points={points}"))
 }
 

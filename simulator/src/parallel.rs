@@ -152,6 +152,32 @@ pub(crate) fn render_parts(
     Ok(total.unwrap_or_else(|| Render::new(view, algorithm).stats()))
 }
 
+/// Makes frames `0..count` on the current pool's threads and hands them to `emit` in
+/// order: the frames one thread makes, in its order.
+///
+/// As many frames are made at a time as the pool has threads, so at most a batch is held.
+/// The first error (of `make`, in frame order, or of `emit`) stops it, after the frames
+/// before it were emitted.
+pub fn frames_in_order<P: Send>(
+    count: u32,
+    make: impl Fn(u32) -> Result<P, String> + Sync,
+    mut emit: impl FnMut(P) -> Result<(), String>,
+) -> Result<(), String> {
+    let batch = u32::try_from(rayon::current_num_threads())
+        .unwrap_or(1)
+        .max(1);
+    let mut start = 0;
+    while start < count {
+        let end = start.saturating_add(batch).min(count);
+        let made: Vec<Result<P, String>> = (start..end).into_par_iter().map(&make).collect();
+        for frame in made {
+            emit(frame?)?;
+        }
+        start = end;
+    }
+    Ok(())
+}
+
 /// Runs `work` with a pool of `threads` threads (every core when `None`): what the
 /// `--threads` option sets.
 pub fn with_threads<T: Send>(
