@@ -29,16 +29,16 @@ mod firmware {
     #[cfg(feature = "newer")]
     use tinyfractal::Real;
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
+    #[cfg(feature = "newer")]
+    use tinyfractal_scenes::naive::{
+        bezier_f32, fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
+    };
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::naive::{
         carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed,
     };
     #[cfg(not(any(feature = "newer", feature = "shapes")))]
-    use tinyfractal_scenes::naive::{fern_f32, fern_fixed, lsystem_f32};
-    #[cfg(feature = "newer")]
-    use tinyfractal_scenes::naive::{
-        fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
-    };
+    use tinyfractal_scenes::naive::{fern_f32, fern_fixed, lsystem_f32, terrain_f32};
     use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::{Shape, SCENES};
@@ -71,6 +71,12 @@ mod firmware {
         /// A fountain's frames.
         #[cfg(feature = "newer")]
         Fountain(u32),
+        /// Cubic curves of a 320×240 design.
+        #[cfg(feature = "newer")]
+        Bezier(&'static [[(i16, i16); 4]]),
+        /// A midpoint-displacement profile: roughness, σ, seed; heights.
+        #[cfg(not(any(feature = "newer", feature = "shapes")))]
+        Terrain((f32, f32, u32), usize),
         /// Sierpiński's carpet (true) or gasket at an order.
         #[cfg(feature = "shapes")]
         Subdivision(bool, u32),
@@ -114,6 +120,21 @@ mod firmware {
                     ))
                 }
                 #[cfg(feature = "newer")]
+                Scene::Bezier { curves } => Some(Self::Bezier(curves)),
+                #[cfg(not(any(feature = "newer", feature = "shapes")))]
+                Scene::Terrain {
+                    displacement,
+                    samples,
+                    map: false,
+                } => Some(Self::Terrain(
+                    (
+                        displacement.roughness.to_f64() as f32,
+                        displacement.sigma.to_f64() as f32,
+                        displacement.seed as u32,
+                    ),
+                    samples as usize,
+                )),
+                #[cfg(feature = "newer")]
                 Scene::Particles {
                     preset: tinyfractal::particles::Preset::Fountain,
                     frames,
@@ -155,6 +176,10 @@ mod firmware {
             }
         }
     }
+
+    /// Steps of t a curve's sketch takes (a common choice in Arduino sketches).
+    #[cfg(feature = "newer")]
+    const NAIVE_BEZIER_STEPS: u32 = 16;
 
     const RELOAD: u32 = 0x00FF_FFFF;
     /// Set at build time to measure one scene only, as `NAME` or `NAME:WIDTHxHEIGHT`,
@@ -398,6 +423,20 @@ mod firmware {
             Some(Baseline::Fountain(frames)) => {
                 f32_cost = run(&mut |target| {
                     fountain_f32(frames, target);
+                });
+            }
+            #[cfg(feature = "newer")]
+            Some(Baseline::Bezier(curves)) => {
+                f32_cost = run(&mut |target| {
+                    let area = embedded_graphics::geometry::Dimensions::bounding_box(target);
+                    let place = tinyfractal_scenes::design_placement(area);
+                    bezier_f32(curves, place, NAIVE_BEZIER_STEPS, target);
+                });
+            }
+            #[cfg(not(any(feature = "newer", feature = "shapes")))]
+            Some(Baseline::Terrain(displacement, samples)) => {
+                f32_cost = run(&mut |target| {
+                    terrain_f32(displacement, samples, target);
                 });
             }
             #[cfg(feature = "shapes")]

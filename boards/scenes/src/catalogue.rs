@@ -753,8 +753,9 @@ const fn attractor(name: &'static str, kind: Kind, points: u64, size: Size) -> E
     }
 }
 
-/// A figure drawn in smooth curves, the lecture's counterpart to the articulated figure:
-/// a head of four arcs, a spine, arms (one waving), legs and the ground, as cubic Bézier
+/// A figure drawn in smooth curves, the lecture's counterpart to the articulated figure.
+///
+/// A head of four arcs, a spine, arms (one waving), legs and the ground, as cubic Bézier
 /// curves in a 320×240 design (y down).
 pub const SMOOTH_FIGURE: [[(i16, i16); 4]; 10] = [
     [(182, 50), (182, 38), (172, 28), (160, 28)],

@@ -3,6 +3,7 @@
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
 use tinyfractal::error::DrawError;
 
 use crate::catalogue::Scene;
@@ -165,8 +166,26 @@ where
 }
 
 /// The design's size: curves are given in a 320×240 picture.
-#[cfg(feature = "dynamics")]
 const DESIGN: (i32, i32) = (320, 240);
+
+/// Where a point of a 320×240 curve design lands in `area`: scaled by the tighter of
+/// width/320 and height/240, centred.
+pub fn design_placement(area: Rectangle) -> impl Fn((i16, i16)) -> Point {
+    let (width, height) = (area.size.width as i32, area.size.height as i32);
+    // The scale num/den: the tighter of width/320 and height/240.
+    let (num, den) = if width * DESIGN.1 <= height * DESIGN.0 {
+        (width, DESIGN.0)
+    } else {
+        (height, DESIGN.1)
+    };
+    let offset = Point::new(
+        (width - DESIGN.0 * num / den) / 2,
+        (height - DESIGN.1 * num / den) / 2,
+    );
+    move |(x, y): (i16, i16)| {
+        area.top_left + offset + Point::new(i32::from(x) * num / den, i32::from(y) * num / den)
+    }
+}
 
 /// `curves` (a 320×240 design) scaled uniformly and centred on `target`, over the look's
 /// background in its ink; the work is the curves' straight pieces. Out of line: the
@@ -185,20 +204,7 @@ where
     use tinyfractal::bezier::Bezier;
     let area = target.bounding_box();
     target.clear(look.background).map_err(DrawError::Target)?;
-    let (width, height) = (area.size.width as i32, area.size.height as i32);
-    // The scale num/den: the tighter of width/320 and height/240.
-    let (num, den) = if width * DESIGN.1 <= height * DESIGN.0 {
-        (width, DESIGN.0)
-    } else {
-        (height, DESIGN.1)
-    };
-    let offset = Point::new(
-        (width - DESIGN.0 * num / den) / 2,
-        (height - DESIGN.1 * num / den) / 2,
-    );
-    let place = |(x, y): (i16, i16)| {
-        area.top_left + offset + Point::new(i32::from(x) * num / den, i32::from(y) * num / den)
-    };
+    let place = design_placement(area);
     let mut segments = 0;
     for &[a, b, c, d] in curves {
         let curve = Bezier::cubic([place(a), place(b), place(c), place(d)]);

@@ -834,3 +834,225 @@ pub fn lsystem_f32<D: DrawTarget<Color = Gray4>>(
     });
     drawn
 }
+
+/// Cubic Bézier curves as a sketch draws them, in `f32`: each curve evaluated by its
+/// polynomial at `steps` equal steps of t and the points joined with embedded-graphics'
+/// `Line`; returns the lines drawn.
+///
+/// `place` puts a control point of the design on the target (the scene's placement).
+pub fn bezier_f32<D: DrawTarget<Color = Gray4>>(
+    curves: &[[(i16, i16); 4]],
+    place: impl Fn((i16, i16)) -> Point,
+    steps: u32,
+    target: &mut D,
+) -> u64 {
+    use embedded_graphics::primitives::{Line, PrimitiveStyle};
+    let _ = target.clear(Gray4::BLACK);
+    let mut drawn = 0;
+    for curve in curves {
+        let [p0, p1, p2, p3] = curve.map(&place);
+        let at = |t: f32| {
+            let u = 1.0 - t;
+            let (a, b, c, d) = (u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t);
+            let axis = |v0: i32, v1: i32, v2: i32, v3: i32| {
+                a * v0 as f32 + b * v1 as f32 + c * v2 as f32 + d * v3 as f32
+            };
+            Point::new(
+                (axis(p0.x, p1.x, p2.x, p3.x) + 0.5) as i32,
+                (axis(p0.y, p1.y, p2.y, p3.y) + 0.5) as i32,
+            )
+        };
+        let mut last = at(0.0);
+        for step in 1..=steps {
+            let next = at(step as f32 / steps as f32);
+            let _ = Line::new(last, next)
+                .into_styled(PrimitiveStyle::with_stroke(Gray4::WHITE, 1))
+                .draw(target);
+            last = next;
+            drawn += 1;
+        }
+    }
+    drawn
+}
+
+/// The most heights the naive profile holds.
+pub const NAIVE_PROFILE: usize = 1025;
+
+/// A mountain profile by 1D midpoint displacement as a sketch writes it, in `f32`.
+///
+/// `samples` (2ᵏ + 1) heights in an array, the ends at 0, each midpoint the mean of its
+/// ends plus a normal deviate (Box–Muller from the C library's `rand`, `micromath`'s
+/// logarithm, root and cosine) times σ·roughnessˡᵉᵛᵉˡ; then each pixel column's height
+/// scaled from the lowest and highest, and drawn as a column of ground and one of sky
+/// with embedded-graphics' filled rectangles (`fillRect`). Returns the heights made, or
+/// 0 for more than [`NAIVE_PROFILE`].
+pub fn terrain_f32<D: DrawTarget<Color = Gray4>>(
+    (roughness, sigma, seed): (f32, f32, u32),
+    samples: usize,
+    target: &mut D,
+) -> u64 {
+    if !(2..=NAIVE_PROFILE).contains(&samples) {
+        return 0;
+    }
+    let mut heights = [0.0f32; NAIVE_PROFILE];
+    let mut state = seed;
+    let mut uniform = || (c_rand(&mut state) as f32 + 1.0) / 32_769.0;
+    let mut step = samples - 1;
+    let mut scale = sigma;
+    while step > 1 {
+        let half = step / 2;
+        let mut left = 0;
+        while left + step < samples {
+            let (u1, u2) = (uniform(), uniform());
+            let normal =
+                F32Ext::sqrt(-2.0 * F32Ext::ln(u1)) * F32Ext::cos(2.0 * core::f32::consts::PI * u2);
+            heights[left + half] = (heights[left] + heights[left + step]) * 0.5 + normal * scale;
+            left += step;
+        }
+        step = half;
+        scale *= roughness;
+    }
+    let (low, high) = heights[..samples]
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(l, h), &v| (l.min(v), h.max(v)));
+    let size = target.bounding_box().size;
+    let (w, h) = (size.width as i32, size.height as i32);
+    for x in 0..w {
+        let sample = heights[x as usize * (samples - 1) / (w.max(2) - 1) as usize];
+        let ground = ((sample - low) / (high - low).max(1e-6) * (h - 1) as f32) as i32 + 1;
+        fill_rect_in(target, (x, 0), (1, h - ground), Gray4::BLACK);
+        fill_rect_in(target, (x, h - ground), (1, ground), Gray4::WHITE);
+    }
+    samples as u64
+}
+
+/// A filled rectangle in `color` (Adafruit's `fillRect`).
+fn fill_rect_in<D: DrawTarget<Color = Gray4>>(
+    target: &mut D,
+    (x, y): (i32, i32),
+    (w, h): (i32, i32),
+    color: Gray4,
+) {
+    use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
+    let size = Size::new(w.max(0) as u32, h.max(0) as u32);
+    let _ = Rectangle::new(Point::new(x, y), size)
+        .into_styled(PrimitiveStyle::with_fill(color))
+        .draw(target);
+}
+
+/// The Menger sponge as a sketch draws it, in `f32`; returns the cubes drawn.
+///
+/// The cube split in 27 recursively, the 20 kept (all but the centre and the face
+/// centres), each kept cube of the last level drawn as its three faces towards an
+/// isometric camera, two filled triangles each (Adafruit's `fillTriangle`) in three
+/// greys, back to front. The camera's axes are projected once (`micromath` sines), each corner then three
+/// multiply-adds an axis; the sponge's projected box fitted to the target less a 2-pixel
+/// margin, centred. Every face of a drawn cube is painted, hidden or not: a sketch does
+/// not cull.
+pub fn sponge_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
+    use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
+    let _ = target.clear(Gray4::BLACK);
+    let (azimuth, elevation) = (45f32.to_radians(), 35.264f32.to_radians());
+    let (sa, ca) = (F32Ext::sin(azimuth), F32Ext::cos(azimuth));
+    let (se, ce) = (F32Ext::sin(elevation), F32Ext::cos(elevation));
+    // Screen x right, y up: the images of the unit x, y and z axes.
+    let axes = [(ca, -sa * se), (0.0, ce), (-sa, -ca * se)];
+    let project = |(x, y, z): (f32, f32, f32)| {
+        (
+            x * axes[0].0 + y * axes[1].0 + z * axes[2].0,
+            x * axes[0].1 + y * axes[1].1 + z * axes[2].1,
+        )
+    };
+    // The unit cube's projected box.
+    let (mut low, mut high) = ((f32::MAX, f32::MAX), (f32::MIN, f32::MIN));
+    for corner in 0..8 {
+        let p = project((
+            (corner & 1) as f32,
+            ((corner >> 1) & 1) as f32,
+            ((corner >> 2) & 1) as f32,
+        ));
+        low = (low.0.min(p.0), low.1.min(p.1));
+        high = (high.0.max(p.0), high.1.max(p.1));
+    }
+    let size = target.bounding_box().size;
+    let (w, h) = (size.width as f32 - 4.0, size.height as f32 - 4.0);
+    let scale = (w / (high.0 - low.0)).min(h / (high.1 - low.1));
+    let left = 2.0 + (w - (high.0 - low.0) * scale) / 2.0;
+    let bottom = 2.0 + h - (h - (high.1 - low.1) * scale) / 2.0;
+    let pixel = |p: (f32, f32, f32)| {
+        let (x, y) = project(p);
+        Point::new(
+            (left + (x - low.0) * scale + 0.5) as i32,
+            (bottom - (y - low.1) * scale + 0.5) as i32,
+        )
+    };
+    fn visit(
+        corner: (f32, f32, f32),
+        side: f32,
+        depth: u32,
+        draw: &mut dyn FnMut((f32, f32, f32), f32),
+    ) -> u64 {
+        if depth == 0 {
+            draw(corner, side);
+            return 1;
+        }
+        let third = side / 3.0;
+        let mut drawn = 0;
+        // Back to front for a camera at +x, +y, +z: the far thirds first.
+        for i in 0..3 {
+            for j in 0..3 {
+                for k in 0..3 {
+                    if u8::from(i == 1) + u8::from(j == 1) + u8::from(k == 1) >= 2 {
+                        continue;
+                    }
+                    let at = (
+                        corner.0 + i as f32 * third,
+                        corner.1 + j as f32 * third,
+                        corner.2 + k as f32 * third,
+                    );
+                    drawn += visit(at, third, depth - 1, draw);
+                }
+            }
+        }
+        drawn
+    }
+    let mut draw = |(x, y, z): (f32, f32, f32), s: f32| {
+        // The faces at x + s, y + s and z + s, each in its grey.
+        let faces = [
+            (
+                [
+                    (x + s, y, z),
+                    (x + s, y + s, z),
+                    (x + s, y + s, z + s),
+                    (x + s, y, z + s),
+                ],
+                9,
+            ),
+            (
+                [
+                    (x, y + s, z),
+                    (x + s, y + s, z),
+                    (x + s, y + s, z + s),
+                    (x, y + s, z + s),
+                ],
+                15,
+            ),
+            (
+                [
+                    (x, y, z + s),
+                    (x + s, y, z + s),
+                    (x + s, y + s, z + s),
+                    (x, y + s, z + s),
+                ],
+                12,
+            ),
+        ];
+        for (corners, grey) in faces {
+            let [a, b, c, d] = corners.map(pixel);
+            let style = PrimitiveStyle::with_fill(Gray4::new(grey));
+            let _ = Triangle::new(a, b, c).into_styled(style).draw(target);
+            let _ = Triangle::new(a, c, d).into_styled(style).draw(target);
+        }
+    };
+    visit((0.0, 0.0, 0.0), 1.0, order, &mut draw)
+}

@@ -79,3 +79,51 @@ fn an_outgrown_string_draws_nothing() {
     let rules = (KOCH_SNOWFLAKE.axiom, KOCH_SNOWFLAKE.rules, "");
     assert_eq!(lsystem_f32(rules, 60.0, 7, false, &mut sketch), 0);
 }
+
+/// The Bézier sketch draws the scene's curves: about the same pixels in the same box.
+#[test]
+fn the_bezier_sketch_draws_the_scenes_curves() {
+    use tinyfractal_scenes::{design_placement, naive::bezier_f32, SMOOTH_FIGURE};
+    let size = Size::new(128, 64);
+    let mut ours = Frame::filled(size, GREY.background);
+    Scene::Bezier {
+        curves: &SMOOTH_FIGURE,
+    }
+    .draw(&mut ours, &GREY)
+    .unwrap();
+    let mut sketch = Frame::filled(size, Gray4::BLACK);
+    let place = design_placement(sketch.bounding_box());
+    let lines = bezier_f32(&SMOOTH_FIGURE, place, 16, &mut sketch);
+    assert_eq!(lines, 16 * SMOOTH_FIGURE.len() as u64);
+    let (low, high, count) = lit(&sketch, Gray4::WHITE);
+    let (our_low, our_high, our_count) = lit(&ours, GREY.ink);
+    for (a, b) in [(low, our_low), (high, our_high)] {
+        assert!((a - b).x.abs() <= 1 && (a - b).y.abs() <= 1, "{a:?} {b:?}");
+    }
+    let ratio = count as f64 / our_count as f64;
+    assert!((0.8..1.25).contains(&ratio), "{count} against {our_count}");
+}
+
+/// The profile sketch draws one column of ground a pixel column, from the bottom, the
+/// lowest height one pixel high and the highest the whole column.
+#[test]
+fn the_terrain_sketch_draws_ground_from_the_bottom() {
+    use tinyfractal_scenes::naive::terrain_f32;
+    let size = Size::new(128, 64);
+    let mut sketch = Frame::filled(size, Gray4::new(5));
+    assert_eq!(terrain_f32((0.7, 40.0, 7), 129, &mut sketch), 129);
+    let mut grounds = Vec::new();
+    for x in 0..128 {
+        let column: Vec<bool> = (0..64)
+            .map(|y| sketch.pixel(x, y) == Some(Gray4::WHITE))
+            .collect();
+        let ground = column.iter().filter(|&&g| g).count();
+        // Sky above, ground below: no pixel left in the background.
+        assert!(column[64 - ground..].iter().all(|&g| g), "column {x}");
+        assert!((0..64).all(|y| sketch.pixel(x, y) != Some(Gray4::new(5))));
+        grounds.push(ground);
+    }
+    assert_eq!(grounds.iter().min(), Some(&1));
+    assert_eq!(grounds.iter().max(), Some(&64));
+    assert_eq!(terrain_f32((0.7, 40.0, 7), 2000, &mut sketch), 0);
+}
