@@ -35,7 +35,7 @@ mod firmware {
     };
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::naive::{
-        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed,
+        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed, sponge_f32,
     };
     #[cfg(not(any(feature = "newer", feature = "shapes")))]
     use tinyfractal_scenes::naive::{fern_f32, fern_fixed, lsystem_f32, terrain_f32};
@@ -83,6 +83,9 @@ mod firmware {
         /// The walking figure's frames.
         #[cfg(feature = "shapes")]
         Figure(u32),
+        /// The Menger sponge at an order.
+        #[cfg(feature = "shapes")]
+        Sponge(u32),
     }
 
     impl Baseline {
@@ -151,6 +154,11 @@ mod firmware {
                 } => Some(Self::Subdivision(shape == Shape::Carpet, order)),
                 #[cfg(feature = "shapes")]
                 Scene::Walk { frames } => Some(Self::Figure(frames)),
+                #[cfg(feature = "shapes")]
+                Scene::Subdivision {
+                    shape: Shape::Cube(tinyfractal::subdivision::CubeVariant::Axes),
+                    order,
+                } => Some(Self::Sponge(order)),
                 // A stochastic system's choices are the engine's own generator: no sketch
                 // draws the same plant.
                 #[cfg(not(any(feature = "newer", feature = "shapes")))]
@@ -454,6 +462,12 @@ mod firmware {
                     } else {
                         gasket_fixed(order, target);
                     }
+                });
+            }
+            #[cfg(feature = "shapes")]
+            Some(Baseline::Sponge(order)) => {
+                f32_cost = run(&mut |target| {
+                    sponge_f32(order, target);
                 });
             }
             #[cfg(feature = "shapes")]

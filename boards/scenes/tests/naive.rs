@@ -127,3 +127,44 @@ fn the_terrain_sketch_draws_ground_from_the_bottom() {
     assert_eq!(grounds.iter().max(), Some(&64));
     assert_eq!(terrain_f32((0.7, 40.0, 7), 2000, &mut sketch), 0);
 }
+
+/// The sponge's sketch draws the 400 cubes of order 2 over about the scene's box, lighting
+/// about as many pixels.
+#[test]
+fn the_sponge_sketch_draws_the_scenes_sponge() {
+    use tinyfractal_scenes::{naive::sponge_f32, Shape};
+    let size = Size::new(128, 64);
+    let mut ours = Frame::filled(size, GREY.background);
+    Scene::Subdivision {
+        shape: Shape::Cube(tinyfractal::subdivision::CubeVariant::Axes),
+        order: 2,
+    }
+    .draw(&mut ours, &GREY)
+    .unwrap();
+    let mut sketch = Frame::filled(size, Gray4::BLACK);
+    assert_eq!(sponge_f32(2, &mut sketch), 400);
+    let painted = |frame: &Frame<Gray4>, background: Gray4| {
+        let mut count = 0;
+        let (mut low, mut high) = (
+            Point::new(i32::MAX, i32::MAX),
+            Point::new(i32::MIN, i32::MIN),
+        );
+        for y in 0..64 {
+            for x in 0..128 {
+                if frame.pixel(x, y) != Some(background) {
+                    count += 1;
+                    low = low.component_min(Point::new(x, y));
+                    high = high.component_max(Point::new(x, y));
+                }
+            }
+        }
+        (low, high, count)
+    };
+    let (low, high, count) = painted(&sketch, Gray4::BLACK);
+    let (our_low, our_high, our_count) = painted(&ours, GREY.background);
+    for (a, b) in [(low, our_low), (high, our_high)] {
+        assert!((a - b).x.abs() <= 4 && (a - b).y.abs() <= 4, "{a:?} {b:?}");
+    }
+    let ratio = count as f64 / our_count as f64;
+    assert!((0.8..1.25).contains(&ratio), "{count} against {our_count}");
+}
