@@ -38,7 +38,9 @@ mod firmware {
         carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed, sponge_f32,
     };
     #[cfg(not(any(feature = "newer", feature = "shapes")))]
-    use tinyfractal_scenes::naive::{fern_f32, fern_fixed, lsystem_f32, terrain_f32};
+    use tinyfractal_scenes::naive::{
+        fern_f32, fern_fixed, landscape_f32, lsystem_f32, terrain_f32,
+    };
     use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::{Shape, SCENES};
@@ -74,9 +76,10 @@ mod firmware {
         /// Cubic curves of a 320×240 design.
         #[cfg(feature = "newer")]
         Bezier(&'static [[(i16, i16); 4]]),
-        /// A midpoint-displacement profile: roughness, σ, seed; heights.
+        /// A midpoint-displacement profile (or, if the flag is set, a landscape):
+        /// roughness, σ, seed; heights (along a side for a landscape).
         #[cfg(not(any(feature = "newer", feature = "shapes")))]
-        Terrain((f32, f32, u32), usize),
+        Terrain((f32, f32, u32), usize, bool),
         /// Sierpiński's carpet (true) or gasket at an order.
         #[cfg(feature = "shapes")]
         Subdivision(bool, u32),
@@ -128,7 +131,7 @@ mod firmware {
                 Scene::Terrain {
                     displacement,
                     samples,
-                    map: false,
+                    map,
                 } => Some(Self::Terrain(
                     (
                         displacement.roughness.to_f64() as f32,
@@ -136,6 +139,7 @@ mod firmware {
                         displacement.seed as u32,
                     ),
                     samples as usize,
+                    map,
                 )),
                 #[cfg(feature = "newer")]
                 Scene::Particles {
@@ -442,9 +446,13 @@ mod firmware {
                 });
             }
             #[cfg(not(any(feature = "newer", feature = "shapes")))]
-            Some(Baseline::Terrain(displacement, samples)) => {
+            Some(Baseline::Terrain(displacement, samples, map)) => {
                 f32_cost = run(&mut |target| {
-                    terrain_f32(displacement, samples, target);
+                    if map {
+                        landscape_f32(displacement, samples, target);
+                    } else {
+                        terrain_f32(displacement, samples, target);
+                    }
                 });
             }
             #[cfg(feature = "shapes")]

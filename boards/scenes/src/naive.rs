@@ -1056,3 +1056,112 @@ pub fn sponge_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u
     };
     visit((0.0, 0.0, 0.0), 1.0, order, &mut draw)
 }
+
+/// The most heights along a side of the naive landscape.
+pub const NAIVE_LANDSCAPE_SIDE: usize = 33;
+
+/// A landscape as a sketch draws it, in `f32`; returns the heights made.
+///
+/// `side`² heights by diamond-square, then each pixel read from them bilinearly, banded
+/// and hill-shaded as [`relief_f32`] does; nothing (0) for a side other than 2ᵏ + 1 up to
+/// [`NAIVE_LANDSCAPE_SIDE`]. The corners at 0; each diamond and square step adds a normal deviate (Box–Muller from
+/// `rand`, `micromath`'s logarithm, root and cosine) times σ·roughnessˡᵉᵛᵉˡ to the mean
+/// of its four (or three, at an edge) neighbours.
+pub fn landscape_f32<D: DrawTarget<Color = Gray4>>(
+    (roughness, sigma, seed): (f32, f32, u32),
+    side: usize,
+    target: &mut D,
+) -> u64 {
+    if !(3..=NAIVE_LANDSCAPE_SIDE).contains(&side) || !(side - 1).is_power_of_two() {
+        return 0;
+    }
+    let mut heights = [0.0f32; NAIVE_LANDSCAPE_SIDE * NAIVE_LANDSCAPE_SIDE];
+    let mut state = seed;
+    let mut normal = || {
+        let u1 = (c_rand(&mut state) as f32 + 1.0) / 32_769.0;
+        let u2 = (c_rand(&mut state) as f32 + 1.0) / 32_769.0;
+        F32Ext::sqrt(-2.0 * F32Ext::ln(u1)) * F32Ext::cos(2.0 * core::f32::consts::PI * u2)
+    };
+    let at = |x: usize, y: usize| y * side + x;
+    let (mut step, mut scale) = (side - 1, sigma);
+    while step > 1 {
+        let half = step / 2;
+        // Diamonds: each square's centre from its four corners.
+        for y in (half..side).step_by(step) {
+            for x in (half..side).step_by(step) {
+                let mean = (heights[at(x - half, y - half)]
+                    + heights[at(x + half, y - half)]
+                    + heights[at(x - half, y + half)]
+                    + heights[at(x + half, y + half)])
+                    * 0.25;
+                heights[at(x, y)] = mean + normal() * scale;
+            }
+        }
+        // Squares: each edge midpoint from its neighbours inside the grid.
+        for y in (0..side).step_by(half) {
+            let first = if (y / half) % 2 == 0 { half } else { 0 };
+            for x in (first..side).step_by(step) {
+                let (mut sum, mut count) = (0.0, 0.0);
+                for (dx, dy) in [(-1i32, 0i32), (1, 0), (0, -1), (0, 1)] {
+                    let (nx, ny) = (x as i32 + dx * half as i32, y as i32 + dy * half as i32);
+                    if (0..side as i32).contains(&nx) && (0..side as i32).contains(&ny) {
+                        sum += heights[at(nx as usize, ny as usize)];
+                        count += 1.0;
+                    }
+                }
+                heights[at(x, y)] = sum / count + normal() * scale;
+            }
+        }
+        step = half;
+        scale *= roughness;
+    }
+    relief_f32(&heights[..side * side], side, target);
+    (side * side) as u64
+}
+
+/// A grid of heights drawn from above as a sketch does, in `f32`.
+///
+/// Each pixel's height read bilinearly, banded (water, sand, grass, rock, snow) by where it lies between the
+/// lowest and highest, and above the sea lit by the slope towards the upper left; each
+/// pixel a grey through `draw_iter`.
+pub fn relief_f32<D: DrawTarget<Color = Gray4>>(heights: &[f32], side: usize, target: &mut D) {
+    const BANDS: [(f32, f32); 6] = [
+        (0.0, 0.2),
+        (80.0 / 255.0, 0.4),
+        (100.0 / 255.0, 0.75),
+        (110.0 / 255.0, 0.5),
+        (180.0 / 255.0, 0.45),
+        (225.0 / 255.0, 0.95),
+    ];
+    let (low, high) = heights
+        .iter()
+        .fold((f32::MAX, f32::MIN), |(l, h), &v| (l.min(v), h.max(v)));
+    let spread = (high - low).max(1e-6);
+    let size = target.bounding_box().size;
+    let last = (side - 1) as f32;
+    let height = |x: usize, y: usize| heights[y.min(side - 1) * side + x.min(side - 1)];
+    for py in 0..size.height {
+        for px in 0..size.width {
+            let gx = px as f32 * last / (size.width.max(2) - 1) as f32;
+            let gy = py as f32 * last / (size.height.max(2) - 1) as f32;
+            let (x, y) = (gx as usize, gy as usize);
+            let (fx, fy) = (gx - x as f32, gy - y as f32);
+            let top = height(x, y) * (1.0 - fx) + height(x + 1, y) * fx;
+            let bottom = height(x, y + 1) * (1.0 - fx) + height(x + 1, y + 1) * fx;
+            let level = ((top * (1.0 - fy) + bottom * fy) - low) / spread;
+            let band = BANDS.iter().rev().find(|(start, _)| level >= *start);
+            let mut grey = band.map_or(0.0, |(_, grey)| *grey);
+            if level >= 100.0 / 255.0 {
+                let slope = (height(x.saturating_sub(1), y.saturating_sub(1))
+                    - height(x + 1, y + 1))
+                    * last
+                    / spread;
+                grey *= (1.0 - slope / 8.0).clamp(0.5, 1.4);
+            }
+            let _ = target.draw_iter(core::iter::once(Pixel(
+                Point::new(px as i32, py as i32),
+                self::grey(grey),
+            )));
+        }
+    }
+}

@@ -168,3 +168,24 @@ fn the_sponge_sketch_draws_the_scenes_sponge() {
     let ratio = count as f64 / our_count as f64;
     assert!((0.8..1.25).contains(&ratio), "{count} against {our_count}");
 }
+
+/// The landscape's sketch makes its 33² heights and paints every pixel, in bands: the
+/// lowest pixels water (dark), the highest snow (light), and shades between.
+#[test]
+fn the_landscape_sketch_paints_every_pixel_in_bands() {
+    use tinyfractal_scenes::naive::landscape_f32;
+    let size = Size::new(128, 64);
+    // On two backgrounds the same picture: every pixel painted.
+    let mut sketch = Frame::filled(size, Gray4::BLACK);
+    assert_eq!(landscape_f32((0.6, 40.0, 3), 33, &mut sketch), 33 * 33);
+    let mut again = Frame::filled(size, Gray4::WHITE);
+    landscape_f32((0.6, 40.0, 3), 33, &mut again);
+    assert!(sketch.pixels == again.pixels);
+    let lumas: std::collections::BTreeSet<u8> = sketch.pixels.iter().map(|p| p.luma()).collect();
+    assert!(lumas.len() >= 6, "{lumas:?}");
+    assert!(
+        lumas.contains(&3) && lumas.iter().any(|&l| l >= 13),
+        "{lumas:?}"
+    );
+    assert_eq!(landscape_f32((0.6, 40.0, 3), 30, &mut sketch), 0);
+}
