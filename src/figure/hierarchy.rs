@@ -13,7 +13,7 @@ use crate::render::palette::{Colors, Palette};
 use crate::render::raster::{draw_line_on, PendingRun};
 use crate::render::space::{Segment3, SpaceFit};
 
-use super::part::{Part, Pose, Shape};
+use super::part::{walk_parts, Part, Pose, Shape};
 use super::part::{MAX_FIGURE_DEPTH, MAX_JOINTS};
 use super::pixels::{pixel, Fixed, Outline, PixelWalk, Traced};
 use crate::render::circle::draw_circle;
@@ -104,13 +104,8 @@ impl Figure {
     /// Every part with its map (parts' units to world units), depth first.
     fn for_each_placed(
         &self,
-        mut visit: impl FnMut(&'static Part, &Affine2) -> Result<(), Error>,
+        visit: impl FnMut(&'static Part, &Affine2) -> Result<(), Error>,
     ) -> Result<(), Error> {
-        // Each entry: a part, the map of its parent, and the next child to visit.
-        let mut stack: Vec<(&'static Part, Affine2, usize), MAX_FIGURE_DEPTH> = Vec::new();
-        let full = Error::Walk(WalkError::StackTooDeep {
-            capacity: MAX_FIGURE_DEPTH,
-        });
         let place = |part: &Part, parent: &Affine2| -> Result<Affine2, Error> {
             let mut map = *parent;
             map.translate(part.attach.0, part.attach.1)?;
@@ -125,21 +120,7 @@ impl Figure {
             map.rotate_degrees(total)?;
             Ok(map)
         };
-        let map = place(self.root, &Affine2::IDENTITY)?;
-        visit(self.root, &map)?;
-        stack.push((self.root, map, 0)).map_err(|_| full)?;
-        while let Some(top) = stack.last_mut() {
-            let (part, map, next) = *top;
-            let Some(child) = part.children.get(next) else {
-                stack.pop();
-                continue;
-            };
-            top.2 += 1;
-            let child_map = place(child, &map)?;
-            visit(child, &child_map)?;
-            stack.push((child, child_map, 0)).map_err(|_| full)?;
-        }
-        Ok(())
+        walk_parts(self.root, &Affine2::IDENTITY, place, visit)
     }
 
     /// Scales and centres the figure into `area` (less a margin), each part in its colour.

@@ -1,12 +1,15 @@
 //! What a figure is made of: the shapes of its parts, the parts with their joints and
 //! children, and the joint angles of a pose.
 
+use heapless::Vec;
+
+use crate::error::{Error, WalkError};
 use crate::math::Real;
 
-/// [`Figure::MAX_DEPTH`], for the crate's own types and arrays.
+/// [`Figure::MAX_DEPTH`](super::Figure::MAX_DEPTH), for the crate's own types and arrays.
 pub(crate) const MAX_FIGURE_DEPTH: usize = 8;
 
-/// [`Figure::MAX_JOINTS`], for the crate's own types and arrays.
+/// [`Figure::MAX_JOINTS`](super::Figure::MAX_JOINTS), for the crate's own types and arrays.
 pub(crate) const MAX_JOINTS: usize = 16;
 
 /// What a part looks like, in its own units along +x from its joint.
@@ -56,4 +59,38 @@ pub struct Part {
 pub struct Pose {
     /// The angles.
     pub angles: [Real; MAX_JOINTS],
+}
+
+/// Walks `root` and everything attached to it depth first, each part with a state made
+/// from its parent's by `place` (the root's from `start`: a map, for the walks that draw).
+///
+/// `visit` sees each part with its state as it is reached. The walk holds a state a level:
+/// deeper than [`MAX_FIGURE_DEPTH`] is [`WalkError::StackTooDeep`].
+#[inline(always)]
+pub(crate) fn walk_parts<S: Copy>(
+    root: &'static Part,
+    start: &S,
+    mut place: impl FnMut(&'static Part, &S) -> Result<S, Error>,
+    mut visit: impl FnMut(&'static Part, &S) -> Result<(), Error>,
+) -> Result<(), Error> {
+    // Each entry: a part, its state, and the next child to visit.
+    let mut stack: Vec<(&'static Part, S, usize), MAX_FIGURE_DEPTH> = Vec::new();
+    let full = Error::Walk(WalkError::StackTooDeep {
+        capacity: MAX_FIGURE_DEPTH,
+    });
+    let state = place(root, start)?;
+    visit(root, &state)?;
+    stack.push((root, state, 0)).map_err(|_| full)?;
+    while let Some(top) = stack.last_mut() {
+        let (part, state, next) = *top;
+        let Some(child) = part.children.get(next) else {
+            stack.pop();
+            continue;
+        };
+        top.2 += 1;
+        let child_state = place(child, &state)?;
+        visit(child, &child_state)?;
+        stack.push((child, child_state, 0)).map_err(|_| full)?;
+    }
+    Ok(())
 }

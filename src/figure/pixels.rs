@@ -9,10 +9,8 @@
 //! Every map is a rigid motion of the fitted plane, so a circle stays a circle of radius
 //! r·s.
 
-use heapless::Vec;
-
-use super::part::{Part, Pose, Shape, MAX_FIGURE_DEPTH};
-use crate::error::{Error, WalkError, MAX_PART_PIXELS};
+use super::part::{walk_parts, Part, Pose, Shape};
+use crate::error::{Error, MAX_PART_PIXELS};
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 use crate::render::circle::drawn_as_circle;
@@ -194,7 +192,7 @@ impl PixelWalk {
 
     /// A walk for measuring: unflipped, with its origin at 0, its unit chosen so that the
     /// longest length of `root`'s parts is about 2¹⁰ (so a figure nested
-    /// [`MAX_FIGURE_DEPTH`] deep stays within 2¹⁴), and the factor that takes its
+    /// [`MAX_FIGURE_DEPTH`](super::part::MAX_FIGURE_DEPTH) deep stays within 2¹⁴), and the factor that takes its
     /// Q16.16 coordinates back to `Real` bits (a shift left by it, right if negative).
     pub(crate) fn measuring(root: &'static Part) -> (Self, i32) {
         let longest = longest_length(root);
@@ -217,7 +215,7 @@ impl PixelWalk {
     fn reads(&self, root: &'static Part) -> bool {
         let mut fits = true;
         let most = i64::from(MAX_PART_PIXELS) << 16;
-        let _ = for_each_part(root, |part| {
+        for_each_part(root, |part| {
             fits &= lengths(part.shape, part.attach).iter().all(|&v| {
                 scaled_bits(v, self.shift).is_some_and(|q16| {
                     (i64::from(q16).abs() * i64::from(self.scale_q30)) >> 30 < most
@@ -242,35 +240,24 @@ impl PixelWalk {
     }
 
     /// Every part of `root` in `pose`, depth first, as `visit` sees its outline with the
-    /// part's colour. The walk holds a map a level: deeper than [`MAX_FIGURE_DEPTH`] is
-    /// [`WalkError::StackTooDeep`].
+    /// part's colour. The walk holds a map a level: deeper than [`MAX_FIGURE_DEPTH`](super::part::MAX_FIGURE_DEPTH) is
+    /// [`WalkError::StackTooDeep`](crate::error::WalkError::StackTooDeep).
     pub(crate) fn walk(
         &self,
         root: &'static Part,
         pose: &Pose,
         mut visit: impl FnMut(Traced<'_>),
     ) -> Result<(), Error> {
-        let mut stack: Vec<(&'static Part, PixelMap, usize), MAX_FIGURE_DEPTH> = Vec::new();
-        let full = Error::Walk(WalkError::StackTooDeep {
-            capacity: MAX_FIGURE_DEPTH,
-        });
-        let place = |part: &Part, parent: &PixelMap| self.place(part, parent, pose);
         let mut points = [(0, 0); CIRCLE_SIDES];
-        let map = place(root, &self.root);
-        visit(self.trace(root, &map, &mut points));
-        stack.push((root, map, 0)).map_err(|_| full)?;
-        while let Some(top) = stack.last_mut() {
-            let (part, map, next) = *top;
-            let Some(child) = part.children.get(next) else {
-                stack.pop();
-                continue;
-            };
-            top.2 += 1;
-            let child_map = place(child, &map);
-            visit(self.trace(child, &child_map, &mut points));
-            stack.push((child, child_map, 0)).map_err(|_| full)?;
-        }
-        Ok(())
+        walk_parts(
+            root,
+            &self.root,
+            |part, parent| Ok(self.place(part, parent, pose)),
+            |part, map| {
+                visit(self.trace(part, map, &mut points));
+                Ok(())
+            },
+        )
     }
 
     /// The map of `part` on `parent` in `pose`. Out of line: one copy for every walk.
@@ -375,7 +362,7 @@ fn lengths(shape: Shape, attach: (Real, Real)) -> [Real; 4] {
 /// The largest magnitude of any length of `root`'s parts, as `Real` bits.
 fn longest_length(root: &'static Part) -> u64 {
     let mut longest = 0;
-    let _ = for_each_part(root, |part| {
+    for_each_part(root, |part| {
         for v in lengths(part.shape, part.attach) {
             longest = longest.max(v.to_bits().unsigned_abs());
         }
@@ -383,23 +370,18 @@ fn longest_length(root: &'static Part) -> u64 {
     longest
 }
 
-/// Every part of `root`, depth first, at most [`MAX_FIGURE_DEPTH`] deep (deeper parts
+/// Every part of `root`, depth first, at most [`MAX_FIGURE_DEPTH`](super::part::MAX_FIGURE_DEPTH) deep (deeper parts
 /// are left out: the walks themselves report them).
-fn for_each_part(root: &'static Part, mut visit: impl FnMut(&'static Part)) -> Result<(), ()> {
-    let mut stack: Vec<(&'static Part, usize), MAX_FIGURE_DEPTH> = Vec::new();
-    visit(root);
-    stack.push((root, 0)).map_err(|_| ())?;
-    while let Some(top) = stack.last_mut() {
-        let (part, next) = *top;
-        let Some(child) = part.children.get(next) else {
-            stack.pop();
-            continue;
-        };
-        top.1 += 1;
-        visit(child);
-        stack.push((child, 0)).map_err(|_| ())?;
-    }
-    Ok(())
+fn for_each_part(root: &'static Part, mut visit: impl FnMut(&'static Part)) {
+    let _ = walk_parts(
+        root,
+        &(),
+        |_, _| Ok(()),
+        |part, _| {
+            visit(part);
+            Ok(())
+        },
+    );
 }
 
 /// A Q16.16 coordinate rounded to a pixel, halves away from zero (as `Real` rounds).

@@ -875,17 +875,25 @@ pub fn bezier_f32<D: DrawTarget<Color = Gray4>>(
     drawn
 }
 
+/// A normal deviate as a sketch draws one: Box–Muller from two of the C library's
+/// `rand` values (`state` its seed, advanced), with `micromath`'s logarithm, root and
+/// cosine.
+pub fn normal_f32(state: &mut u32) -> f32 {
+    let u1 = (c_rand(state) as f32 + 1.0) / 32_769.0;
+    let u2 = (c_rand(state) as f32 + 1.0) / 32_769.0;
+    F32Ext::sqrt(-2.0 * F32Ext::ln(u1)) * F32Ext::cos(2.0 * core::f32::consts::PI * u2)
+}
+
 /// The most heights the naive profile holds.
 pub const NAIVE_PROFILE: usize = 1025;
 
 /// A mountain profile by 1D midpoint displacement as a sketch writes it, in `f32`.
 ///
 /// `samples` (2ᵏ + 1) heights in an array, the ends at 0, each midpoint the mean of its
-/// ends plus a normal deviate (Box–Muller from the C library's `rand`, `micromath`'s
-/// logarithm, root and cosine) times σ·roughnessˡᵉᵛᵉˡ; then each pixel column's height
-/// scaled from the lowest and highest, and drawn as a column of ground and one of sky
-/// with embedded-graphics' filled rectangles (`fillRect`). Returns the heights made, or
-/// 0 for more than [`NAIVE_PROFILE`].
+/// ends plus a normal deviate ([`normal_f32`]) times σ·roughnessˡᵉᵛᵉˡ; then each pixel
+/// column's height scaled from the lowest and highest, and drawn as a column of ground
+/// and one of sky with embedded-graphics' filled rectangles (`fillRect`). Returns the
+/// heights made, or 0 for more than [`NAIVE_PROFILE`].
 pub fn terrain_f32<D: DrawTarget<Color = Gray4>>(
     (roughness, sigma, seed): (f32, f32, u32),
     samples: usize,
@@ -896,16 +904,13 @@ pub fn terrain_f32<D: DrawTarget<Color = Gray4>>(
     }
     let mut heights = [0.0f32; NAIVE_PROFILE];
     let mut state = seed;
-    let mut uniform = || (c_rand(&mut state) as f32 + 1.0) / 32_769.0;
     let mut step = samples - 1;
     let mut scale = sigma;
     while step > 1 {
         let half = step / 2;
         let mut left = 0;
         while left + step < samples {
-            let (u1, u2) = (uniform(), uniform());
-            let normal =
-                F32Ext::sqrt(-2.0 * F32Ext::ln(u1)) * F32Ext::cos(2.0 * core::f32::consts::PI * u2);
+            let normal = normal_f32(&mut state);
             heights[left + half] = (heights[left] + heights[left + step]) * 0.5 + normal * scale;
             left += step;
         }
@@ -1064,9 +1069,9 @@ pub const NAIVE_LANDSCAPE_SIDE: usize = 33;
 ///
 /// `side`² heights by diamond-square, then each pixel read from them bilinearly, banded
 /// and hill-shaded as [`relief_f32`] does; nothing (0) for a side other than 2ᵏ + 1 up to
-/// [`NAIVE_LANDSCAPE_SIDE`]. The corners at 0; each diamond and square step adds a normal deviate (Box–Muller from
-/// `rand`, `micromath`'s logarithm, root and cosine) times σ·roughnessˡᵉᵛᵉˡ to the mean
-/// of its four (or three, at an edge) neighbours.
+/// [`NAIVE_LANDSCAPE_SIDE`]. The corners at 0; each diamond and square step adds a normal
+/// deviate ([`normal_f32`]) times σ·roughnessˡᵉᵛᵉˡ to the mean of its four (or three, at
+/// an edge) neighbours.
 pub fn landscape_f32<D: DrawTarget<Color = Gray4>>(
     (roughness, sigma, seed): (f32, f32, u32),
     side: usize,
@@ -1077,11 +1082,7 @@ pub fn landscape_f32<D: DrawTarget<Color = Gray4>>(
     }
     let mut heights = [0.0f32; NAIVE_LANDSCAPE_SIDE * NAIVE_LANDSCAPE_SIDE];
     let mut state = seed;
-    let mut normal = || {
-        let u1 = (c_rand(&mut state) as f32 + 1.0) / 32_769.0;
-        let u2 = (c_rand(&mut state) as f32 + 1.0) / 32_769.0;
-        F32Ext::sqrt(-2.0 * F32Ext::ln(u1)) * F32Ext::cos(2.0 * core::f32::consts::PI * u2)
-    };
+    let mut normal = || normal_f32(&mut state);
     let at = |x: usize, y: usize| y * side + x;
     let (mut step, mut scale) = (side - 1, sigma);
     while step > 1 {
