@@ -170,19 +170,9 @@ fn share(a: &[u32], b: &[u32]) -> f64 {
 fn cases() -> Vec<Case> {
     let mut cases = Vec::new();
     let sizes = [(128, 64), (320, 240)];
-    for size in sizes {
-        for max in [64, 100, 256, 1000] {
-            cases.push(Case {
-                julia: None,
-                centre: (-0.75, 0.0),
-                width: 3.5,
-                size,
-                max,
-            });
-        }
-    }
-    // The whole set on the larger displays (ILI9488's 480×320, 800×480).
-    for size in [(480, 320), (800, 480)] {
+    // The larger displays: ILI9488's 480×320, and 800×480.
+    let larger = [(480, 320), (800, 480)];
+    for size in sizes.into_iter().chain(larger) {
         for max in [64, 100, 256, 1000] {
             cases.push(Case {
                 julia: None,
@@ -236,7 +226,7 @@ fn cases() -> Vec<Case> {
             }
         }
         // The whole Julia set on the larger displays.
-        for size in [(480, 320), (800, 480)] {
+        for size in larger {
             for max in [50, 100, 256] {
                 cases.push(Case {
                     julia: Some(k),

@@ -3,7 +3,8 @@
 //!
 //! The orbit is run again from its start, in Q28 with 32×32 → 64-bit products for the
 //! 32-bit tiers and in Q60 with products' high words (perturbation's finish: within 2⁻⁵⁵ a
-//! product) for `Deep` and `Wide`, one copy of the code each, with the derivative dz (dz ← 2·z·dz + 1 for the Mandelbrot set, from
+//! product) for `Deep` and `Wide`, one copy of the code each, with the derivative dz
+//! (dz ← 2·z·dz + 1 for the Mandelbrot set, from
 //! dz₁ = 1; dz ← 2·z·dz for a Julia set, from dz₀ = 1) carried beside it as a mantissa pair
 //! and a shared exponent, since it grows as fast as the orbit runs. Past the escape both
 //! go on to |z| ≥ 256, where the estimate holds, and d is compared through the log table:
@@ -165,8 +166,8 @@ impl Kernel {
             Tier::Narrow | Tier::Medium | Tier::Standard => self.log2_distance::<false>(first, c),
             _ => self.log2_distance::<true>(first, c),
         };
-        // The orbit run again in Q60 may not escape where the tier's did (a point at the
-        // boundary): the nearest the shading has, or the ordinary value.
+        // The orbit run again in its own arithmetic may not escape where the tier's did (a
+        // point at the boundary): the nearest the shading has, or the ordinary value.
         let Some(log2_pixels) = log2_pixels else {
             return (self.distance_shading.then_some(1), steps);
         };

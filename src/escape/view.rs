@@ -371,7 +371,8 @@ impl View {
         Ok(match fractal {
             Fractal::Mandelbrot if zoom_bits + iteration_bits <= 12 => Tier::Medium,
             // The whole set on a 480- or 800-pixel display at 129–256 iterations (z = 8,
-            // i = 8) keeps 99.9 % in `Standard` too (docs/tiers.md).
+            // i = 8) meets the rule in `Standard` too, calibrated like the rest
+            // (docs/tiers.md).
             Fractal::Mandelbrot
                 if zoom_bits + iteration_bits <= 15 || (zoom_bits, iteration_bits) == (8, 8) =>
             {

@@ -13,7 +13,7 @@ use crate::render::palette::{Colors, Palette};
 use crate::render::raster::{draw_line_on, PendingRun};
 use crate::render::space::{Segment3, SpaceFit};
 
-use super::part::{walk_parts, Part, Pose, Shape};
+use super::part::{walk_parts, Part, Pose, Shape, CIRCLE, CIRCLE_SIDES};
 use super::part::{MAX_FIGURE_DEPTH, MAX_JOINTS};
 use super::pixels::{pixel, Fixed, Outline, PixelWalk, Traced};
 use crate::render::circle::draw_circle;
@@ -26,20 +26,6 @@ pub struct FigureLine {
     /// The part's name.
     pub part: &'static str,
 }
-
-/// 16 points about a unit circle (cos, sin) in Q32, for circles.
-// Indexing runs at compile time only: an out-of-range index would fail the build.
-#[allow(clippy::indexing_slicing)]
-const CIRCLE: [(i64, i64); 16] = {
-    let mut points = [(0, 0); 16];
-    let mut i = 0;
-    while i < 16 {
-        let (c, s) = crate::math::trig::sin_cos(i as u32, 16);
-        points[i] = ((c as i64) << 2, (s as i64) << 2);
-        i += 1;
-    }
-    points
-};
 
 /// The outline of a shape in its own units: the lines to draw.
 fn outline(shape: Shape) -> Vec<((Real, Real), (Real, Real)), 16> {
@@ -59,12 +45,19 @@ fn outline(shape: Shape) -> Vec<((Real, Real), (Real, Real)), 16> {
             }
         }
         Shape::Circle { radius } => {
-            let point = |(c, s): (i64, i64)| {
-                let scaled = |v: i64| radius.checked_mul(Real::from_bits(v)).unwrap_or(zero);
+            // The Q30 table in Q32.
+            let point = |(c, s): (i32, i32)| {
+                let scaled = |v: i32| {
+                    let v = Real::from_bits(i64::from(v) << 2);
+                    radius.checked_mul(v).unwrap_or(zero)
+                };
                 (radius.saturating_add(scaled(c)), scaled(s))
             };
             for (index, &from) in CIRCLE.iter().enumerate() {
-                let to = CIRCLE.get((index + 1) % 16).copied().unwrap_or(from);
+                let to = CIRCLE
+                    .get((index + 1) % CIRCLE_SIDES)
+                    .copied()
+                    .unwrap_or(from);
                 let _ = lines.push((point(from), point(to)));
             }
         }
@@ -326,6 +319,7 @@ impl<P: Palette> Drawable for FigureDrawing<P> {
 mod tests {
     use super::*;
     use crate::error::FitError;
+    use crate::figure::pixels::q16_of;
     use crate::figure::{walk, BODY};
     use crate::render::circle::drawn_as_circle;
     use embedded_graphics::mock_display::MockDisplay;
@@ -354,10 +348,9 @@ mod tests {
         let (scale, origin) = drawing.space.front_linear().unwrap();
         let on_target = |[x, y, _]: [Real; 3]| -> Fixed {
             let scaled = |v: Real| v.checked_mul(scale).unwrap();
-            let q16 = |v: Real| (v.to_bits() >> 15).wrapping_add(1) >> 1;
             (
-                q16(origin.0.saturating_add(scaled(x))),
-                q16(origin.1.saturating_sub(scaled(y))),
+                q16_of(origin.0.saturating_add(scaled(x))),
+                q16_of(origin.1.saturating_sub(scaled(y))),
             )
         };
         let mut draw = |traced: Traced<'_>| {
@@ -370,7 +363,7 @@ mod tests {
                 if let Shape::Circle { radius } = part.shape {
                     let centre = on_target(map.apply(radius, Real::ZERO)?);
                     let scaled = radius.checked_mul(scale).unwrap().abs();
-                    let radius = (scaled.to_bits() >> 15).saturating_add(1) >> 1;
+                    let radius = q16_of(scaled);
                     assert!(drawn_as_circle(radius));
                     draw(Traced {
                         outline: Outline::Circle { centre, radius },

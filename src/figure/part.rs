@@ -12,6 +12,22 @@ pub(crate) const MAX_FIGURE_DEPTH: usize = 8;
 /// [`Figure::MAX_JOINTS`](super::Figure::MAX_JOINTS), for the crate's own types and arrays.
 pub(crate) const MAX_JOINTS: usize = 16;
 
+/// Corners a circle's outline goes through where it is drawn as lines.
+pub(crate) const CIRCLE_SIDES: usize = 16;
+
+/// [`CIRCLE_SIDES`] points about a unit circle (cos, sin) in Q30: one table for both walks.
+// Indexing runs at compile time only: an out-of-range index would fail the build.
+#[allow(clippy::indexing_slicing)]
+pub(crate) const CIRCLE: [(i32, i32); CIRCLE_SIDES] = {
+    let mut points = [(0, 0); CIRCLE_SIDES];
+    let mut i = 0;
+    while i < CIRCLE_SIDES {
+        points[i] = crate::math::trig::sin_cos(i as u32, CIRCLE_SIDES as u32);
+        i += 1;
+    }
+    points
+};
+
 /// What a part looks like, in its own units along +x from its joint.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Shape {

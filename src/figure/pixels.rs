@@ -9,8 +9,9 @@
 //! Every map is a rigid motion of the fitted plane, so a circle stays a circle of radius
 //! r·s.
 
-use super::part::{walk_parts, Part, Pose, Shape};
+use super::part::{walk_parts, Part, Pose, Shape, CIRCLE, CIRCLE_SIDES};
 use crate::error::{Error, MAX_PART_PIXELS};
+use crate::math::real::round_half_away;
 use crate::math::trig::BinaryAngle;
 use crate::math::Real;
 use crate::render::circle::drawn_as_circle;
@@ -18,22 +19,6 @@ use crate::render::circle::drawn_as_circle;
 /// A point in Q16.16: pixels on the target (pixel (x, y) centred on (x, y)), or the fit's
 /// provisional plane.
 pub(crate) type Fixed = (i64, i64);
-
-/// Corners a circle's outline goes through.
-const CIRCLE_SIDES: usize = 16;
-
-/// 16 points about a unit circle (cos, sin) in Q30, for circles: the `Real` walk's.
-// Indexing runs at compile time only: an out-of-range index would fail the build.
-#[allow(clippy::indexing_slicing)]
-const CIRCLE: [(i32, i32); CIRCLE_SIDES] = {
-    let mut points = [(0, 0); CIRCLE_SIDES];
-    let mut i = 0;
-    while i < CIRCLE_SIDES {
-        points[i] = crate::math::trig::sin_cos(i as u32, CIRCLE_SIDES as u32);
-        i += 1;
-    }
-    points
-};
 
 /// A part's outline where the walk put it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -180,8 +165,7 @@ impl PixelWalk {
             bits << (29 - p)
         })
         .ok()?;
-        let q16 = |v: Real| (v.to_bits() >> 15).wrapping_add(1) >> 1;
-        let origin = (q16(origin.0), q16(origin.1));
+        let origin = (q16_of(origin.0), q16_of(origin.1));
         let walk = Self {
             root: PixelMap::scaled(scale_q30, origin, true),
             scale_q30,
@@ -192,8 +176,10 @@ impl PixelWalk {
 
     /// A walk for measuring: unflipped, with its origin at 0, its unit chosen so that the
     /// longest length of `root`'s parts is about 2¹⁰ (so a figure nested
-    /// [`MAX_FIGURE_DEPTH`](super::part::MAX_FIGURE_DEPTH) deep stays within 2¹⁴), and the factor that takes its
-    /// Q16.16 coordinates back to `Real` bits (a shift left by it, right if negative).
+    /// [`MAX_FIGURE_DEPTH`] deep stays within 2¹⁴), and the factor that takes its Q16.16
+    /// coordinates back to `Real` bits (a shift left by it, right if negative).
+    ///
+    /// [`MAX_FIGURE_DEPTH`]: super::part::MAX_FIGURE_DEPTH
     pub(crate) fn measuring(root: &'static Part) -> (Self, i32) {
         let longest = longest_length(root);
         // The longest length's bits L have their top bit at q; L >> (q − 26) is about
@@ -240,8 +226,11 @@ impl PixelWalk {
     }
 
     /// Every part of `root` in `pose`, depth first, as `visit` sees its outline with the
-    /// part's colour. The walk holds a map a level: deeper than [`MAX_FIGURE_DEPTH`](super::part::MAX_FIGURE_DEPTH) is
-    /// [`WalkError::StackTooDeep`](crate::error::WalkError::StackTooDeep).
+    /// part's colour. The walk holds a map a level: deeper than [`MAX_FIGURE_DEPTH`] is
+    /// [`WalkError::StackTooDeep`].
+    ///
+    /// [`MAX_FIGURE_DEPTH`]: super::part::MAX_FIGURE_DEPTH
+    /// [`WalkError::StackTooDeep`]: crate::error::WalkError::StackTooDeep
     pub(crate) fn walk(
         &self,
         root: &'static Part,
@@ -370,8 +359,10 @@ fn longest_length(root: &'static Part) -> u64 {
     longest
 }
 
-/// Every part of `root`, depth first, at most [`MAX_FIGURE_DEPTH`](super::part::MAX_FIGURE_DEPTH) deep (deeper parts
-/// are left out: the walks themselves report them).
+/// Every part of `root`, depth first, at most [`MAX_FIGURE_DEPTH`] deep (deeper parts are
+/// left out: the walks themselves report them).
+///
+/// [`MAX_FIGURE_DEPTH`]: super::part::MAX_FIGURE_DEPTH
 fn for_each_part(root: &'static Part, mut visit: impl FnMut(&'static Part)) {
     let _ = walk_parts(
         root,
@@ -387,8 +378,10 @@ fn for_each_part(root: &'static Part, mut visit: impl FnMut(&'static Part)) {
 /// A Q16.16 coordinate rounded to a pixel, halves away from zero (as `Real` rounds).
 #[inline(always)]
 pub(crate) fn pixel(v: i64) -> i32 {
-    let magnitude = (v.unsigned_abs() + (1 << 15)) >> 16;
-    let magnitude = i64::try_from(magnitude).unwrap_or(i64::MAX);
-    let rounded = if v < 0 { -magnitude } else { magnitude };
-    rounded.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+    round_half_away(v, 16)
+}
+
+/// A `Real` as Q16.16, rounded (half up).
+pub(crate) fn q16_of(v: Real) -> i64 {
+    (v.to_bits() >> 15).wrapping_add(1) >> 1
 }

@@ -17,6 +17,18 @@ use super::wide::{div_round, shift_round};
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
 pub struct Real(I32F32);
 
+/// Fixed-point `bits` with `fraction_bits` (1 to 32) fraction bits rounded to the nearest
+/// integer, half away from zero, saturating at the i32 range: [`Real::round_to_i32`]'s
+/// rule for any fixed point (the figure's Q16.16 pixels), in 64 bits on the magnitude.
+#[inline(always)]
+pub(crate) fn round_half_away(bits: i64, fraction_bits: u32) -> i32 {
+    let magnitude = (bits.unsigned_abs() + (1 << (fraction_bits - 1))) >> fraction_bits;
+    // At most 2³¹: the negative end reaches i32::MIN exactly, the positive one saturates.
+    let magnitude = i64::try_from(magnitude).unwrap_or(i64::MAX);
+    let rounded = if bits < 0 { -magnitude } else { magnitude };
+    rounded.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+}
+
 impl Real {
     /// Zero.
     pub const ZERO: Self = Self(I32F32::ZERO);
@@ -173,12 +185,7 @@ impl Real {
     /// point an L-system draws.
     #[inline]
     pub fn round_to_i32(self) -> i32 {
-        let bits = self.to_bits();
-        let magnitude = (bits.unsigned_abs() + (1 << 31)) >> 32;
-        // At most 2³¹: the negative end reaches i32::MIN exactly, the positive one saturates.
-        let magnitude = i64::try_from(magnitude).unwrap_or(i64::MAX);
-        let rounded = if bits < 0 { -magnitude } else { magnitude };
-        rounded.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+        round_half_away(self.to_bits(), 32)
     }
 
     /// The value as `f64` (exact to 53 significant bits); for tests and host output.

@@ -171,10 +171,7 @@ mod firmware {
                     order,
                     orientation,
                 } if system.alternatives.is_empty() => {
-                    let degrees = match system.angle {
-                        tinyfractal::Angle::Divisions(n) => 360.0 / f32::from(n.max(1)),
-                        tinyfractal::Angle::Degrees(d) => d.to_f64() as f32,
-                    };
+                    let degrees = tinyfractal_scenes::naive::turn_degrees(system.angle);
                     let up = orientation == tinyfractal::render::Orientation::Up;
                     Some(Self::LSystem(system, degrees, order, up))
                 }

@@ -703,6 +703,14 @@ pub fn figure_f32<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -> 
     drawn
 }
 
+/// How far a system's `+` and `-` turn, in degrees, as a sketch's constant has it.
+pub fn turn_degrees(angle: tinyfractal::Angle) -> f32 {
+    match angle {
+        tinyfractal::Angle::Divisions(n) => 360.0 / f32::from(n.max(1)),
+        tinyfractal::Angle::Degrees(d) => d.to_f64() as f32,
+    }
+}
+
 /// The longest string the naive L-system expands, in bytes: one buffer, expanded in place.
 pub const NAIVE_STRING: usize = 8 * 1024;
 
@@ -950,8 +958,8 @@ fn fill_rect_in<D: DrawTarget<Color = Gray4>>(
 /// The cube split in 27 recursively, the 20 kept (all but the centre and the face
 /// centres), each kept cube of the last level drawn as its three faces towards an
 /// isometric camera, two filled triangles each (Adafruit's `fillTriangle`) in three
-/// greys, back to front. The camera's axes are projected once (`micromath` sines), each corner then three
-/// multiply-adds an axis; the sponge's projected box fitted to the target less a 2-pixel
+/// greys, back to front. The camera's axes are projected once (`micromath` sines), each
+/// corner then three multiply-adds an axis; the sponge's projected box fitted to the target less a 2-pixel
 /// margin, centred. Every face of a drawn cube is painted, hidden or not: a sketch does
 /// not cull.
 pub fn sponge_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
@@ -1122,9 +1130,9 @@ pub fn landscape_f32<D: DrawTarget<Color = Gray4>>(
 
 /// A grid of heights drawn from above as a sketch does, in `f32`.
 ///
-/// Each pixel's height read bilinearly, banded (water, sand, grass, rock, snow) by where it lies between the
-/// lowest and highest, and above the sea lit by the slope towards the upper left; each
-/// pixel a grey through `draw_iter`.
+/// Each pixel's height read bilinearly, banded (water, sand, grass, rock, snow) by where
+/// it lies between the lowest and highest, and above the sea lit by the slope towards the
+/// upper left; each pixel a grey through `draw_iter`.
 pub fn relief_f32<D: DrawTarget<Color = Gray4>>(heights: &[f32], side: usize, target: &mut D) {
     const BANDS: [(f32, f32); 6] = [
         (0.0, 0.2),

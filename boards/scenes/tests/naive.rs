@@ -1,13 +1,16 @@
 //! The loops a user would write draw the scene's picture: the L-system sketch lights
 //! about the pixels the engine does (its own fit, so not pixel for pixel).
 
+use std::ops::Range;
+
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
-use tinyfractal::{render::Orientation, Angle};
-use tinyfractal_scenes::{naive::lsystem_f32, Scene, System, FERN, GREY, KOCH_SNOWFLAKE};
+use tinyfractal::render::Orientation;
+use tinyfractal_scenes::naive::{lsystem_f32, turn_degrees};
+use tinyfractal_scenes::{Scene, System, FERN, GREY, KOCH_SNOWFLAKE};
 use tinyfractal_test_support::frame::Frame;
 
-/// The box of the lit pixels and how many there are.
-fn lit(frame: &Frame<Gray4>, ink: Gray4) -> (Point, Point, usize) {
+/// The box of the pixels `chosen` picks, and how many there are.
+fn reach(frame: &Frame<Gray4>, chosen: impl Fn(Gray4) -> bool) -> (Point, Point, usize) {
     let mut count = 0;
     let (mut low, mut high) = (
         Point::new(i32::MAX, i32::MAX),
@@ -15,7 +18,7 @@ fn lit(frame: &Frame<Gray4>, ink: Gray4) -> (Point, Point, usize) {
     );
     for y in 0..frame.size.height as i32 {
         for x in 0..frame.size.width as i32 {
-            if frame.pixel(x, y) == Some(ink) {
+            if frame.pixel(x, y).is_some_and(&chosen) {
                 count += 1;
                 low = low.component_min(Point::new(x, y));
                 high = high.component_max(Point::new(x, y));
@@ -23,6 +26,26 @@ fn lit(frame: &Frame<Gray4>, ink: Gray4) -> (Point, Point, usize) {
         }
     }
     (low, high, count)
+}
+
+/// Asserts that a sketch's pixels (box and count, as [`reach`] gives them) are about the
+/// scene's: each corner within `slack` pixels, the count's ratio to the scene's in
+/// `ratios`.
+fn assert_alike(
+    sketch: (Point, Point, usize),
+    ours: (Point, Point, usize),
+    slack: i32,
+    ratios: Range<f64>,
+) {
+    let ((low, high, count), (our_low, our_high, our_count)) = (sketch, ours);
+    for (a, b) in [(low, our_low), (high, our_high)] {
+        assert!(
+            (a - b).x.abs() <= slack && (a - b).y.abs() <= slack,
+            "{a:?} {b:?}"
+        );
+    }
+    let ratio = count as f64 / our_count as f64;
+    assert!(ratios.contains(&ratio), "{count} against {our_count}");
 }
 
 #[test]
@@ -39,11 +62,8 @@ fn the_lsystem_sketch_draws_the_scenes_picture() {
             order,
             orientation,
         };
-        scene.draw(&mut ours, &GREY).unwrap();
-        let degrees = match system.angle {
-            Angle::Divisions(n) => 360.0 / f32::from(n),
-            Angle::Degrees(d) => d.to_f64() as f32,
-        };
+        let work = scene.draw(&mut ours, &GREY).unwrap();
+        let degrees = turn_degrees(system.angle);
         let mut sketch = Frame::filled(size, Gray4::BLACK);
         let rules = (system.axiom, system.rules, system.draw_symbols);
         let lines = lsystem_f32(
@@ -53,22 +73,18 @@ fn the_lsystem_sketch_draws_the_scenes_picture() {
             orientation == Orientation::Up,
             &mut sketch,
         );
-        let (low, high, count) = lit(&sketch, Gray4::WHITE);
-        let (our_low, our_high, our_count) = lit(&ours, GREY.ink);
-        // The same lines (the scene counts segments the same way)...
-        let mut count_target = Frame::filled(size, GREY.background);
-        let segments = match scene.draw(&mut count_target, &GREY).unwrap() {
-            tinyfractal_scenes::Work::Segments(n) => n,
-            other => panic!("{other:?}"),
+        // The same lines (the scene counts segments the same way), in about the same box
+        // (the fits' margins differ by a few pixels), lighting about as many pixels.
+        let tinyfractal_scenes::Work::Segments(segments) = work else {
+            panic!("{work:?}")
         };
         assert_eq!(lines, segments);
-        // ...in about the same box (the fits' margins differ by a few pixels)...
-        for (a, b) in [(low, our_low), (high, our_high)] {
-            assert!((a - b).x.abs() <= 4 && (a - b).y.abs() <= 4, "{a:?} {b:?}");
-        }
-        // ...lighting about as many pixels.
-        let ratio = count as f64 / our_count as f64;
-        assert!((0.75..1.33).contains(&ratio), "{count} against {our_count}");
+        assert_alike(
+            reach(&sketch, |c| c == Gray4::WHITE),
+            reach(&ours, |c| c == GREY.ink),
+            4,
+            0.75..1.33,
+        );
     }
 }
 
@@ -95,13 +111,12 @@ fn the_bezier_sketch_draws_the_scenes_curves() {
     let place = design_placement(sketch.bounding_box());
     let lines = bezier_f32(&SMOOTH_FIGURE, place, 16, &mut sketch);
     assert_eq!(lines, 16 * SMOOTH_FIGURE.len() as u64);
-    let (low, high, count) = lit(&sketch, Gray4::WHITE);
-    let (our_low, our_high, our_count) = lit(&ours, GREY.ink);
-    for (a, b) in [(low, our_low), (high, our_high)] {
-        assert!((a - b).x.abs() <= 1 && (a - b).y.abs() <= 1, "{a:?} {b:?}");
-    }
-    let ratio = count as f64 / our_count as f64;
-    assert!((0.8..1.25).contains(&ratio), "{count} against {our_count}");
+    assert_alike(
+        reach(&sketch, |c| c == Gray4::WHITE),
+        reach(&ours, |c| c == GREY.ink),
+        1,
+        0.8..1.25,
+    );
 }
 
 /// The profile sketch draws one column of ground a pixel column, from the bottom, the
@@ -143,30 +158,12 @@ fn the_sponge_sketch_draws_the_scenes_sponge() {
     .unwrap();
     let mut sketch = Frame::filled(size, Gray4::BLACK);
     assert_eq!(sponge_f32(2, &mut sketch), 400);
-    let painted = |frame: &Frame<Gray4>, background: Gray4| {
-        let mut count = 0;
-        let (mut low, mut high) = (
-            Point::new(i32::MAX, i32::MAX),
-            Point::new(i32::MIN, i32::MIN),
-        );
-        for y in 0..64 {
-            for x in 0..128 {
-                if frame.pixel(x, y) != Some(background) {
-                    count += 1;
-                    low = low.component_min(Point::new(x, y));
-                    high = high.component_max(Point::new(x, y));
-                }
-            }
-        }
-        (low, high, count)
-    };
-    let (low, high, count) = painted(&sketch, Gray4::BLACK);
-    let (our_low, our_high, our_count) = painted(&ours, GREY.background);
-    for (a, b) in [(low, our_low), (high, our_high)] {
-        assert!((a - b).x.abs() <= 4 && (a - b).y.abs() <= 4, "{a:?} {b:?}");
-    }
-    let ratio = count as f64 / our_count as f64;
-    assert!((0.8..1.25).contains(&ratio), "{count} against {our_count}");
+    assert_alike(
+        reach(&sketch, |c| c != Gray4::BLACK),
+        reach(&ours, |c| c != GREY.background),
+        4,
+        0.8..1.25,
+    );
 }
 
 /// The landscape's sketch makes its 33² heights and paints every pixel, in bands: the
