@@ -5,13 +5,16 @@
 mod common;
 
 use common::{
-    escape_values as values, escape_view as view, julia_parameter as julia_of,
+    decimal_fixed, escape_values as values, escape_view as view, julia_parameter as julia_of,
     sample_point as point,
 };
+use embedded_graphics::geometry::Size;
+use num_bigint::BigInt;
 use tinyfractal::{
-    error::ViewError,
-    escape::{Algorithm, Render, Shading, DISTANCE_INSIDE},
-    Coord, Error, Fractal, View,
+    escape::{Algorithm, ReferencePoint, Render, Shading, DISTANCE_INSIDE},
+    math::DeepCoord,
+    render::DwellBuffer,
+    Coord, Fractal, View,
 };
 
 /// The estimated distance of the pixel at `p` in pixels (`spacing` a pixel), or `None`
@@ -212,13 +215,197 @@ fn strands_stay_connected_on_a_one_bit_panel() {
     );
 }
 
+/// Fractional bits of the deep model.
+const P: u32 = 256;
+
+/// `value` (fixed point, `bits` fractional bits) in f64, from its top 62 bits.
+fn big_to_f64(value: &BigInt, bits: u32) -> f64 {
+    let shift = value.bits().saturating_sub(62);
+    let top = i64::try_from(&(value >> shift)).unwrap();
+    top as f64 * 2f64.powi(shift as i32 - bits as i32)
+}
+
+/// [`model_distance`] for the Mandelbrot set in P-bit fixed point (z and dz both), for
+/// views far below f64's resolution: the distance in units of the spacing, or `None`.
+fn deep_model_distance(c: (&BigInt, &BigInt), max: u32, spacing: f64) -> Option<f64> {
+    let one = BigInt::from(1) << P;
+    let square = |a: &BigInt, b: &BigInt| (a * b) >> P;
+    let step = |z: &mut (BigInt, BigInt), dz: &mut (BigInt, BigInt)| {
+        let (x, y) = (&z.0, &z.1);
+        *dz = (
+            ((square(x, &dz.0) - square(y, &dz.1)) << 1) + &one,
+            (square(x, &dz.1) + square(y, &dz.0)) << 1,
+        );
+        *z = (square(x, x) - square(y, y) + c.0, (square(x, y) << 1) + c.1);
+    };
+    let modulus_squared = |z: &(BigInt, BigInt)| square(&z.0, &z.0) + square(&z.1, &z.1);
+    let (mut z, mut dz) = ((c.0.clone(), c.1.clone()), (one.clone(), BigInt::from(0)));
+    let four = &one * 4;
+    let mut n = 1;
+    while modulus_squared(&z) <= four {
+        if n >= max {
+            return None;
+        }
+        step(&mut z, &mut dz);
+        n += 1;
+    }
+    let far = &one * 65536;
+    for _ in 0..32 {
+        if modulus_squared(&z) >= far {
+            break;
+        }
+        step(&mut z, &mut dz);
+    }
+    let (x, y) = (big_to_f64(&z.0, P), big_to_f64(&z.1, P));
+    let (dx, dy) = (big_to_f64(&dz.0, P), big_to_f64(&dz.1, P));
+    let modulus = x.hypot(y);
+    Some(modulus * modulus.ln() / dx.hypot(dy) / spacing)
+}
+
+/// A perturbed render's values of `view`.
+fn perturbed_values(view: View) -> Vec<u16> {
+    let size = view.size();
+    let mut storage = vec![ReferencePoint::default(); view.max_iterations() as usize + 1];
+    let mut values = vec![0; (size.width * size.height) as usize];
+    let mut render = Render::perturbed(view, Algorithm::Fast, &mut storage).unwrap();
+    let Ok(_) = render.run(&mut DwellBuffer::new(&mut values, size.width));
+    values
+}
+
+/// The deep model's distances, in pixels, of the pixels of the Mandelbrot view `view` at
+/// `centre` (decimal text), `width` across: c = centre + (2i + 1 − W)·width / 2W, and −
+/// for rows, down.
+fn model_distances(view: &View, centre: (&str, &str), width: &str) -> Vec<Option<f64>> {
+    let size = view.size();
+    let fixed = |text: &str| decimal_fixed(text, P);
+    let (cx, cy, w) = (fixed(centre.0), fixed(centre.1), fixed(width));
+    let (pw, ph) = (i64::from(size.width), i64::from(size.height));
+    let spacing = big_to_f64(&w, P) / size.width as f64;
+    let mut distances = Vec::new();
+    for j in 0..ph {
+        let ci = &cy - (&w * (2 * j + 1 - ph)) / (2 * pw);
+        for i in 0..pw {
+            let cr = &cx + (&w * (2 * i + 1 - pw)) / (2 * pw);
+            distances.push(deep_model_distance(
+                (&cr, &ci),
+                view.max_iterations(),
+                spacing,
+            ));
+        }
+    }
+    distances
+}
+
+/// Perturbed deep views estimate distances as a 256-bit model of z and dz does: at 10⁻¹²
+/// in the seahorse valley, beside a minibrot at 10⁻²⁰ (whose pixels rebase, z passing far
+/// closer to 0 than a fixed point holds while dz is huge) and at a Misiurewicz point at
+/// 10⁻³⁰ (the series skipping most iterations, dz starting from its derivative): the
+/// pixels drawn as the set, and the distance shading.
 #[test]
-fn perturbation_refuses_the_estimate() {
-    let base = &views()[0];
-    let mut storage = vec![tinyfractal::escape::ReferencePoint::default(); 300];
-    let perturbed = Render::perturbed(base.with_distance(WIDTH), Algorithm::Fast, &mut storage);
-    assert!(matches!(
-        perturbed,
-        Err(Error::View(ViewError::NotWithPerturbation))
-    ));
+fn perturbed_views_estimate_as_a_big_number_model() {
+    let views = [
+        (
+            (
+                "-0.743643887037158704752191506114774",
+                "0.131825904205311970493132056385139",
+            ),
+            "1e-12",
+            4000,
+        ),
+        (
+            (
+                "-0.1010963641075709111436661491590857441256830106",
+                "0.9562865109493675115147318935859242764076436625",
+            ),
+            "1e-20",
+            3000,
+        ),
+        (
+            (
+                "-0.1010963638456221610257854457386225654638",
+                "0.9562865108091415007710960577299774358098",
+            ),
+            "1e-30",
+            1000,
+        ),
+    ];
+    let width = f64::from(WIDTH) / 256.0;
+    let (mut marked, mut unmarked) = (0, 0);
+    for (centre, span, max) in views {
+        let parse = |text: &str| DeepCoord::parse(text).unwrap();
+        let base = View::deep(
+            Fractal::Mandelbrot,
+            (parse(centre.0), parse(centre.1)),
+            parse(span),
+            Size::new(40, 30),
+            max,
+        )
+        .unwrap();
+        let distances = model_distances(&base, centre, span);
+        let near = perturbed_values(base.with_distance(WIDTH));
+        let (mut compared, mut same) = (0, 0);
+        for (&value, distance) in near.iter().zip(&distances) {
+            let Some(distance) = *distance else {
+                assert_eq!(value, max as u16, "{span}: an inside pixel left the set");
+                continue;
+            };
+            if (distance / width - 1.0).abs() < 0.1 {
+                continue;
+            }
+            compared += 1;
+            let drawn = value == max as u16 + 1;
+            same += usize::from(drawn == (distance < width));
+            marked += usize::from(drawn);
+            unmarked += usize::from(!drawn);
+        }
+        eprintln!("{span}: {same} of {compared} alike");
+        assert!(same * 100 >= compared * 99, "{span}: {same} of {compared}");
+
+        let shaded = perturbed_values(base.with_shading(Shading::Distance).unwrap());
+        let want: Vec<f64> = distances
+            .iter()
+            .map(|distance| match distance {
+                None => DISTANCE_INSIDE as f64,
+                Some(d) => (1.0 + (16.0 * (d.log2() + 4.0)).floor()).clamp(1.0, 255.0),
+            })
+            .collect();
+        let close = shaded
+            .iter()
+            .zip(&want)
+            .filter(|(&got, &want)| (f64::from(got) - want).abs() <= 1.0)
+            .count();
+        assert!(
+            close * 100 >= shaded.len() * 99,
+            "{span}: {close} of {} shaded alike",
+            shaded.len()
+        );
+        let mut levels: Vec<u16> = want.iter().map(|&w| w as u16).collect();
+        levels.sort_unstable();
+        levels.dedup();
+        assert!(levels.len() >= 10, "{span}: only {} levels", levels.len());
+    }
+    assert!(
+        marked >= 20 && unmarked >= 20,
+        "{marked} pixels drawn as the set, {unmarked} not: both kinds must be there"
+    );
+}
+
+/// With distance shading a pixel that escapes at step 256 under a higher cap is not the
+/// set (whose value, `DISTANCE_INSIDE`, is 256 too).
+#[test]
+fn an_escape_at_the_inside_values_count_is_not_the_set() {
+    let base = view(Fractal::Mandelbrot, (-0.745, 0.11), 0.03, (128, 96), 1000);
+    let shaded = values(
+        base.with_shading(Shading::Distance).unwrap(),
+        Algorithm::Exact,
+    );
+    let dwells = values(base, Algorithm::Exact);
+    let at_256: Vec<usize> = (0..dwells.len()).filter(|&i| dwells[i] == 256).collect();
+    assert!(
+        !at_256.is_empty(),
+        "no pixel escapes at 256: the test tests nothing"
+    );
+    for i in at_256 {
+        assert_ne!(shaded[i], DISTANCE_INSIDE, "pixel {i} escapes at 256");
+    }
 }

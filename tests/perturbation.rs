@@ -4,6 +4,8 @@
 //! reference passes near 0 so its pixels must rebase) and 10⁻³⁰ (a spiral around a
 //! Misiurewicz point); and near the cusp at 0.25, where long orbits need `Wide`.
 
+mod common;
+
 use embedded_graphics::geometry::Size;
 use num_bigint::BigInt;
 use tinyfractal::{
@@ -17,29 +19,9 @@ use tinyfractal::{
 /// Fractional bits of the model.
 const P: u32 = 256;
 
-/// Decimal text to P-bit fixed point, rounded toward −∞ (independent of the crate's
-/// parser).
+/// Decimal text to P-bit fixed point, rounded toward −∞.
 fn fixed(text: &str) -> BigInt {
-    let (mantissa, exponent) = match text.split_once(['e', 'E']) {
-        Some((m, e)) => (m, e.parse::<i64>().unwrap()),
-        None => (text, 0),
-    };
-    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let digits: BigInt = format!("{whole}{fraction}").parse().unwrap();
-    let power = exponent - fraction.len() as i64;
-    let scaled = digits << P;
-    if power >= 0 {
-        scaled * BigInt::from(10).pow(power as u32)
-    } else {
-        let divisor = BigInt::from(10).pow((-power) as u32);
-        let quotient = &scaled / &divisor;
-        // BigInt division truncates toward zero; floor it.
-        if &quotient * &divisor != scaled && scaled < BigInt::from(0) {
-            quotient - 1
-        } else {
-            quotient
-        }
-    }
+    common::decimal_fixed(text, P)
 }
 
 /// Each pixel's dwell, z ← z² + c from 0 in P-bit fixed point, c = centre + (2i + 1 − W)

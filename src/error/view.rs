@@ -77,9 +77,8 @@ pub enum ViewError {
     ZoomNeedsFixedTier,
     /// Fractint's `outside=` modes colour dwells, not smooth values: both were asked.
     OutsideModeWithSmooth,
-    /// An `inside=` mode or distance estimation asked of a perturbed render: its pixels'
-    /// last points and derivatives are not kept (render the view in a fixed tier, or
-    /// without them).
+    /// An `inside=` mode asked of a perturbed render: its pixels' last points are not kept
+    /// (render the view in a fixed tier, or without it).
     NotWithPerturbation,
 }
 
@@ -132,9 +131,9 @@ impl fmt::Display for ViewError {
                  palette that is not smooth, or leave out the outside mode",
             ),
             Self::NotWithPerturbation => f.write_str(
-                "an inside mode other than maxiter, and distance estimation, need a fixed-point \
-                 tier, and this view is rendered by perturbation: leave them out, or widen the \
-                 view to a fixed tier's depth",
+                "an inside mode other than maxiter needs a fixed-point tier, and this view is \
+                 rendered by perturbation: leave it out, or widen the view to a fixed tier's \
+                 depth",
             ),
             Self::ZoomNeedsFixedTier => f.write_str(
                 "a zoom frame computes in a fixed-point tier, and this view needs \

@@ -6,13 +6,17 @@
 //! product) for `Deep` and `Wide`, one copy of the code each, with the derivative dz
 //! (dz ← 2·z·dz + 1 for the Mandelbrot set, from
 //! dz₁ = 1; dz ← 2·z·dz for a Julia set, from dz₀ = 1) carried beside it as a mantissa pair
-//! and a shared exponent, since it grows as fast as the orbit runs. Past the escape both
-//! go on to |z| ≥ 256, where the estimate holds, and d is compared through the log table:
-//! no floats.
+//! and a shared exponent, since it grows as fast as the orbit runs. A perturbed pixel runs
+//! its differences again (see [`Perturbation::estimated`]), its derivative from the full
+//! point Zₘ + δ in a mantissa and exponent of its own: at a deep zoom z passes far closer
+//! to 0 than any fixed point holds while dz is huge. Past the escape both go on to
+//! |z| ≥ 256, where the estimate holds, and d is compared through the log table: no floats.
 
 use super::arithmetic::{Arithmetic, HighWords};
 use super::kernel::Kernel;
-use super::view::{Tier, DISTANCE_INSIDE};
+use super::perturbation::Perturbation;
+use super::scaled::{escaped, may_rebase, rebased, step, Scaled};
+use super::view::Tier;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 use crate::math::wide::mul_i32_wide;
 
@@ -41,6 +45,9 @@ impl Derivative {
         e: 0,
     };
 
+    /// dz₀ = 0: the derivative of the Mandelbrot set's z₀ = 0.
+    const ZERO: Self = Self { x: 0, y: 0, e: -30 };
+
     /// dz ← 2·z·dz, plus 1 if `plus_one`, z with `bits` fraction bits and |re|, |im| < 2³⁰
     /// in them (every product below 2⁶¹).
     #[inline(always)]
@@ -53,6 +60,42 @@ impl Derivative {
             x += 1 << (30 - self.e);
         }
         self.normalise(x, y);
+    }
+
+    /// dz ← 2·z·dz + 1, z = (x + iy)·2^−`s` with mantissas below 2⁶² (a perturbed pixel's
+    /// point, of any size): its top 31 bits are taken, so the product keeps as many bits
+    /// as [`step`](Self::step)'s.
+    fn step_scaled(&mut self, z: Scaled) {
+        let (zx, zy) = ((z.x >> 31) as i32, (z.y >> 31) as i32);
+        // z = (zx + i·zy)·2^(31 − s) and dz = (x + iy)·2^(e − 30): 2·z·dz is the
+        // product p·2^(2 − s + e); taken down 30 bits, a mantissa in Q30 at exponent
+        // e + 62 − s.
+        let x = (mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> 30;
+        let y = (mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> 30;
+        let mut e = i64::from(self.e) + 62 - i64::from(z.s);
+        let (mut x, mut y) = (x, y);
+        if e < -30 {
+            // Far below 1: kept at 1's exponent, where 1 has the mantissa's top bits.
+            let down = (-30 - e).min(63);
+            (x, y) = (x >> down, y >> down);
+            e = -30;
+        }
+        self.e = e.min(i64::from(i32::MAX / 2)) as i32;
+        if self.e <= 30 {
+            x += 1 << (30 - self.e);
+        }
+        self.normalise(x, y);
+    }
+
+    /// The derivative (x + iy)·2^−`s` (mantissas below 2⁶², as [`Scaled`] keeps them).
+    fn of_scaled(value: Scaled) -> Self {
+        let mut dz = Self {
+            x: 0,
+            y: 0,
+            e: 62 - value.s,
+        };
+        dz.normalise(value.x >> 32, value.y >> 32);
+        dz
     }
 
     /// The mantissas `x`, `y` (at the current exponent) brought back to [2²⁹, 2³¹).
@@ -131,57 +174,104 @@ impl Kernel {
             }
             (i64::from(x) << 32, i64::from(y) << 32)
         };
-        let (x, y) = z;
-        // On to |z| ≥ 256 in Q20, as the smooth value goes (`smooth_value`).
-        let q20 = |v: i64| v >> 40;
-        let (cr, ci) = (q20(c.0), q20(c.1));
-        let (mut x, mut y) = (q20(x), q20(y));
-        let mut steps = 0;
-        while steps < STEPS_PAST_ESCAPE && x.abs() < RADIUS_Q20 && y.abs() < RADIUS_Q20 {
-            let (x2, y2) = (x * x, y * y);
-            if x2 + y2 >= RADIUS_Q20 * RADIUS_Q20 {
-                break;
-            }
-            dz.step((x as i32, y as i32), 20, mandelbrot);
-            (x, y) = (((x2 - y2) >> 20) + cr, ((2 * x * y) >> 20) + ci);
-            steps += 1;
-        }
-        // |z|² in Q16 from Q8 parts (|z| < 2¹⁷ after the last step).
-        let (x, y) = (x >> 12, y >> 12);
-        let estimate = (|| {
-            let log_square = i64::from(log2((x * x + y * y).unsigned_abs(), 16)?);
-            let log_log = i64::from(log2(u64::try_from(log_square).ok()?, LOG2_FRAC_BITS)?);
-            let numerator = log_square / 2 + log_log + LOG2_HALF_LN2;
-            Some(numerator - dz.log2_magnitude()? - i64::from(self.spacing_log2))
-        })();
+        let (estimate, steps) = log2_pixels_past_escape(z, c, dz, mandelbrot, self.spacing_log2);
         (estimate, k + steps)
     }
 
-    /// The value of an escaped orbit from `first` (Q60) as distance estimation has it:
-    /// one above the inside value if it lies within the estimate's width of the set (drawn
-    /// as the set, told from it), the distance shading's value if the view shades by
-    /// distance; `None` for the ordinary value. Also the steps the estimate took.
+    /// The value of an escaped orbit from `first` (Q60) as distance estimation has it (see
+    /// [`Estimate::value`]): `None` for the ordinary value. Also the steps the estimate
+    /// took.
     pub(super) fn estimated(&self, first: (i64, i64), c: (i64, i64)) -> (Option<u32>, u32) {
         let (log2_pixels, steps) = match self.tier {
             Tier::Narrow | Tier::Medium | Tier::Standard => self.log2_distance::<false>(first, c),
             _ => self.log2_distance::<true>(first, c),
         };
-        // The orbit run again in its own arithmetic may not escape where the tier's did (a
-        // point at the boundary): the nearest the shading has, or the ordinary value.
-        let Some(log2_pixels) = log2_pixels else {
-            return (self.distance_shading.then_some(1), steps);
+        let value = self
+            .estimate
+            .and_then(|estimate| estimate.value(log2_pixels, self.inside));
+        (value, steps)
+    }
+}
+
+/// log₂ of the estimated distance in pixels (Q16) of an orbit that escaped at z with
+/// derivative `dz` (z and c in Q60) from a pixel
+/// spacing of 2^`spacing_log2` (Q16), taken on to |z| ≥ 256 in Q20 as the smooth value
+/// goes (`smooth_value`); also the steps that took.
+fn log2_pixels_past_escape(
+    (x, y): (i64, i64),
+    c: (i64, i64),
+    mut dz: Derivative,
+    plus_one: bool,
+    spacing_log2: i32,
+) -> (Option<i64>, u32) {
+    let q20 = |v: i64| v >> 40;
+    let (cr, ci) = (q20(c.0), q20(c.1));
+    let (mut x, mut y) = (q20(x), q20(y));
+    let mut steps = 0;
+    while steps < STEPS_PAST_ESCAPE && x.abs() < RADIUS_Q20 && y.abs() < RADIUS_Q20 {
+        let (x2, y2) = (x * x, y * y);
+        if x2 + y2 >= RADIUS_Q20 * RADIUS_Q20 {
+            break;
+        }
+        dz.step((x as i32, y as i32), 20, plus_one);
+        (x, y) = (((x2 - y2) >> 20) + cr, ((2 * x * y) >> 20) + ci);
+        steps += 1;
+    }
+    // |z|² in Q16 from Q8 parts (|z| < 2¹⁷ after the last step).
+    let (x, y) = (x >> 12, y >> 12);
+    let estimate = (|| {
+        let log_square = i64::from(log2((x * x + y * y).unsigned_abs(), 16)?);
+        let log_log = i64::from(log2(u64::try_from(log_square).ok()?, LOG2_FRAC_BITS)?);
+        let numerator = log_square / 2 + log_log + LOG2_HALF_LN2;
+        Some(numerator - dz.log2_magnitude()? - i64::from(spacing_log2))
+    })();
+    (estimate, steps)
+}
+
+impl Perturbation<'_> {
+    /// log₂ of the estimated distance in pixels (Q16) of the escaping pixel offset by `c`
+    /// (δc; `point` its c in Q28), its differences run again from the series' skip as
+    /// `dwell` ran them, with dz from the series' slope there (or dz₀ = 0); `None` if it
+    /// does not escape by the cap. Also the steps that took. Out of line: the pixels'
+    /// loop carries nothing for it.
+    #[inline(never)]
+    pub(super) fn estimated(&self, c: Scaled, point: (i32, i32)) -> (Option<i64>, u32) {
+        let skip = self.series.skip();
+        let (mut delta, mut dz) = if skip > 0 {
+            let slope = Derivative::of_scaled(self.series.slope(c));
+            (self.series.delta(c), slope)
+        } else {
+            (Scaled::ZERO, Derivative::ZERO)
         };
-        if self
-            .near_log2
-            .is_some_and(|near| log2_pixels < i64::from(near))
-        {
-            return (Some((self.inside + 1).min(u32::from(u16::MAX))), steps);
+        let last = self.reference.len().saturating_sub(1);
+        let (mut m, mut n) = (skip as usize, skip);
+        while n < self.max {
+            let Some(&z) = self.reference.get(m) else {
+                break;
+            };
+            // z = Zₘ + δ, in its own exponent (the sum is always made).
+            if let Some(point) = rebased(z.0, delta, true) {
+                dz.step_scaled(point);
+            }
+            delta = step(delta, z.0, c);
+            m += 1;
+            n += 1;
+            let Some(&next) = self.reference.get(m) else {
+                break;
+            };
+            if let Some(z) = escaped(next.0, delta) {
+                let q60 = |(x, y): (i32, i32)| (i64::from(x) << 32, i64::from(y) << 32);
+                let (estimate, steps) =
+                    log2_pixels_past_escape(q60(z), q60(point), dz, true, self.spacing_log2);
+                return (estimate, n - skip + steps);
+            }
+            if m == last || may_rebase(next.0, delta) {
+                if let Some(z) = rebased(next.0, delta, m == last) {
+                    delta = z;
+                    m = 0;
+                }
+            }
         }
-        if self.distance_shading {
-            let value = 1 + ((log2_pixels + (4 << LOG2_FRAC_BITS)) >> 12);
-            let value = value.clamp(1, i64::from(DISTANCE_INSIDE) - 1);
-            return (Some(value as u32), steps);
-        }
-        (None, steps)
+        (None, n - skip)
     }
 }

@@ -19,6 +19,7 @@
 //! multiplies and shifts back), and one generic `orbit` iterates them all, so each tier's
 //! loop is compiled with its arithmetic in line (why not a macro: docs/performance.md).
 
+use super::estimate::Estimate;
 use super::modes::{Inside, Outside};
 use super::view::{Fractal, Parts, Shading, Tier, View};
 use crate::math::log::log2;
@@ -108,10 +109,7 @@ pub(crate) struct Kernel {
     pub(super) plain_escape: bool,
     /// Whether escaping orbits are run again for their distance (see `distance`): the
     /// view asks for a width (`near_log2`) or shades by distance.
-    pub(super) estimates: bool,
-    /// log₂ of the width in pixels within which a point is drawn as the set, Q16.
-    pub(super) near_log2: Option<i32>,
-    pub(super) distance_shading: bool,
+    pub(super) estimate: Option<Estimate>,
     /// log₂ of the pixel spacing, Q16.
     pub(super) spacing_log2: i32,
     /// The Julia parameter, or `None` for the Mandelbrot set.
@@ -151,13 +149,8 @@ impl Kernel {
             smooth: view.shading == Shading::Smooth,
             outside: view.outside,
             inside_mode: view.inside,
-            plain_escape: view.shading != Shading::Smooth && view.outside == Outside::Iter,
-            estimates: view.estimates_distance(),
-            near_log2: match view.distance {
-                0 => None,
-                width => log2(u64::from(width), 8),
-            },
-            distance_shading: view.shading == Shading::Distance,
+            plain_escape: view.shading == Shading::Dwell && view.outside == Outside::Iter,
+            estimate: Estimate::of(view),
             spacing_log2: log2(view.spacing.unsigned_abs(), 60).unwrap_or(0),
             julia: match view.fractal {
                 Fractal::Mandelbrot => None,
@@ -180,6 +173,24 @@ impl Kernel {
         kernel
     }
 
+    /// This kernel without distance estimation: where it shaded by distance, dwells, the
+    /// cap the inside value (a perturbed render's finish, whose pixels are estimated by
+    /// perturbation).
+    pub(crate) fn without_estimate(self) -> Self {
+        match self.estimate {
+            Some(estimate) if estimate.shades() => Self {
+                estimate: None,
+                inside: self.max,
+                plain_escape: self.outside == Outside::Iter,
+                ..self
+            },
+            _ => Self {
+                estimate: None,
+                ..self
+            },
+        }
+    }
+
     /// Whether this is a Julia set whose critical point 0 escapes (k outside the
     /// Mandelbrot set): dust, with no attracting cycle. Repeat tests there could only find
     /// rounding's own cycles (which never escape either, so an exact render keeps every
@@ -196,7 +207,7 @@ impl Kernel {
             smooth: false,
             outside: Outside::Iter,
             inside_mode: Inside::MaxIter,
-            estimates: false,
+            estimate: None,
             plain_escape: true,
             ..*self
         };
@@ -215,7 +226,7 @@ impl Kernel {
             && !self.smooth
             && matches!(self.outside, Outside::Iter)
             && matches!(self.inside_mode, Inside::MaxIter)
-            && !self.estimates
+            && self.estimate.is_none()
     }
 
     /// The tier the kernel computes in.

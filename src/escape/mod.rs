@@ -34,6 +34,7 @@ pub(crate) mod autopilot;
 pub(crate) mod distance;
 pub(crate) mod drawing;
 pub(crate) mod emit;
+pub(crate) mod estimate;
 pub(crate) mod kernel;
 pub(crate) mod modes;
 pub(crate) mod orbit;

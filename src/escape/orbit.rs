@@ -14,6 +14,7 @@
 use core::marker::PhantomData;
 
 use super::arithmetic::*;
+use super::estimate::Estimate;
 use super::kernel::{Kernel, Kind, Orbit, Part};
 use super::modes::Inside;
 use super::view::SMOOTH_FRACTION_BITS;
@@ -201,7 +202,7 @@ fn orbit_in_line<A: Arithmetic, const TRACEABLE: bool>(kernel: &Kernel, re: i64,
         Ok(orbiting) => orbiting.run(),
         Err(orbit) => orbit,
     };
-    if !TRACEABLE && kernel.estimates {
+    if !TRACEABLE && kernel.estimate.is_some() {
         return estimated_in_tier::<A>(kernel, re, im, orbit);
     }
     orbit
@@ -523,6 +524,10 @@ fn escaped<A: Arithmetic, const TRACEABLE: bool>(
                 kernel.max,
                 kernel.inside,
             )
+        } else if kernel.estimate.is_some_and(Estimate::shades) {
+            // Replaced by the distance shading's value: any value but the inside one
+            // (256), which an escape at step 256 would take under a higher cap.
+            1
         } else {
             kernel.outside.value(n, (A::q28(x), A::q28(y)), kernel.max)
         },

@@ -28,6 +28,7 @@
 //! so its interior pixels run to the cap. A pixel that never rebases is never tested. The
 //! cardioid and bulb test is made at the reference's precision.
 
+use super::estimate::Estimate;
 use super::kernel::MAX_FAST_TOLERANCE;
 use super::kernel::{Kernel, Orbit, Periodicity};
 use super::modes::Outside;
@@ -40,6 +41,7 @@ use super::series::Series;
 use super::view::{half_spacings, Fractal, Shading, View};
 use crate::error::{Error, ViewError};
 use crate::math::big::{DeepCoord, DEEP_LIMBS};
+use crate::math::log::{log2, LOG2_FRAC_BITS};
 use crate::math::wide::mul_wide;
 
 /// Bytes of one [`ReferencePoint`]: the reference orbit's RAM per iteration.
@@ -153,19 +155,23 @@ fn normalise_pair(x: DeepCoord, y: DeepCoord) -> ReferencePoint {
 /// Q60 kernel that finishes them.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Perturbation<'r> {
-    reference: &'r [ReferencePoint],
+    pub(super) reference: &'r [ReferencePoint],
     /// Half the pixel spacing: `spacing_mantissa`·2^−`spacing_exponent`, the mantissa in
     /// [2⁶¹, 2⁶²).
     spacing_mantissa: i64,
     spacing_exponent: i32,
+    /// log₂ of the pixel spacing, Q16 (distance estimation's unit).
+    pub(super) spacing_log2: i32,
     /// The centre in Q28, for the cardioid test and the smooth value.
     centre: (i32, i32),
-    max: u32,
-    inside: u32,
+    pub(super) max: u32,
+    pub(super) inside: u32,
     smooth: bool,
     /// Fractint's `outside=` (see `modes`).
     outside: Outside,
-    series: Series,
+    /// What the view asks of distance estimation, if anything.
+    estimate: Option<Estimate>,
+    pub(super) series: Series,
     finish: Option<Finish>,
     /// Repeats: exact (`None`), or within 2^`repeat_log2` (a sixteenth of a pixel's
     /// spacing at most, and at most `Fast`'s cap of 2⁻²²).
@@ -225,11 +231,15 @@ impl<'r> Perturbation<'r> {
             reference: reference.points,
             spacing_mantissa: mantissa,
             spacing_exponent: exponent,
+            // The spacing is mantissa·2^(62 − exponent) with the mantissa in [2⁶¹, 2⁶²).
+            spacing_log2: log2(mantissa.unsigned_abs(), 61).unwrap_or(0)
+                + ((62 - exponent) << LOG2_FRAC_BITS),
             centre: (q28(view.deep_centre.0), q28(view.deep_centre.1)),
             max: view.max_iterations,
             inside: u32::from(view.inside_value()),
             smooth: view.shading == Shading::Smooth,
             outside: view.outside,
+            estimate: Estimate::of(view),
             series: Series::NONE,
             finish: None,
             // Half the spacing is at least 2^(61 - exponent): a sixteenth of the spacing at
@@ -257,8 +267,10 @@ impl<'r> Perturbation<'r> {
             .get(skip as usize)
             .filter(|_| skip > 0 && finishes_in_high_words(view, &pixels.series))
         {
+            // Escaped pixels are estimated by perturbation (`estimated`), not in Q60.
+            let kernel = Kernel::new(view, Periodicity::Exact).without_estimate();
             pixels.finish = Some(Finish {
-                kernel: Kernel::new(view, Periodicity::Exact),
+                kernel,
                 centre: (view.centre.0.to_bits(), view.centre.1.to_bits()),
                 spacing: view.spacing().to_bits(),
                 reference: (to_q60(z.0.x, z.0.s), to_q60(z.0.y, z.0.s)),
@@ -280,32 +292,57 @@ impl<'r> Perturbation<'r> {
 
     /// The value of the pixel offset by (`re`, `im`) half spacings from the centre.
     pub(crate) fn dwell(&self, re: i64, im: i64) -> Perturbed {
+        match self.iterate(re, im) {
+            (perturbed, true) if self.estimate.is_some() => self.estimated_pixel(perturbed, re, im),
+            (perturbed, _) => perturbed,
+        }
+    }
+
+    /// δc of the pixel offset by (`re`, `im`) half spacings, and its point c in Q28.
+    #[inline(always)]
+    fn point_of(&self, re: i64, im: i64) -> (Scaled, (i32, i32)) {
         let c = self.offset(re, im);
         let point = (
             i64::from(self.centre.0) + to_q28(c.x, c.s),
             i64::from(self.centre.1) + to_q28(c.y, c.s),
         );
-        let point = (clamp_i32(point.0), clamp_i32(point.1));
+        (c, (clamp_i32(point.0), clamp_i32(point.1)))
+    }
+
+    /// [`dwell`](Self::dwell)'s orbit, and whether it escaped. Out of line, apart from
+    /// distance estimation, so its frame (every perturbed render's deepest) carries
+    /// nothing for the estimate.
+    #[inline(never)]
+    fn iterate(&self, re: i64, im: i64) -> (Perturbed, bool) {
+        let (c, point) = self.point_of(re, im);
         let inside = |iterations| Orbit {
             dwell: self.inside,
             iterations,
         };
         if in_cardioid_or_bulb(point.0, point.1) {
-            return Perturbed {
-                orbit: inside(0),
-                rebases: 0,
-                skipped: 0,
-            };
+            let orbit = inside(0);
+            return (
+                Perturbed {
+                    orbit,
+                    rebases: 0,
+                    skipped: 0,
+                },
+                false,
+            );
         }
         let skip = self.series.skip();
         // Steps computed are those past the skip.
-        let result = |orbit: Orbit, rebases| Perturbed {
-            orbit: Orbit {
+        let result = |orbit: Orbit, rebases, escaped| {
+            let orbit = Orbit {
                 iterations: orbit.iterations.saturating_sub(skip),
                 ..orbit
-            },
-            rebases,
-            skipped: skip,
+            };
+            let perturbed = Perturbed {
+                orbit,
+                rebases,
+                skipped: skip,
+            };
+            (perturbed, escaped)
         };
         let mut delta = Scaled::ZERO;
         if skip > 0 {
@@ -315,11 +352,15 @@ impl<'r> Perturbation<'r> {
                     finish.reference.0.saturating_add(to_q60(delta.x, delta.s)),
                     finish.reference.1.saturating_add(to_q60(delta.y, delta.s)),
                 );
-                let c = (
+                let q60 = (
                     finish.point(finish.centre.0, re),
                     finish.point(finish.centre.1, im),
                 );
-                return result(finish.kernel.resume(c, z, skip), 0);
+                let orbit = finish.kernel.resume(q60, z, skip);
+                if orbit.dwell == finish.kernel.inside {
+                    return result(inside(orbit.iterations), 0, false);
+                }
+                return result(orbit, 0, true);
             }
         }
         let last = self.reference.len().saturating_sub(1);
@@ -346,13 +387,11 @@ impl<'r> Perturbation<'r> {
                 } else {
                     self.outside.value(n, z, self.max)
                 };
-                return result(
-                    Orbit {
-                        dwell,
-                        iterations: n,
-                    },
-                    rebases,
-                );
+                let orbit = Orbit {
+                    dwell,
+                    iterations: n,
+                };
+                return result(orbit, rebases, true);
             }
             if m == last || may_rebase(next, delta) {
                 if let Some(z) = rebased(next, delta, m == last) {
@@ -360,12 +399,35 @@ impl<'r> Perturbation<'r> {
                     m = 0;
                     rebases += 1;
                     if repeats.after_rebase(delta, rebases, self.repeat_log2) {
-                        return result(inside(n), rebases);
+                        return result(inside(n), rebases, false);
                     }
                 }
             }
         }
-        result(inside(n), rebases)
+        result(inside(n), rebases, false)
+    }
+}
+
+impl Perturbation<'_> {
+    /// An escaped pixel's result as distance estimation has it (see
+    /// [`estimated`](Perturbation::estimated)): its value, and the steps run again added.
+    #[inline(never)]
+    fn estimated_pixel(&self, perturbed: Perturbed, re: i64, im: i64) -> Perturbed {
+        let Some(estimate) = self.estimate else {
+            return perturbed;
+        };
+        let (c, point) = self.point_of(re, im);
+        let (log2_pixels, steps) = self.estimated(c, point);
+        let orbit = perturbed.orbit;
+        Perturbed {
+            orbit: Orbit {
+                dwell: estimate
+                    .value(log2_pixels, self.inside)
+                    .unwrap_or(orbit.dwell),
+                iterations: orbit.iterations.saturating_add(steps),
+            },
+            ..perturbed
+        }
     }
 }
 

@@ -112,7 +112,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         algorithm: Algorithm,
         storage: &'r mut [ReferencePoint],
     ) -> Result<Self, Error> {
-        if view.inside != Inside::MaxIter || view.estimates_distance() {
+        if view.inside != Inside::MaxIter {
             return Err(Error::View(ViewError::NotWithPerturbation));
         }
         let reference = ReferenceOrbit::compute(&view, storage)?;

@@ -155,6 +155,14 @@ impl Series {
     pub(crate) fn delta(&self, offset: Scaled) -> Scaled {
         self.polynomial.evaluate(offset.times_pow2(self.scale))
     }
+
+    /// dδ/dδc at iteration [`skip`](Self::skip) of the pixel offset by `offset`: the
+    /// series' derivative, Σₖ k·bₖ·uᵏ⁻¹ over R (distance estimation's dz there).
+    pub(crate) fn slope(&self, offset: Scaled) -> Scaled {
+        self.polynomial
+            .slope(offset.times_pow2(self.scale))
+            .times_pow2(self.scale)
+    }
 }
 
 /// The coefficients b₁ … bₖ in one scale (block floating point), bₖ = (x + iy)·2^−`exponent`,
@@ -259,17 +267,37 @@ impl Polynomial {
     /// Σₖ bₖuᵏ by Horner's rule, for |u| < 1.
     #[inline(never)]
     fn evaluate(&self, u: Scaled) -> Scaled {
-        // u in Q62: its parts are below 1.
-        let q62 = |m: i64| {
-            if u.s >= 62 {
-                m >> (u.s - 62).min(63)
-            } else {
-                m << (62 - u.s)
-            }
-        };
-        let (x, y) = horner(&self.coefficients, (q62(u.x), q62(u.y)));
+        let (x, y) = horner(&self.coefficients, in_q62(u));
         scaled((x, y), self.exponent)
     }
+
+    /// Σₖ k·bₖ·uᵏ⁻¹ by Horner's rule, for |u| < 1: each k·bₖ taken down 3 bits, so the
+    /// sum (at most 136 of the largest coefficient) stays below 2⁶².
+    #[inline(never)]
+    fn slope(&self, u: Scaled) -> Scaled {
+        let (ux, uy) = in_q62(u);
+        let (mut x, mut y) = (0i64, 0i64);
+        let coefficients = core::hint::black_box(&self.coefficients[..]);
+        for (index, &(bx, by)) in coefficients.iter().enumerate().rev() {
+            let k = index as i64 + 1;
+            let (px, py) = product((x, y), (ux, uy));
+            x = (px >> 62) as i64 + ((k * bx) >> 3);
+            y = (py >> 62) as i64 + ((k * by) >> 3);
+        }
+        scaled((x, y), self.exponent - 3)
+    }
+}
+
+/// `u`'s parts in Q62 (below 1 for |u| < 1).
+fn in_q62(u: Scaled) -> (i64, i64) {
+    let q62 = |m: i64| {
+        if u.s >= 62 {
+            m >> (u.s - 62).min(63)
+        } else {
+            m << (62 - u.s)
+        }
+    };
+    (q62(u.x), q62(u.y))
 }
 
 /// (x + iy)·2^−`exponent`, normalised (not inlined: flash).

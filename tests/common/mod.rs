@@ -399,3 +399,29 @@ pub fn julia_parameter(view: &tinyfractal::View) -> Option<(f64, f64)> {
         tinyfractal::Fractal::Julia { re, im } => Some((re.to_f64(), im.to_f64())),
     }
 }
+
+/// Decimal text (`-0.25`, `1e-30`) to fixed point with `bits` fractional bits, rounded
+/// toward −∞ (independent of the crate's parser).
+pub fn decimal_fixed(text: &str, bits: u32) -> num_bigint::BigInt {
+    use num_bigint::BigInt;
+    let (mantissa, exponent) = match text.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i64>().unwrap()),
+        None => (text, 0),
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let digits: BigInt = format!("{whole}{fraction}").parse().unwrap();
+    let power = exponent - fraction.len() as i64;
+    let scaled = digits << bits;
+    if power >= 0 {
+        scaled * BigInt::from(10).pow(power as u32)
+    } else {
+        let divisor = BigInt::from(10).pow((-power) as u32);
+        let quotient = &scaled / &divisor;
+        // BigInt division truncates toward zero; floor it.
+        if &quotient * &divisor != scaled && scaled < BigInt::from(0) {
+            quotient - 1
+        } else {
+            quotient
+        }
+    }
+}
