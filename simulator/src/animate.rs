@@ -9,13 +9,13 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc::{sync_channel, Receiver, SyncSender};
 use std::time::Instant;
 
+use crate::progress::ProgressBar;
 use clap::{Args, Subcommand};
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics_simulator::{OutputSettingsBuilder, SimulatorDisplay};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
-use indicatif::ProgressBar;
 use tinyfractal::{
     escape::{Algorithm, Tier, ZoomFrame, ZoomLine},
     lsystem::Wind,

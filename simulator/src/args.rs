@@ -79,6 +79,9 @@ enum Commands {
     /// cycling, j Julia set of the point under the mouse, s save, r reset, PageUp/PageDown
     /// the systems of an L-system file
     Explore(ExploreOptions),
+    /// Serve the playground (the gallery, an L-system editor and the escape-time explorer
+    /// in the browser) on 127.0.0.1, or write its files with --out
+    Serve(crate::serve::ServeOptions),
     /// Print a shell completion script
     Completions {
         /// bash, zsh, fish, elvish or powershell
@@ -161,6 +164,7 @@ impl Commands {
             Self::Gallery { out } => Ok(crate::gallery::run(&out)?),
             Self::Animate(options) => options.run(),
             Self::Explore(options) => options.run(),
+            Self::Serve(options) => Ok(options.run()?),
             Self::Completions { shell } => Ok(completions(shell)?),
         }
     }

@@ -1,9 +1,9 @@
 //! `tinyfractal render attractor` and `animate attractor`: strange attractors as points or
 //! by density, 3D ones projected and turned.
 
+use crate::clock::Instant;
 use std::io::Write;
 use std::path::PathBuf;
-use std::time::Instant;
 
 use clap::Args;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};

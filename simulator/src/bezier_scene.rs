@@ -1,9 +1,9 @@
 //! `tinyfractal render bezier`: quadratic and cubic Bézier curves from their control
 //! points, in the picture's pixel coordinates.
 
+use crate::clock::Instant;
 use std::io::Write;
 use std::path::PathBuf;
-use std::time::Instant;
 
 use clap::Args;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};

@@ -114,7 +114,7 @@ pub fn cycle(
 /// `render figure`.
 pub fn render_figure(options: &FigureOptions) -> Result<(), String> {
     crate::delivery::window_available(options.common.window)?;
-    let started = std::time::Instant::now();
+    let started = crate::clock::Instant::now();
     if let Some(frames) = options.frames {
         if frames == 0 {
             return Err("--frames 0: give at least one frame".into());

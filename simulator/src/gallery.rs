@@ -98,7 +98,33 @@ pub fn run(out: &Path) -> Result<(), String> {
 /// catalogue's order, `done` called as each is finished: the pictures are the same
 /// whatever the number of threads.
 pub fn pictures(done: impl Fn() + Sync) -> Vec<(&'static str, Result<Rendered, String>)> {
-    let jobs: Vec<(&'static str, Job)> = GALLERY
+    jobs()
+        .into_par_iter()
+        .map(|(name, job)| {
+            let result = job.render();
+            done();
+            (name, result)
+        })
+        .collect()
+}
+
+/// The gallery's scenes by name, in the catalogue's order (its PNG files' names).
+pub fn names() -> Vec<&'static str> {
+    jobs().into_iter().map(|(name, _)| name).collect()
+}
+
+/// The gallery's scene `name` as its PNG shows it, or `None` if the gallery has no such
+/// scene (the playground draws it by name).
+pub fn render_named(name: &str) -> Option<Result<Rendered, String>> {
+    jobs()
+        .into_iter()
+        .find(|(scene, _)| *scene == name)
+        .map(|(_, job)| job.render())
+}
+
+/// Every scene of the gallery, from the catalogue's three lists.
+fn jobs() -> Vec<(&'static str, Job)> {
+    GALLERY
         .iter()
         .map(|entry| (entry.name, Job::Scene(entry)))
         .chain(
@@ -111,13 +137,6 @@ pub fn pictures(done: impl Fn() + Sync) -> Vec<(&'static str, Result<Rendered, S
                 .iter()
                 .map(|entry| (entry.name, Job::Ifs(entry))),
         )
-        .collect();
-    jobs.into_par_iter()
-        .map(|(name, job)| {
-            let result = job.render();
-            done();
-            (name, result)
-        })
         .collect()
 }
 

@@ -1,14 +1,14 @@
 //! `render ifs` (the chaos game, from Fractint's `.ifs` files or inline maps) and
 //! `render gingerbread` (the lecture's map).
 
+use crate::clock::Instant;
 use std::io::Write;
 use std::path::PathBuf;
-use std::time::Instant;
 
+use crate::progress::ProgressBar;
 use clap::Args;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
-use indicatif::ProgressBar;
 use tinyfractal::{ifs::IfsPicture, Gingerbread, IfsFile};
 
 use crate::common::Common;

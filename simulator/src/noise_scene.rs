@@ -2,7 +2,9 @@
 //! `render noise`, Perlin's textures as pictures.
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use crate::clock::Instant;
 
 use clap::{Args, ValueEnum};
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*, primitives::Rectangle};

@@ -28,6 +28,8 @@ static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 ///
 /// A run stopped half way leaves the folder as it was. Called once, as the run starts.
 pub fn remove_temporaries_on_interrupt() {
+    // A browser's page (the playground's build) has no signals to handle.
+    #[cfg(not(target_arch = "wasm32"))]
     // A second handler cannot be set (tests call `run` once a process): nothing to do.
     let _ = ctrlc::set_handler(|| {
         let paths = TEMPORARIES

@@ -1,9 +1,9 @@
 //! `tinyfractal render particles` and `animate particles`: the presets' particle systems,
 //! stepped at thirty ticks a second.
 
+use crate::clock::Instant;
 use std::io::Write;
 use std::path::PathBuf;
-use std::time::Instant;
 
 use clap::Args;
 use embedded_graphics::{pixelcolor::Rgb888, prelude::*};

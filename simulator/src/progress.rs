@@ -4,16 +4,78 @@
 use std::time::Duration;
 
 use embedded_graphics::{prelude::*, primitives::Rectangle};
-use indicatif::{ProgressBar, ProgressStyle};
+
+#[cfg(not(target_arch = "wasm32"))]
+pub use indicatif::ProgressBar;
+#[cfg(target_arch = "wasm32")]
+pub use quiet::ProgressBar;
 
 /// A bar over `total` steps.
 pub fn bar(total: u64, what: &str) -> ProgressBar {
     let bar = ProgressBar::new(total);
-    if let Ok(style) = ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} {elapsed}") {
+    #[cfg(not(target_arch = "wasm32"))]
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} {elapsed}")
+    {
         bar.set_style(style.progress_chars("=> "));
     }
     bar.set_message(what.to_string());
     bar
+}
+
+/// The playground's WebAssembly build has no terminal, and indicatif's clock would need the
+/// browser's (through wasm-bindgen): a bar that only counts.
+#[cfg(target_arch = "wasm32")]
+mod quiet {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    use std::time::Duration;
+
+    /// A bar nobody sees.
+    #[derive(Debug, Default)]
+    pub struct ProgressBar {
+        position: AtomicU64,
+    }
+
+    impl ProgressBar {
+        /// A bar over `total` steps.
+        pub fn new(_total: u64) -> Self {
+            Self::default()
+        }
+
+        /// A spinner.
+        pub fn new_spinner() -> Self {
+            Self::default()
+        }
+
+        /// A hidden bar.
+        pub fn hidden() -> Self {
+            Self::default()
+        }
+
+        /// Nothing to say.
+        pub fn set_message(&self, _message: String) {}
+
+        /// Nothing to tick.
+        pub fn enable_steady_tick(&self, _every: Duration) {}
+
+        /// Nothing to clear.
+        pub fn finish_and_clear(&self) {}
+
+        /// Moves to `position`.
+        pub fn set_position(&self, position: u64) {
+            self.position.store(position, Ordering::Relaxed);
+        }
+
+        /// Moves on by `steps`.
+        pub fn inc(&self, steps: u64) {
+            self.position.fetch_add(steps, Ordering::Relaxed);
+        }
+
+        /// Runs `work` (nothing to hide while it writes).
+        pub fn suspend<R>(&self, work: impl FnOnce() -> R) -> R {
+            work()
+        }
+    }
 }
 
 /// A spinner for a pass whose length is not known from outside (a fit's measuring walk).

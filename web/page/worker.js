@@ -1,0 +1,35 @@
+// Runs the WebAssembly module off the page's thread, so a long render never freezes the
+// page (a newer request replaces this worker). Messages: {request} in; {status, text,
+// width, height, rgba} out.
+let module = null;
+const ready = fetch("tinyfractal_web.wasm")
+  .then((response) => {
+    if (!response.ok) throw new Error(`tinyfractal_web.wasm: HTTP ${response.status}`);
+    return response.arrayBuffer();
+  })
+  .then((bytes) => WebAssembly.instantiate(bytes, {}))
+  .then((result) => { module = result.instance.exports; });
+
+function answer(request) {
+  const bytes = new TextEncoder().encode(request);
+  const at = module.input_buffer(bytes.length);
+  new Uint8Array(module.memory.buffer, at, bytes.length).set(bytes);
+  const status = module.run();
+  const text = new TextDecoder().decode(
+    new Uint8Array(module.memory.buffer, module.output_pointer(), module.output_length()));
+  const width = module.picture_width(), height = module.picture_height();
+  let rgba = null;
+  if (status === 0) {
+    rgba = new Uint8ClampedArray(module.memory.buffer, module.pixels_pointer(), width * height * 4).slice();
+  }
+  return { status, text, width, height, rgba };
+}
+
+onmessage = (event) => {
+  ready
+    .then(() => {
+      const reply = answer(event.data.request);
+      postMessage({ id: event.data.id, ...reply }, reply.rgba ? [reply.rgba.buffer] : []);
+    })
+    .catch((error) => postMessage({ id: event.data.id, status: 2, text: String(error) }));
+};
