@@ -6,16 +6,16 @@
 //! product) for `Deep` and `Wide`, one copy of the code each, with the derivative dz
 //! (dz ← 2·z·dz + 1 for the Mandelbrot set, from
 //! dz₁ = 1; dz ← 2·z·dz for a Julia set, from dz₀ = 1) carried beside it as a mantissa pair
-//! and a shared exponent, since it grows as fast as the orbit runs. A perturbed pixel runs
-//! its differences again (see [`Perturbation::estimated`]), its derivative from the full
-//! point Zₘ + δ in a mantissa and exponent of its own: at a deep zoom z passes far closer
-//! to 0 than any fixed point holds while dz is huge. Past the escape both go on to
-//! |z| ≥ 256, where the estimate holds, and d is compared through the log table: no floats.
+//! and a shared exponent, since it grows as fast as the orbit runs. A perturbed pixel
+//! carries its derivative beside its differences instead (`perturbation`), from the
+//! series' own derivative at the skip, each step from the full point Zₘ + δ in a mantissa
+//! and exponent of its own: at a deep zoom z passes far closer to 0 than any fixed point
+//! holds while dz is huge. Past the escape both go on to |z| ≥ 256, where the estimate
+//! holds, and d is compared through the log table: no floats.
 
 use super::arithmetic::{Arithmetic, HighWords};
 use super::kernel::Kernel;
-use super::perturbation::Perturbation;
-use super::scaled::{escaped, may_rebase, rebased, step, Scaled};
+use super::scaled::Scaled;
 use super::view::Tier;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 use crate::math::wide::mul_i32_wide;
@@ -32,7 +32,7 @@ const RADIUS_Q20: i64 = 256 << 20;
 /// A derivative as a mantissa pair in Q30 and a shared exponent: (x + iy)·2^e, the larger
 /// mantissa kept in [2²⁹, 2³¹) while e > −30, so each fits 32 bits and a step's products
 /// are 32×32 → 64 (one instruction on Cortex-M3 and M4).
-struct Derivative {
+pub(super) struct Derivative {
     x: i32,
     y: i32,
     e: i32,
@@ -46,7 +46,7 @@ impl Derivative {
     };
 
     /// dz₀ = 0: the derivative of the Mandelbrot set's z₀ = 0.
-    const ZERO: Self = Self { x: 0, y: 0, e: -30 };
+    pub(super) const ZERO: Self = Self { x: 0, y: 0, e: -30 };
 
     /// dz ← 2·z·dz, plus 1 if `plus_one`, z with `bits` fraction bits and |re|, |im| < 2³⁰
     /// in them (every product below 2⁶¹).
@@ -65,7 +65,7 @@ impl Derivative {
     /// dz ← 2·z·dz + 1, z = (x + iy)·2^−`s` with mantissas below 2⁶² (a perturbed pixel's
     /// point, of any size): its top 31 bits are taken, so the product keeps as many bits
     /// as [`step`](Self::step)'s.
-    fn step_scaled(&mut self, z: Scaled) {
+    pub(super) fn step_scaled(&mut self, z: Scaled) {
         let (zx, zy) = ((z.x >> 31) as i32, (z.y >> 31) as i32);
         // z = (zx + i·zy)·2^(31 − s) and dz = (x + iy)·2^(e − 30): 2·z·dz is the
         // product p·2^(2 − s + e); taken down 30 bits, a mantissa in Q30 at exponent
@@ -88,7 +88,7 @@ impl Derivative {
     }
 
     /// The derivative (x + iy)·2^−`s` (mantissas below 2⁶², as [`Scaled`] keeps them).
-    fn of_scaled(value: Scaled) -> Self {
+    pub(super) fn of_scaled(value: Scaled) -> Self {
         let mut dz = Self {
             x: 0,
             y: 0,
@@ -197,7 +197,7 @@ impl Kernel {
 /// derivative `dz` (z and c in Q60) from a pixel
 /// spacing of 2^`spacing_log2` (Q16), taken on to |z| ≥ 256 in Q20 as the smooth value
 /// goes (`smooth_value`); also the steps that took.
-fn log2_pixels_past_escape(
+pub(super) fn log2_pixels_past_escape(
     (x, y): (i64, i64),
     c: (i64, i64),
     mut dz: Derivative,
@@ -226,52 +226,4 @@ fn log2_pixels_past_escape(
         Some(numerator - dz.log2_magnitude()? - i64::from(spacing_log2))
     })();
     (estimate, steps)
-}
-
-impl Perturbation<'_> {
-    /// log₂ of the estimated distance in pixels (Q16) of the escaping pixel offset by `c`
-    /// (δc; `point` its c in Q28), its differences run again from the series' skip as
-    /// `dwell` ran them, with dz from the series' slope there (or dz₀ = 0); `None` if it
-    /// does not escape by the cap. Also the steps that took. Out of line: the pixels'
-    /// loop carries nothing for it.
-    #[inline(never)]
-    pub(super) fn estimated(&self, c: Scaled, point: (i32, i32)) -> (Option<i64>, u32) {
-        let skip = self.series.skip();
-        let (mut delta, mut dz) = if skip > 0 {
-            let slope = Derivative::of_scaled(self.series.slope(c));
-            (self.series.delta(c), slope)
-        } else {
-            (Scaled::ZERO, Derivative::ZERO)
-        };
-        let last = self.reference.len().saturating_sub(1);
-        let (mut m, mut n) = (skip as usize, skip);
-        while n < self.max {
-            let Some(&z) = self.reference.get(m) else {
-                break;
-            };
-            // z = Zₘ + δ, in its own exponent (the sum is always made).
-            if let Some(point) = rebased(z.0, delta, true) {
-                dz.step_scaled(point);
-            }
-            delta = step(delta, z.0, c);
-            m += 1;
-            n += 1;
-            let Some(&next) = self.reference.get(m) else {
-                break;
-            };
-            if let Some(z) = escaped(next.0, delta) {
-                let q60 = |(x, y): (i32, i32)| (i64::from(x) << 32, i64::from(y) << 32);
-                let (estimate, steps) =
-                    log2_pixels_past_escape(q60(z), q60(point), dz, true, self.spacing_log2);
-                return (estimate, n - skip + steps);
-            }
-            if m == last || may_rebase(next.0, delta) {
-                if let Some(z) = rebased(next.0, delta, m == last) {
-                    delta = z;
-                    m = 0;
-                }
-            }
-        }
-        (None, n - skip)
-    }
 }

@@ -173,24 +173,6 @@ impl Kernel {
         kernel
     }
 
-    /// This kernel without distance estimation: where it shaded by distance, dwells, the
-    /// cap the inside value (a perturbed render's finish, whose pixels are estimated by
-    /// perturbation).
-    pub(crate) fn without_estimate(self) -> Self {
-        match self.estimate {
-            Some(estimate) if estimate.shades() => Self {
-                estimate: None,
-                inside: self.max,
-                plain_escape: self.outside == Outside::Iter,
-                ..self
-            },
-            _ => Self {
-                estimate: None,
-                ..self
-            },
-        }
-    }
-
     /// Whether this is a Julia set whose critical point 0 escapes (k outside the
     /// Mandelbrot set): dust, with no attracting cycle. Repeat tests there could only find
     /// rounding's own cycles (which never escape either, so an exact render keeps every

@@ -28,6 +28,7 @@
 //! so its interior pixels run to the cap. A pixel that never rebases is never tested. The
 //! cardioid and bulb test is made at the reference's precision.
 
+use super::distance::{log2_pixels_past_escape, Derivative};
 use super::estimate::Estimate;
 use super::kernel::MAX_FAST_TOLERANCE;
 use super::kernel::{Kernel, Orbit, Periodicity};
@@ -265,12 +266,15 @@ impl<'r> Perturbation<'r> {
         if let Some(z) = pixels
             .reference
             .get(skip as usize)
-            .filter(|_| skip > 0 && finishes_in_high_words(view, &pixels.series))
+            // The finish carries no derivative: estimating pixels go on by perturbation.
+            .filter(|_| {
+                skip > 0
+                    && pixels.estimate.is_none()
+                    && finishes_in_high_words(view, &pixels.series)
+            })
         {
-            // Escaped pixels are estimated by perturbation (`estimated`), not in Q60.
-            let kernel = Kernel::new(view, Periodicity::Exact).without_estimate();
             pixels.finish = Some(Finish {
-                kernel,
+                kernel: Kernel::new(view, Periodicity::Exact),
                 centre: (view.centre.0.to_bits(), view.centre.1.to_bits()),
                 spacing: view.spacing().to_bits(),
                 reference: (to_q60(z.0.x, z.0.s), to_q60(z.0.y, z.0.s)),
@@ -292,75 +296,71 @@ impl<'r> Perturbation<'r> {
 
     /// The value of the pixel offset by (`re`, `im`) half spacings from the centre.
     pub(crate) fn dwell(&self, re: i64, im: i64) -> Perturbed {
-        match self.iterate(re, im) {
-            (perturbed, true) if self.estimate.is_some() => self.estimated_pixel(perturbed, re, im),
-            (perturbed, _) => perturbed,
+        if self.estimate.is_some() {
+            self.estimating(re, im)
+        } else {
+            self.iterate::<false>(re, im)
         }
     }
 
-    /// δc of the pixel offset by (`re`, `im`) half spacings, and its point c in Q28.
+    /// [`dwell`](Self::dwell) with the view's distance estimate: out of line, so the plain
+    /// pixels' code and frame carry nothing for it.
+    #[inline(never)]
+    fn estimating(&self, re: i64, im: i64) -> Perturbed {
+        self.iterate::<true>(re, im)
+    }
+
+    /// [`dwell`](Self::dwell)'s orbit; with `ESTIMATE`, its derivative dz carried beside
+    /// δ (from the series' derivative at the skip, each step from the full point Zₘ + δ,
+    /// see `distance`) and an escaping pixel's value the estimate's. One source, two
+    /// copies of the code. The finish in Q60 carries no derivative: estimating pixels go
+    /// on by perturbation.
     #[inline(always)]
-    fn point_of(&self, re: i64, im: i64) -> (Scaled, (i32, i32)) {
+    fn iterate<const ESTIMATE: bool>(&self, re: i64, im: i64) -> Perturbed {
         let c = self.offset(re, im);
         let point = (
             i64::from(self.centre.0) + to_q28(c.x, c.s),
             i64::from(self.centre.1) + to_q28(c.y, c.s),
         );
-        (c, (clamp_i32(point.0), clamp_i32(point.1)))
-    }
-
-    /// [`dwell`](Self::dwell)'s orbit, and whether it escaped. Out of line, apart from
-    /// distance estimation, so its frame (every perturbed render's deepest) carries
-    /// nothing for the estimate.
-    #[inline(never)]
-    fn iterate(&self, re: i64, im: i64) -> (Perturbed, bool) {
-        let (c, point) = self.point_of(re, im);
+        let point = (clamp_i32(point.0), clamp_i32(point.1));
         let inside = |iterations| Orbit {
             dwell: self.inside,
             iterations,
         };
         if in_cardioid_or_bulb(point.0, point.1) {
-            let orbit = inside(0);
-            return (
-                Perturbed {
-                    orbit,
-                    rebases: 0,
-                    skipped: 0,
-                },
-                false,
-            );
+            return Perturbed {
+                orbit: inside(0),
+                rebases: 0,
+                skipped: 0,
+            };
         }
         let skip = self.series.skip();
         // Steps computed are those past the skip.
-        let result = |orbit: Orbit, rebases, escaped| {
-            let orbit = Orbit {
+        let result = |orbit: Orbit, rebases| Perturbed {
+            orbit: Orbit {
                 iterations: orbit.iterations.saturating_sub(skip),
                 ..orbit
-            };
-            let perturbed = Perturbed {
-                orbit,
-                rebases,
-                skipped: skip,
-            };
-            (perturbed, escaped)
+            },
+            rebases,
+            skipped: skip,
         };
         let mut delta = Scaled::ZERO;
+        let mut dz = Derivative::ZERO;
         if skip > 0 {
             delta = self.series.delta(c);
-            if let Some(finish) = &self.finish {
+            if ESTIMATE {
+                dz = Derivative::of_scaled(self.series.slope(c));
+            }
+            if let Some(finish) = self.finish.as_ref().filter(|_| !ESTIMATE) {
                 let z = (
                     finish.reference.0.saturating_add(to_q60(delta.x, delta.s)),
                     finish.reference.1.saturating_add(to_q60(delta.y, delta.s)),
                 );
-                let q60 = (
+                let c = (
                     finish.point(finish.centre.0, re),
                     finish.point(finish.centre.1, im),
                 );
-                let orbit = finish.kernel.resume(q60, z, skip);
-                if orbit.dwell == finish.kernel.inside {
-                    return result(inside(orbit.iterations), 0, false);
-                }
-                return result(orbit, 0, true);
+                return result(finish.kernel.resume(c, z, skip), 0);
             }
         }
         let last = self.reference.len().saturating_sub(1);
@@ -372,6 +372,12 @@ impl<'r> Perturbation<'r> {
             let Some(&z) = self.reference.get(m) else {
                 break;
             };
+            if ESTIMATE {
+                // z = Zₘ + δ in its own exponent (the sum is always made).
+                if let Some(point) = rebased(z.0, delta, true) {
+                    dz.step_scaled(point);
+                }
+            }
             delta = step(delta, z.0, c);
             m += 1;
             n += 1;
@@ -391,7 +397,10 @@ impl<'r> Perturbation<'r> {
                     dwell,
                     iterations: n,
                 };
-                return result(orbit, rebases, true);
+                if ESTIMATE {
+                    return result(self.estimated(orbit, z, point, dz), rebases);
+                }
+                return result(orbit, rebases);
             }
             if m == last || may_rebase(next, delta) {
                 if let Some(z) = rebased(next, delta, m == last) {
@@ -399,34 +408,29 @@ impl<'r> Perturbation<'r> {
                     m = 0;
                     rebases += 1;
                     if repeats.after_rebase(delta, rebases, self.repeat_log2) {
-                        return result(inside(n), rebases, false);
+                        return result(inside(n), rebases);
                     }
                 }
             }
         }
-        result(inside(n), rebases, false)
+        result(inside(n), rebases)
     }
-}
 
-impl Perturbation<'_> {
-    /// An escaped pixel's result as distance estimation has it (see
-    /// [`estimated`](Perturbation::estimated)): its value, and the steps run again added.
-    #[inline(never)]
-    fn estimated_pixel(&self, perturbed: Perturbed, re: i64, im: i64) -> Perturbed {
+    /// An escaped pixel's `orbit` as distance estimation has it, from its point `z` past
+    /// the escape (Q28), its c (`point`, Q28) and its derivative: its value, and the steps
+    /// on to |z| ≥ 256 added.
+    fn estimated(&self, orbit: Orbit, z: (i32, i32), point: (i32, i32), dz: Derivative) -> Orbit {
         let Some(estimate) = self.estimate else {
-            return perturbed;
+            return orbit;
         };
-        let (c, point) = self.point_of(re, im);
-        let (log2_pixels, steps) = self.estimated(c, point);
-        let orbit = perturbed.orbit;
-        Perturbed {
-            orbit: Orbit {
-                dwell: estimate
-                    .value(log2_pixels, self.inside)
-                    .unwrap_or(orbit.dwell),
-                iterations: orbit.iterations.saturating_add(steps),
-            },
-            ..perturbed
+        let q60 = |(x, y): (i32, i32)| (i64::from(x) << 32, i64::from(y) << 32);
+        let (log2_pixels, steps) =
+            log2_pixels_past_escape(q60(z), q60(point), dz, true, self.spacing_log2);
+        Orbit {
+            dwell: estimate
+                .value(log2_pixels, self.inside)
+                .unwrap_or(orbit.dwell),
+            iterations: orbit.iterations.saturating_add(steps),
         }
     }
 }

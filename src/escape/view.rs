@@ -478,8 +478,8 @@ impl View {
     /// and the render fills only the blocks whose border is all inside the set (the set
     /// is full, so their pixels are too): a block whose border escapes, or is only near
     /// the set, may hide a strand or a gap, so its pixels are computed, and tracing is off.
-    /// A perturbed render runs a pixel's differences again, from the series' skip with
-    /// the series' derivative, its dz from the full point Zₘ + δ.
+    /// A perturbed render's pixels carry dz beside their differences instead, from the
+    /// series' derivative at the skip, each step from the full point Zₘ + δ.
     #[must_use]
     pub const fn with_distance(mut self, width_256ths: u16) -> Self {
         self.distance = width_256ths;
