@@ -329,6 +329,18 @@ fn typing_a_rule_redraws_and_a_broken_one_shows_the_readers_error() {
     );
     // The picture before the error stays: the page is not left blank.
     assert_eq!(differing(&browser.canvas(), &drawn_system(square, 3)), 0);
+
+    // The angle field rewrites the system's angle line: mended, and drawn at 8 divisions.
+    let answers = browser.answers();
+    browser.evaluate(
+        "(() => { const a = document.getElementById('angle'); a.value = '8'; \
+         a.dispatchEvent(new Event('change')); })()",
+    );
+    assert_eq!(browser.settled(answers), "drawn");
+    let eighths = square.replace("Angle 4", "Angle 8");
+    let text = browser.evaluate("document.getElementById('source').value");
+    assert_eq!(text.as_str(), Some(eighths.as_str()));
+    assert_eq!(differing(&browser.canvas(), &drawn_system(&eighths, 3)), 0);
 }
 
 /// `serve --out` writes the page's files for any static file server: the page, its two

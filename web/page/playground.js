@@ -105,6 +105,27 @@ $("source").addEventListener("input", () => {
   typing = setTimeout(editorChanged, 250);
 });
 $("system").addEventListener("change", editorChanged);
+// The angle field rewrites the chosen system's `Angle N` line in the text (so the
+// reader's line and column still point into what is shown), then draws it.
+$("angle").addEventListener("change", () => {
+  const divisions = $("angle").value;
+  const text = $("source").value;
+  const name = $("system").value;
+  if (!divisions || !name) return;
+  const escaped = name.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
+  const start = text.search(new RegExp(`^[ \t]*${escaped}[ \t]*\\{`, "mi"));
+  if (start < 0) return;
+  const close = text.indexOf("}", start);
+  const end = close < 0 ? text.length : close;
+  const block = text.slice(start, end);
+  const line = /^([ \t]*)angle[ \t]+[^\s;]*/im;
+  const changed = line.test(block)
+    ? block.replace(line, `$1Angle ${divisions}`)
+    : block.replace("{", `{\n  Angle ${divisions}`);
+  $("source").value = text.slice(0, start) + changed + text.slice(end);
+  document.body.dataset.mode = "lsystem";
+  editorChanged();
+});
 $("file").addEventListener("change", async () => {
   const file = $("file").files[0];
   if (!file) return;
