@@ -378,3 +378,27 @@ fn the_pages_files_are_written_whole_and_small() {
     assert_eq!(&module[..4], b"\0asm", "a WebAssembly module");
     assert!(total < 1 << 20, "the page is {total} bytes: over 1 MB");
 }
+
+/// The explorer draws its first view (the gallery's Mandelbrot set) in budgeted steps,
+/// showing it as it grows, and ends with the gallery's picture.
+#[test]
+fn the_explorer_draws_in_steps_to_the_gallerys_picture() {
+    let Some(chromium) = browser_or_skip() else {
+        return;
+    };
+    let (_server, port) = serve();
+    let mut browser = Browser::open(&chromium, &format!("http://127.0.0.1:{port}/"));
+    assert_eq!(browser.settled(0), "drawn");
+    let (picture, ..) = tinyfractal_simulator::gallery::render_named("mandelbrot")
+        .unwrap()
+        .unwrap();
+    assert_eq!(differing(&browser.canvas(), &pixels(&picture)), 0);
+    let status = browser.evaluate("document.getElementById('status').textContent");
+    assert!(
+        status
+            .as_str()
+            .unwrap_or_default()
+            .starts_with("tier=standard"),
+        "the tier shown: {status}"
+    );
+}

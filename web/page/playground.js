@@ -14,17 +14,28 @@ let painter = new Worker("worker.js");
 let painting = false;
 let asked = 0;
 
-function ask(worker, request) {
+// Resolves with the answer; `partial` is called with each step's picture before it.
+function ask(worker, request, partial) {
   return new Promise((resolve) => {
     const id = ++asked;
     const listen = (event) => {
       if (event.data.id !== id) return;
+      if (event.data.partial) {
+        if (partial) partial(event.data);
+        return;
+      }
       worker.removeEventListener("message", listen);
       resolve(event.data);
     };
     worker.addEventListener("message", listen);
     worker.postMessage({ id, request });
   });
+}
+
+function draw(reply) {
+  canvas.width = reply.width;
+  canvas.height = reply.height;
+  canvas.getContext("2d").putImageData(new ImageData(reply.rgba, reply.width, reply.height), 0, 0);
 }
 
 function show(reply) {
@@ -37,11 +48,7 @@ function show(reply) {
   }
   statusLine.textContent = reply.text;
   statusLine.className = "";
-  if (reply.status === 0) {
-    canvas.width = reply.width;
-    canvas.height = reply.height;
-    canvas.getContext("2d").putImageData(new ImageData(reply.rgba, reply.width, reply.height), 0, 0);
-  }
+  if (reply.status === 0) draw(reply);
   document.body.dataset.state = "drawn";
 }
 
@@ -55,7 +62,11 @@ async function paint(request) {
   painting = true;
   document.body.dataset.state = "drawing";
   statusLine.textContent = "drawing…";
-  const reply = await ask(painter, request);
+  const reply = await ask(painter, request, (step) => {
+    if (mine !== latest) return;
+    draw(step);
+    statusLine.textContent = `drawing… ${step.text}`;
+  });
   if (mine !== latest) return;
   painting = false;
   show(reply);
@@ -166,6 +177,7 @@ function escapeFields() {
     "max-iter": $("max-iter").value,
     palette: $("palette").value,
     precision: $("precision").value,
+    steps: 1,
   };
 }
 function drawEscape() {

@@ -12,10 +12,12 @@
 #![allow(unsafe_code)]
 
 mod request;
+mod session;
 
 use std::cell::RefCell;
 
-pub use request::{respond, Picture, Response};
+pub use request::{respond, respond_in, Picture, Response};
+pub use session::{Session, STEP_ITERATIONS};
 
 /// What the module holds between the page's calls.
 #[derive(Debug, Default)]
@@ -23,6 +25,7 @@ struct State {
     input: Vec<u8>,
     output: String,
     picture: Option<Picture>,
+    session: Option<Session>,
 }
 
 thread_local! {
@@ -39,16 +42,17 @@ pub extern "C" fn input_buffer(length: usize) -> *mut u8 {
 }
 
 /// Answers the request in the input buffer: 0 for a picture (and a text), 1 for a text
-/// alone, 2 for an error (its message the text).
+/// alone, 2 for an error (its message the text), 3 for a partial picture (ask `more`).
 #[no_mangle]
 pub extern "C" fn run() -> u32 {
     STATE.with_borrow_mut(|state| {
         let request = String::from_utf8_lossy(&state.input).into_owned();
-        let response = respond(&request);
-        let status = match (&response.picture, response.error) {
-            (_, true) => 2,
-            (Some(_), false) => 0,
-            (None, false) => 1,
+        let response = respond_in(&request, &mut state.session);
+        let status = match (&response.picture, response.error, response.more) {
+            (_, true, _) => 2,
+            (Some(_), false, true) => 3,
+            (Some(_), false, false) => 0,
+            (None, false, _) => 1,
         };
         state.output = response.text;
         state.picture = response.picture;

@@ -12,7 +12,9 @@
 //!   default 320x240): the system drawn as `render lsystem` draws it.
 //! - `escape` with `fractal` (`mandelbrot` or `julia`), `center` (`re,im`), `width`,
 //!   `max-iter`, `palette`, `precision`, `size`, and for a Julia set `julia` (`re,im`):
-//!   the view as `render mandelbrot` draws it (`--algorithm fast`).
+//!   the view as `render mandelbrot` draws it (`--algorithm fast`); with `steps=1`, in
+//!   budgeted steps (see [`respond_in`]).
+//! - `more`: the next step of a view drawn in steps.
 
 use std::path::Path;
 
@@ -24,6 +26,8 @@ use tinyfractal::{LFile, LsysFile};
 use tinyfractal_simulator::escape_scene::{self, Modes};
 use tinyfractal_simulator::files::FileKind;
 use tinyfractal_simulator::{gallery, scene};
+
+use crate::session::{Session, STEP_ITERATIONS};
 
 /// The largest picture side the page may ask for.
 pub const MAX_SIDE: u32 = 2048;
@@ -68,6 +72,8 @@ pub struct Response {
     pub picture: Option<Picture>,
     /// Whether the text is an error's message.
     pub error: bool,
+    /// Whether the picture is partial, more to come from `more` requests.
+    pub more: bool,
 }
 
 impl Response {
@@ -76,6 +82,7 @@ impl Response {
             text,
             picture: None,
             error: false,
+            more: false,
         }
     }
 
@@ -84,6 +91,16 @@ impl Response {
             text,
             picture: Some(Picture::of(display)),
             error: false,
+            more: false,
+        }
+    }
+
+    fn error(text: String) -> Self {
+        Self {
+            text,
+            picture: None,
+            error: true,
+            more: false,
         }
     }
 }
@@ -179,11 +196,47 @@ pub fn respond(text: &str) -> Response {
             "unknown request {other:?}: ask scenes, scene, systems, lsystem or escape"
         )),
     };
-    answer.unwrap_or_else(|message| Response {
-        text: message,
-        picture: None,
-        error: true,
-    })
+    answer.unwrap_or_else(Response::error)
+}
+
+/// The answer to the request `text`, with a view being drawn in steps.
+///
+/// `escape` with `steps=1` starts one (a fixed tier's view; a perturbed one is drawn
+/// whole) and answers its first step, `more` the next, each a partial picture until the
+/// last; any other request drops it.
+pub fn respond_in(text: &str, session: &mut Option<Session>) -> Response {
+    let request = Request::parse(text);
+    let started = match request.command {
+        "more" => Ok(()),
+        "escape" if request.field("steps") == Some("1") => escape_request(&request)
+            .and_then(|escape| Session::start(&escape))
+            .map(|started| *session = started),
+        _ => {
+            *session = None;
+            return respond(text);
+        }
+    };
+    if let Err(message) = started {
+        *session = None;
+        return Response::error(message);
+    }
+    let Some(drawing) = session.as_mut() else {
+        return match request.command {
+            "more" => Response::error("no view is being drawn: ask `escape` first".to_string()),
+            _ => respond(text),
+        };
+    };
+    let complete = drawing.step(STEP_ITERATIONS);
+    let response = Response {
+        text: drawing.status(),
+        picture: Some(drawing.picture()),
+        error: false,
+        more: !complete,
+    };
+    if complete {
+        *session = None;
+    }
+    response
 }
 
 fn scene_named(request: &Request<'_>) -> Result<Response, String> {
@@ -286,6 +339,19 @@ fn lsystem(request: &Request<'_>) -> Result<Response, String> {
 }
 
 fn escape(request: &Request<'_>) -> Result<Response, String> {
+    let rendered = escape_scene::render(&escape_request(request)?)?;
+    Ok(Response::picture(
+        format!(
+            "tier={} iterations={}",
+            rendered.stats.tier.name(),
+            rendered.stats.iterations
+        ),
+        &rendered.display,
+    ))
+}
+
+/// The `render mandelbrot` request the fields ask for.
+fn escape_request<'a>(request: &Request<'a>) -> Result<escape_scene::Request<'a>, String> {
     let julia_set = match request.field("fractal").unwrap_or("mandelbrot") {
         "mandelbrot" => false,
         "julia" => true,
@@ -313,7 +379,7 @@ fn escape(request: &Request<'_>) -> Result<Response, String> {
             ))
         }
     };
-    let escape_request = escape_scene::Request {
+    Ok(escape_scene::Request {
         julia,
         centre: request.pair("center", default_centre)?,
         width: request
@@ -326,14 +392,5 @@ fn escape(request: &Request<'_>) -> Result<Response, String> {
         palette: request.field("palette").unwrap_or("classic"),
         palette_file: None,
         modes: Modes::default(),
-    };
-    let rendered = escape_scene::render(&escape_request)?;
-    Ok(Response::picture(
-        format!(
-            "tier={} iterations={}",
-            rendered.stats.tier.name(),
-            rendered.stats.iterations
-        ),
-        &rendered.display,
-    ))
+    })
 }

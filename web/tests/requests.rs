@@ -1,7 +1,7 @@
 //! The module's requests answered on the host, as the page makes them: lists, pictures,
 //! and for bad input a message naming the cause, never a panic.
 
-use tinyfractal_web::respond;
+use tinyfractal_web::{respond, respond_in};
 
 const KOCH: &str = "Koch {\n  Angle 6\n  Axiom F--F--F\n  F=F+F--F+F\n}\n";
 
@@ -68,4 +68,38 @@ fn an_escape_view_reports_its_tier() {
     let julia = respond("escape\nfractal=julia\njulia=-0.8,0.156\nsize=32x24");
     assert!(!julia.error, "{}", julia.text);
     assert_ne!(julia.picture, answer.picture);
+}
+
+/// A view drawn in steps ends as the one drawn whole, after partial pictures; a perturbed
+/// view asked in steps is drawn whole; `more` without a view is an error.
+#[test]
+fn a_view_in_steps_ends_as_the_whole_one() {
+    let view = "escape\ncenter=-0.7435,0.1314\nwidth=0.02\nmax-iter=4000\nsize=320x240";
+    let whole = respond(view);
+    let mut session = None;
+    let mut answer = respond_in(&format!("{view}\nsteps=1"), &mut session);
+    let mut partial = 0;
+    while answer.more {
+        assert!(!answer.error, "{}", answer.text);
+        partial += 1;
+        answer = respond_in("more", &mut session);
+    }
+    assert!(partial >= 2, "{partial} partial pictures");
+    assert!(!answer.error, "{}", answer.text);
+    assert_eq!(answer.picture, whole.picture);
+    assert!(session.is_none());
+
+    let deep = "escape\ncenter=-0.1010963638456221610257854457386225654638,\
+                0.9562865108091415007710960577299774358098\nwidth=1e-30\nmax-iter=1000\n\
+                size=48x36";
+    let stepped = respond_in(&format!("{deep}\nsteps=1"), &mut session);
+    assert!(!stepped.more && !stepped.error, "{}", stepped.text);
+    assert_eq!(stepped.picture, respond(deep).picture);
+
+    let nothing = respond_in("more", &mut None);
+    assert!(
+        nothing.error && nothing.text.contains("no view"),
+        "{}",
+        nothing.text
+    );
 }
