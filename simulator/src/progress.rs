@@ -24,32 +24,29 @@ pub fn bar(total: u64, what: &str) -> ProgressBar {
 }
 
 /// The playground's WebAssembly build has no terminal, and indicatif's clock would need the
-/// browser's (through wasm-bindgen): a bar that only counts.
+/// browser's (through wasm-bindgen): a bar that shows nothing and keeps nothing.
 #[cfg(target_arch = "wasm32")]
 mod quiet {
-    use std::sync::atomic::{AtomicU64, Ordering};
     use std::time::Duration;
 
     /// A bar nobody sees.
     #[derive(Debug, Default)]
-    pub struct ProgressBar {
-        position: AtomicU64,
-    }
+    pub struct ProgressBar;
 
     impl ProgressBar {
         /// A bar over `total` steps.
         pub fn new(_total: u64) -> Self {
-            Self::default()
+            Self
         }
 
         /// A spinner.
         pub fn new_spinner() -> Self {
-            Self::default()
+            Self
         }
 
         /// A hidden bar.
         pub fn hidden() -> Self {
-            Self::default()
+            Self
         }
 
         /// Nothing to say.
@@ -61,15 +58,11 @@ mod quiet {
         /// Nothing to clear.
         pub fn finish_and_clear(&self) {}
 
-        /// Moves to `position`.
-        pub fn set_position(&self, position: u64) {
-            self.position.store(position, Ordering::Relaxed);
-        }
+        /// Nothing to move.
+        pub fn set_position(&self, _position: u64) {}
 
-        /// Moves on by `steps`.
-        pub fn inc(&self, steps: u64) {
-            self.position.fetch_add(steps, Ordering::Relaxed);
-        }
+        /// Nothing to move.
+        pub fn inc(&self, _steps: u64) {}
 
         /// Runs `work` (nothing to hide while it writes).
         pub fn suspend<R>(&self, work: impl FnOnce() -> R) -> R {

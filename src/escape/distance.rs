@@ -70,10 +70,9 @@ impl Derivative {
         // z = (zx + i·zy)·2^(31 − s) and dz = (x + iy)·2^(e − 30): 2·z·dz is the
         // product p·2^(2 − s + e); taken down 30 bits, a mantissa in Q30 at exponent
         // e + 62 − s.
-        let x = (mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> 30;
-        let y = (mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> 30;
+        let mut x = (mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> 30;
+        let mut y = (mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> 30;
         let mut e = i64::from(self.e) + 62 - i64::from(z.s);
-        let (mut x, mut y) = (x, y);
         if e < -30 {
             // Far below 1: kept at 1's exponent, where 1 has the mantissa's top bits.
             let down = (-30 - e).min(63);
@@ -194,9 +193,9 @@ impl Kernel {
 }
 
 /// log₂ of the estimated distance in pixels (Q16) of an orbit that escaped at z with
-/// derivative `dz` (z and c in Q60) from a pixel
-/// spacing of 2^`spacing_log2` (Q16), taken on to |z| ≥ 256 in Q20 as the smooth value
-/// goes (`smooth_value`); also the steps that took.
+/// derivative `dz` (z and c in Q60), the pixel spacing 2^`spacing_log2` (Q16), taken on
+/// to |z| ≥ 256 in Q20 as the smooth value goes (`smooth_value`); also the steps that
+/// took.
 pub(super) fn log2_pixels_past_escape(
     (x, y): (i64, i64),
     c: (i64, i64),

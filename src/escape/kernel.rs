@@ -107,8 +107,8 @@ pub(crate) struct Kernel {
     /// Whether an escaping orbit's value is its dwell: no smooth value or outside mode to
     /// compute.
     pub(super) plain_escape: bool,
-    /// Whether escaping orbits are run again for their distance (see `distance`): the
-    /// view asks for a width (`near_log2`) or shades by distance.
+    /// What the view asks of distance estimation, if anything: escaping orbits are then
+    /// run again for their distance (see `distance`).
     pub(super) estimate: Option<Estimate>,
     /// log₂ of the pixel spacing, Q16.
     pub(super) spacing_log2: i32,

@@ -156,23 +156,23 @@ fn normalise_pair(x: DeepCoord, y: DeepCoord) -> ReferencePoint {
 /// Q60 kernel that finishes them.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Perturbation<'r> {
-    pub(super) reference: &'r [ReferencePoint],
+    reference: &'r [ReferencePoint],
     /// Half the pixel spacing: `spacing_mantissa`·2^−`spacing_exponent`, the mantissa in
     /// [2⁶¹, 2⁶²).
     spacing_mantissa: i64,
     spacing_exponent: i32,
     /// log₂ of the pixel spacing, Q16 (distance estimation's unit).
-    pub(super) spacing_log2: i32,
+    spacing_log2: i32,
     /// The centre in Q28, for the cardioid test and the smooth value.
     centre: (i32, i32),
-    pub(super) max: u32,
-    pub(super) inside: u32,
+    max: u32,
+    inside: u32,
     smooth: bool,
     /// Fractint's `outside=` (see `modes`).
     outside: Outside,
     /// What the view asks of distance estimation, if anything.
     estimate: Option<Estimate>,
-    pub(super) series: Series,
+    series: Series,
     finish: Option<Finish>,
     /// Repeats: exact (`None`), or within 2^`repeat_log2` (a sixteenth of a pixel's
     /// spacing at most, and at most `Fast`'s cap of 2⁻²²).

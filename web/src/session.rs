@@ -3,7 +3,6 @@
 //! way of drawing. Views of the fixed tiers only; a perturbed view (whose render borrows
 //! its reference orbit) is drawn whole.
 
-use embedded_graphics::prelude::*;
 use tinyfractal::escape::{Algorithm, Render, Tier};
 use tinyfractal::render::DwellBuffer;
 use tinyfractal::View;
@@ -68,10 +67,5 @@ impl Session {
             progress.done,
             progress.total
         )
-    }
-
-    /// The size of the picture.
-    pub fn size(&self) -> Size {
-        self.view.size()
     }
 }
