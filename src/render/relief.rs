@@ -81,11 +81,6 @@ where
         self.heights.len()
     }
 
-    fn height(&self, x: usize, y: usize) -> i64 {
-        let (x, y) = (x.min(self.n - 1), y.min(self.n - 1));
-        i64::from(self.heights.get(y * self.n + x).copied().unwrap_or(0))
-    }
-
     /// The colour of pixel (px, py) of the area: the grid read bilinearly, banded by
     /// height, lit by the slope towards the upper left. The rule, pixel by pixel, with its
     /// divisions: [`Rows`] draws the same colours by stepping.
@@ -127,6 +122,14 @@ where
     }
 }
 
+impl<C> Relief<'_, C> {
+    /// The height at grid point (`x`, `y`), clamped to the grid.
+    fn height(&self, x: usize, y: usize) -> i64 {
+        let (x, y) = (x.min(self.n - 1), y.min(self.n - 1));
+        i64::from(self.heights.get(y * self.n + x).copied().unwrap_or(0))
+    }
+}
+
 impl<C> Dimensions for Relief<'_, C> {
     fn bounding_box(&self) -> Rectangle {
         self.area
@@ -151,9 +154,15 @@ where
 }
 
 /// The colours of a relief's pixels, row by row, as [`Relief::color_at`] gives them, with
-/// no division a pixel: the grid column stepped by a whole and a remainder, the bands
-/// compared as heights scaled by 255 against each band's start times the spread, and the
-/// light (which depends on the grid cell only) computed once a cell.
+/// no division a pixel.
+///
+/// The bilinear blend is regrouped exactly: for a cell of a row the grid's two columns are
+/// blended down once, `L = a·(256 − fy) + c·fy` and `R = b·(256 − fy) + d·fy`, and a pixel's
+/// height before the shift is `256·L + fx·(R − L)` (the same integer as the rule's). The
+/// bands and the sea are compared there too, as thresholds on that numerator, so a pixel
+/// is one product and a compare or two; the grid position steps by a whole and a
+/// remainder, and the light (which depends on the cell only) is found once a cell,
+/// without a division.
 struct Rows<'r, 'a, C> {
     relief: &'r Relief<'a, C>,
     /// Pixels across and down.
@@ -161,49 +170,133 @@ struct Rows<'r, 'a, C> {
     /// The next pixel.
     px: u32,
     py: u32,
-    /// Grid rows above and below, and the weight of the one below (Q8), for row `py`.
-    row: (usize, i64),
-    /// The grid column position (Q8) of pixel `px`, and the remainder of its division.
-    gx: (i64, i64),
-    /// Each pixel's step of the grid column position: a whole and a remainder over `wm`.
-    step: (i64, i64),
-    /// Pixels across less one (at least 1), the grid's last index.
-    wm: i64,
+    /// Grid row above and the weight of the one below (Q8), for row `py`.
+    y: usize,
+    fy: i64,
+    /// The grid column of pixel `px`, its fraction (Q8) and the remainder of the division
+    /// that gives them.
+    x: usize,
+    fx: u32,
+    remainder: u32,
+    /// Each pixel's step of the grid position: whole columns, a fraction (Q8), and a
+    /// remainder over `wm`.
+    step: (usize, u32, u32),
+    /// Pixels across less one (at least 1).
+    wm: u32,
+    /// The grid's last index.
     last: i64,
-    /// The spread of heights (at least 1).
-    spread: i64,
-    /// Each band's start times the spread, and the sea level's: what a height less the
-    /// lowest, times 255, is compared with.
+    /// Eight times the spread of heights, the light's divisor.
+    divisor: CappedDivisor,
+    /// The least blend numerator (height times 2¹⁶) of each band, and of the land above
+    /// the sea.
     starts: [i64; BANDS.len()],
     sea: i64,
-    /// The cell whose corners and light are known: its column, its corners (top left, top
-    /// right, bottom left, bottom right) and its light (Q8).
-    cell: Option<(usize, [i64; 4], i64)>,
+    /// The cell whose blend and light are known: its column (`usize::MAX` for none),
+    /// `256·L`, `R − L`, and its light (Q8).
+    column: usize,
+    base: i64,
+    rise: i64,
+    light: i32,
+    /// The cell's right column blended down (`R`): the next cell's left one.
+    right: i64,
+    /// The band of the last pixel (the next one is most likely in it too).
+    band: usize,
     /// The last colour made, with its band and light.
-    made: Option<(usize, i64, C)>,
+    made: (usize, i32, C),
 }
 
-impl<'r, 'a, C> Rows<'r, 'a, C> {
+/// The least blend numerator `n` whose height `⌊n / 2¹⁶⌋` is at level `start` or above:
+/// `(height − low)·255 ≥ start·spread ⟺ height ≥ low + ⌈start·spread / 255⌉`.
+fn least_numerator(low: i64, spread: i64, start: u32) -> i64 {
+    let above = (i64::from(start) * spread + 254) / 255;
+    (low + above) << 16
+}
+
+/// The most a light divides out: 128 steps of 1/256 (the light's clamp needs no more).
+const LIGHT_STEPS: u32 = 128;
+
+/// Division by one divisor, many times, capped at [`LIGHT_STEPS`]: by a multiply with its
+/// reciprocal and one correction, as compilers divide by a constant.
+#[derive(Debug, Clone, Copy)]
+struct CappedDivisor {
+    divisor: u64,
+    /// ⌊2⁵⁶ / divisor⌋ + 1 (at least 2⁵⁶ / divisor, short of it by less than 1), or 0 for
+    /// a divisor of 2⁴⁸ or more (divided the slow way).
+    inverse: u64,
+}
+
+impl CappedDivisor {
+    /// Division by `divisor` (0 is taken as 1).
+    fn new(divisor: u64) -> Self {
+        let divisor = divisor.max(1);
+        let inverse = if divisor < 1 << 48 {
+            (1 << 56) / divisor + 1
+        } else {
+            0
+        };
+        Self { divisor, inverse }
+    }
+
+    /// ⌊`n` / divisor⌋, or [`LIGHT_STEPS`] where it is that or more.
+    ///
+    /// Below the cap `n` < 128·divisor, so `n`·inverse < 2⁶³ + 2⁵⁵ stays in 64 bits and
+    /// exceeds `n`·2⁵⁶ / divisor by less than 128·divisor / 2⁵⁶ ≤ ½: the estimate is the
+    /// quotient or one more.
+    fn capped(&self, n: u64) -> u32 {
+        let d = self.divisor;
+        if self.inverse == 0 {
+            return (n / d).min(u64::from(LIGHT_STEPS)) as u32;
+        }
+        if n >= d * u64::from(LIGHT_STEPS) {
+            return LIGHT_STEPS;
+        }
+        let estimate = (n * self.inverse) >> 56;
+        (estimate - u64::from(estimate * d > n)) as u32
+    }
+}
+
+/// A band's colour in `light` (Q8).
+fn lit_band<C: From<Rgb888>>(band: usize, light: i32) -> C {
+    let color = BANDS.get(band).map_or(Rgb888::BLACK, |(_, color)| *color);
+    let lit = |c: u8| ((i32::from(c) * light) >> 8).clamp(0, 255) as u8;
+    C::from(Rgb888::new(lit(color.r()), lit(color.g()), lit(color.b())))
+}
+
+impl<'r, 'a, C: From<Rgb888>> Rows<'r, 'a, C> {
     fn new(relief: &'r Relief<'a, C>) -> Self {
         let (w, h) = (relief.area.size.width, relief.area.size.height);
         let last = (relief.n - 1) as i64;
-        let wm = i64::from(w.max(2) - 1);
-        let spread = (i64::from(relief.range.1) - i64::from(relief.range.0)).max(1);
+        let wm = w.max(2) - 1;
+        let low = i64::from(relief.range.0);
+        let spread = (i64::from(relief.range.1) - low).max(1);
+        let step = last * 256 / i64::from(wm);
         let mut rows = Self {
             relief,
             size: (w, h),
             px: 0,
             py: 0,
-            row: (0, 0),
-            gx: (0, 0),
-            step: (last * 256 / wm, last * 256 % wm),
+            y: 0,
+            fy: 0,
+            x: 0,
+            fx: 0,
+            remainder: 0,
+            step: (
+                (step >> 8) as usize,
+                (step & 255) as u32,
+                (last * 256 % i64::from(wm)) as u32,
+            ),
             wm,
             last,
-            spread,
-            starts: BANDS.map(|(start, _)| i64::from(start) * spread),
-            sea: i64::from(SEA_LEVEL) * spread,
-            cell: None,
-            made: None,
+            divisor: CappedDivisor::new(8 * spread.unsigned_abs()),
+            starts: BANDS.map(|(start, _)| least_numerator(low, spread, start)),
+            sea: least_numerator(low, spread, SEA_LEVEL),
+            column: usize::MAX,
+            base: 0,
+            rise: 0,
+            light: 256,
+            right: 0,
+            band: 0,
+            made: (0, 256, lit_band(0, 256)),
         };
         rows.start_row();
         rows
@@ -213,9 +306,55 @@ impl<'r, 'a, C> Rows<'r, 'a, C> {
     fn start_row(&mut self) {
         let hm = i64::from(self.size.1.max(2) - 1);
         let gy = i64::from(self.py) * self.last * 256 / hm;
-        self.row = ((gy >> 8) as usize, gy & 255);
-        self.gx = (0, 0);
-        self.cell = None;
+        (self.y, self.fy) = ((gy >> 8) as usize, gy & 255);
+        (self.x, self.fx, self.remainder) = (0, 0, 0);
+        self.column = usize::MAX;
+    }
+
+    /// Sets up the cell of column `x` in the current row: its blend and its light.
+    #[inline(never)]
+    fn enter_cell(&mut self, x: usize) {
+        let relief = self.relief;
+        let (y, fy) = (self.y, self.fy);
+        // The column on the left is the last cell's right one where the pixels moved on
+        // by one cell.
+        let left = if self.column != usize::MAX && self.column + 1 == x {
+            self.right
+        } else {
+            relief.height(x, y) * (256 - fy) + relief.height(x, y + 1) * fy
+        };
+        let d = relief.height(x + 1, y + 1);
+        let right = relief.height(x + 1, y) * (256 - fy) + d * fy;
+        self.right = right;
+        // The light, used above the sea: 256 − slope/8 within 128..=358, where the slope
+        // is ⌊(corner above left − d)·256·last / spread⌋ towards zero; the two divisions
+        // towards zero are one by 8·spread, and the clamp needs at most 128 of it.
+        let rise = (relief.height(x.saturating_sub(1), y.saturating_sub(1)) - d) * 256 * self.last;
+        let steps = self.divisor.capped(rise.unsigned_abs()) as i32;
+        self.light = if rise < 0 {
+            (256 + steps).min(358)
+        } else {
+            (256 - steps).max(128)
+        };
+        (self.column, self.base, self.rise) = (x, left << 8, right - left);
+    }
+
+    /// The band of blend numerator `n`: the last whose least numerator it reaches (the
+    /// first band takes every height), looked for from the last pixel's.
+    #[inline]
+    fn band_of(&mut self, n: i64) -> usize {
+        let band = self.band;
+        let reached = |band: usize| self.starts.get(band).is_some_and(|&start| n >= start);
+        if (band == 0 || reached(band)) && !reached(band + 1) {
+            return band;
+        }
+        let band = self
+            .starts
+            .iter()
+            .rposition(|&start| n >= start)
+            .unwrap_or(0);
+        self.band = band;
+        band
     }
 }
 
@@ -225,64 +364,41 @@ where
 {
     type Item = C;
 
+    #[inline]
     fn next(&mut self) -> Option<C> {
         if self.py >= self.size.1 || self.size.0 == 0 {
             return None;
         }
-        let relief = self.relief;
-        let (x, fx) = ((self.gx.0 >> 8) as usize, self.gx.0 & 255);
-        let (y, fy) = self.row;
-        let (corners, light) = match self.cell {
-            Some((column, corners, light)) if column == x => (corners, light),
-            _ => {
-                let corners = [
-                    relief.height(x, y),
-                    relief.height(x + 1, y),
-                    relief.height(x, y + 1),
-                    relief.height(x + 1, y + 1),
-                ];
-                // The light depends on the cell only (used above the sea).
-                let slope = (relief.height(x.saturating_sub(1), y.saturating_sub(1)) - corners[3])
-                    * 256
-                    * self.last
-                    / self.spread;
-                let light = (256 - slope / 8).clamp(128, 358);
-                self.cell = Some((x, corners, light));
-                (corners, light)
-            }
-        };
-        let [a, b, c, d] = corners;
-        let top = a * (256 - fx) + b * fx;
-        let bottom = c * (256 - fx) + d * fx;
-        let height = (top * (256 - fy) + bottom * fy) >> 16;
-        // level ≥ start ⟺ ⌊(height − low)·255 / spread⌋ ≥ start ⟺ (height − low)·255 ≥
-        // start·spread; the first band takes every level (clamped at 0).
-        let scaled = (height - i64::from(relief.range.0)) * 255;
-        let band = self
-            .starts
-            .iter()
-            .rposition(|&start| scaled >= start)
-            .unwrap_or(0);
-        let light = if scaled < self.sea { 256 } else { light };
-        let color = match self.made {
-            Some((made_band, made_light, color)) if made_band == band && made_light == light => {
-                color
-            }
-            _ => {
-                let color = BANDS.get(band).map_or(Rgb888::BLACK, |(_, color)| *color);
-                let lit = |c: u8| ((i64::from(c) * light) >> 8).clamp(0, 255) as u8;
-                let color = C::from(Rgb888::new(lit(color.r()), lit(color.g()), lit(color.b())));
-                self.made = Some((band, light, color));
-                color
-            }
-        };
-        // On to the next pixel: the column position by its step, exactly
-        // ⌊px·last·256 / wm⌋.
-        self.px += 1;
-        self.gx = (self.gx.0 + self.step.0, self.gx.1 + self.step.1);
-        if self.gx.1 >= self.wm {
-            self.gx = (self.gx.0 + 1, self.gx.1 - self.wm);
+        if self.column != self.x {
+            self.enter_cell(self.x);
         }
+        let numerator = self.base + i64::from(self.fx) * self.rise;
+        let band = self.band_of(numerator);
+        let light = if numerator < self.sea {
+            256
+        } else {
+            self.light
+        };
+        let (made_band, made_light, made) = self.made;
+        let color = if made_band == band && made_light == light {
+            made
+        } else {
+            let color = lit_band(band, light);
+            self.made = (band, light, color);
+            color
+        };
+        // On to the next pixel: the grid position by its step, exactly
+        // ⌊px·last·256 / wm⌋ (whole columns, fraction).
+        self.px += 1;
+        let (whole, fraction, remainder) = self.step;
+        self.remainder += remainder;
+        let mut fx = self.fx + fraction;
+        if self.remainder >= self.wm {
+            self.remainder -= self.wm;
+            fx += 1;
+        }
+        self.x += whole + (fx >> 8) as usize;
+        self.fx = fx & 255;
         if self.px == self.size.0 {
             self.px = 0;
             self.py += 1;
@@ -296,6 +412,31 @@ where
 mod tests {
     use super::*;
     use embedded_graphics::pixelcolor::Rgb888;
+
+    /// The capped quotient is the division's, capped, for divisors of every size and
+    /// numerators at and beside whole multiples.
+    #[test]
+    fn capped_quotients_are_divisions() {
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        for _ in 0..100_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let d = (state >> (state % 64)).max(1);
+            let divisor = CappedDivisor::new(d);
+            for n in [
+                (state.rotate_left(23) >> (state % 13)) % d.saturating_mul(200),
+                d.saturating_mul(state % 130),
+                d.saturating_mul(state % 130).saturating_sub(1),
+            ] {
+                assert_eq!(divisor.capped(n), (n / d).min(128) as u32, "{n} {d}");
+            }
+        }
+        for d in [1, 7, (1 << 48) - 1, 1 << 48] {
+            let n = d * 128 - 1;
+            assert_eq!(CappedDivisor::new(d).capped(n), 127, "{d}");
+        }
+    }
 
     /// Stepping draws the rule's colours, pixel by pixel, on grids of every shape of
     /// height (flat, a ramp, a peak, noise) at sizes wider, narrower and equal to the grid.
