@@ -89,6 +89,10 @@ mod firmware {
         /// The Menger sponge at an order.
         #[cfg(feature = "shapes")]
         Sponge(u32),
+        /// ABOP's monopodial tree at an order, its string expanded (where the RAM holds
+        /// it: not the micro:bit's).
+        #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
+        Tree(u32),
     }
 
     impl Baseline {
@@ -349,7 +353,9 @@ mod firmware {
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
         #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
-            measure(&clock, (entry.name, entry.size), None, |target| {
+            // The parametric 3D tree beside its sketch (the sketch is of that tree only).
+            let baseline = (entry.name == "monopodial-tree").then_some(Baseline::Tree(entry.order));
+            measure(&clock, (entry.name, entry.size), baseline, |target| {
                 entry.draw(target, &GREY)
             });
         }
@@ -495,6 +501,12 @@ mod firmware {
                 });
                 fixed_cost = run(&mut |target| {
                     fern_fixed(points, target);
+                });
+            }
+            #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
+            Some(Baseline::Tree(order)) => {
+                f32_cost = run(&mut |target| {
+                    tinyfractal_scenes::naive::monopodial_tree_f32(order, target);
                 });
             }
             None => {}

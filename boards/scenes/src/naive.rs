@@ -8,10 +8,15 @@
 //! embedded-graphics' styled primitives (Adafruit's `fillRect` and `fillTriangle`).; the
 //! walking figure by a float matrix stack draws lines and circles with them (`drawLine`,
 //! `drawCircle`); a deterministic L-system expands its string in a byte buffer and draws
-//! it with a float turtle.
+//! it with a float turtle, and ABOP's monopodial tree, parametric and 3D, the same way
+//! ([`monopodial_tree_f32`]).
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use micromath::F32Ext;
+
+mod tree;
+
+pub use tree::{monopodial_tree_f32, NAIVE_TREE_STRING};
 
 /// A grey for a value in [0, 1].
 fn grey(value: f32) -> Gray4 {

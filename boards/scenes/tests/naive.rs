@@ -5,8 +5,8 @@ use std::ops::Range;
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use tinyfractal::render::Orientation;
-use tinyfractal_scenes::naive::{lsystem_f32, turn_degrees};
-use tinyfractal_scenes::{Scene, System, FERN, GREY, KOCH_SNOWFLAKE};
+use tinyfractal_scenes::naive::{lsystem_f32, monopodial_tree_f32, turn_degrees};
+use tinyfractal_scenes::{Scene, System, Work, FERN, GENERAL_SCENES, GREY, KOCH_SNOWFLAKE};
 use tinyfractal_test_support::frame::Frame;
 
 /// The box of the pixels `chosen` picks, and how many there are.
@@ -75,7 +75,7 @@ fn the_lsystem_sketch_draws_the_scenes_picture() {
         );
         // The same lines (the scene counts segments the same way), in about the same box
         // (the fits' margins differ by a few pixels), lighting about as many pixels.
-        let tinyfractal_scenes::Work::Segments(segments) = work else {
+        let Work::Segments(segments) = work else {
             panic!("{work:?}")
         };
         assert_eq!(lines, segments);
@@ -86,6 +86,32 @@ fn the_lsystem_sketch_draws_the_scenes_picture() {
             0.75..1.33,
         );
     }
+}
+
+/// The parametric 3D tree's sketch draws the engine's tree: the same lines, in about the
+/// same box, lighting about as many pixels (the engine colours its tree; the sketch draws
+/// it white).
+#[test]
+fn the_tree_sketch_draws_the_scenes_tree() {
+    let entry = GENERAL_SCENES
+        .iter()
+        .find(|entry| entry.name == "monopodial-tree")
+        .unwrap();
+    let mut ours = Frame::filled(entry.size, GREY.background);
+    let Work::Segments(segments) = entry.draw(&mut ours, &GREY).unwrap() else {
+        panic!("an L-system counts segments")
+    };
+    let mut sketch = Frame::filled(entry.size, Gray4::BLACK);
+    let lines = monopodial_tree_f32(entry.order, &mut sketch);
+    assert_eq!(lines, segments);
+    assert_alike(
+        reach(&sketch, |c| c != Gray4::BLACK),
+        reach(&ours, |c| c != GREY.background),
+        4,
+        0.75..1.33,
+    );
+    // One order more outgrows the sketch's buffer: nothing drawn.
+    assert_eq!(monopodial_tree_f32(entry.order + 1, &mut sketch), 0);
 }
 
 /// A string longer than the buffer draws nothing, and says so by drawing no line.
