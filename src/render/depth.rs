@@ -14,6 +14,8 @@ use crate::error::{Error, FitError};
 
 /// Where drawing goes with a depth: through a depth buffer, or straight (walk order).
 pub(crate) trait Layered: DrawTarget {
+    /// Whether depths are kept: where not, a drawing need not compute them.
+    const KEEPS_DEPTH: bool;
     /// The depth of what is drawn next (larger nearer).
     fn at_depth(&mut self, depth: u16);
 }
@@ -123,6 +125,8 @@ impl<D: DrawTarget> DrawTarget for DepthTested<'_, D> {
 }
 
 impl<D: DrawTarget> Layered for DepthTested<'_, D> {
+    const KEEPS_DEPTH: bool = true;
+
     fn at_depth(&mut self, depth: u16) {
         self.depth = depth;
     }
@@ -166,6 +170,8 @@ impl<D: DrawTarget> DrawTarget for Unsorted<'_, D> {
 }
 
 impl<D: DrawTarget> Layered for Unsorted<'_, D> {
+    const KEEPS_DEPTH: bool = false;
+
     #[inline]
     fn at_depth(&mut self, _depth: u16) {}
 }

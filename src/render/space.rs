@@ -243,8 +243,20 @@ impl SpaceFit {
         if span <= 0 {
             return 0;
         }
-        let into = i128::from(depth.to_bits().saturating_sub(low.to_bits()));
-        u16::try_from((into * 65_535 / i128::from(span)).clamp(0, 65_535)).unwrap_or(0)
+        let into = depth.to_bits().saturating_sub(low.to_bits());
+        if into <= 0 {
+            return 0;
+        }
+        if into >= span {
+            return 65_535;
+        }
+        // In 64 bits where the product fits (a 128-bit division is a long call on a
+        // 32-bit core); the same quotient either way.
+        let quotient = match into.checked_mul(65_535) {
+            Some(product) => product / span,
+            None => (i128::from(into) * 65_535 / i128::from(span)) as i64,
+        };
+        u16::try_from(quotient).unwrap_or(65_535)
     }
 
     /// Where a point of space lands: its pixel and its projected depth.

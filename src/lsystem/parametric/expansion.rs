@@ -190,11 +190,11 @@ impl ParametricGrammar {
         right: Option<&Neighbour>,
         query: Query,
     ) -> Result<Option<Values>, EvalError> {
-        let mut bound = Values::default();
-        let contexts = [(production.left, left), (production.right, right)];
         if !production.predecessor.matches(module) {
             return Ok(None);
         }
+        let mut bound = Values::default();
+        let contexts = [(production.left, left), (production.right, right)];
         for (pattern, neighbour) in contexts {
             match (pattern, neighbour) {
                 (None, _) => {}
@@ -235,6 +235,9 @@ impl ParametricGrammar {
         key: u32,
         query: Query,
     ) -> Result<Option<(u8, Values)>, EvalError> {
+        if !self.may_rewrite(rewrite, module.symbol) {
+            return Ok(None);
+        }
         let (first, productions) = self.rewriting(rewrite);
         let index_of = |index: usize| u8::try_from(first + index).ok();
         let mut total = 0u64;

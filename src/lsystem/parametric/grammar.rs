@@ -96,6 +96,9 @@ pub struct ParametricGrammar {
     pub(super) ignore: SymbolSet,
     /// Symbols with a production that has a context.
     pub(super) contextual: SymbolSet,
+    /// Symbols a production of the derivation rewrites, and of the homomorphism: a
+    /// module of any other symbol is kept without trying each production.
+    pub(super) rewritten: (SymbolSet, SymbolSet),
     /// Seeds the choices among stochastic productions.
     pub(super) seed: u32,
     /// Whether any module turns in space (`& ^ \\ / $`).
@@ -217,6 +220,7 @@ impl ParametricGrammar {
             },
             ignore: SymbolSet::default(),
             contextual: SymbolSet::default(),
+            rewritten: (SymbolSet::default(), SymbolSet::default()),
             seed: 0,
             three_d: false,
             surfaces: false,
@@ -237,6 +241,7 @@ impl ParametricGrammar {
         self.axiom = (0, 0);
         self.ignore = SymbolSet::default();
         self.contextual = SymbolSet::default();
+        self.rewritten = (SymbolSet::default(), SymbolSet::default());
         self.seed = 0;
         self.three_d = false;
         self.surfaces = false;
@@ -252,6 +257,16 @@ impl ParametricGrammar {
             Rewrite::Derivation => (0, self.productions.get(..from).unwrap_or_default()),
             Rewrite::Homomorphism => (from, self.productions.get(from..).unwrap_or_default()),
         }
+    }
+
+    /// Whether a production of `rewrite` may rewrite `symbol` (symbols beyond ASCII are
+    /// not kept in the sets: they may).
+    pub(super) fn may_rewrite(&self, rewrite: Rewrite, symbol: u8) -> bool {
+        let set = match rewrite {
+            Rewrite::Derivation => self.rewritten.0,
+            Rewrite::Homomorphism => self.rewritten.1,
+        };
+        symbol >= 128 || set.contains(symbol)
     }
 
     /// Whether it has a homomorphism: productions applied once, when drawing.
@@ -583,6 +598,11 @@ impl ParametricGrammar {
                 }));
             }
             self.contextual.insert(predecessor.symbol);
+        }
+        if self.has_homomorphism_started() {
+            self.rewritten.1.insert(predecessor.symbol);
+        } else {
+            self.rewritten.0.insert(predecessor.symbol);
         }
         self.productions
             .push(Production {

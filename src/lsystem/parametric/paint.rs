@@ -98,7 +98,9 @@ where
                 let depth = middle(near, far);
                 let (value, max) = space.color_value(depth, u16::from(segment.color));
                 let color = palette.color(value, max);
-                target.at_depth(space.buffer_depth(depth));
+                if T::KEEPS_DEPTH {
+                    target.at_depth(space.buffer_depth(depth));
+                }
                 if pixels < THICK_FROM {
                     draw_line(target, from, to, last_end == Some(from), color, &clip)
                         .map_err(DrawError::Target)?;
@@ -129,7 +131,9 @@ where
                     255
                 };
                 let color = L::lit(palette.color(value, max), light);
-                target.at_depth(space.buffer_depth(depth));
+                if T::KEEPS_DEPTH {
+                    target.at_depth(space.buffer_depth(depth));
+                }
                 fill_polygon(target, &points, color, &clip).map_err(DrawError::Target)?;
                 last_end = None;
             }

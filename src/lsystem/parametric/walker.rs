@@ -40,6 +40,8 @@ pub struct ParametricWalker<
     /// How far the last order's new modules have grown in (see
     /// [`growing`](Self::growing)).
     growth: Option<Real>,
+    /// Whether the grammar has a production with a context (asked once, not a module).
+    contextual: bool,
 }
 
 impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLOTS> {
@@ -84,6 +86,7 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
             expansions: Expansions::new(),
             interpret: false,
             growth: None,
+            contextual: grammar.has_context(),
         }
     }
 
@@ -167,7 +170,7 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
     /// The next module, or `None` at the end.
     fn step(&mut self, query: Query) -> Result<Option<DerivedModule>, Error> {
         let grammar = self.grammar;
-        let contextual = grammar.has_context();
+        let contextual = self.contextual;
         let order = usize::try_from(self.order).unwrap_or(usize::MAX);
         loop {
             let level = self.frames.len().wrapping_sub(1);

@@ -155,7 +155,11 @@ fn walk(string: &[u8], line: &mut dyn FnMut((f32, f32), (f32, f32), f32)) {
         let t = &mut turtle;
         match symbol {
             b'F' => {
-                let next = [t.p[0] + p * t.h[0], t.p[1] + p * t.h[1], t.p[2] + p * t.h[2]];
+                let next = [
+                    t.p[0] + p * t.h[0],
+                    t.p[1] + p * t.h[1],
+                    t.p[2] + p * t.h[2],
+                ];
                 line(seen(t.p), seen(next), t.width);
                 t.p = next;
             }
