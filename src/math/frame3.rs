@@ -71,7 +71,50 @@ fn normalised(v: Unit) -> Option<Unit> {
     let length = i64::try_from(squared.isqrt())
         .ok()
         .filter(|&l| l >= SHORTEST)?;
-    Some(v.map(|x| clamp((i64::from(x) << 30) / length)))
+    let over = Reciprocal::of(length.unsigned_abs());
+    Some(v.map(|x| {
+        let quotient = i64::from(over.scaled(x.unsigned_abs()));
+        clamp(if x < 0 { -quotient } else { quotient })
+    }))
+}
+
+/// Division by a vector's length, three times: ⌊a·2³⁰ / length⌋ for each component a
+/// (|a| ≤ length, so the quotient is at most 2³⁰) by one multiply with the length's
+/// reciprocal and one correction, the same quotients as dividing.
+#[derive(Debug, Clone, Copy)]
+struct Reciprocal {
+    length: u64,
+    /// ⌊2⁶² / length⌋, in two words.
+    high: u64,
+    low: u64,
+}
+
+impl Reciprocal {
+    /// The reciprocal of `length` (at least [`SHORTEST`], below 2³²).
+    fn of(length: u64) -> Self {
+        let inverse = (1u64 << 62) / length.max(1);
+        Self {
+            length,
+            high: inverse >> 32,
+            low: inverse & 0xFFFF_FFFF,
+        }
+    }
+
+    /// ⌊`a`·2³⁰ / length⌋ for `a` ≤ length.
+    ///
+    /// a·⌊2⁶²/length⌋ / 2³² falls short of a·2³⁰/length by less than a / 2³² < ½, so its
+    /// floor is the quotient or one less: one product with the length decides.
+    fn scaled(&self, a: u32) -> u32 {
+        let a = u64::from(a);
+        let estimate = a * self.high + ((a * self.low) >> 32);
+        let numerator = a << 30;
+        let quotient = if (estimate + 1) * self.length <= numerator {
+            estimate + 1
+        } else {
+            estimate
+        };
+        u32::try_from(quotient).unwrap_or(u32::MAX)
+    }
 }
 
 /// Which axis a rotation turns about.
@@ -185,5 +228,29 @@ impl Frame3 {
     /// The step `length` along the heading.
     pub(crate) fn step(&self, length: Real) -> [Real; 3] {
         self.heading.map(|h| length.mul_q30(h))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The reciprocal's quotients are the divisions', for lengths of every size and
+    /// components up to them.
+    #[test]
+    fn reciprocal_quotients_are_divisions() {
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        for _ in 0..200_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            let length = (state >> (32 + state % 22)).max(SHORTEST as u64);
+            let over = Reciprocal::of(length);
+            let a = (state.rotate_left(17) % (length + 1)) as u32;
+            for a in [a, length as u32, 0, 1, a / 2] {
+                let exact = (u64::from(a) << 30) / length;
+                assert_eq!(u64::from(over.scaled(a)), exact, "{a} {length}");
+            }
+        }
     }
 }

@@ -334,6 +334,41 @@ fn power(base: Real, exponent: Real) -> Result<Real, EvalError> {
 
 /// Evaluates `code` with the bound parameters `params`; `query` answers `env(k)`.
 pub(crate) fn evaluate(code: &[Instr], params: &[Real], query: Query) -> Result<Real, EvalError> {
+    // The common shapes first, without the stack: a constant or a parameter, and one sum,
+    // difference or product of two of them (`l*r2`); the same values as the stack's.
+    let leaf = |instr: Instr| match instr {
+        Instr::Const(value) => Some(value),
+        Instr::Param(index) => Some(
+            params
+                .get(usize::from(index))
+                .copied()
+                .unwrap_or(Real::ZERO),
+        ),
+        _ => None,
+    };
+    match *code {
+        [only] => {
+            if let Some(value) = leaf(only) {
+                return Ok(value);
+            }
+        }
+        [a, b, op @ (Instr::Add | Instr::Sub | Instr::Mul)] => {
+            if let (Some(a), Some(b)) = (leaf(a), leaf(b)) {
+                let value = match op {
+                    Instr::Add => a.checked_add(b),
+                    Instr::Sub => a.checked_sub(b),
+                    _ => a.checked_mul(b),
+                };
+                return value.ok_or(EvalError::OutOfRange);
+            }
+        }
+        _ => {}
+    }
+    evaluate_on_stack(code, params, query)
+}
+
+/// [`evaluate`] by the stack machine: any expression.
+fn evaluate_on_stack(code: &[Instr], params: &[Real], query: Query) -> Result<Real, EvalError> {
     let mut stack: Vec<Real, MAX_EVAL_DEPTH> = Vec::new();
     for &instr in code {
         let value = match instr {
@@ -394,4 +429,45 @@ pub(crate) fn evaluate(code: &[Instr], params: &[Real], query: Query) -> Result<
         stack.push(value).map_err(|_| EvalError::TooDeep)?;
     }
     Ok(stack.pop().unwrap_or(Real::ZERO))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The shapes evaluated without the stack give the stack's values and errors: leaves
+    /// alone, and sums, differences and products of two, near the range's ends too.
+    #[test]
+    fn shortcuts_are_the_stack_machines() {
+        let values = [
+            Real::ZERO,
+            Real::ONE,
+            Real::from_bits(-0x1234_5678_9ABC),
+            Real::from_bits(i64::MAX),
+            Real::from_bits(i64::MIN + 1),
+            Real::from_bits(3 << 40),
+        ];
+        let params = [values[2], values[3], values[5]];
+        let leaves = values
+            .iter()
+            .map(|&v| Instr::Const(v))
+            .chain((0..4).map(Instr::Param));
+        let leaves: Vec<Instr, 16> = leaves.collect();
+        for &a in &leaves {
+            assert_eq!(
+                evaluate(&[a], &params, None),
+                evaluate_on_stack(&[a], &params, None)
+            );
+            for &b in &leaves {
+                for op in [Instr::Add, Instr::Sub, Instr::Mul, Instr::Div] {
+                    let code = [a, b, op];
+                    assert_eq!(
+                        evaluate(&code, &params, None),
+                        evaluate_on_stack(&code, &params, None),
+                        "{code:?}"
+                    );
+                }
+            }
+        }
+    }
 }

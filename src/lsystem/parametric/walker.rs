@@ -169,97 +169,169 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
 
     /// The next module, or `None` at the end.
     fn step(&mut self, query: Query) -> Result<Option<DerivedModule>, Error> {
+        loop {
+            match self.advance(query)? {
+                Advanced::Module(module) => return Ok(Some(module)),
+                Advanced::End => return Ok(None),
+                Advanced::Again => {}
+            }
+        }
+    }
+
+    /// One module read: handed out, or expanded (its successor's frame pushed).
+    ///
+    /// A system without contexts, not growing, takes the short way: each module read,
+    /// expanded, its successor's frame pushed; contexts and growth go through
+    /// [`expand_with_care`](Self::expand_with_care), out of line. One module a call, not
+    /// a loop: most calls hand out the first module they read, and a loop here has the
+    /// compiler set up, at every call, addresses that only its later rounds would use.
+    #[inline(never)]
+    fn advance(&mut self, query: Query) -> Result<Advanced, Error> {
+        let grammar = self.grammar;
+        let order = usize::try_from(self.order).unwrap_or(usize::MAX);
+        let level = self.frames.len().wrapping_sub(1);
+        let Some(top) = self.frames.last_mut() else {
+            return Ok(Advanced::End);
+        };
+        if top.position >= top.end {
+            self.frames.pop();
+            return Ok(Advanced::Again);
+        }
+        self.work.tick()?;
+        let at = top.position;
+        top.position += 1;
+        let parent = *top;
+        let module = grammar.read(at, &parent.bound, query)?;
+        if module.symbol == b'%' {
+            self.cut();
+            return Ok(Advanced::Again);
+        }
+        if level >= order || parent.drawn {
+            if !parent.drawn && self.interpreted(&module, at, &parent, query)? {
+                return Ok(Advanced::Again);
+            }
+            return Ok(Advanced::Module(
+                self.grown(derived(&module), parent.growing),
+            ));
+        }
+        if self.contextual || self.growth.is_some() {
+            return Ok(
+                match self.expand_with_care(&module, at, &parent, (level, order), query)? {
+                    Some(module) => Advanced::Module(module),
+                    None => Advanced::Again,
+                },
+            );
+        }
+        match grammar.expand(&module, at, &parent, (None, None), query)? {
+            Expansion::Successor(frame) | Expansion::Kept(frame) => {
+                // Cannot fail: `new` checked that order + 1 <= DEPTH.
+                self.frames
+                    .push(frame)
+                    .map_err(|_| order_too_high(self.order, DEPTH))?;
+                Ok(Advanced::Again)
+            }
+            Expansion::Final => {
+                if self.interpreted(&module, at, &parent, query)? {
+                    return Ok(Advanced::Again);
+                }
+                Ok(Advanced::Module(derived(&module)))
+            }
+        }
+    }
+
+    /// The expansion of `module` (read at `at` in `parent`, at `level` of `order`) in a
+    /// system with contexts or growing: the module to hand out now, if any, with the
+    /// successor's frame pushed where it has one.
+    #[inline(never)]
+    fn expand_with_care(
+        &mut self,
+        module: &Neighbour,
+        at: u16,
+        parent: &Frame,
+        (level, order): (usize, usize),
+        query: Query,
+    ) -> Result<Option<DerivedModule>, Error> {
         let grammar = self.grammar;
         let contextual = self.contextual;
-        let order = usize::try_from(self.order).unwrap_or(usize::MAX);
-        loop {
-            let level = self.frames.len().wrapping_sub(1);
-            let Some(top) = self.frames.last_mut() else {
-                return Ok(None);
-            };
-            if top.position >= top.end {
-                self.frames.pop();
-                continue;
-            }
-            self.work.tick()?;
-            let at = top.position;
-            top.position += 1;
-            let parent = *top;
-            let module = grammar.read(at, &parent.bound, query)?;
-            if module.symbol == b'%' {
-                self.cut();
-                continue;
-            }
-            let derived = DerivedModule {
-                symbol: char::from(module.symbol),
-                values: module.values,
-            };
-            if level >= order || parent.drawn {
-                if !parent.drawn && self.interpreted(&module, at, &parent, query)? {
-                    continue;
-                }
-                return Ok(Some(self.grown(derived, parent.growing)));
-            }
-            if contextual {
-                match module.symbol {
-                    b'[' => {
-                        self.branches.open(&self.levels, level, order)?;
-                        return Ok(Some(derived));
-                    }
-                    b']' => {
-                        self.branches.close(&mut self.levels, level, order);
-                        return Ok(Some(derived));
-                    }
-                    _ => {}
-                }
-            }
-            let expansion = if grammar.is_contextual(module.symbol) {
-                expand_in_context(
-                    grammar,
-                    &module,
-                    (at, true),
-                    &self.frames,
-                    &self.levels,
-                    &mut self.expansions,
-                    &mut self.work,
-                )?
-            } else {
-                grammar.expand(&module, at, &parent, (None, None), query)?
-            };
-            if contextual {
-                self.levels.visit(grammar, level, &module);
-            }
-            let last_step = level + 1 == order;
-            let frame = match (expansion, self.growth) {
-                (Expansion::Successor(mut frame), Some(fraction)) if last_step => {
-                    frame.growing = true;
-                    // Cannot fail: `new` checked that order + 1 <= DEPTH.
-                    self.frames
-                        .push(frame)
-                        .map_err(|_| order_too_high(self.order, DEPTH))?;
-                    if is_step(derived.symbol) {
-                        return Ok(Some(scaled(derived, Real::ONE.saturating_sub(fraction))));
-                    }
-                    continue;
-                }
-                (Expansion::Successor(frame) | Expansion::Kept(frame), _) => frame,
-                (Expansion::Final, _) => {
-                    if contextual {
-                        for below in level + 1..order {
-                            self.levels.visit(grammar, below, &module);
-                        }
-                    }
-                    if self.interpreted(&module, at, &parent, query)? {
-                        continue;
-                    }
+        let derived = derived(module);
+        if contextual {
+            match module.symbol {
+                b'[' => {
+                    self.branches.open(&self.levels, level, order)?;
                     return Ok(Some(derived));
                 }
-            };
-            // Cannot fail: `new` checked that order + 1 <= DEPTH.
-            self.frames
-                .push(frame)
-                .map_err(|_| order_too_high(self.order, DEPTH))?;
+                b']' => {
+                    self.branches.close(&mut self.levels, level, order);
+                    return Ok(Some(derived));
+                }
+                _ => {}
+            }
         }
+        let expansion = if grammar.is_contextual(module.symbol) {
+            expand_in_context(
+                grammar,
+                module,
+                (at, true),
+                &self.frames,
+                &self.levels,
+                &mut self.expansions,
+                &mut self.work,
+            )?
+        } else {
+            grammar.expand(module, at, parent, (None, None), query)?
+        };
+        if contextual {
+            self.levels.visit(grammar, level, module);
+        }
+        let last_step = level + 1 == order;
+        let frame = match (expansion, self.growth) {
+            (Expansion::Successor(mut frame), Some(fraction)) if last_step => {
+                frame.growing = true;
+                // Cannot fail: `new` checked that order + 1 <= DEPTH.
+                self.frames
+                    .push(frame)
+                    .map_err(|_| order_too_high(self.order, DEPTH))?;
+                if is_step(derived.symbol) {
+                    return Ok(Some(scaled(derived, Real::ONE.saturating_sub(fraction))));
+                }
+                return Ok(None);
+            }
+            (Expansion::Successor(frame) | Expansion::Kept(frame), _) => frame,
+            (Expansion::Final, _) => {
+                if contextual {
+                    for below in level + 1..order {
+                        self.levels.visit(grammar, below, module);
+                    }
+                }
+                if self.interpreted(module, at, parent, query)? {
+                    return Ok(None);
+                }
+                return Ok(Some(derived));
+            }
+        };
+        // Cannot fail: `new` checked that order + 1 <= DEPTH.
+        self.frames
+            .push(frame)
+            .map_err(|_| order_too_high(self.order, DEPTH))?;
+        Ok(None)
+    }
+}
+
+/// What one module read came to.
+enum Advanced {
+    /// A module to hand out.
+    Module(DerivedModule),
+    /// Nothing yet: read on.
+    Again,
+    /// The end of the walk.
+    End,
+}
+
+/// A read module as handed out.
+fn derived(module: &Neighbour) -> DerivedModule {
+    DerivedModule {
+        symbol: char::from(module.symbol),
+        values: module.values,
     }
 }
 
