@@ -14,7 +14,7 @@ use embedded_graphics::primitives::Rectangle;
 
 #[cfg(doc)]
 use super::fast::FIT_POINTS;
-use super::fast::{pixel, repeat, sample_box, PixelMaps, FAST_MAPS, SKIPPED};
+use super::fast::{pixel, repeat, sample_box, PixelGame, PixelMaps, FAST_MAPS, SKIPPED};
 use super::maps::Ifs;
 use crate::error::{only_target_errors, DrawError, Error, FitError, WalkError};
 use crate::math::random::Xorshift32;
@@ -337,22 +337,47 @@ impl<P: Palette> IfsDrawing<'_, P> {
             self.palette
                 .color(u16::try_from(map).unwrap_or(u16::MAX), u16::MAX)
         });
-        let (left, top) = (clip.top_left.x, clip.top_left.y);
-        let (width, height) = (clip.size.width, clip.size.height);
-        let mut game = maps.game(self.picture.seed);
-        let mut failed = Ok(());
-        repeat(self.picture.points, || {
-            let (map, point) = game.next_point();
+        // The game's pixels go to the target as one iterator: a call a point would cost
+        // more than the point.
+        let pixels = FastPixels {
+            game: maps.game(self.picture.seed),
+            left: self.picture.points,
+            clip: (clip.top_left, clip.size),
+            colors,
+        };
+        target.draw_iter(pixels).map_err(DrawError::Target)?;
+        Ok(self.picture.points)
+    }
+}
+
+/// The pixels of a chunk of the game in pixel space, in their maps' colours, those
+/// outside the clip skipped. Owns what it reads, so that the loop keeps it in registers.
+struct FastPixels<'m, C> {
+    game: PixelGame<'m>,
+    /// Points still to play.
+    left: u64,
+    clip: (Point, Size),
+    colors: [C; FAST_MAPS],
+}
+
+impl<C: PixelColor> Iterator for FastPixels<'_, C> {
+    type Item = Pixel<C>;
+
+    #[inline]
+    fn next(&mut self) -> Option<Pixel<C>> {
+        let (corner, size) = self.clip;
+        while self.left > 0 {
+            self.left -= 1;
+            let (map, point) = self.game.next_point();
             let (x, y) = pixel(point);
             // Wrapped: a point left of or above the clip is a large column or row.
-            if (x.wrapping_sub(left) as u32) < width && (y.wrapping_sub(top) as u32) < height {
-                if let (Some(&color), Ok(())) = (colors.get(map), &failed) {
-                    failed = target.draw_iter(core::iter::once(Pixel(Point::new(x, y), color)));
-                }
+            let inside = (x.wrapping_sub(corner.x) as u32) < size.width
+                && (y.wrapping_sub(corner.y) as u32) < size.height;
+            if let (true, Some(&color)) = (inside, self.colors.get(map)) {
+                return Some(Pixel(Point::new(x, y), color));
             }
-        });
-        failed.map_err(DrawError::Target)?;
-        Ok(self.picture.points)
+        }
+        None
     }
 }
 
