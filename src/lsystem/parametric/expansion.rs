@@ -5,6 +5,7 @@ use super::expr::{evaluate, EvalError, Query};
 use super::grammar::{Module, Neighbour, ParametricGrammar, Production, Rewrite};
 use super::values::Values;
 use crate::error::{Arithmetic, Error, WalkError};
+use crate::lsystem::alphabet::SymbolSet;
 use crate::lsystem::choice::{child_key, kept, pick};
 use crate::math::Real;
 
@@ -127,7 +128,12 @@ impl ParametricGrammar {
             .production_for(rewrite, module, left, right, key, query)
             .map_err(|problem| arithmetic(module.symbol, problem))?;
         let kept = kept(key);
-        let path = path_of(parent.path, at);
+        // Only a context search reads the path: a grammar without contexts keeps none.
+        let path = if self.contextual == SymbolSet::default() {
+            0
+        } else {
+            path_of(parent.path, at)
+        };
         Ok(match choice {
             Some((index, bound)) => {
                 let production = self.productions.get(usize::from(index));
