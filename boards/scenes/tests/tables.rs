@@ -282,6 +282,18 @@ fn general_table(records: &[Value], results: &Value) -> String {
             thousands(instructions),
         ));
     }
+    // The sketch beside it: the string expanded in a byte buffer, a float 3D turtle.
+    for record in records.iter().filter(|r| r["scene"] == "monopodial-tree") {
+        let core = record["core"].as_str().unwrap_or("?");
+        let work = record["work"].as_u64().unwrap_or(1).max(1);
+        if let Some(cost) = record["baseline_f32"].as_u64() {
+            table.push_str(&format!(
+                "| {core} | the naive f32 sketch (its string expanded) | {} instructions | {} instructions |\n",
+                thousands(cost),
+                thousands(cost / work),
+            ));
+        }
+    }
     table
 }
 
