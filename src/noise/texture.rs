@@ -220,7 +220,7 @@ impl<'a> NoiseTexture<'a> {
 }
 
 /// A texture fitted to an area with a palette: an embedded-graphics [`Drawable`], sent as
-/// one `fill_contiguous` over the area.
+/// one `fill_contiguous` a row.
 #[derive(Debug, Clone)]
 pub struct NoiseDrawing<'a, P> {
     texture: NoiseTexture<'a>,
@@ -291,17 +291,20 @@ impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
     where
         D: DrawTarget<Color = Self::Color>,
     {
-        let h = self.area.size.height;
-        let colors = (0..h).flat_map(|y| {
-            // A row shares its y: each octave's part of it is computed once.
-            let (_, row, _) = self.texture.point((0, y), self.area.size.width.max(1));
+        // A row at a time: a row shares its y (each octave's part of it is computed
+        // once), and its pixels leave as one run without an iterator of rows around it.
+        let width = self.area.size.width;
+        for (y, top) in (0..self.area.size.height).zip(self.area.top_left.y..) {
+            let (_, row, _) = self.texture.point((0, y), width.max(1));
             let sums = RowSums::row(&self.ladder, row);
-            self.row_points(y).map(move |point| {
+            let colors = self.row_points(y).map(|point| {
                 let level = level_of(self.value_of(&sums, point));
                 self.palette.color(u16::from(level), u16::MAX)
-            })
-        });
-        target.fill_contiguous(&self.area, colors)
+            });
+            let line = Rectangle::new(Point::new(self.area.top_left.x, top), Size::new(width, 1));
+            target.fill_contiguous(&line, colors)?;
+        }
+        Ok(())
     }
 }
 
