@@ -134,3 +134,31 @@ fn dithering_is_a_function_of_the_pixel_alone() {
         }
     }
 }
+
+/// A run of one colour (`fill_solid`) is each pixel's colour quantized at its own
+/// threshold, whether it leaves as a pattern or, one panel colour at every threshold, as a
+/// run of that colour: every grey, on one-bit and 2-bit grey panels.
+#[test]
+fn a_run_of_one_colour_is_its_pixels() {
+    fn check<C: Quantize + core::fmt::Debug + From<BinaryColor>>(grey: u8, dither: Dither) {
+        let mut display = SimulatorDisplay::<C>::new(Size::new(24, 24));
+        let area = Rectangle::new(Point::new(3, 5), Size::new(17, 11));
+        let color = Rgb888::new(grey, grey, grey);
+        Dithered::new(&mut display, dither)
+            .fill_solid(&area, color)
+            .unwrap();
+        for point in area.points() {
+            assert_eq!(
+                display.get_pixel(point),
+                C::quantize(color, dither.threshold(point)),
+                "{grey} {dither:?} {point}"
+            );
+        }
+    }
+    for grey in 0..=255u8 {
+        for dither in [Dither::None, Dither::Bayer4, Dither::Bayer8] {
+            check::<BinaryColor>(grey, dither);
+            check::<Gray2>(grey, dither);
+        }
+    }
+}

@@ -63,6 +63,26 @@ const fn thresholds(n: usize) -> [u16; 64] {
 const NEAREST: [u16; 64] = thresholds(1);
 const BAYER4_THRESHOLDS: [u16; 64] = thresholds(4);
 const BAYER8_THRESHOLDS: [u16; 64] = thresholds(8);
+const BAYER4_RANGE: (u16, u16) = range(&BAYER4_THRESHOLDS);
+const BAYER8_RANGE: (u16, u16) = range(&BAYER8_THRESHOLDS);
+
+/// The lowest and highest of a table's thresholds.
+// Evaluated when the crate compiles, as `thresholds` is.
+#[allow(clippy::indexing_slicing)]
+const fn range(table: &[u16; 64]) -> (u16, u16) {
+    let (mut low, mut high) = (u16::MAX, 0);
+    let mut i = 0;
+    while i < 64 {
+        if table[i] < low {
+            low = table[i];
+        }
+        if table[i] > high {
+            high = table[i];
+        }
+        i += 1;
+    }
+    (low, high)
+}
 
 /// The place of pixel (x, y) in an 8×8 block of thresholds, row by row.
 #[inline(always)]
@@ -78,6 +98,17 @@ impl Dither {
             Self::None => &NEAREST,
             Self::Bayer4 => &BAYER4_THRESHOLDS,
             Self::Bayer8 => &BAYER8_THRESHOLDS,
+        }
+    }
+
+    /// Its lowest and highest thresholds (a colour alike at both is alike at every one:
+    /// a panel's colour grows with the threshold).
+    #[inline]
+    const fn range(self) -> (u16, u16) {
+        match self {
+            Self::None => (128, 128),
+            Self::Bayer4 => BAYER4_RANGE,
+            Self::Bayer8 => BAYER8_RANGE,
         }
     }
 
@@ -196,7 +227,8 @@ impl Quantize for Rgb888 {
 ///
 /// Every pixel drawn into it is brought to the panel's colours by [`Dither`] at its
 /// position. Runs stay runs: a `fill_solid` of one colour leaves as a `fill_contiguous` of
-/// its dithered pattern (or a `fill_solid` without dithering).
+/// its dithered pattern, or as a `fill_solid` where every threshold gives one panel colour
+/// (always without dithering).
 #[derive(Debug)]
 pub struct Dithered<'a, D> {
     target: &'a mut D,
@@ -269,8 +301,13 @@ where
 
     fn fill_solid(&mut self, area: &Rectangle, color: Rgb888) -> Result<(), Self::Error> {
         let prepared = D::Color::prepare(color);
-        if self.dither == Dither::None {
-            return self.target.fill_solid(area, D::Color::at(prepared, 128));
+        // One colour at every threshold (always without dithering; with it, a colour at or
+        // beyond the panel's ends, or between two of its levels' thresholds' reach) is a
+        // run of that colour.
+        let (low, high) = self.dither.range();
+        let lowest = D::Color::at(prepared, low);
+        if lowest == D::Color::at(prepared, high) {
+            return self.target.fill_solid(area, lowest);
         }
         // Each row's pattern of eight, repeated.
         let table = self.dither.table();
