@@ -191,8 +191,9 @@ fn walk(string: &[u8], line: &mut dyn FnMut((f32, f32), (f32, f32), f32)) {
     }
 }
 
-/// The monopodial tree from `A(1, 0.1)` at `order`, grown and drawn as a sketch does (see
-/// the module's notes) in white on black. Returns the lines drawn, or 0 if the string
+/// The monopodial tree from `A(1, 0.1)` at `order`, as a sketch grows and draws it.
+///
+/// White on black, as the module's notes say. Returns the lines drawn, or 0 if the string
 /// outgrows [`NAIVE_TREE_STRING`].
 pub fn monopodial_tree_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
     let _ = target.clear(Gray4::BLACK);
