@@ -200,20 +200,26 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
         self.work.tick()?;
         let at = top.position;
         top.position += 1;
-        let parent = *top;
-        let module = grammar.read(at, &parent.bound, query)?;
+        // The frame is copied only where an expansion needs it, not for every module.
+        let (drawn, growing) = (top.drawn, top.growing);
+        let module = grammar.read(at, &top.bound, query)?;
         if module.symbol == b'%' {
             self.cut();
             return Ok(Advanced::Again);
         }
-        if level >= order || parent.drawn {
-            if !parent.drawn && self.interpreted(&module, at, &parent, query)? {
-                return Ok(Advanced::Again);
+        if level >= order || drawn {
+            if !drawn && self.interpret {
+                if let Some(&parent) = self.frames.last() {
+                    if self.interpreted(&module, at, &parent, query)? {
+                        return Ok(Advanced::Again);
+                    }
+                }
             }
-            return Ok(Advanced::Module(
-                self.grown(derived(&module), parent.growing),
-            ));
+            return Ok(Advanced::Module(self.grown(derived(&module), growing)));
         }
+        let Some(&parent) = self.frames.last() else {
+            return Ok(Advanced::End);
+        };
         if self.contextual || self.growth.is_some() {
             return Ok(
                 match self.expand_with_care(&module, at, &parent, (level, order), query)? {
@@ -221,6 +227,14 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
                     None => Advanced::Again,
                 },
             );
+        }
+        // Most modules of a production no production rewrites (`F`, `[`, the turns): they
+        // are what they are at every level below, without a look at the productions.
+        if !grammar.may_rewrite(Rewrite::Derivation, module.symbol) {
+            if self.interpret && self.interpreted(&module, at, &parent, query)? {
+                return Ok(Advanced::Again);
+            }
+            return Ok(Advanced::Module(derived(&module)));
         }
         match grammar.expand(&module, at, &parent, (None, None), query)? {
             Expansion::Successor(frame) | Expansion::Kept(frame) => {
