@@ -10,6 +10,7 @@ use heapless::Vec;
 use super::space::{AnyTurtle, Drawn, Segment3};
 use super::surface::MAX_POLYGON_VERTICES;
 use super::tropism::Tropism;
+use super::values::DerivedModule;
 use super::walker::ParametricWalker;
 use crate::error::Error;
 use crate::lsystem::turtle::DEFAULT_STACK;
@@ -73,6 +74,8 @@ pub struct Marks3<
     marks: u64,
     /// An error was handed out, or the walk ended.
     done: bool,
+    /// The module the walk handed out last (kept here, not passed up by value).
+    module: DerivedModule,
 }
 
 impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
@@ -102,6 +105,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
             environment: options.environment,
             marks: 0,
             done: false,
+            module: DerivedModule::NONE,
         }
     }
 
@@ -144,18 +148,18 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
             return None;
         }
         loop {
-            let module = match self.environment {
+            let read = match self.environment {
                 Some(Held(environment)) => {
                     // Every module expanded before the next one is handed out is where
                     // the turtle stands now.
                     let state = self.turtle.state();
                     let ask = |query: Real| environment.query(query, &state);
-                    self.walker.next_queried(Some(&ask))
+                    self.walker.next_into(Some(&ask), &mut self.module)
                 }
-                None => self.walker.next(),
+                None => self.walker.next_into(None, &mut self.module),
             };
-            let outcome = match module {
-                Some(Ok(module)) => self.turtle.execute(&module),
+            let outcome = match read {
+                Some(Ok(())) => self.turtle.execute(&self.module),
                 Some(Err(error)) => Err(error),
                 None => {
                     self.done = true;

@@ -38,6 +38,17 @@ pub struct DerivedModule {
     pub values: Values,
 }
 
+impl DerivedModule {
+    /// No module: what a buffer for one holds before the first.
+    pub(crate) const NONE: Self = Self {
+        symbol: '\0',
+        values: Values {
+            values: [Real::ZERO; MAX_PARAMS],
+            count: 0,
+        },
+    };
+}
+
 impl fmt::Display for DerivedModule {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         use fmt::Write;

@@ -150,11 +150,24 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
     /// The next module; `query` answers `env(k)` (the environment, about the turtle where
     /// the walk is).
     pub(crate) fn next_queried(&mut self, query: Query) -> Option<Result<DerivedModule, Error>> {
+        let mut module = DerivedModule::NONE;
+        self.next_into(query, &mut module)
+            .map(|outcome| outcome.map(|()| module))
+    }
+
+    /// [`next_queried`](Self::next_queried), the module written into `module` (a walk's
+    /// caller keeps one, instead of each module passing up by value).
+    pub(crate) fn next_into(
+        &mut self,
+        query: Query,
+        module: &mut DerivedModule,
+    ) -> Option<Result<(), Error>> {
         if let Some(error) = self.pending.take() {
             return Some(Err(error));
         }
-        match self.step(query) {
-            Ok(module) => module.map(Ok),
+        match self.step(query, module) {
+            Ok(true) => Some(Ok(())),
+            Ok(false) => None,
             Err(error) => {
                 self.frames.clear();
                 Some(Err(error))
@@ -167,12 +180,12 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
         self.work.read
     }
 
-    /// The next module, or `None` at the end.
-    fn step(&mut self, query: Query) -> Result<Option<DerivedModule>, Error> {
+    /// The next module written into `out`: false at the end.
+    fn step(&mut self, query: Query, out: &mut DerivedModule) -> Result<bool, Error> {
         loop {
-            match self.advance(query)? {
-                Advanced::Module(module) => return Ok(Some(module)),
-                Advanced::End => return Ok(None),
+            match self.advance(query, out)? {
+                Advanced::Module => return Ok(true),
+                Advanced::End => return Ok(false),
                 Advanced::Again => {}
             }
         }
@@ -186,7 +199,7 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
     /// a loop: most calls hand out the first module they read, and a loop here has the
     /// compiler set up, at every call, addresses that only its later rounds would use.
     #[inline(never)]
-    fn advance(&mut self, query: Query) -> Result<Advanced, Error> {
+    fn advance(&mut self, query: Query, out: &mut DerivedModule) -> Result<Advanced, Error> {
         let grammar = self.grammar;
         let order = usize::try_from(self.order).unwrap_or(usize::MAX);
         let level = self.frames.len().wrapping_sub(1);
@@ -215,7 +228,8 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
                     }
                 }
             }
-            return Ok(Advanced::Module(self.grown(derived(&module), growing)));
+            *out = self.grown(derived(&module), growing);
+            return Ok(Advanced::Module);
         }
         let Some(&parent) = self.frames.last() else {
             return Ok(Advanced::End);
@@ -223,7 +237,10 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
         if self.contextual || self.growth.is_some() {
             return Ok(
                 match self.expand_with_care(&module, at, &parent, (level, order), query)? {
-                    Some(module) => Advanced::Module(module),
+                    Some(module) => {
+                        *out = module;
+                        Advanced::Module
+                    }
                     None => Advanced::Again,
                 },
             );
@@ -234,7 +251,8 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
             if self.interpret && self.interpreted(&module, at, &parent, query)? {
                 return Ok(Advanced::Again);
             }
-            return Ok(Advanced::Module(derived(&module)));
+            *out = derived(&module);
+            return Ok(Advanced::Module);
         }
         match grammar.expand(&module, at, &parent, (None, None), query)? {
             Expansion::Successor(frame) | Expansion::Kept(frame) => {
@@ -248,7 +266,8 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
                 if self.interpreted(&module, at, &parent, query)? {
                     return Ok(Advanced::Again);
                 }
-                Ok(Advanced::Module(derived(&module)))
+                *out = derived(&module);
+                Ok(Advanced::Module)
             }
         }
     }
@@ -333,8 +352,8 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
 
 /// What one module read came to.
 enum Advanced {
-    /// A module to hand out.
-    Module(DerivedModule),
+    /// A module to hand out (written where the caller asked).
+    Module,
     /// Nothing yet: read on.
     Again,
     /// The end of the walk.
