@@ -819,25 +819,9 @@ pub fn lsystem_f32<D: DrawTarget<Color = Gray4>>(
             }
         }
     };
-    let (mut low, mut high) = ((f32::MAX, f32::MAX), (f32::MIN, f32::MIN));
-    walk(&mut |a, b| {
-        for (px, py) in [a, b] {
-            low = (low.0.min(px), low.1.min(py));
-            high = (high.0.max(px), high.1.max(py));
-        }
-    });
-    let size = target.bounding_box().size;
-    let (w, h) = (size.width as f32 - 4.0, size.height as f32 - 4.0);
-    let scale = (w / (high.0 - low.0).max(1e-6)).min(h / (high.1 - low.1).max(1e-6));
-    // Centred: the spare width (or height) split either side.
-    let left = 2.0 + (w - (high.0 - low.0) * scale) / 2.0;
-    let bottom = 2.0 + h - (h - (high.1 - low.1) * scale) / 2.0;
-    let pixel = |(px, py): (f32, f32)| {
-        Point::new(
-            (left + (px - low.0) * scale + 0.5) as i32,
-            (bottom - (py - low.1) * scale + 0.5) as i32,
-        )
-    };
+    let mut bounds = Bounds::new();
+    walk(&mut |a, b| bounds.add([a, b]));
+    let (_, pixel) = bounds.fitted(target.bounding_box().size);
     let mut drawn = 0;
     walk(&mut |a, b| {
         let _ = Line::new(pixel(a), pixel(b))
@@ -846,6 +830,47 @@ pub fn lsystem_f32<D: DrawTarget<Color = Gray4>>(
         drawn += 1;
     });
     drawn
+}
+
+/// The box of a turtle's points, as a sketch measures it before drawing.
+struct Bounds {
+    low: (f32, f32),
+    high: (f32, f32),
+}
+
+impl Bounds {
+    fn new() -> Self {
+        Self {
+            low: (f32::MAX, f32::MAX),
+            high: (f32::MIN, f32::MIN),
+        }
+    }
+
+    /// The box grown to hold `points`.
+    fn add(&mut self, points: [(f32, f32); 2]) {
+        for (x, y) in points {
+            self.low = (self.low.0.min(x), self.low.1.min(y));
+            self.high = (self.high.0.max(x), self.high.1.max(y));
+        }
+    }
+
+    /// The box fitted to a target of `size` less a 2-pixel margin and centred (y up): the
+    /// scale in pixels a unit, and the pixel of a point.
+    fn fitted(&self, size: Size) -> (f32, impl Fn((f32, f32)) -> Point) {
+        let (low, high) = (self.low, self.high);
+        let (w, h) = (size.width as f32 - 4.0, size.height as f32 - 4.0);
+        let scale = (w / (high.0 - low.0).max(1e-6)).min(h / (high.1 - low.1).max(1e-6));
+        // Centred: the spare width (or height) split either side.
+        let left = 2.0 + (w - (high.0 - low.0) * scale) / 2.0;
+        let bottom = 2.0 + h - (h - (high.1 - low.1) * scale) / 2.0;
+        let pixel = move |(x, y): (f32, f32)| {
+            Point::new(
+                (left + (x - low.0) * scale + 0.5) as i32,
+                (bottom - (y - low.1) * scale + 0.5) as i32,
+            )
+        };
+        (scale, pixel)
+    }
 }
 
 /// Cubic Bézier curves as a sketch draws them, in `f32`: each curve evaluated by its

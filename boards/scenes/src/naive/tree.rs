@@ -16,6 +16,8 @@ use embedded_graphics::primitives::{Line, PrimitiveStyle};
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use micromath::F32Ext;
 
+use super::Bounds;
+
 /// The longest expanded string the sketch holds, in bytes (the tree at order 10 takes
 /// 27,670: 7,162 modules and 5,127 parameters).
 pub const NAIVE_TREE_STRING: usize = 28 * 1024;
@@ -229,24 +231,9 @@ pub fn monopodial_tree_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mu
         length = grown_length;
     }
     let string = &buffer[..length];
-    let (mut low, mut high) = ((f32::MAX, f32::MAX), (f32::MIN, f32::MIN));
-    walk(string, &mut |a, b, _| {
-        for (x, y) in [a, b] {
-            low = (low.0.min(x), low.1.min(y));
-            high = (high.0.max(x), high.1.max(y));
-        }
-    });
-    let size = target.bounding_box().size;
-    let (w, h) = (size.width as f32 - 4.0, size.height as f32 - 4.0);
-    let scale = (w / (high.0 - low.0).max(1e-6)).min(h / (high.1 - low.1).max(1e-6));
-    let left = 2.0 + (w - (high.0 - low.0) * scale) / 2.0;
-    let bottom = 2.0 + h - (h - (high.1 - low.1) * scale) / 2.0;
-    let pixel = |(x, y): (f32, f32)| {
-        Point::new(
-            (left + (x - low.0) * scale + 0.5) as i32,
-            (bottom - (y - low.1) * scale + 0.5) as i32,
-        )
-    };
+    let mut bounds = Bounds::new();
+    walk(string, &mut |a, b, _| bounds.add([a, b]));
+    let (scale, pixel) = bounds.fitted(target.bounding_box().size);
     let mut drawn = 0;
     walk(string, &mut |a, b, width| {
         let pixels = width * scale;
