@@ -16,7 +16,7 @@ use embedded_graphics::primitives::{Line, PrimitiveStyle};
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use micromath::F32Ext;
 
-use super::Bounds;
+use super::bounds::Bounds;
 
 /// The longest expanded string the sketch holds, in bytes (the tree at order 10 takes
 /// 27,670: 7,162 modules and 5,127 parameters).
