@@ -294,7 +294,9 @@ impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
         // A row at a time: a row shares its y (each octave's part of it is computed
         // once), and its pixels leave as one run without an iterator of rows around it.
         let width = self.area.size.width;
-        for (y, top) in (0..self.area.size.height).zip(self.area.top_left.y..) {
+        for y in 0..self.area.size.height {
+            // Wrapping, not counting on: a row past `i32::MAX` is off every target anyway.
+            let top = self.area.top_left.y.wrapping_add_unsigned(y);
             let (_, row, _) = self.texture.point((0, y), width.max(1));
             let sums = RowSums::row(&self.ladder, row);
             let colors = self.row_points(y).map(|point| {

@@ -63,6 +63,7 @@ const fn thresholds(n: usize) -> [u16; 64] {
 const NEAREST: [u16; 64] = thresholds(1);
 const BAYER4_THRESHOLDS: [u16; 64] = thresholds(4);
 const BAYER8_THRESHOLDS: [u16; 64] = thresholds(8);
+const NEAREST_RANGE: (u16, u16) = range(&NEAREST);
 const BAYER4_RANGE: (u16, u16) = range(&BAYER4_THRESHOLDS);
 const BAYER8_RANGE: (u16, u16) = range(&BAYER8_THRESHOLDS);
 
@@ -106,7 +107,7 @@ impl Dither {
     #[inline]
     const fn range(self) -> (u16, u16) {
         match self {
-            Self::None => (128, 128),
+            Self::None => NEAREST_RANGE,
             Self::Bayer4 => BAYER4_RANGE,
             Self::Bayer8 => BAYER8_RANGE,
         }
