@@ -6,7 +6,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::fixed::to_real;
 use super::kind::Kind;
-use super::orbit::{Attractor, Orbit};
+use super::orbit::{Attractor, Orbit, Settled};
 use super::place::Placer;
 use super::step::State;
 use crate::error::{only_target_errors, DrawError, Error, FitError};
@@ -96,6 +96,11 @@ impl AttractorPicture {
         self.attractor.orbit(self.skip, self.points)
     }
 
+    /// The points it plots, from where the fit `settled` them.
+    fn orbit_after(&self, settled: Settled) -> Orbit {
+        self.attractor.orbit_from(settled, self.points)
+    }
+
     /// A state as a point of picture space.
     #[inline]
     fn in_space(&self, state: State) -> [Real; 3] {
@@ -139,9 +144,12 @@ impl AttractorPicture {
         }
     }
 
-    /// The fit, scaled and centred in `area` less a margin, and for a planar picture its
-    /// placement in the orbit's fixed point.
-    fn space(&self, area: &Rectangle) -> Result<(SpaceFit, Option<Placer>), Error> {
+    /// Where the orbit starts past its transient, and the fit, scaled and centred in
+    /// `area` less a margin, with a planar picture's placement in the orbit's fixed point.
+    fn settled_space(
+        &self,
+        area: &Rectangle,
+    ) -> Result<(Settled, SpaceFit, Option<Placer>), Error> {
         if area.size.width == 0 || area.size.height == 0 {
             return Err(Error::Fit(FitError::ZeroSizeTarget));
         }
@@ -150,10 +158,11 @@ impl AttractorPicture {
                 return Ok(fitted);
             }
         }
+        let settled = self.attractor.settled(self.skip, self.points)?;
         let sample = self.sample();
         let space = SpaceFit::new(
             || {
-                let mut orbit = self.attractor.orbit(self.skip, sample);
+                let mut orbit = self.attractor.orbit_from(settled, sample);
                 core::iter::from_fn(move || orbit.next_state())
                     .map(|state| state.map(|state| [self.in_space(state)]))
             },
@@ -162,23 +171,27 @@ impl AttractorPicture {
             area,
             DEFAULT_MARGIN,
         )?;
-        Ok((space, None))
+        Ok((settled, space, None))
     }
 
     /// A planar picture's fit from the sample's box, measured in state bits (no `Real`
-    /// a point); `None` for a picture of no points.
-    fn planar_space(&self, area: &Rectangle) -> Result<Option<(SpaceFit, Option<Placer>)>, Error> {
+    /// a point), with the first point it meets; `None` for a picture of no points.
+    fn planar_space(
+        &self,
+        area: &Rectangle,
+    ) -> Result<Option<(Settled, SpaceFit, Option<Placer>)>, Error> {
         let kind = self.attractor.kind();
-        let mut bounds: Option<([i32; 2], [i32; 2])> = None;
+        let mut seen: Option<(State, [i32; 2], [i32; 2])> = None;
         self.attractor
             .orbit(self.skip, self.sample())
             .run(|state| {
                 let [u, v] = planar(kind, state);
-                let ([low_u, low_v], [high_u, high_v]) = bounds.get_or_insert(([u, v], [u, v]));
+                let (_, [low_u, low_v], [high_u, high_v]) =
+                    seen.get_or_insert((state, [u, v], [u, v]));
                 (*low_u, *low_v) = ((*low_u).min(u), (*low_v).min(v));
                 (*high_u, *high_v) = ((*high_u).max(u), (*high_v).max(v));
             })?;
-        let Some((low, high)) = bounds else {
+        let Some((first, low, high)) = seen else {
             return Ok(None);
         };
         let bits = self.attractor.kind().fraction_bits();
@@ -193,7 +206,8 @@ impl AttractorPicture {
                 (area.size.width, area.size.height),
             ),
         );
-        Ok(Some((space, placer)))
+        let settled = Settled::new(first, self.skip);
+        Ok(Some((settled, space, placer)))
     }
 
     /// Fitted into `area`, each point a pixel of `color`.
@@ -202,9 +216,10 @@ impl AttractorPicture {
         area: Rectangle,
         color: C,
     ) -> Result<AttractorDrawing<C>, Error> {
-        let (space, placer) = self.space(&area)?;
+        let (settled, space, placer) = self.settled_space(&area)?;
         Ok(AttractorDrawing {
             picture: *self,
+            settled,
             space,
             placer,
             area,
@@ -222,9 +237,10 @@ impl AttractorPicture {
         palette: P,
         counts: &'b mut [T],
     ) -> Result<AttractorDensity<'b, P, T>, Error> {
-        let (space, placer) = self.space(&area)?;
+        let (settled, space, placer) = self.settled_space(&area)?;
         Ok(AttractorDensity {
             picture: *self,
+            settled,
             space,
             placer,
             palette,
@@ -248,6 +264,8 @@ fn planar(kind: Kind, [x, y, z]: State) -> [i32; 2] {
 #[derive(Debug, Clone, Copy)]
 pub struct AttractorDrawing<C> {
     picture: AttractorPicture,
+    /// Where the orbit starts past its transient (taken once, by the fit).
+    settled: Settled,
     space: SpaceFit,
     placer: Option<Placer>,
     area: Rectangle,
@@ -262,7 +280,7 @@ impl<C: PixelColor> AttractorDrawing<C> {
     {
         let clip = target.bounding_box();
         let mut stats = AttractorStats::default();
-        let mut orbit = self.picture.orbit();
+        let mut orbit = self.picture.orbit_after(self.settled);
         let kind = self.picture.attractor.kind();
         while let Some(state) = orbit.next_state() {
             let state = state?;
@@ -311,6 +329,8 @@ impl<C: PixelColor> Drawable for AttractorDrawing<C> {
 #[derive(Debug)]
 pub struct AttractorDensity<'b, P, T = u16> {
     picture: AttractorPicture,
+    /// Where the orbit starts past its transient (taken once, by the fit).
+    settled: Settled,
     space: SpaceFit,
     placer: Option<Placer>,
     palette: P,
@@ -325,7 +345,7 @@ impl<P: Palette, T: HitCount> AttractorDensity<'_, P, T> {
     {
         self.density.clear();
         let mut stats = AttractorStats::default();
-        let mut orbit = self.picture.orbit();
+        let mut orbit = self.picture.orbit_after(self.settled);
         let kind = self.picture.attractor.kind();
         match self.placer {
             Some(placer) => {
@@ -333,7 +353,7 @@ impl<P: Palette, T: HitCount> AttractorDensity<'_, P, T> {
                 orbit.run(|state| {
                     let [u, v] = planar(kind, state);
                     let hit = match placer.place(u, v) {
-                        Some((column, row)) => self.density.hit_at(column, row),
+                        Some((column, row)) => self.density.hit_inside(column, row),
                         None => false,
                     };
                     if !hit {

@@ -12,6 +12,35 @@ pub(super) fn mul<const F: u32>(a: i32, b: i32) -> i64 {
     mul_i32_wide(a, b) >> F
 }
 
+/// `a·b` with 32 fraction bits, rounded down: the high word of the product. For a factor
+/// `a` of `F` fraction bits given as `a << (32 − F)` (see [`scaled_rate`]), exactly
+/// `mul::<F>(a, b)`, and never beyond 32 bits.
+#[inline(always)]
+pub(super) fn high_word(a: i32, b: i32) -> i32 {
+    (mul_i32_wide(a, b) >> 32) as i32
+}
+
+/// A rate of `F` fraction bits below ½ as a factor of [`high_word`]: `rate << (32 − F)`,
+/// or `None` where it does not fit (a rate of ½ or more).
+pub(super) fn scaled_rate<const F: u32>(rate: i32) -> Option<i32> {
+    let scaled = i64::from(rate) << (32 - F);
+    i32::try_from(scaled).ok()
+}
+
+/// `a·b` with `F` fraction bits, rounded down, or `None` where it leaves 32 bits: the
+/// same value as `narrow(mul::<F>(a, b))`, checked on the product's high word alone.
+#[inline(always)]
+pub(super) fn mul_narrow<const F: u32>(a: i32, b: i32) -> Option<i32> {
+    let product = mul_i32_wide(a, b);
+    let high = (product >> 32) as i32;
+    // The shifted product fits where the high word's bits from F − 1 up are all equal.
+    if high >> (F - 1) == high >> 31 {
+        Some((product >> F) as i32)
+    } else {
+        None
+    }
+}
+
 /// `value` back in 32 bits, or `None` where it left them.
 #[inline(always)]
 pub(super) fn narrow(value: i64) -> Option<i32> {

@@ -150,6 +150,35 @@ impl Attractor {
         }
     }
 
+    /// Where the orbit of `count` points after `skip` steps starts: the transient taken
+    /// now, once, for [`Attractor::orbit_from`] to start there again (an orbit of no
+    /// points takes no step, as when it is run).
+    pub(crate) fn settled(&self, skip: u64, count: u64) -> Result<Settled, Error> {
+        let mut state = self.first;
+        if count > 0 {
+            for index in 1..=skip {
+                state = self
+                    .stepper
+                    .step(state)
+                    .ok_or_else(|| self.escaped(index))?;
+            }
+        }
+        Ok(Settled::new(state, skip))
+    }
+
+    /// The orbit of `count` points from `settled` (its first point).
+    pub(crate) fn orbit_from(&self, settled: Settled, count: u64) -> Orbit {
+        Orbit {
+            attractor: *self,
+            state: settled.state,
+            skip: 0,
+            left: count,
+            index: settled.index,
+            started: false,
+            failed: false,
+        }
+    }
+
     pub(crate) fn real(&self, state: State) -> [Real; 3] {
         let bits = self.kind.fraction_bits();
         state.map(|value| to_real(value, bits))
@@ -160,6 +189,21 @@ impl Attractor {
             step,
             range: self.kind.range(),
         })
+    }
+}
+
+/// An orbit's first point past its transient, and the steps taken to it: where a drawing
+/// fitted once starts again.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Settled {
+    state: State,
+    index: u64,
+}
+
+impl Settled {
+    /// The orbit's point `state`, `index` steps from its start.
+    pub(crate) fn new(state: State, index: u64) -> Self {
+        Self { state, index }
     }
 }
 

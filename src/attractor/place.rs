@@ -14,7 +14,8 @@ struct Axis<const DOWN: bool> {
     /// The value at the area's low edge (for rows: its high edge, rows counting down), or
     /// as far out as 32 bits reach, in state bits.
     edge: i32,
-    /// The distance from the edge in state bits past which a coordinate is beyond the area.
+    /// The distance from the edge in state bits past which a coordinate is beyond the area
+    /// (its column past the area's far edge).
     span: u32,
     /// Pixels a state unit, times 2^shift.
     step: u32,
@@ -81,10 +82,13 @@ impl<const DOWN: bool> Axis<DOWN> {
         } else {
             i32::try_from(i128::from(low) - out).ok()?
         };
-        // Distances up to the area's far edge (and a pixel) keep start + distance·step in
-        // 64 bits.
-        let reach = ((i128::from(size) + 1) << shift).saturating_sub(start) / step;
-        let span = u32::try_from(reach).unwrap_or(u32::MAX);
+        // The distances that fall before the area's far edge: start + distance·step below
+        // size·2^shift, which keeps it in 64 bits.
+        let limit = (i128::from(size) << shift) - 1 - start;
+        if limit < 0 {
+            return None;
+        }
+        let span = u32::try_from(limit / step).unwrap_or(u32::MAX);
         Some(Self {
             edge,
             span,
@@ -146,9 +150,66 @@ impl Placer {
     }
 
     /// The column and row of the point (`u`, `v`) of the picture, or `None` where it is
-    /// beyond the area (a column or row past its far edge is for the caller to clip).
+    /// beyond the area.
     #[inline(always)]
     pub(super) fn place(&self, u: i32, v: i32) -> Option<(u32, u32)> {
         Some((self.columns.place(u)?, self.rows.place(v)?))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::TestRunner;
+
+    /// The column of a distance by the axis's formula, with no span to stop it.
+    fn column<const DOWN: bool>(axis: &Axis<DOWN>, distance: u32) -> u128 {
+        (u128::from(axis.start) + u128::from(distance) * u128::from(axis.step)) >> (32 + axis.shift)
+    }
+
+    /// An axis places exactly the distances whose column is inside the area: its span is
+    /// the last of them.
+    #[test]
+    fn the_span_ends_at_the_areas_far_edge() {
+        let placed = core::cell::Cell::new(0);
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(
+                    (-(1i32 << 29)..0, 1i32..(1 << 29)),
+                    (1i64 << 28..1i64 << 45, 0i64..(1 << 36)),
+                    (-300i32..300, 1u32..2000),
+                ),
+                |((low, high), (scale, offset), (area_start, size))| {
+                    // The box's low edge lands `offset` (Q32 pixels) into the area.
+                    let low_pixels = ((i128::from(low) << 4) * i128::from(scale)) >> 32;
+                    let origin = (i128::from(area_start) << 32) + i128::from(offset) - low_pixels;
+                    let origin = i64::try_from(origin).expect("within Q32.32");
+                    let scale = (Real::from_bits(scale), Real::from_bits(origin));
+                    let Some(axis) = Axis::<false>::new((low, high), 28, scale, (area_start, size))
+                    else {
+                        return Ok(());
+                    };
+                    placed.set(placed.get() + 1);
+                    prop_assert!(column(&axis, axis.span) < u128::from(size));
+                    if axis.span < u32::MAX {
+                        prop_assert!(column(&axis, axis.span + 1) >= u128::from(size));
+                    }
+                    let v = axis.edge.wrapping_add(axis.span as i32);
+                    prop_assert_eq!(
+                        axis.place(v).map(u128::from),
+                        Some(column(&axis, axis.span))
+                    );
+                    prop_assert_eq!(
+                        axis.place(v.wrapping_add(1)).is_none(),
+                        axis.span < u32::MAX
+                    );
+                    Ok(())
+                },
+            )
+            .unwrap();
+        // Most boxes are placeable: the test is not of refusals alone.
+        assert!(placed.get() > 128, "{} placed", placed.get());
     }
 }

@@ -2,10 +2,14 @@
 //! them, the flows' derivatives times Δt, and the Euler and Runge–Kutta steps over them.
 //! Products round down; a value that leaves 32 bits ends the step with `None`.
 
-use super::fixed::{cos, cos_q30, mul, narrow, sin, sin_q30, times_q30, to_fixed};
+use super::fixed::{
+    cos, cos_q30, high_word, mul, mul_narrow, narrow, scaled_rate, sin, sin_q30, times_q30,
+    to_fixed,
+};
 use super::kind::{Kind, Method};
 use crate::error::{Error, ParameterError};
 use crate::math::trig::{binary_angle_of_radians, binary_angle_of_tangent, sin_of_binary};
+use crate::math::wide::mul_u32_wide;
 use crate::math::Real;
 
 /// A state: x, y, z in the kind's fixed point (z is 0 for the 2D maps).
@@ -179,7 +183,12 @@ impl Stepper {
     #[inline]
     pub(crate) fn with_step<W: WithStep>(&self, run: W) -> W::Output {
         match *self {
-            Self::Henon { a, b } => run.with(move |s| henon(a, b, s)),
+            // The usual parameters inlined; others through a call (a loop of each costs
+            // flash the micro:bit does not have).
+            Self::Henon { a, b } => match scaled_rate::<HENON>(b) {
+                Some(b_scaled) => run.with(move |s| henon_small_b(a, b_scaled, s)),
+                None => run.with(move |s| henon_called(a, b, s)),
+            },
             Self::Clifford(p) => run.with(move |s| clifford(p, s)),
             Self::DeJong(p) => run.with(move |s| de_jong(p, s)),
             Self::Pickover(p) => run.with(move |s| pickover(p, s)),
@@ -192,22 +201,47 @@ impl Stepper {
                 twice_one_less_c,
             } => run.with(move |s| gumowski_mira([a, b, c, twice_one_less_c], s)),
             Self::Popcorn { h } => run.with(move |s| popcorn(h, s)),
-            Self::Lorenz { flow, method } => {
-                run.with(move |s| integrate(method, s, |s| flow.delta(s)))
-            }
-            Self::Rossler { flow, method } => {
-                run.with(move |s| integrate(method, s, |s| flow.delta(s)))
-            }
+            Self::Lorenz { flow, method } => match flow.small_rates() {
+                Some(small) => run.with(move |s| integrate(&small, method, s)),
+                None => run.with(move |s| integrate_called(&flow, method, s)),
+            },
+            Self::Rossler { flow, method } => run.with(move |s| integrate(&flow, method, s)),
         }
     }
+}
+
+/// The largest |x| whose square, with [`HENON`] fraction bits, fits 32 bits.
+const HENON_SQUARE_ROOT_MAX: u32 = ((1u64 << (31 + HENON)) - 1).isqrt() as u32;
+
+/// x² with [`HENON`] fraction bits, or `None` beyond 32 bits: `narrow(mul(x, x))`, the
+/// range checked on x itself so that the square stays a 32-bit value for the next product.
+#[inline(always)]
+fn henon_square(x: i32) -> Option<i32> {
+    if x.unsigned_abs() > HENON_SQUARE_ROOT_MAX {
+        return None;
+    }
+    Some((mul::<HENON>(x, x)) as i32)
 }
 
 /// x′ = 1 − a·x² + y, y′ = b·x.
 #[inline(always)]
 fn henon(a: i32, b: i32, [x, y, _]: State) -> Option<State> {
-    let squared = narrow(mul::<HENON>(x, x))?;
-    let x_next = narrow((1 << HENON) + i64::from(y) - mul::<HENON>(a, squared))?;
+    let x_next = narrow((1 << HENON) + i64::from(y) - mul::<HENON>(a, henon_square(x)?))?;
     Some([x_next, narrow(mul::<HENON>(b, x))?, 0])
+}
+
+/// [`henon`] as a call of its own, for the parameters a loop does not inline.
+#[inline(never)]
+fn henon_called(a: i32, b: i32, s: State) -> Option<State> {
+    henon(a, b, s)
+}
+
+/// [`henon`] with |b| below ½ given as a factor of [`high_word`]: y′ = b·x is one
+/// product's high word, and never beyond 32 bits.
+#[inline(always)]
+fn henon_small_b(a: i32, b_scaled: i32, [x, y, _]: State) -> Option<State> {
+    let x_next = narrow((1 << HENON) + i64::from(y) - mul::<HENON>(a, henon_square(x)?))?;
+    Some([x_next, high_word(b_scaled, x), 0])
 }
 
 /// x′ = sin(a·y) + c·cos(a·x), y′ = sin(b·x) + d·cos(b·y).
@@ -286,23 +320,78 @@ fn popcorn(h: i32, [x, y, _]: State) -> Option<State> {
     Some([x_next, y_next, 0])
 }
 
-impl Lorenz {
+/// A flow: its derivative at a state, times Δt.
+trait Flow: Copy {
+    /// Δt·f(s), or `None` where a value leaves the fixed-point range.
+    fn delta(&self, s: State) -> Option<State>;
+}
+
+impl Flow for Lorenz {
     /// Δt·(σ(y − x), x(ρ − z) − y, x·y − β·z).
-    #[inline(always)]
+    // Inlined where there is a long multiply; a call on ARMv6-M, whose products are
+    // built from 16-bit halves (an RK4 step inlining that four times would not fit the
+    // micro:bit's flash).
+    #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
+    #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
     fn delta(&self, [x, y, z]: State) -> Option<State> {
-        let dx = mul::<FLOW>(self.sigma_dt, y.checked_sub(x)?);
-        // 0 < Δt ≤ 1 and |y|, |z| < 2^(31 − FLOW): the products stay within 32 bits.
+        let dx = mul_narrow::<FLOW>(self.sigma_dt, y.checked_sub(x)?)?;
+        // 0 < Δt ≤ 1: the products are no larger than y and z.
         let y_dt = mul::<FLOW>(self.dt, y) as i32;
         let z_dt = mul::<FLOW>(self.dt, z) as i32;
-        let dy = mul::<FLOW>(x, self.rho_dt.checked_sub(z_dt)?) - i64::from(y_dt);
-        let dz = mul::<FLOW>(x, y_dt) - mul::<FLOW>(self.beta_dt, z);
-        Some([narrow(dx)?, narrow(dy)?, narrow(dz)?])
+        let dy = mul_narrow::<FLOW>(x, self.rho_dt.checked_sub(z_dt)?)?.checked_sub(y_dt)?;
+        let dz = mul_narrow::<FLOW>(x, y_dt)?.checked_sub(mul_narrow::<FLOW>(self.beta_dt, z)?)?;
+        Some([dx, dy, dz])
     }
 }
 
-impl Rossler {
+impl Lorenz {
+    /// The same flow with its rates as factors of [`high_word`], where every rate and Δt
+    /// is below ½ (the usual time steps).
+    fn small_rates(&self) -> Option<SmallRateLorenz> {
+        Some(SmallRateLorenz {
+            dt: scaled_rate::<FLOW>(self.dt)?,
+            sigma_dt: scaled_rate::<FLOW>(self.sigma_dt)?,
+            rho_dt: self.rho_dt,
+            beta_dt: scaled_rate::<FLOW>(self.beta_dt)?,
+        })
+    }
+}
+
+/// The Lorenz flow with Δt, σΔt and βΔt below ½, scaled to 32 fraction bits: a product
+/// by one of them is the high word of one multiply, exactly [`Lorenz`]'s value, and
+/// smaller than the other factor (so never beyond 32 bits).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct SmallRateLorenz {
+    dt: i32,
+    sigma_dt: i32,
+    rho_dt: i32,
+    beta_dt: i32,
+}
+
+impl Flow for SmallRateLorenz {
+    /// [`Lorenz::delta`]'s values and checks, from fewer instructions.
+    // Inlined where there is a long multiply; a call on ARMv6-M, whose products are
+    // built from 16-bit halves (an RK4 step inlining that four times would not fit the
+    // micro:bit's flash).
+    #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
+    #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
+    fn delta(&self, [x, y, z]: State) -> Option<State> {
+        let dx = high_word(self.sigma_dt, y.checked_sub(x)?);
+        let y_dt = high_word(self.dt, y);
+        let z_dt = high_word(self.dt, z);
+        let dy = mul_narrow::<FLOW>(x, self.rho_dt.checked_sub(z_dt)?)?.checked_sub(y_dt)?;
+        let dz = mul_narrow::<FLOW>(x, y_dt)?.checked_sub(high_word(self.beta_dt, z))?;
+        Some([dx, dy, dz])
+    }
+}
+
+impl Flow for Rossler {
     /// Δt·(−(y + z), x + a·y, b + z(x − c)).
-    #[inline(always)]
+    // Inlined where there is a long multiply; a call on ARMv6-M, whose products are
+    // built from 16-bit halves (an RK4 step inlining that four times would not fit the
+    // micro:bit's flash).
+    #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
+    #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
     fn delta(&self, [x, y, z]: State) -> Option<State> {
         let dx = -mul::<FLOW>(self.dt, y.checked_add(z)?);
         let dy = mul::<FLOW>(self.dt, x) + mul::<FLOW>(self.a_dt, y);
@@ -325,42 +414,209 @@ fn half_ahead(s: State, [dx, dy, dz]: State) -> Option<State> {
     ahead(s, [dx >> 1, dy >> 1, dz >> 1])
 }
 
-/// One coordinate of RK4's step: s + (k₁ + 2k₂ + 2k₃ + k₄)/6.
+/// One coordinate of RK4's step: s + (k₁ + 2k₂ + 2k₃ + k₄)/6, each sum checked.
 #[inline(always)]
 fn combined(s: i32, k1: i32, k2: i32, k3: i32, k4: i32) -> Option<i32> {
-    let sum = i64::from(k1) + 2 * (i64::from(k2) + i64::from(k3)) + i64::from(k4);
-    s.checked_add(sixth(sum)?)
+    let middle = k2.checked_add(k3)?;
+    let sum = k1
+        .checked_add(k4)?
+        .checked_add(middle)?
+        .checked_add(middle)?;
+    s.checked_add(sixth(sum))
 }
 
-/// `value / 6`, rounded half away from zero (32-bit division).
+/// `value / 6`, rounded half away from zero.
 #[inline(always)]
-fn sixth(value: i64) -> Option<i32> {
-    let value = narrow(value)?;
-    let (quotient, remainder) = (value / 6, value % 6);
-    Some(if remainder >= 3 {
-        quotient + 1
-    } else if remainder <= -3 {
-        quotient - 1
+fn sixth(value: i32) -> i32 {
+    // |value| + 3 fits a u32; n / 6 = ⌊n·⌈2³⁴/6⌉ / 2³⁴⌋ for every u32 n (no division,
+    // which ARMv6-M does not have).
+    let magnitude = (mul_u32_wide(value.unsigned_abs() + 3, 0xAAAA_AAAB) >> 34) as i32;
+    if value < 0 {
+        -magnitude
     } else {
-        quotient
-    })
+        magnitude
+    }
 }
 
-/// One step of a flow whose derivative times Δt is `delta`: Euler's s + k₁, or RK4's
-/// s + (k₁ + 2k₂ + 2k₃ + k₄)/6 with k₂ = Δt·f(s + k₁/2), k₃ = Δt·f(s + k₂/2),
-/// k₄ = Δt·f(s + k₃) (halves rounded down).
+/// One step of `flow` by `method`.
 #[inline(always)]
-fn integrate(method: Method, s: State, delta: impl Fn(State) -> Option<State>) -> Option<State> {
-    let k1 = delta(s)?;
-    if method == Method::Euler {
-        return ahead(s, k1);
+fn integrate(flow: &impl Flow, method: Method, s: State) -> Option<State> {
+    match method {
+        Method::Euler => euler(flow, s),
+        Method::Rk4 => runge_kutta4(flow, s),
     }
-    let k2 = delta(half_ahead(s, k1)?)?;
-    let k3 = delta(half_ahead(s, k2)?)?;
-    let k4 = delta(ahead(s, k3)?)?;
+}
+
+/// [`integrate`] as a call of its own, for the flows a loop does not inline.
+#[inline(never)]
+fn integrate_called(flow: &impl Flow, method: Method, s: State) -> Option<State> {
+    integrate(flow, method, s)
+}
+
+/// Euler's step of a flow: s + k₁, k₁ = Δt·f(s).
+#[inline(always)]
+fn euler(flow: &impl Flow, s: State) -> Option<State> {
+    ahead(s, flow.delta(s)?)
+}
+
+/// The classical Runge–Kutta step of a flow: s + (k₁ + 2k₂ + 2k₃ + k₄)/6 with
+/// k₁ = Δt·f(s), k₂ = Δt·f(s + k₁/2), k₃ = Δt·f(s + k₂/2), k₄ = Δt·f(s + k₃) (halves
+/// rounded down).
+#[inline(always)]
+fn runge_kutta4(flow: &impl Flow, s: State) -> Option<State> {
+    let k1 = flow.delta(s)?;
+    let k2 = flow.delta(half_ahead(s, k1)?)?;
+    let k3 = flow.delta(half_ahead(s, k2)?)?;
+    let k4 = flow.delta(ahead(s, k3)?)?;
     Some([
         combined(s[0], k1[0], k2[0], k3[0], k4[0])?,
         combined(s[1], k1[1], k2[1], k3[1], k4[1])?,
         combined(s[2], k1[2], k2[2], k3[2], k4[2])?,
     ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::TestRunner;
+
+    /// `mul` then `narrow`, the checked product the fast forms stand for.
+    fn checked(a: i32, b: i32, bits: u32) -> Option<i32> {
+        i32::try_from((i64::from(a) * i64::from(b)) >> bits).ok()
+    }
+
+    /// The Lorenz flow with small rates gives [`Lorenz::delta`]'s values and refusals.
+    #[test]
+    fn small_rate_lorenz_is_lorenz() {
+        let below_half = -(1 << (FLOW - 1)) + 1..(1 << (FLOW - 1));
+        let rates = (
+            1..(1 << (FLOW - 1)),
+            below_half.clone(),
+            any::<i32>(),
+            below_half,
+        );
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(rates, any::<[i32; 3]>(), any::<[i32; 3]>()),
+                |((dt, sigma_dt, rho_dt, beta_dt), wide, narrow_state)| {
+                    let flow = Lorenz {
+                        dt,
+                        sigma_dt,
+                        rho_dt,
+                        beta_dt,
+                    };
+                    let small = flow.small_rates().expect("rates below ½");
+                    // The attractor's own scale as well as the whole 32 bits.
+                    let near = narrow_state.map(|v| v >> 6);
+                    for state in [wide, near] {
+                        prop_assert_eq!(small.delta(state), flow.delta(state));
+                    }
+                    Ok(())
+                },
+            )
+            .unwrap();
+        // A rate of ½ or more keeps the general form.
+        let half = Lorenz {
+            dt: 1 << (FLOW - 1),
+            sigma_dt: 1,
+            rho_dt: 1,
+            beta_dt: 1,
+        };
+        assert_eq!(half.small_rates(), None);
+    }
+
+    /// The general Lorenz derivative against its definition in 64 bits, each product and
+    /// sum checked into 32 bits.
+    #[test]
+    fn lorenz_delta_is_its_checked_definition() {
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(1..=(1i32 << FLOW), any::<[i32; 3]>(), any::<[i32; 3]>()),
+                |(dt, [sigma_dt, rho_dt, beta_dt], state)| {
+                    let flow = Lorenz {
+                        dt,
+                        sigma_dt,
+                        rho_dt,
+                        beta_dt,
+                    };
+                    let [x, y, z] = state.map(|v| v >> 4);
+                    let expected = (|| {
+                        let dx = checked(sigma_dt, y.checked_sub(x)?, FLOW)?;
+                        let y_dt = checked(dt, y, FLOW)?;
+                        let z_dt = checked(dt, z, FLOW)?;
+                        let dy = checked(x, rho_dt.checked_sub(z_dt)?, FLOW)?.checked_sub(y_dt)?;
+                        let dz = checked(x, y_dt, FLOW)?.checked_sub(checked(beta_dt, z, FLOW)?)?;
+                        Some([dx, dy, dz])
+                    })();
+                    prop_assert_eq!(flow.delta([x, y, z]), expected);
+                    Ok(())
+                },
+            )
+            .unwrap();
+    }
+
+    /// Hénon's step with a small b, and the square checked on x, give the checked
+    /// products' values and refusals, at the square's limit too.
+    #[test]
+    fn henon_forms_are_the_checked_products() {
+        let henon_checked = |a: i32, b: i32, [x, y, _]: State| -> Option<State> {
+            let squared = checked(x, x, HENON)?;
+            let product = (i64::from(a) * i64::from(squared)) >> HENON;
+            let x_next = i32::try_from((1i64 << HENON) + i64::from(y) - product).ok()?;
+            Some([x_next, checked(b, x, HENON)?, 0])
+        };
+        let limit = HENON_SQUARE_ROOT_MAX as i32;
+        for x in [limit, limit + 1, -limit, -limit - 1, i32::MIN, i32::MAX, 0] {
+            assert_eq!(henon_square(x), checked(x, x, HENON), "{x}");
+            assert_eq!(henon(1, 1, [x, 0, 0]), henon_checked(1, 1, [x, 0, 0]));
+        }
+        let below_half = -(1 << (HENON - 1)) + 1..(1 << (HENON - 1));
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(any::<i32>(), below_half, any::<[i32; 2]>()),
+                |(a, b, [x, y])| {
+                    let state = [x >> 2, y, 0];
+                    let expected = henon_checked(a, b, state);
+                    prop_assert_eq!(henon(a, b, state), expected);
+                    let scaled = scaled_rate::<HENON>(b).expect("b below ½");
+                    prop_assert_eq!(henon_small_b(a, scaled, state), expected);
+                    Ok(())
+                },
+            )
+            .unwrap();
+    }
+
+    /// A sixth rounded half away from zero, against exact rationals in i64.
+    #[test]
+    fn sixth_rounds_half_away_from_zero() {
+        let exact = |v: i32| -> i32 {
+            let v = i64::from(v);
+            let rounded = (2 * v.abs() + 6) / 12;
+            (if v < 0 { -rounded } else { rounded }) as i32
+        };
+        for v in [
+            i32::MIN,
+            i32::MIN + 1,
+            i32::MAX,
+            i32::MAX - 2,
+            -3,
+            -2,
+            2,
+            3,
+            0,
+        ] {
+            assert_eq!(sixth(v), exact(v), "{v}");
+        }
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(&any::<i32>(), |v| {
+                prop_assert_eq!(sixth(v), exact(v));
+                Ok(())
+            })
+            .unwrap();
+    }
 }

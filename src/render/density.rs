@@ -115,6 +115,13 @@ impl<'b, T: HitCount> Density<'b, T> {
         if column >= self.area.size.width || row >= self.area.size.height {
             return false;
         }
+        self.hit_inside(column, row)
+    }
+
+    /// Counts a hit on the pixel `column`, `row`, known to be inside the area (where it
+    /// is not, a cell beyond the counts is refused; another inside is counted instead).
+    #[inline]
+    pub(crate) fn hit_inside(&self, column: u32, row: u32) -> bool {
         let index = row as usize * self.area.size.width as usize + column as usize;
         match self.counts.get(index) {
             Some(cell) => {
