@@ -180,12 +180,10 @@ impl AttractorPicture {
         &self,
         area: &Rectangle,
     ) -> Result<Option<(Settled, SpaceFit, Option<Placer>)>, Error> {
-        let kind = self.attractor.kind();
         let mut seen: Option<(State, [i32; 2], [i32; 2])> = None;
         self.attractor
             .orbit(self.skip, self.sample())
-            .run(|state| {
-                let [u, v] = planar(kind, state);
+            .run(|[u, v], state| {
                 let (_, [low_u, low_v], [high_u, high_v]) =
                     seen.get_or_insert((state, [u, v], [u, v]));
                 (*low_u, *low_v) = ((*low_u).min(u), (*low_v).min(v));
@@ -346,12 +344,10 @@ impl<P: Palette, T: HitCount> AttractorDensity<'_, P, T> {
         self.density.clear();
         let mut stats = AttractorStats::default();
         let mut orbit = self.picture.orbit_after(self.settled);
-        let kind = self.picture.attractor.kind();
         match self.placer {
             Some(placer) => {
                 let count = orbit.remaining();
-                orbit.run(|state| {
-                    let [u, v] = planar(kind, state);
+                orbit.run(|[u, v], _| {
                     let hit = match placer.place(u, v) {
                         Some((column, row)) => self.density.hit_inside(column, row),
                         None => false,

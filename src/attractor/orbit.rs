@@ -244,11 +244,13 @@ impl Orbit {
         Some(Ok(self.state))
     }
 
-    /// Runs the rest of the orbit, handing each point's state to `visit` in order: the
-    /// drawings' loop, with the kind's step inlined and no `Result` a point. Ends at the
-    /// first state out of range with its error, the points before it visited.
+    /// Runs the rest of the orbit, handing `visit` each point's picture-plane coordinates
+    /// seen from the front (x and y, or x and z for a kind of three dimensions, chosen
+    /// once a run) and its state, in order: the drawings' loop, with the kind's step
+    /// inlined and no `Result` a point. Ends at the first state out of range with its
+    /// error, the points before it visited.
     #[inline]
-    pub(crate) fn run(&mut self, visit: impl FnMut(State)) -> Result<(), Error> {
+    pub(crate) fn run(&mut self, visit: impl FnMut([i32; 2], State)) -> Result<(), Error> {
         let stepper = self.attractor.stepper;
         stepper.with_step(Run { orbit: self, visit })
     }
@@ -305,11 +307,21 @@ struct Run<'o, V> {
     visit: V,
 }
 
-impl<V: FnMut(State)> WithStep for Run<'_, V> {
+/// The picture plane seen from the front: x and y, or x and z (z up) for a kind of three
+/// dimensions.
+#[inline(always)]
+fn plane<const THREE: bool>([x, y, z]: State) -> [i32; 2] {
+    [x, if THREE { z } else { y }]
+}
+
+impl<V: FnMut([i32; 2], State)> WithStep for Run<'_, V> {
     type Output = Result<(), Error>;
 
     #[inline(always)]
-    fn with(mut self, step: impl Fn(State) -> Option<State>) -> Result<(), Error> {
+    fn with<const THREE: bool>(
+        mut self,
+        step: impl Fn(State) -> Option<State>,
+    ) -> Result<(), Error> {
         let orbit = self.orbit;
         if orbit.failed || orbit.left == 0 {
             return Ok(());
@@ -324,20 +336,22 @@ impl<V: FnMut(State)> WithStep for Run<'_, V> {
             }
         }
         let count = orbit.left;
-        let mut left = count;
-        loop {
-            (self.visit)(state);
-            left -= 1;
-            if left == 0 {
-                break;
-            }
-            match step(state) {
-                Some(next) => state = next,
-                None => {
-                    orbit.left = 0;
-                    return Err(orbit.fail(pending + (count - left)));
+        (self.visit)(plane::<THREE>(state), state);
+        let mut visited = 1;
+        // The rest in blocks a 32-bit counter covers: one register for the loop's count.
+        while visited < count {
+            let block = u32::try_from(count - visited).unwrap_or(u32::MAX);
+            for done in 0..block {
+                match step(state) {
+                    Some(next) => state = next,
+                    None => {
+                        orbit.left = 0;
+                        return Err(orbit.fail(pending + visited + u64::from(done)));
+                    }
                 }
+                (self.visit)(plane::<THREE>(state), state);
             }
+            visited += u64::from(block);
         }
         orbit.state = state;
         orbit.index += pending + (count - 1);

@@ -162,7 +162,7 @@ impl WithStep for Once {
     type Output = Option<State>;
 
     #[inline(always)]
-    fn with(self, step: impl Fn(State) -> Option<State>) -> Option<State> {
+    fn with<const THREE: bool>(self, step: impl Fn(State) -> Option<State>) -> Option<State> {
         step(self.0)
     }
 }
@@ -173,8 +173,8 @@ impl WithStep for Once {
 pub(crate) trait WithStep {
     /// What the run gives back.
     type Output;
-    /// Runs with `step`, the kind's step.
-    fn with(self, step: impl Fn(State) -> Option<State>) -> Self::Output;
+    /// Runs with `step`, the kind's step; `THREE` for a kind of three dimensions.
+    fn with<const THREE: bool>(self, step: impl Fn(State) -> Option<State>) -> Self::Output;
 }
 
 impl Stepper {
@@ -186,26 +186,28 @@ impl Stepper {
             // The usual parameters inlined; others through a call (a loop of each costs
             // flash the micro:bit does not have).
             Self::Henon { a, b } => match scaled_rate::<HENON>(b) {
-                Some(b_scaled) => run.with(move |s| henon_small_b(a, b_scaled, s)),
-                None => run.with(move |s| henon_called(a, b, s)),
+                Some(b_scaled) => run.with::<false>(move |s| henon_small_b(a, b_scaled, s)),
+                None => run.with::<false>(move |s| henon_called(a, b, s)),
             },
-            Self::Clifford(p) => run.with(move |s| clifford(p, s)),
-            Self::DeJong(p) => run.with(move |s| de_jong(p, s)),
-            Self::Pickover(p) => run.with(move |s| pickover(p, s)),
-            Self::Hopalong { a, b, c } => run.with(move |s| hopalong(a, b, c, s)),
-            Self::Martin { a } => run.with(move |s| martin(a, s)),
+            Self::Clifford(p) => run.with::<false>(move |s| clifford(p, s)),
+            Self::DeJong(p) => run.with::<false>(move |s| de_jong(p, s)),
+            Self::Pickover(p) => run.with::<true>(move |s| pickover(p, s)),
+            Self::Hopalong { a, b, c } => run.with::<false>(move |s| hopalong(a, b, c, s)),
+            Self::Martin { a } => run.with::<false>(move |s| martin(a, s)),
             Self::GumowskiMira {
                 a,
                 b,
                 c,
                 twice_one_less_c,
-            } => run.with(move |s| gumowski_mira([a, b, c, twice_one_less_c], s)),
-            Self::Popcorn { h } => run.with(move |s| popcorn(h, s)),
+            } => run.with::<false>(move |s| gumowski_mira([a, b, c, twice_one_less_c], s)),
+            Self::Popcorn { h } => run.with::<false>(move |s| popcorn(h, s)),
             Self::Lorenz { flow, method } => match flow.small_rates() {
-                Some(small) => run.with(move |s| integrate(&small, method, s)),
-                None => run.with(move |s| integrate_called(&flow, method, s)),
+                Some(small) => run.with::<true>(move |s| integrate(&small, method, s)),
+                None => run.with::<true>(move |s| integrate_called(&flow, method, s)),
             },
-            Self::Rossler { flow, method } => run.with(move |s| integrate(&flow, method, s)),
+            Self::Rossler { flow, method } => {
+                run.with::<true>(move |s| integrate(&flow, method, s))
+            }
         }
     }
 }

@@ -16,6 +16,7 @@ use crate::error::{Error, FitError};
 pub const DENSITY_LEVELS: u16 = 16;
 
 /// The density level of a hit count.
+#[inline]
 pub(crate) fn level(count: u16) -> u16 {
     if count == 0 {
         return 0;
@@ -139,12 +140,21 @@ impl<'b, T: HitCount> Density<'b, T> {
     {
         let width = self.area.size.width;
         let width_cells = usize::try_from(width).unwrap_or(usize::MAX);
+        // Each level's colour once, not a palette's interpolation a pixel.
+        let shades: [P::Color; DENSITY_LEVELS as usize] =
+            core::array::from_fn(|level| palette.color(level as u16, DENSITY_LEVELS));
+        let [unlit, ..] = shades;
+        // Every level is below DENSITY_LEVELS: the fallback is never taken.
+        let shade = |count: u16| {
+            shades
+                .get(usize::from(level(count)))
+                .copied()
+                .unwrap_or(unlit)
+        };
         for (row, cells) in self.counts.chunks(width_cells.max(1)).enumerate() {
             let y = self.area.top_left.y + i32::try_from(row).unwrap_or(i32::MAX);
             let line = Rectangle::new(Point::new(self.area.top_left.x, y), Size::new(width, 1));
-            let colors = cells
-                .iter()
-                .map(|cell| palette.color(level(cell.get().count()), DENSITY_LEVELS));
+            let colors = cells.iter().map(|cell| shade(cell.get().count()));
             target.fill_contiguous(&line, colors)?;
         }
         Ok(())
