@@ -14,7 +14,7 @@ use embedded_graphics::primitives::Rectangle;
 
 #[cfg(doc)]
 use super::fast::FIT_POINTS;
-use super::fast::{pixel, repeat, sample_box, PixelGame, PixelMaps, FAST_MAPS, SKIPPED};
+use super::fast::{pixel, repeat, sample_box, PixelGame, PixelMaps, FAST_MAPS, SKIPPED, SLOT_MASK};
 use super::maps::Ifs;
 use crate::error::{only_target_errors, DrawError, Error, FitError, WalkError};
 use crate::math::random::Xorshift32;
@@ -373,7 +373,7 @@ impl<C: PixelColor> Iterator for FastPixels<'_, C> {
             // Wrapped: a point left of or above the clip is a large column or row.
             let inside = (x.wrapping_sub(corner.x) as u32) < size.width
                 && (y.wrapping_sub(corner.y) as u32) < size.height;
-            if let (true, Some(&color)) = (inside, self.colors.get(map)) {
+            if let (true, Some(&color)) = (inside, self.colors.get(map & SLOT_MASK)) {
                 return Some(Pixel(Point::new(x, y), color));
             }
         }

@@ -82,6 +82,10 @@ impl PixelMap {
     }
 }
 
+/// A map index masked to the slots (`FAST_MAPS` is a power of two).
+pub(crate) const SLOT_MASK: usize = FAST_MAPS - 1;
+const _: () = assert!(FAST_MAPS.is_power_of_two());
+
 /// A bucket whose random numbers choose more than one map.
 const MIXED: u8 = u8::MAX;
 
@@ -221,6 +225,8 @@ impl PixelMaps {
             Some(index) if index != MIXED => usize::from(index),
             _ => fast_search(&self.thresholds, self.count, random),
         };
+        // The index is below the count already; masked, the compiler knows it is a slot.
+        let index = index & SLOT_MASK;
         match self.maps.get(index) {
             Some(map) => (index, map),
             None => (0, &IDENTITY),
