@@ -213,23 +213,28 @@ impl Stepper {
 }
 
 /// The largest |x| whose square, with [`HENON`] fraction bits, fits 32 bits.
-const HENON_SQUARE_ROOT_MAX: u32 = ((1u64 << (31 + HENON)) - 1).isqrt() as u32;
+const HENON_LARGEST_SQUARABLE: u32 = ((1u64 << (31 + HENON)) - 1).isqrt() as u32;
 
 /// x² with [`HENON`] fraction bits, or `None` beyond 32 bits: `narrow(mul(x, x))`, the
 /// range checked on x itself so that the square stays a 32-bit value for the next product.
 #[inline(always)]
 fn henon_square(x: i32) -> Option<i32> {
-    if x.unsigned_abs() > HENON_SQUARE_ROOT_MAX {
+    if x.unsigned_abs() > HENON_LARGEST_SQUARABLE {
         return None;
     }
-    Some((mul::<HENON>(x, x)) as i32)
+    Some(mul::<HENON>(x, x) as i32)
+}
+
+/// Hénon's x′ = 1 − a·x² + y.
+#[inline(always)]
+fn henon_x(a: i32, x: i32, y: i32) -> Option<i32> {
+    narrow((1 << HENON) + i64::from(y) - mul::<HENON>(a, henon_square(x)?))
 }
 
 /// x′ = 1 − a·x² + y, y′ = b·x.
 #[inline(always)]
 fn henon(a: i32, b: i32, [x, y, _]: State) -> Option<State> {
-    let x_next = narrow((1 << HENON) + i64::from(y) - mul::<HENON>(a, henon_square(x)?))?;
-    Some([x_next, narrow(mul::<HENON>(b, x))?, 0])
+    Some([henon_x(a, x, y)?, narrow(mul::<HENON>(b, x))?, 0])
 }
 
 /// [`henon`] as a call of its own, for the parameters a loop does not inline.
@@ -242,8 +247,7 @@ fn henon_called(a: i32, b: i32, s: State) -> Option<State> {
 /// product's high word, and never beyond 32 bits.
 #[inline(always)]
 fn henon_small_b(a: i32, b_scaled: i32, [x, y, _]: State) -> Option<State> {
-    let x_next = narrow((1 << HENON) + i64::from(y) - mul::<HENON>(a, henon_square(x)?))?;
-    Some([x_next, high_word(b_scaled, x), 0])
+    Some([henon_x(a, x, y)?, high_word(b_scaled, x), 0])
 }
 
 /// x′ = sin(a·y) + c·cos(a·x), y′ = sin(b·x) + d·cos(b·y).
@@ -570,7 +574,7 @@ mod tests {
             let x_next = i32::try_from((1i64 << HENON) + i64::from(y) - product).ok()?;
             Some([x_next, checked(b, x, HENON)?, 0])
         };
-        let limit = HENON_SQUARE_ROOT_MAX as i32;
+        let limit = HENON_LARGEST_SQUARABLE as i32;
         for x in [limit, limit + 1, -limit, -limit - 1, i32::MIN, i32::MAX, 0] {
             assert_eq!(henon_square(x), checked(x, x, HENON), "{x}");
             assert_eq!(henon(1, 1, [x, 0, 0]), henon_checked(1, 1, [x, 0, 0]));
