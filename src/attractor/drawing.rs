@@ -6,7 +6,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::fixed::to_real;
 use super::kind::Kind;
-use super::orbit::{Attractor, Orbit, Settled};
+use super::orbit::{plane, Attractor, Orbit, Settled};
 use super::place::Placer;
 use super::step::State;
 use crate::error::{only_target_errors, DrawError, Error, FitError};
@@ -250,11 +250,11 @@ impl AttractorPicture {
 /// The picture plane's coordinates of a state seen from the front: x and y, or for a 3D
 /// kind x and z (z up).
 #[inline(always)]
-fn planar(kind: Kind, [x, y, z]: State) -> [i32; 2] {
+fn planar(kind: Kind, state: State) -> [i32; 2] {
     if kind.dimensions() == 2 {
-        [x, y]
+        plane::<false>(state)
     } else {
-        [x, z]
+        plane::<true>(state)
     }
 }
 

@@ -310,7 +310,7 @@ struct Run<'o, V> {
 /// The picture plane seen from the front: x and y, or x and z (z up) for a kind of three
 /// dimensions.
 #[inline(always)]
-fn plane<const THREE: bool>([x, y, z]: State) -> [i32; 2] {
+pub(super) fn plane<const THREE: bool>([x, y, z]: State) -> [i32; 2] {
     [x, if THREE { z } else { y }]
 }
 

@@ -334,11 +334,7 @@ trait Flow: Copy {
 
 impl Flow for Lorenz {
     /// Δt·(σ(y − x), x(ρ − z) − y, x·y − β·z).
-    // Inlined where there is a long multiply; a call on ARMv6-M, whose products are
-    // built from 16-bit halves (an RK4 step inlining that four times would not fit the
-    // micro:bit's flash).
-    #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
-    #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
+    #[inline(always)]
     fn delta(&self, [x, y, z]: State) -> Option<State> {
         let dx = mul_narrow::<FLOW>(self.sigma_dt, y.checked_sub(x)?)?;
         // 0 < Δt ≤ 1: the products are no larger than y and z.
@@ -375,12 +371,9 @@ struct SmallRateLorenz {
 }
 
 impl Flow for SmallRateLorenz {
-    /// [`Lorenz::delta`]'s values and checks, from fewer instructions.
-    // Inlined where there is a long multiply; a call on ARMv6-M, whose products are
-    // built from 16-bit halves (an RK4 step inlining that four times would not fit the
-    // micro:bit's flash).
-    #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
-    #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
+    /// [`Lorenz::delta`]'s values and checks, its rate products each one multiply's high
+    /// word (what that saves: docs/performance.md, The attractors against the sketches).
+    #[inline(always)]
     fn delta(&self, [x, y, z]: State) -> Option<State> {
         let dx = high_word(self.sigma_dt, y.checked_sub(x)?);
         let y_dt = high_word(self.dt, y);
@@ -393,11 +386,7 @@ impl Flow for SmallRateLorenz {
 
 impl Flow for Rossler {
     /// Δt·(−(y + z), x + a·y, b + z(x − c)).
-    // Inlined where there is a long multiply; a call on ARMv6-M, whose products are
-    // built from 16-bit halves (an RK4 step inlining that four times would not fit the
-    // micro:bit's flash).
-    #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
-    #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
+    #[inline(always)]
     fn delta(&self, [x, y, z]: State) -> Option<State> {
         let dx = -mul::<FLOW>(self.dt, y.checked_add(z)?);
         let dy = mul::<FLOW>(self.dt, x) + mul::<FLOW>(self.a_dt, y);
@@ -459,10 +448,19 @@ fn integrate_called(flow: &impl Flow, method: Method, s: State) -> Option<State>
     integrate(flow, method, s)
 }
 
+/// `flow`'s derivative at `s`, as the integrators take it: inlined where there is a long
+/// multiply; a call on ARMv6-M, whose products are built from 16-bit halves (an RK4 step
+/// inlining that four times would not fit the micro:bit's flash).
+#[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
+#[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
+fn derivative(flow: &impl Flow, s: State) -> Option<State> {
+    flow.delta(s)
+}
+
 /// Euler's step of a flow: s + k₁, k₁ = Δt·f(s).
 #[inline(always)]
 fn euler(flow: &impl Flow, s: State) -> Option<State> {
-    ahead(s, flow.delta(s)?)
+    ahead(s, derivative(flow, s)?)
 }
 
 /// The classical Runge–Kutta step of a flow: s + (k₁ + 2k₂ + 2k₃ + k₄)/6 with
@@ -470,10 +468,10 @@ fn euler(flow: &impl Flow, s: State) -> Option<State> {
 /// rounded down).
 #[inline(always)]
 fn runge_kutta4(flow: &impl Flow, s: State) -> Option<State> {
-    let k1 = flow.delta(s)?;
-    let k2 = flow.delta(half_ahead(s, k1)?)?;
-    let k3 = flow.delta(half_ahead(s, k2)?)?;
-    let k4 = flow.delta(ahead(s, k3)?)?;
+    let k1 = derivative(flow, s)?;
+    let k2 = derivative(flow, half_ahead(s, k1)?)?;
+    let k3 = derivative(flow, half_ahead(s, k2)?)?;
+    let k4 = derivative(flow, ahead(s, k3)?)?;
     Some([
         combined(s[0], k1[0], k2[0], k3[0], k4[0])?,
         combined(s[1], k1[1], k2[1], k3[1], k4[1])?,
