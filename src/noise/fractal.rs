@@ -3,7 +3,7 @@
 
 use super::perlin::{Perlin, RowPart, Sample, SAMPLE_FRAC_BITS};
 use crate::error::{Error, ParameterError};
-use crate::math::wide::shift_round_i64;
+use crate::math::wide::mul_i32_wide;
 use crate::math::Real;
 
 /// The most octaves a sum takes: the 16th octave's features are 2¹⁵ times finer than the
@@ -110,6 +110,26 @@ pub(crate) struct Ladder {
 }
 
 impl Ladder {
+    /// Whether each octave doubles the last one's frequency (lacunarity 2), or there is one
+    /// octave: then a plane's sum takes each octave's coordinates by doubling.
+    pub(super) fn doubles(&self) -> bool {
+        self.octaves == 1 || self.lacunarity == Real::from_int(2)
+    }
+
+    /// The amplitudes of the octaves summed, first to last.
+    pub(super) fn amplitudes(&self) -> &[Real] {
+        self.amplitudes
+            .get(..self.octaves as usize)
+            .unwrap_or(&self.amplitudes)
+    }
+
+    /// Each octave's amplitude as a [`Weight`], first to last.
+    pub(super) fn weights(&self) -> impl Iterator<Item = Weight> + '_ {
+        self.amplitudes()
+            .iter()
+            .map(|&amplitude| Weight::of(amplitude))
+    }
+
     /// Σaⁱ: what the sums of samples in [−1, 1] stay within.
     pub(crate) fn amplitude_total(&self) -> Result<Real, Error> {
         let mut total = Real::ZERO;
@@ -175,8 +195,18 @@ impl Ladder {
 
     /// Each octave's y part of a row at `y` (lacunarity 2: y doubled an octave); `None`
     /// where it leaves `Real`'s range.
-    fn rows(&self, y: Real) -> Option<[RowPart; MAX_OCTAVES as usize]> {
+    pub(super) fn rows(&self, y: Real) -> Option<[RowPart; MAX_OCTAVES as usize]> {
         let mut rows = [RowPart::default(); MAX_OCTAVES as usize];
+        self.rows_into(y, &mut rows)?;
+        Some(rows)
+    }
+
+    /// [`rows`](Self::rows) written into `rows`, a row's parts kept in place.
+    pub(super) fn rows_into(
+        &self,
+        y: Real,
+        rows: &mut [RowPart; MAX_OCTAVES as usize],
+    ) -> Option<()> {
         let mut y = y.to_bits();
         for (octave, row) in rows.iter_mut().take(self.octaves as usize).enumerate() {
             if octave > 0 {
@@ -184,7 +214,7 @@ impl Ladder {
             }
             *row = RowPart::of(Real::from_bits(y));
         }
-        Some(rows)
+        Some(())
     }
 
     /// [`plane_sum`](Self::plane_sum) at `x` in a row whose y parts are ready.
@@ -225,10 +255,59 @@ impl Ladder {
 
 /// `sample × amplitude` as `Real::checked_mul` gives it (rounded half away from zero to
 /// 2⁻³²), in 64 bits: |sample| < 2³¹ in Q29 and the amplitude at most 2³² in Q32, so the
-/// product in Q61 fits.
-fn times(sample: Sample, amplitude: Real) -> Real {
+/// product in Q61 fits. Rounded without a branch: a negative product's half away from zero
+/// is ⌊(p + half − 1) / 2²⁹⌋.
+#[inline(always)]
+pub(super) fn times(sample: Sample, amplitude: Real) -> Real {
     let product = i64::from(sample.0) * amplitude.to_bits();
-    Real::from_bits(shift_round_i64(product, SAMPLE_FRAC_BITS))
+    let half = 1 << (SAMPLE_FRAC_BITS - 1);
+    Real::from_bits((product + half + (product >> 63)) >> SAMPLE_FRAC_BITS)
+}
+
+/// An octave's amplitude as its samples' terms are cheapest taken: [`times`] in fewer
+/// instructions where the amplitude is a multiple of 2⁻³ (fBm's first four octaves) or a
+/// power of two (its later ones), the same terms.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Weight {
+    /// m·2⁻³ (m at most 8): the product m·sample in 2⁻³² is exact, nothing rounds.
+    Eighths(i32),
+    /// 2⁻ᵏ for k from 4 to 32: the sample (in 2⁻²⁹) shifted right by k − 3, rounded half
+    /// away from zero, in 32 bits.
+    Halving(u32),
+    /// Any other amplitude: [`times`].
+    Any(Real),
+}
+
+impl Weight {
+    /// The weight of `amplitude` (0 to 1).
+    pub(super) fn of(amplitude: Real) -> Self {
+        let bits = amplitude.to_bits();
+        let eighth = 1 << SAMPLE_FRAC_BITS;
+        if bits % eighth == 0 && (0..=8 * eighth).contains(&bits) {
+            Self::Eighths((bits / eighth) as i32)
+        } else if bits > 0 && bits.count_ones() == 1 {
+            // Below 2⁻³ here: the shift is 4 to 32.
+            Self::Halving(SAMPLE_FRAC_BITS - bits.trailing_zeros())
+        } else {
+            Self::Any(amplitude)
+        }
+    }
+
+    /// `sample`'s term at this weight, in 2⁻³²: `times(sample, amplitude)`.
+    #[inline(always)]
+    pub(super) fn term(self, sample: Sample) -> i64 {
+        match self {
+            Self::Eighths(m) => mul_i32_wide(sample.0, m),
+            Self::Halving(shift) => {
+                // |sample| < 2³⁰·¹ and the half at most 2²⁸: no overflow. A negative
+                // sample's half away from zero is ⌊(s + half − 1) / 2ᵏ⌋, as in `times`.
+                let value = sample.0;
+                let half = 1 << (shift.saturating_sub(1) & 31);
+                i64::from((value + half + (value >> 31)) >> (shift & 31))
+            }
+            Self::Any(amplitude) => times(sample, amplitude).to_bits(),
+        }
+    }
 }
 
 /// A ladder with one row of points' y parts ready (one y, in the plane, lacunarity 2):
@@ -241,11 +320,6 @@ pub(crate) struct RowSums<'l> {
 }
 
 impl<'l> RowSums<'l> {
-    /// For points of any row (nothing ready).
-    pub(crate) fn any(ladder: &'l Ladder) -> Self {
-        Self { ladder, row: None }
-    }
-
     /// For the points of the plane at `y`.
     pub(crate) fn row(ladder: &'l Ladder, y: Real) -> Self {
         let ready = ladder.lacunarity == Real::from_int(2);
@@ -272,5 +346,42 @@ impl<'l> RowSums<'l> {
             }
         }
         self.ladder.sum(noise, sum, point)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::TestRunner;
+
+    /// Every kind of weight gives the term `times` gives, at amplitudes of each kind.
+    #[test]
+    fn weights_give_the_products_terms() {
+        let eighths = (0..=8_i64).prop_map(|m| m << SAMPLE_FRAC_BITS);
+        let powers = (0..=32_u32).prop_map(|k| 1_i64 << k);
+        let amplitudes = prop_oneof![eighths, powers, 0..=(1_i64 << 32)];
+        // Samples within the noise's range, ±1.04 in 2⁻²⁹, and at its ends.
+        let bound = (1_i32 << SAMPLE_FRAC_BITS) + (1 << (SAMPLE_FRAC_BITS - 4));
+        let samples = prop_oneof![-bound..=bound, Just(-bound), Just(bound), -64..64];
+        TestRunner::deterministic()
+            .run(&(amplitudes, samples), |(amplitude, sample)| {
+                let amplitude = Real::from_bits(amplitude);
+                let weight = Weight::of(amplitude);
+                let sample = Sample(sample);
+                prop_assert_eq!(weight.term(sample), times(sample, amplitude).to_bits());
+                Ok(())
+            })
+            .unwrap();
+        // Each kind is reached (so the test is not of one path only).
+        for (kind, amplitude) in [(0, 1_i64 << 31), (1, 1 << 20), (2, 3 << 20)] {
+            let weight = Weight::of(Real::from_bits(amplitude));
+            let index = match weight {
+                Weight::Eighths(_) => 0,
+                Weight::Halving(_) => 1,
+                Weight::Any(_) => 2,
+            };
+            assert_eq!(index, kind, "{weight:?}");
+        }
     }
 }

@@ -24,6 +24,7 @@
 
 mod fractal;
 mod perlin;
+mod plane;
 mod terrain;
 mod texture;
 

@@ -1,6 +1,7 @@
 //! Ken Perlin's improved noise (2002) in fixed point: his permutation, fade and gradients.
 
 use crate::math::random::Generator;
+use crate::math::wide::mul_i32_wide;
 use crate::math::Real;
 
 /// Fraction bits of a noise value ([`Sample`]): values lie in about ±1.04, and 29 bits keep
@@ -207,23 +208,160 @@ impl Perlin {
     /// shares its y's cell, place and fade.
     #[inline]
     pub(super) fn noise2_in_row(&self, x: Real, row: RowPart) -> Sample {
-        let (xi, xf) = cell(x);
-        let (yi, yf, v) = (row.cell, row.place, row.fade);
-        let u = fade(xf);
-        let a = self.hash(xi) + yi;
-        let b = self.hash(xi + 1) + yi;
+        let column = ColumnPart::of(x);
+        self.corners(column.cell(), row).sample(column, row)
+    }
+
+    /// The four corners of lattice cell `cell` of `row` (2D, z = 0): what every point of
+    /// the cell in that row shares.
+    #[inline]
+    pub(super) fn corners(&self, cell: i32, row: RowPart) -> CellCorners {
+        let left = self.hash(cell) + row.cell;
         let one = 1 << CELL_FRAC_BITS;
-        // z = 0: the corner's hash is the permutation of its (x, y) hash plus 0.
-        let corner = |hash: i32, dx: i32, dy: i32| gradient(self.hash(self.hash(hash)), dx, dy, 0);
-        Sample(lerp(
-            v,
-            lerp(u, corner(a, xf, yf), corner(b, xf - one, yf)),
-            lerp(
-                u,
-                corner(a + 1, xf, yf - one),
-                corner(b + 1, xf - one, yf - one),
-            ),
-        ))
+        let near = self.line(left, 0, row.place);
+        let far = self.line(left + 1, 0, row.place - one);
+        self.right_corners(cell, near, far, row)
+    }
+
+    /// The corners of the cell after `corners`' one (the next column, modulo 256) in
+    /// `row`: its left corners are the last cell's right ones, so only two are new.
+    #[inline]
+    pub(super) fn next_corners(&self, corners: &CellCorners, row: RowPart) -> CellCorners {
+        // The last cell's right corners' lines, seen from the left: the offset from the
+        // corner no longer subtracts one cell.
+        let from_left = |right: Line| Line {
+            slope: right.slope,
+            offset: right.offset + (right.slope << CELL_FRAC_BITS),
+        };
+        let near = from_left(corners.near_right);
+        let far = from_left(corners.far_right);
+        self.right_corners(corners.cell + 1, near, far, row)
+    }
+
+    /// The corners of cell `cell` of `row` whose left corners' lines are `near` and `far`.
+    #[inline(always)]
+    fn right_corners(&self, cell: i32, near: Line, far: Line, row: RowPart) -> CellCorners {
+        let right = self.hash(cell + 1) + row.cell;
+        let one = 1 << CELL_FRAC_BITS;
+        CellCorners {
+            cell: cell & 255,
+            near_left: near,
+            near_right: self.line(right, -one, row.place),
+            far_left: far,
+            far_right: self.line(right + 1, -one, row.place - one),
+        }
+    }
+
+    /// The line of the corner whose (x, y) hash is `hash`, `dx` from the corner to the
+    /// cell's left edge and `dy` to the row's points (2⁻²⁴ units).
+    #[inline(always)]
+    fn line(&self, hash: i32, dx: i32, dy: i32) -> Line {
+        // z = 0: the corner's hash is the permutation of its (x, y) hash plus 0, and the
+        // gradient's z part meets an offset of 0.
+        let (gx, gy, _) = gradient_of(self.hash(self.hash(hash)));
+        let (gx, gy) = (i32::from(gx), i32::from(gy));
+        let shift = SAMPLE_FRAC_BITS - CELL_FRAC_BITS;
+        Line {
+            slope: gx << shift,
+            offset: (gx * dx + gy * dy) << shift,
+        }
+    }
+}
+
+/// A corner's gradient dotted with the offset from the corner, as a line in the point's
+/// place in its cell: `slope · place + offset` in 2⁻²⁹ (the same integers as
+/// [`gradient`]: the shift distributes over the sum, which stays within ±2).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+struct Line {
+    slope: i32,
+    offset: i32,
+}
+
+impl Line {
+    const ZERO: Self = Self {
+        slope: 0,
+        offset: 0,
+    };
+
+    #[inline(always)]
+    fn at(self, place: i32) -> i32 {
+        self.slope * place + self.offset
+    }
+}
+
+/// The four corners of a lattice cell in a row of 2D noise: a row's points in one cell
+/// need only their x place and fade to be sampled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(super) struct CellCorners {
+    /// The cell, 0 to 255.
+    cell: i32,
+    near_left: Line,
+    near_right: Line,
+    far_left: Line,
+    far_right: Line,
+}
+
+impl CellCorners {
+    /// No cell's corners: those of cell 256, which no point is in.
+    pub(super) const NONE: Self = Self {
+        cell: 256,
+        near_left: Line::ZERO,
+        near_right: Line::ZERO,
+        far_left: Line::ZERO,
+        far_right: Line::ZERO,
+    };
+
+    /// The cell, 0 to 255.
+    #[inline(always)]
+    pub(super) fn cell(&self) -> i32 {
+        self.cell
+    }
+
+    /// The noise at the point of the cell whose x part is `column`, in `row`.
+    #[inline(always)]
+    pub(super) fn sample(&self, column: ColumnPart, row: RowPart) -> Sample {
+        let (place, u) = (column.place(), column.fade);
+        let near = lerp_close(u, self.near_left.at(place), self.near_right.at(place));
+        let far = lerp_close(u, self.far_left.at(place), self.far_right.at(place));
+        Sample(lerp_close(row.fade, near, far))
+    }
+}
+
+/// What 2D noise takes from a point's x: its lattice column (modulo 256) and place in
+/// it, packed in one word as `column · 2²⁴ + place`, and the place's fade in 2⁻³⁰.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(super) struct ColumnPart {
+    cell_place: u32,
+    fade: i32,
+}
+
+impl ColumnPart {
+    /// Column 0, place 0.
+    pub(super) const ZERO: Self = Self {
+        cell_place: 0,
+        fade: 0,
+    };
+
+    /// The part of `x`.
+    #[inline(always)]
+    pub(super) fn of(x: Real) -> Self {
+        let (cell, place) = cell(x);
+        Self {
+            cell_place: ((cell as u32) << CELL_FRAC_BITS) | place as u32,
+            fade: fade(place),
+        }
+    }
+
+    /// The lattice column, 0 to 255.
+    #[inline(always)]
+    pub(super) fn cell(self) -> i32 {
+        (self.cell_place >> CELL_FRAC_BITS) as i32
+    }
+
+    /// The place in the column, in 2⁻²⁴.
+    #[inline(always)]
+    fn place(self) -> i32 {
+        (self.cell_place & ((1 << CELL_FRAC_BITS) - 1)) as i32
     }
 }
 
@@ -278,14 +416,20 @@ pub(crate) fn fade(t: i32) -> i32 {
     ((t * quartic) >> CELL_FRAC_BITS) as i32
 }
 
+/// The gradient `hash` picks: `hash & 15`, as Perlin's `grad`.
+#[inline(always)]
+fn gradient_of(hash: i32) -> (i8, i8, i8) {
+    GRADIENTS
+        .get((hash & 15) as usize)
+        .copied()
+        .unwrap_or_default()
+}
+
 /// The dot product of the gradient `hash` picks with the offset (`dx`, `dy`, `dz`) (2⁻²⁴
 /// units) in 2⁻²⁹.
 #[inline(always)]
 fn gradient(hash: i32, dx: i32, dy: i32, dz: i32) -> i32 {
-    let (gx, gy, gz) = GRADIENTS
-        .get((hash & 15) as usize)
-        .copied()
-        .unwrap_or_default();
+    let (gx, gy, gz) = gradient_of(hash);
     // Two of the three are nonzero, each offset within ±1: the dot is within ±2.
     let dot = i32::from(gx) * dx + i32::from(gy) * dy + i32::from(gz) * dz;
     dot << (SAMPLE_FRAC_BITS - CELL_FRAC_BITS)
@@ -295,6 +439,20 @@ fn gradient(hash: i32, dx: i32, dy: i32, dz: i32) -> i32 {
 #[inline(always)]
 fn lerp(t: i32, a: i32, b: i32) -> i32 {
     let step = i64::from(t) * (i64::from(b) - i64::from(a));
+    a + ((step + (1 << (FADE_FRAC_BITS - 1))) >> FADE_FRAC_BITS) as i32
+}
+
+/// [`lerp`] of `a` and `b` less than 2³¹ apart, so that their difference is an `i32` and
+/// the product one 32×32 → 64-bit multiply: the same value.
+///
+/// In 2D every pair interpolated is that close. A corner's dot is gx·dx + gy·dy with
+/// |dx|, |dy| ≤ 1, and below 2 in magnitude except at the far-right corner, where it is 2
+/// only at place 0, whose fade is 0. So the near and far rows' values are each below 2
+/// (2³⁰ in 2⁻²⁹), and so is their difference's half. Along a row, the x parts of two
+/// corners' dots differ by gx′(xf − 1) − gx·xf, at most 1, and the y parts by at most 2.
+#[inline(always)]
+fn lerp_close(t: i32, a: i32, b: i32) -> i32 {
+    let step = mul_i32_wide(t, b.wrapping_sub(a));
     a + ((step + (1 << (FADE_FRAC_BITS - 1))) >> FADE_FRAC_BITS) as i32
 }
 

@@ -3,10 +3,13 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::fractal::{Ladder, Octaves, RowSums, Sum};
+use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES};
 use super::perlin::Perlin;
+use super::perlin::RowPart;
+use super::plane::{ColumnBlock, BLOCK_COLUMNS};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::trig::BinaryAngle;
+use crate::math::wide::{mul_u32_wide, shift_round_i64};
 use crate::math::{Overflow, Real};
 use crate::render::palette::Palette;
 
@@ -43,7 +46,17 @@ impl Texture {
         point: (Real, Real, Option<Real>),
     ) -> Result<Real, Error> {
         let ladder = octaves.ladder()?;
-        self.value_normalised(noise, &RowSums::any(&ladder), point, normaliser(&ladder)?)
+        self.value_normalised(noise, &ladder, point, normaliser(&ladder)?)
+    }
+
+    /// What the texture is made of: a sum of octaves, or one sample where `None`.
+    fn source(self) -> Option<Sum> {
+        match self {
+            Self::Perlin | Self::Wood => None,
+            Self::Fbm | Self::Clouds => Some(Sum::Fbm),
+            Self::Turbulence | Self::Marble => Some(Sum::Turbulence),
+            Self::Ridged => Some(Sum::Ridged),
+        }
     }
 
     /// [`value`](Self::value) with the sums' normaliser given, so that a drawing computes
@@ -51,32 +64,37 @@ impl Texture {
     fn value_normalised(
         self,
         noise: &Perlin,
-        octaves: &RowSums<'_>,
+        ladder: &Ladder,
         point: (Real, Real, Option<Real>),
         normaliser: Real,
     ) -> Result<Real, Error> {
-        let half = Real::from_bits(1 << (Real::FRAC_BITS - 1));
-        let sample = || noise.sample(point);
-        let sum = |sum: Sum| -> Result<Real, Error> {
-            let total = octaves.sum(noise, sum, point)?;
-            total.checked_mul(normaliser).ok_or(Error::from(Overflow))
+        let source = match self.source() {
+            Some(sum) => ladder.sum(noise, sum, point)?,
+            None => noise.sample(point).to_real(),
         };
+        self.finish(source, point.0, normaliser)
+    }
+
+    /// The value at a point whose x is `x` from its [`source`](Self::source): the sum of
+    /// the octaves (not yet normalised) or the sample.
+    #[inline(always)]
+    fn finish(self, source: Real, x: Real, normaliser: Real) -> Result<Real, Error> {
+        let normalised = || normalise(source, normaliser).ok_or(Error::from(Overflow));
         let unit = |value: Real| value.clamp(Real::ZERO, Real::ONE);
         let centred = |value: Real| -> Result<Real, Error> {
             let shifted = value.checked_add(Real::ONE).ok_or(Overflow)?;
-            Ok(unit(shifted.checked_mul(half).ok_or(Overflow)?))
+            // Times ½ as `Real` multiplies (rounded half away from zero), by a shift.
+            Ok(unit(Real::from_bits(shift_round_i64(shifted.to_bits(), 1))))
         };
         match self {
-            Self::Perlin => centred(sample().to_real()),
-            Self::Fbm | Self::Clouds => centred(sum(Sum::Fbm)?),
-            Self::Turbulence => Ok(unit(sum(Sum::Turbulence)?)),
-            Self::Ridged => Ok(unit(sum(Sum::Ridged)?)),
+            Self::Perlin => centred(source),
+            Self::Fbm | Self::Clouds => centred(normalised()?),
+            Self::Turbulence | Self::Ridged => Ok(unit(normalised()?)),
             Self::Marble => {
-                let turbulence = octaves.sum(noise, Sum::Turbulence, point)?;
                 // Turns of the sine: its fraction is a binary angle. A quarter of the
                 // turbulence bends the veins about as much as Perlin's radians do.
-                let bend = Real::from_bits(turbulence.to_bits() >> 2);
-                let turns = point.0.checked_add(bend).ok_or(Overflow)?;
+                let bend = Real::from_bits(source.to_bits() >> 2);
+                let turns = x.checked_add(bend).ok_or(Overflow)?;
                 let angle = BinaryAngle(turns.to_bits() as u32);
                 let (_, sin) = angle.cos_sin();
                 // sin in 2⁻³⁰: (1 + sin) / 2 in 2⁻³¹, to 2⁻³².
@@ -84,8 +102,7 @@ impl Texture {
                 Ok(unit(Real::from_bits(level)))
             }
             Self::Wood => {
-                let grain = sample()
-                    .to_real()
+                let grain = source
                     .checked_add(Real::ONE)
                     .and_then(|value| value.checked_mul(Real::from_int(8)))
                     .ok_or(Overflow)?;
@@ -108,12 +125,39 @@ impl Texture {
     }
 }
 
-/// A value in [0, 1] as a level 0 to 255, rounded to nearest (clamped first, so the
-/// product fits 64 bits).
+/// `sum × normaliser` as `Real::checked_mul` gives it, rounded half away from zero to
+/// 2⁻³², in two 32×32 → 64-bit products where the normaliser is below 1 (more than one
+/// octave): |sum|·n = h·n·2³² + l·n for the magnitude's halves h and l, and only the
+/// second part rounds. Every pixel of a sum's texture takes one.
+#[inline]
+fn normalise(sum: Real, normaliser: Real) -> Option<Real> {
+    let magnitude = sum.to_bits().unsigned_abs();
+    let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
+    match u32::try_from(normaliser.to_bits()) {
+        // h < 2³¹, so h·n + (l·n + 2³¹)/2³² < 2⁶³: no overflow, and the product fits.
+        Ok(n) if high >> 31 == 0 => {
+            let rounded_low = (mul_u32_wide(low, n) + (1 << 31)) >> 32;
+            let rounded = (mul_u32_wide(high, n) + rounded_low) as i64;
+            Some(Real::from_bits(if sum < Real::ZERO {
+                -rounded
+            } else {
+                rounded
+            }))
+        }
+        _ => sum.checked_mul(normaliser),
+    }
+}
+
+/// A value in [0, 1] as a level 0 to 255, rounded to nearest (clamped first): the
+/// value's 2⁻³² units times 255, in one 32×32 → 64-bit product below 1.
+#[inline]
 fn level_of(value: Real) -> u8 {
     let unit = value.clamp(Real::ZERO, Real::ONE).to_bits();
-    let scaled = unit * i64::from(LEVELS - 1);
-    ((scaled + (1 << (Real::FRAC_BITS - 1))) >> Real::FRAC_BITS) as u8
+    match u32::try_from(unit) {
+        Ok(unit) => ((mul_u32_wide(unit, u32::from(LEVELS - 1)) + (1 << 31)) >> 32) as u8,
+        // 1 itself.
+        Err(_) => (LEVELS - 1) as u8,
+    }
 }
 
 /// 1/Σaⁱ over the octaves, rounded to 2⁻³²: what a sum is multiplied by to stay within
@@ -241,17 +285,36 @@ impl<P> NoiseDrawing<'_, P> {
     /// The value of pixel (`x`, `y`) of the area, in [0, 1] (what its level rounds).
     pub fn value_at(&self, x: u32, y: u32) -> Real {
         let point = self.texture.point((x, y), self.area.size.width);
-        self.value_of(&RowSums::any(&self.ladder), point)
-    }
-
-    /// The value at a point of the texture (one of this drawing's pixels), summed by `sums`.
-    fn value_of(&self, sums: &RowSums<'_>, point: (Real, Real, Option<Real>)) -> Real {
         let texture = &self.texture;
         // `fit` checked every point's range: a sample cannot fail here.
         texture
             .texture
-            .value_normalised(texture.noise, sums, point, self.normaliser)
+            .value_normalised(texture.noise, &self.ladder, point, self.normaliser)
             .unwrap_or(Real::ZERO)
+    }
+
+    /// How the plane's octaves of this texture are summed a block of columns at a time
+    /// (the octaves, and whether of |noise|), where they can be: in the plane, octaves
+    /// that double or a single sample, and not the ridged multifractal (whose octaves
+    /// weight each other).
+    fn plane(&self) -> Option<(Ladder, bool)> {
+        if self.texture.z.is_some() {
+            return None;
+        }
+        match self.texture.texture.source() {
+            None => {
+                let one = Octaves {
+                    octaves: 1,
+                    ..Octaves::default()
+                };
+                Some((one.ladder().ok()?, false))
+            }
+            Some(Sum::Ridged) => None,
+            Some(sum) => self
+                .ladder
+                .doubles()
+                .then_some((self.ladder, sum == Sum::Turbulence)),
+        }
     }
 
     /// The points of row `y`'s pixels, left to right: the same as
@@ -291,22 +354,143 @@ impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
     where
         D: DrawTarget<Color = Self::Color>,
     {
-        // A row at a time: a row shares its y (each octave's part of it is computed
-        // once), and its pixels leave as one run without an iterator of rows around it.
+        match self.plane() {
+            Some((ladder, turbulence)) => self.draw_blocks(target, &ladder, turbulence),
+            None => self.draw_rows(target),
+        }
+    }
+}
+
+impl<P: Palette> NoiseDrawing<'_, P> {
+    /// Draws a row at a time, each pixel's value from its point.
+    fn draw_rows<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
         let width = self.area.size.width;
         for y in 0..self.area.size.height {
             // Wrapping, not counting on: a row past `i32::MAX` is off every target anyway.
             let top = self.area.top_left.y.wrapping_add_unsigned(y);
-            let (_, row, _) = self.texture.point((0, y), width.max(1));
-            let sums = RowSums::row(&self.ladder, row);
+            let texture = &self.texture;
             let colors = self.row_points(y).map(|point| {
-                let level = level_of(self.value_of(&sums, point));
-                self.palette.color(u16::from(level), u16::MAX)
+                // `fit` checked every point's range: a sample cannot fail here.
+                let value = texture
+                    .texture
+                    .value_normalised(texture.noise, &self.ladder, point, self.normaliser)
+                    .unwrap_or(Real::ZERO);
+                self.palette.color(u16::from(level_of(value)), u16::MAX)
             });
             let line = Rectangle::new(Point::new(self.area.top_left.x, top), Size::new(width, 1));
             target.fill_contiguous(&line, colors)?;
         }
         Ok(())
+    }
+
+    /// Draws a block of [`BLOCK_COLUMNS`] columns at a time, as one `fill_contiguous` a
+    /// block: the columns' x parts of every octave once a block, the rows' y parts once a
+    /// row of it, the same values as [`draw_rows`](Self::draw_rows).
+    fn draw_blocks<D>(
+        &self,
+        target: &mut D,
+        ladder: &Ladder,
+        turbulence: bool,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let Size { width, height } = self.area.size;
+        let mut xs = self.row_points(0).map(|(x, _, _)| x);
+        let mut block = ColumnBlock::EMPTY;
+        let mut left = 0;
+        while left < width {
+            let mut columns = [Real::ZERO; BLOCK_COLUMNS];
+            let mut count = 0;
+            for (slot, x) in columns.iter_mut().zip(&mut xs) {
+                *slot = x;
+                count += 1;
+            }
+            let columns = columns.get(..count).unwrap_or(&[]);
+            block.fill(ladder, columns);
+            let colors = BlockColors {
+                drawing: self,
+                block: &block,
+                ladder,
+                turbulence,
+                columns,
+                rows: [RowPart::default(); MAX_OCTAVES as usize],
+                sums: [0; BLOCK_COLUMNS],
+                row: 0,
+                column: columns.len(),
+            };
+            let top_left = self.area.top_left + Point::new(left as i32, 0);
+            let size = Size::new(count as u32, height);
+            target.fill_contiguous(&Rectangle::new(top_left, size), colors)?;
+            left += count as u32;
+        }
+        Ok(())
+    }
+}
+
+/// The colours of a block of columns' pixels, row by row: each row's sums at once (the
+/// block's sums), then its pixels' colours one at a time.
+struct BlockColors<'d, 'a, P> {
+    drawing: &'d NoiseDrawing<'a, P>,
+    block: &'d ColumnBlock,
+    ladder: &'d Ladder,
+    turbulence: bool,
+    /// The block's columns' x.
+    columns: &'d [Real],
+    /// The current row's part of each octave.
+    rows: [RowPart; MAX_OCTAVES as usize],
+    /// The current row's sums, a column each.
+    sums: [i64; BLOCK_COLUMNS],
+    /// The next row.
+    row: u32,
+    /// The next column of the current row.
+    column: usize,
+}
+
+impl<P: Palette> Iterator for BlockColors<'_, '_, P> {
+    type Item = P::Color;
+
+    #[inline]
+    fn next(&mut self) -> Option<P::Color> {
+        if self.column >= self.columns.len() && !self.next_row() {
+            return None;
+        }
+        let drawing = self.drawing;
+        let texture = &drawing.texture;
+        let sum = self.sums.get(self.column).copied().unwrap_or(0);
+        let x = self.columns.get(self.column).copied().unwrap_or(Real::ZERO);
+        self.column += 1;
+        let value = texture
+            .texture
+            .finish(Real::from_bits(sum), x, drawing.normaliser)
+            .unwrap_or(Real::ZERO);
+        Some(drawing.palette.color(u16::from(level_of(value)), u16::MAX))
+    }
+}
+
+impl<P> BlockColors<'_, '_, P> {
+    /// Sums the next row's columns; `false` past the last row. Once a row of the block,
+    /// so out of line from the pixels' path.
+    #[inline(never)]
+    fn next_row(&mut self) -> bool {
+        let drawing = self.drawing;
+        let texture = &drawing.texture;
+        if self.row >= drawing.area.size.height || self.columns.is_empty() {
+            return false;
+        }
+        let (_, y, _) = texture.point((0, self.row), drawing.area.size.width);
+        // `fit` checked every point's range: the rows cannot leave it.
+        if self.ladder.rows_into(y, &mut self.rows).is_none() {
+            return false;
+        }
+        let (noise, turbulence) = (texture.noise, self.turbulence);
+        (self.block).sums(noise, self.ladder, &self.rows, turbulence, &mut self.sums);
+        self.row += 1;
+        self.column = 0;
+        true
     }
 }
 
@@ -316,6 +500,35 @@ mod tests {
 
     use super::*;
     use crate::render::palette::TwoColor;
+
+    /// Normalising a sum by halves gives `Real`'s product, over sums and normalisers of
+    /// every size a texture has and past them.
+    #[test]
+    fn normalising_is_reals_product() {
+        use proptest::prelude::*;
+        use proptest::test_runner::TestRunner;
+        let mut runner = TestRunner::deterministic();
+        let sums = prop_oneof![any::<i64>(), -(17_i64 << 32)..(17_i64 << 32), -4..4_i64];
+        let normalisers = prop_oneof![
+            1..=(1_i64 << 32),
+            Just(1 << 32),
+            Just((1 << 32) - 1),
+            any::<i64>()
+        ];
+        runner
+            .run(&(sums, normalisers), |(sum, normaliser)| {
+                let (sum, normaliser) = (Real::from_bits(sum), Real::from_bits(normaliser));
+                prop_assert_eq!(normalise(sum, normaliser), sum.checked_mul(normaliser));
+                Ok(())
+            })
+            .unwrap();
+        // Halves round away from zero, as `Real` does.
+        let half = Real::from_bits(1 << 31);
+        for bits in [1, -1, 3, -3] {
+            let sum = Real::from_bits(bits);
+            assert_eq!(normalise(sum, half), sum.checked_mul(half));
+        }
+    }
 
     /// Stepping along a row by quotient and remainder gives the points dividing gives.
     #[test]
