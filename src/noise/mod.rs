@@ -20,15 +20,18 @@
 //! # Ok::<(), tinyfractal::Error>(())
 //! ```
 //!
-//! Memory: a [`Perlin`] is its 256-byte permutation; sampling takes a few words of stack.
+//! Memory: a [`Perlin`] is its 256-byte permutation; sampling takes a few words of stack,
+//! and drawing a texture in the plane 4 KiB more ([`NoiseDrawing`]).
 
+mod drawing;
 mod fractal;
 mod perlin;
 mod plane;
 mod terrain;
 mod texture;
 
+pub use drawing::NoiseDrawing;
 pub use fractal::{Octaves, Sum, MAX_OCTAVES};
 pub use perlin::{Perlin, Sample, SAMPLE_FRAC_BITS};
 pub use terrain::NoiseTerrain;
-pub use texture::{NoiseDrawing, NoiseTexture, Texture, LEVELS};
+pub use texture::{NoiseTexture, Texture, LEVELS};

@@ -6,7 +6,8 @@ use super::fractal::{Ladder, Weight, MAX_OCTAVES};
 use super::perlin::{CellCorners, ColumnPart, Perlin, RowPart, Sample};
 use crate::math::Real;
 
-/// Columns in a block: the x parts of 16 octaves for 16 columns are 2 KiB of stack.
+/// Columns in a block: the x parts of 16 octaves for 32 columns are 4 KiB of stack (a
+/// wider block shares each row's set-up among more columns).
 pub(super) const BLOCK_COLUMNS: usize = 32;
 
 /// The x parts of up to [`BLOCK_COLUMNS`] columns, octave by octave, for sums whose
@@ -119,5 +120,18 @@ fn add_octave<const ABSOLUTE: bool>(
         }
         // Each term within ±1.04, 16 of them: no overflow.
         *total += term(value);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The block is the 4 KiB its documentation and the drawing's state.
+    #[test]
+    fn a_block_is_four_kib() {
+        let parts = MAX_OCTAVES as usize * BLOCK_COLUMNS * 8;
+        assert_eq!(parts, 4096);
+        assert_eq!(size_of::<ColumnBlock>(), parts + size_of::<usize>());
     }
 }

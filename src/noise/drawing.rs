@@ -1,0 +1,306 @@
+//! A texture fitted to an area: drawn a block of columns at a time where its octaves
+//! double in the plane, a row at a time otherwise.
+
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+
+use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES};
+use super::perlin::RowPart;
+use super::plane::{ColumnBlock, BLOCK_COLUMNS};
+use super::texture::{level_of, NoiseTexture};
+use crate::math::Real;
+use crate::render::palette::Palette;
+
+/// A texture fitted to an area with a palette: an embedded-graphics [`Drawable`].
+///
+/// Where its octaves double in the plane (fBm, clouds, turbulence and marble at
+/// lacunarity 2, and Perlin's and wood's single sample) it is drawn a block of 32 columns
+/// at a time, one `fill_contiguous` a block: each column's x half of every octave is
+/// computed once for the block's height, which takes 4 KiB of stack while drawing (16
+/// octaves × 32 columns × 8 bytes). Otherwise (3D, ridged, other lacunarities) it is drawn
+/// a row at a time. Both give every pixel the value [`value_at`](Self::value_at) gives.
+#[derive(Debug, Clone)]
+pub struct NoiseDrawing<'a, P> {
+    texture: NoiseTexture<'a>,
+    /// 1/Σaⁱ, once for every pixel.
+    normaliser: Real,
+    /// The octaves' amplitudes, once for every pixel.
+    ladder: Ladder,
+    area: Rectangle,
+    palette: P,
+}
+
+impl<'a, P> NoiseDrawing<'a, P> {
+    /// `texture` fitted to `area` (its checks done), with its octaves' `ladder` and
+    /// `normaliser`.
+    pub(super) fn new(
+        texture: NoiseTexture<'a>,
+        normaliser: Real,
+        ladder: Ladder,
+        area: Rectangle,
+        palette: P,
+    ) -> Self {
+        Self {
+            texture,
+            normaliser,
+            ladder,
+            area,
+            palette,
+        }
+    }
+
+    /// The level of pixel (`x`, `y`) of the area, 0 to 255.
+    pub fn level_at(&self, x: u32, y: u32) -> u8 {
+        level_of(self.value_at(x, y))
+    }
+
+    /// The value of pixel (`x`, `y`) of the area, in [0, 1] (what its level rounds).
+    pub fn value_at(&self, x: u32, y: u32) -> Real {
+        let point = self.texture.point((x, y), self.area.size.width);
+        let texture = &self.texture;
+        // `fit` checked every point's range: a sample cannot fail here.
+        texture
+            .texture
+            .value_normalised(texture.noise, &self.ladder, point, self.normaliser)
+            .unwrap_or(Real::ZERO)
+    }
+
+    /// How the plane's octaves of this texture are summed a block of columns at a time
+    /// (the octaves, and whether of |noise|), where they can be: in the plane, octaves
+    /// that double or a single sample, and not the ridged multifractal (whose octaves
+    /// weight each other).
+    fn plane(&self) -> Option<(Ladder, bool)> {
+        if self.texture.z.is_some() {
+            return None;
+        }
+        match self.texture.texture.source() {
+            None => {
+                let one = Octaves {
+                    octaves: 1,
+                    ..Octaves::default()
+                };
+                Some((one.ladder().ok()?, false))
+            }
+            Some(Sum::Ridged) => None,
+            Some(sum) => self
+                .ladder
+                .doubles()
+                .then_some((self.ladder, sum == Sum::Turbulence)),
+        }
+    }
+
+    /// The points of row `y`'s pixels, left to right: the same as
+    /// [`NoiseTexture::point`] gives, ⌊scale·x/width⌋ in 2⁻³², stepped by quotient and
+    /// remainder instead of dividing at every pixel.
+    fn row_points(&self, y: u32) -> impl Iterator<Item = (Real, Real, Option<Real>)> + '_ {
+        let width = self.area.size.width.max(1);
+        let (_, row, z) = self.texture.point((0, y), width);
+        // `fit` refused a scale that is not positive.
+        let scale = self.texture.scale.to_bits().max(0);
+        let (quotient, remainder) = (scale / i64::from(width), scale % i64::from(width));
+        let (mut x, mut carried) = (0_i64, 0_i64);
+        (0..self.area.size.width).map(move |_| {
+            let point = (Real::from_bits(x), row, z);
+            x += quotient;
+            carried += remainder;
+            if carried >= i64::from(width) {
+                carried -= i64::from(width);
+                x += 1;
+            }
+            point
+        })
+    }
+}
+
+impl<P> Dimensions for NoiseDrawing<'_, P> {
+    fn bounding_box(&self) -> Rectangle {
+        self.area
+    }
+}
+
+impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
+    type Color = P::Color;
+    type Output = ();
+
+    fn draw<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = Self::Color>,
+    {
+        match self.plane() {
+            Some((ladder, turbulence)) => self.draw_blocks(target, &ladder, turbulence),
+            None => self.draw_rows(target),
+        }
+    }
+}
+
+impl<P: Palette> NoiseDrawing<'_, P> {
+    /// Draws a row at a time, each pixel's value from its point.
+    fn draw_rows<D>(&self, target: &mut D) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let width = self.area.size.width;
+        for y in 0..self.area.size.height {
+            // Wrapping, not counting on: a row past `i32::MAX` is off every target anyway.
+            let top = self.area.top_left.y.wrapping_add_unsigned(y);
+            let texture = &self.texture;
+            let colors = self.row_points(y).map(|point| {
+                // `fit` checked every point's range: a sample cannot fail here.
+                let value = texture
+                    .texture
+                    .value_normalised(texture.noise, &self.ladder, point, self.normaliser)
+                    .unwrap_or(Real::ZERO);
+                self.palette.color(u16::from(level_of(value)), u16::MAX)
+            });
+            let line = Rectangle::new(Point::new(self.area.top_left.x, top), Size::new(width, 1));
+            target.fill_contiguous(&line, colors)?;
+        }
+        Ok(())
+    }
+
+    /// Draws a block of [`BLOCK_COLUMNS`] columns at a time, as one `fill_contiguous` a
+    /// block: the columns' x parts of every octave once a block, the rows' y parts once a
+    /// row of it, the same values as [`draw_rows`](Self::draw_rows).
+    fn draw_blocks<D>(
+        &self,
+        target: &mut D,
+        ladder: &Ladder,
+        turbulence: bool,
+    ) -> Result<(), D::Error>
+    where
+        D: DrawTarget<Color = P::Color>,
+    {
+        let Size { width, height } = self.area.size;
+        let mut xs = self.row_points(0).map(|(x, _, _)| x);
+        let mut block = ColumnBlock::EMPTY;
+        let mut left = 0;
+        while left < width {
+            let mut columns = [Real::ZERO; BLOCK_COLUMNS];
+            let mut count = 0;
+            for (slot, x) in columns.iter_mut().zip(&mut xs) {
+                *slot = x;
+                count += 1;
+            }
+            let columns = columns.get(..count).unwrap_or(&[]);
+            block.fill(ladder, columns);
+            let colors = BlockColors {
+                drawing: self,
+                block: &block,
+                ladder,
+                turbulence,
+                columns,
+                rows: [RowPart::default(); MAX_OCTAVES as usize],
+                sums: [0; BLOCK_COLUMNS],
+                row: 0,
+                column: columns.len(),
+            };
+            let top_left = self.area.top_left + Point::new(left as i32, 0);
+            let size = Size::new(count as u32, height);
+            target.fill_contiguous(&Rectangle::new(top_left, size), colors)?;
+            left += count as u32;
+        }
+        Ok(())
+    }
+}
+
+/// The colours of a block of columns' pixels, row by row: each row's sums at once (the
+/// block's sums), then its pixels' colours one at a time.
+struct BlockColors<'d, 'a, P> {
+    drawing: &'d NoiseDrawing<'a, P>,
+    block: &'d ColumnBlock,
+    ladder: &'d Ladder,
+    turbulence: bool,
+    /// The block's columns' x.
+    columns: &'d [Real],
+    /// The current row's part of each octave.
+    rows: [RowPart; MAX_OCTAVES as usize],
+    /// The current row's sums, a column each.
+    sums: [i64; BLOCK_COLUMNS],
+    /// The next row.
+    row: u32,
+    /// The next column of the current row.
+    column: usize,
+}
+
+impl<P: Palette> Iterator for BlockColors<'_, '_, P> {
+    type Item = P::Color;
+
+    #[inline]
+    fn next(&mut self) -> Option<P::Color> {
+        if self.column >= self.columns.len() && !self.next_row() {
+            return None;
+        }
+        let drawing = self.drawing;
+        let texture = &drawing.texture;
+        let sum = self.sums.get(self.column).copied().unwrap_or(0);
+        let x = self.columns.get(self.column).copied().unwrap_or(Real::ZERO);
+        self.column += 1;
+        let value = texture
+            .texture
+            .finish(Real::from_bits(sum), x, drawing.normaliser)
+            .unwrap_or(Real::ZERO);
+        Some(drawing.palette.color(u16::from(level_of(value)), u16::MAX))
+    }
+}
+
+impl<P> BlockColors<'_, '_, P> {
+    /// Sums the next row's columns; `false` past the last row. Once a row of the block,
+    /// so out of line from the pixels' path.
+    #[inline(never)]
+    fn next_row(&mut self) -> bool {
+        let drawing = self.drawing;
+        let texture = &drawing.texture;
+        if self.row >= drawing.area.size.height || self.columns.is_empty() {
+            return false;
+        }
+        let (_, y, _) = texture.point((0, self.row), drawing.area.size.width);
+        // `fit` checked every point's range: the rows cannot leave it.
+        if self.ladder.rows_into(y, &mut self.rows).is_none() {
+            return false;
+        }
+        let (noise, turbulence) = (texture.noise, self.turbulence);
+        (self.block).sums(noise, self.ladder, &self.rows, turbulence, &mut self.sums);
+        self.row += 1;
+        self.column = 0;
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics::pixelcolor::Gray8;
+
+    use super::*;
+    use crate::noise::{Perlin, Texture};
+    use crate::render::palette::TwoColor;
+
+    /// Stepping along a row by quotient and remainder gives the points dividing gives.
+    #[test]
+    fn row_points_are_the_divided_points() {
+        let noise = Perlin::reference();
+        let palette = TwoColor {
+            inside: Gray8::BLACK,
+            outside: Gray8::WHITE,
+        };
+        for (width, scale) in [
+            (1, "1"),
+            (7, "3.3"),
+            (128, "4"),
+            (333, "0.001"),
+            (97, "1000.77"),
+        ] {
+            let texture = NoiseTexture::new(&noise, Texture::Fbm)
+                .with_scale(Real::parse_decimal(scale).unwrap());
+            let area = Rectangle::new(Point::zero(), Size::new(width, 3));
+            let drawing = texture.fit(area, palette).unwrap();
+            for y in 0..3 {
+                let mut count = 0;
+                for (x, stepped) in (0..).zip(drawing.row_points(y)) {
+                    assert_eq!(stepped, texture.point((x, y), width), "{width} {scale} {x}");
+                    count += 1;
+                }
+                assert_eq!(count, width);
+            }
+        }
+    }
+}
