@@ -296,9 +296,10 @@ fn octaves_out_of_range_are_typed_errors() {
         persistence: real(0.5),
         lacunarity: real(4.0),
     };
-    assert!(far
-        .sum(&noise, Sum::Fbm, (real(1.0e6), Real::ZERO, None))
-        .is_err());
+    assert!(matches!(
+        far.sum(&noise, Sum::Fbm, (real(1.0e6), Real::ZERO, None)),
+        Err(Error::Parameter(ParameterError::NoiseOutOfRange))
+    ));
 }
 
 mod textures {
@@ -437,11 +438,13 @@ mod textures {
             persistence: real(0.5),
             lacunarity: real(4.0),
         };
-        assert!(texture
-            .with_octaves(fine)
-            .with_scale(real(1000.0))
-            .fit(area, Levels)
-            .is_err());
+        assert!(matches!(
+            texture
+                .with_octaves(fine)
+                .with_scale(real(1000.0))
+                .fit(area, Levels),
+            Err(Error::Parameter(ParameterError::NoiseOutOfRange))
+        ));
     }
 }
 
@@ -483,4 +486,19 @@ fn noise_terrain_heights_are_the_model_fbm() {
         terrain.with_scale(Real::ZERO).generate(&mut heights),
         Err(Error::Parameter(ParameterError::ScaleNotPositive { .. }))
     ));
+    // A landscape whose finest octave leaves the range, at its far corner only or
+    // everywhere: the range's error, not a wrapped height.
+    let fine = Octaves {
+        octaves: 16,
+        ..Octaves::default()
+    };
+    for scale in [2.0e5, 1.0e9] {
+        assert!(matches!(
+            terrain
+                .with_octaves(fine)
+                .with_scale(real(scale))
+                .generate(&mut heights),
+            Err(Error::Parameter(ParameterError::NoiseOutOfRange))
+        ));
+    }
 }

@@ -39,6 +39,9 @@ pub enum ParameterError {
         /// The value given.
         scale: Real,
     },
+    /// Noise coordinates leave the fixed-point range at the finest octave (a scale, a
+    /// picture or octaves too large), or a sum of them does.
+    NoiseOutOfRange,
     /// A reaction's time step is outside (0, 1].
     TimeStepOutOfRange {
         /// The value given.
@@ -161,6 +164,11 @@ impl fmt::Display for ParameterError {
             Self::ScaleNotPositive { scale } => write!(
                 f,
                 "scale {scale} is not positive: give the lattice cells across the picture, e.g. 4"
+            ),
+            Self::NoiseOutOfRange => write!(
+                f,
+                "the noise's coordinates leave the fixed-point range (about ±2^31 lattice \
+                 cells) at the finest octave: lower the scale, the octaves or the lacunarity"
             ),
             Self::TimeStepOutOfRange { dt } => write!(
                 f,

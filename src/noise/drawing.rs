@@ -190,7 +190,7 @@ impl<P: Palette> NoiseDrawing<'_, P> {
                 turbulence,
                 columns,
                 rows: [RowPart::default(); MAX_OCTAVES as usize],
-                sums: [0; BLOCK_COLUMNS],
+                levels: [0; BLOCK_COLUMNS],
                 row: 0,
                 column: columns.len(),
             };
@@ -214,8 +214,8 @@ struct BlockColors<'d, 'a, P> {
     columns: &'d [Real],
     /// The current row's part of each octave.
     rows: [RowPart; MAX_OCTAVES as usize],
-    /// The current row's sums, a column each.
-    sums: [i64; BLOCK_COLUMNS],
+    /// The current row's levels, a column each.
+    levels: [u8; BLOCK_COLUMNS],
     /// The next row.
     row: u32,
     /// The next column of the current row.
@@ -230,22 +230,15 @@ impl<P: Palette> Iterator for BlockColors<'_, '_, P> {
         if self.column >= self.columns.len() && !self.next_row() {
             return None;
         }
-        let drawing = self.drawing;
-        let texture = &drawing.texture;
-        let sum = self.sums.get(self.column).copied().unwrap_or(0);
-        let x = self.columns.get(self.column).copied().unwrap_or(Real::ZERO);
+        let level = self.levels.get(self.column).copied().unwrap_or(0);
         self.column += 1;
-        let value = texture
-            .texture
-            .finish(Real::from_bits(sum), x, drawing.normaliser)
-            .unwrap_or(Real::ZERO);
-        Some(drawing.palette.color(u16::from(level_of(value)), u16::MAX))
+        Some(self.drawing.palette.color(u16::from(level), u16::MAX))
     }
 }
 
 impl<P> BlockColors<'_, '_, P> {
-    /// Sums the next row's columns; `false` past the last row. Once a row of the block,
-    /// so out of line from the pixels' path.
+    /// Sums the next row's columns and takes their levels; `false` past the last row.
+    /// Once a row of the block, so out of line from the pixels' path.
     #[inline(never)]
     fn next_row(&mut self) -> bool {
         let drawing = self.drawing;
@@ -259,7 +252,15 @@ impl<P> BlockColors<'_, '_, P> {
             return false;
         }
         let (noise, turbulence) = (texture.noise, self.turbulence);
-        (self.block).sums(noise, self.ladder, &self.rows, turbulence, &mut self.sums);
+        let mut sums = [0; BLOCK_COLUMNS];
+        (self.block).sums(noise, self.ladder, &self.rows, turbulence, &mut sums);
+        for ((level, sum), &x) in self.levels.iter_mut().zip(sums).zip(self.columns) {
+            let value = texture
+                .texture
+                .finish(Real::from_bits(sum), x, drawing.normaliser)
+                .unwrap_or(Real::ZERO);
+            *level = level_of(value);
+        }
         self.row += 1;
         self.column = 0;
         true

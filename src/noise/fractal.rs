@@ -6,6 +6,9 @@ use crate::error::{Error, ParameterError};
 use crate::math::wide::mul_i32_wide;
 use crate::math::Real;
 
+/// The error of noise coordinates (or a sum of samples) past the fixed-point range.
+pub(super) const OUT_OF_RANGE: Error = Error::Parameter(ParameterError::NoiseOutOfRange);
+
 /// The most octaves a sum takes: the 16th octave's features are 2¹⁵ times finer than the
 /// first's, below any display's pixel.
 pub const MAX_OCTAVES: u32 = 16;
@@ -134,7 +137,7 @@ impl Ladder {
     pub(crate) fn amplitude_total(&self) -> Result<Real, Error> {
         let mut total = Real::ZERO;
         for &amplitude in self.amplitudes.iter().take(self.octaves as usize) {
-            total = total.checked_add(amplitude).ok_or(crate::math::Overflow)?;
+            total = total.checked_add(amplitude).ok_or(OUT_OF_RANGE)?;
         }
         Ok(total)
     }
@@ -146,7 +149,7 @@ impl Ladder {
         sum: Sum,
         (x, y, z): (Real, Real, Option<Real>),
     ) -> Result<Real, Error> {
-        let overflow = Error::from(crate::math::Overflow);
+        let overflow = OUT_OF_RANGE;
         if z.is_none() && self.lacunarity == Real::from_int(2) && sum != Sum::Ridged {
             return self
                 .plane_sum(noise, sum == Sum::Turbulence, (x, y))
@@ -342,7 +345,7 @@ impl<'l> RowSums<'l> {
                 return self
                     .ladder
                     .plane_sum_in_row(noise, turbulence, point.0, rows)
-                    .ok_or(Error::from(crate::math::Overflow));
+                    .ok_or(OUT_OF_RANGE);
             }
         }
         self.ladder.sum(noise, sum, point)

@@ -4,10 +4,11 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::fractal::{Octaves, RowSums, Sum};
-use super::perlin::Perlin;
+use super::fractal::{Ladder, Octaves, RowSums, Sum, MAX_OCTAVES, OUT_OF_RANGE};
+use super::perlin::{Perlin, RowPart};
+use super::plane::{ColumnBlock, BLOCK_COLUMNS};
 use crate::error::{Error, FitError, ParameterError};
-use crate::math::{Overflow, Real};
+use crate::math::Real;
 use crate::render::Relief;
 
 /// A landscape of `samples`² heights, each the fBm of 2D noise at its grid point: `scale`
@@ -86,8 +87,16 @@ impl<'a> NoiseTerrain<'a> {
             let product = i128::from(self.scale.to_bits()) * i128::from(index);
             i64::try_from(product / i128::from(side))
                 .map(Real::from_bits)
-                .map_err(|_| Error::from(Overflow))
+                .map_err(|_| OUT_OF_RANGE)
         };
+        // Where the octaves double and the farthest point's finest octave is in range (so
+        // every point's is), a block of columns at a time, the same sums; otherwise point
+        // by point, which finds the point whose octave leaves the range.
+        let farthest = at(side - 1)?.to_bits();
+        let finest = farthest.checked_mul(1 << (self.octaves.octaves - 1).min(62));
+        if ladder.doubles() && finest.is_some() {
+            return self.generate_in_blocks(&ladder, heights, at);
+        }
         for (j, row) in (0_i64..).zip(heights.chunks_mut(self.samples as usize)) {
             let y = at(j)?;
             // A row shares its y: each octave's part of it is computed once.
@@ -95,6 +104,38 @@ impl<'a> NoiseTerrain<'a> {
             for (i, height) in (0_i64..).zip(row.iter_mut()) {
                 let value = sums.sum(self.noise, Sum::Fbm, (at(i)?, y, None))?;
                 *height = (value.to_bits() >> 16) as i32;
+            }
+        }
+        Ok(())
+    }
+
+    /// [`generate`](Self::generate)'s heights a block of columns at a time, each column's
+    /// x half of every octave once for the whole height (`ladder`'s octaves double, and
+    /// the point `at(index)` of every index keeps its finest octave in range).
+    fn generate_in_blocks(
+        &self,
+        ladder: &Ladder,
+        heights: &mut [i32],
+        at: impl Fn(i64) -> Result<Real, Error>,
+    ) -> Result<(), Error> {
+        let samples = self.samples as usize;
+        let mut block = ColumnBlock::EMPTY;
+        let mut rows = [RowPart::default(); MAX_OCTAVES as usize];
+        let mut sums = [0; BLOCK_COLUMNS];
+        for first in (0..samples).step_by(BLOCK_COLUMNS) {
+            let count = BLOCK_COLUMNS.min(samples - first);
+            let mut xs = [Real::ZERO; BLOCK_COLUMNS];
+            for (x, index) in xs.iter_mut().zip(first as i64..).take(count) {
+                *x = at(index)?;
+            }
+            block.fill(ladder, xs.get(..count).unwrap_or(&[]));
+            for (j, row) in (0_i64..).zip(heights.chunks_mut(samples)) {
+                ladder.rows_into(at(j)?, &mut rows).ok_or(OUT_OF_RANGE)?;
+                block.sums(self.noise, ladder, &rows, false, &mut sums);
+                let cells = row.get_mut(first..first + count).unwrap_or(&mut []);
+                for (height, sum) in cells.iter_mut().zip(sums) {
+                    *height = (sum >> 16) as i32;
+                }
             }
         }
         Ok(())

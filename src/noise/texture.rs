@@ -3,12 +3,12 @@
 use embedded_graphics::primitives::Rectangle;
 
 use super::drawing::NoiseDrawing;
-use super::fractal::{Ladder, Octaves, Sum};
+use super::fractal::{Ladder, Octaves, Sum, OUT_OF_RANGE};
 use super::perlin::Perlin;
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::trig::BinaryAngle;
 use crate::math::wide::{mul_u32_wide, shift_round_i64};
-use crate::math::{Overflow, Real};
+use crate::math::Real;
 use crate::render::palette::Palette;
 
 /// Levels a texture takes, 0 to 255: a palette of 256 entries shows each one.
@@ -77,10 +77,10 @@ impl Texture {
     /// the octaves (not yet normalised) or the sample.
     #[inline(always)]
     pub(super) fn finish(self, source: Real, x: Real, normaliser: Real) -> Result<Real, Error> {
-        let normalised = || normalise(source, normaliser).ok_or(Error::from(Overflow));
+        let normalised = || normalise(source, normaliser).ok_or(OUT_OF_RANGE);
         let unit = |value: Real| value.clamp(Real::ZERO, Real::ONE);
         let centred = |value: Real| -> Result<Real, Error> {
-            let shifted = value.checked_add(Real::ONE).ok_or(Overflow)?;
+            let shifted = value.checked_add(Real::ONE).ok_or(OUT_OF_RANGE)?;
             // Times ½ as `Real` multiplies (rounded half away from zero), by a shift.
             Ok(unit(Real::from_bits(shift_round_i64(shifted.to_bits(), 1))))
         };
@@ -92,7 +92,7 @@ impl Texture {
                 // Turns of the sine: its fraction is a binary angle. A quarter of the
                 // turbulence bends the veins about as much as Perlin's radians do.
                 let bend = Real::from_bits(source.to_bits() >> 2);
-                let turns = x.checked_add(bend).ok_or(Overflow)?;
+                let turns = x.checked_add(bend).ok_or(OUT_OF_RANGE)?;
                 let angle = BinaryAngle(turns.to_bits() as u32);
                 let (_, sin) = angle.cos_sin();
                 // sin in 2⁻³⁰: (1 + sin) / 2 in 2⁻³¹, to 2⁻³².
@@ -103,7 +103,7 @@ impl Texture {
                 let grain = source
                     .checked_add(Real::ONE)
                     .and_then(|value| value.checked_mul(Real::from_int(8)))
-                    .ok_or(Overflow)?;
+                    .ok_or(OUT_OF_RANGE)?;
                 Ok(Real::from_bits(
                     grain.to_bits() & ((1 << Real::FRAC_BITS) - 1),
                 ))
@@ -163,7 +163,7 @@ pub(super) fn level_of(value: Real) -> u8 {
 fn normaliser(ladder: &Ladder) -> Result<Real, Error> {
     Real::ONE
         .checked_div(ladder.amplitude_total()?)
-        .ok_or(Error::from(Overflow))
+        .ok_or(OUT_OF_RANGE)
 }
 
 /// A texture over a picture: `scale` lattice cells across its width, at depth `z` (3D
@@ -247,10 +247,12 @@ impl<'a> NoiseTexture<'a> {
         let (x, y, z) = self.point((size.width, size.height), size.width);
         let mut reach = x.max(y).max(z.map_or(Real::ZERO, Real::abs));
         for _ in 1..self.octaves.octaves {
-            reach = reach.checked_mul(self.octaves.lacunarity).ok_or(Overflow)?;
+            reach = reach
+                .checked_mul(self.octaves.lacunarity)
+                .ok_or(OUT_OF_RANGE)?;
         }
         // Marble adds the turbulence (at most Σaⁱ ≤ 16) to x.
-        reach.checked_add(Real::from_int(16)).ok_or(Overflow)?;
+        reach.checked_add(Real::from_int(16)).ok_or(OUT_OF_RANGE)?;
         let normaliser = normaliser(&ladder)?;
         Ok(NoiseDrawing::new(
             self.clone(),
