@@ -142,7 +142,10 @@ impl Ladder {
         Ok(total)
     }
 
-    /// [`Octaves::sum`] with the amplitudes ready.
+    /// [`Octaves::sum`] with the amplitudes ready. Point by point, the general path: kept
+    /// out of line where it is called (drawings in the plane take the blocks), to spare
+    /// the smallest boards' flash.
+    #[inline(never)]
     pub(crate) fn sum(
         &self,
         noise: &Perlin,
@@ -310,45 +313,6 @@ impl Weight {
             }
             Self::Any(amplitude) => times(sample, amplitude).to_bits(),
         }
-    }
-}
-
-/// A ladder with one row of points' y parts ready (one y, in the plane, lacunarity 2):
-/// what a drawing sums a row with, the same values as [`Ladder::sum`] at each point.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct RowSums<'l> {
-    ladder: &'l Ladder,
-    /// The row's y and each octave's part of it, where the fast path applies.
-    row: Option<(Real, [RowPart; MAX_OCTAVES as usize])>,
-}
-
-impl<'l> RowSums<'l> {
-    /// For the points of the plane at `y`.
-    pub(crate) fn row(ladder: &'l Ladder, y: Real) -> Self {
-        let ready = ladder.lacunarity == Real::from_int(2);
-        let row = ready
-            .then(|| ladder.rows(y).map(|rows| (y, rows)))
-            .flatten();
-        Self { ladder, row }
-    }
-
-    /// [`Ladder::sum`], from the row's parts where the point is in the row.
-    pub(crate) fn sum(
-        &self,
-        noise: &Perlin,
-        sum: Sum,
-        point: (Real, Real, Option<Real>),
-    ) -> Result<Real, Error> {
-        if let Some((y, rows)) = &self.row {
-            if point.1 == *y && point.2.is_none() && sum != Sum::Ridged {
-                let turbulence = sum == Sum::Turbulence;
-                return self
-                    .ladder
-                    .plane_sum_in_row(noise, turbulence, point.0, rows)
-                    .ok_or(OUT_OF_RANGE);
-            }
-        }
-        self.ladder.sum(noise, sum, point)
     }
 }
 

@@ -4,9 +4,10 @@ use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
-use super::fractal::{Ladder, Octaves, RowSums, Sum, MAX_OCTAVES, OUT_OF_RANGE};
+use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES, OUT_OF_RANGE};
 use super::perlin::{Perlin, RowPart};
 use super::plane::{ColumnBlock, BLOCK_COLUMNS};
+use super::texture::lattice_point;
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::Real;
 use crate::render::Relief;
@@ -84,10 +85,8 @@ impl<'a> NoiseTerrain<'a> {
                 }))?;
         let side = i64::from(self.samples);
         let at = |index: i64| -> Result<Real, Error> {
-            let product = i128::from(self.scale.to_bits()) * i128::from(index);
-            i64::try_from(product / i128::from(side))
-                .map(Real::from_bits)
-                .map_err(|_| OUT_OF_RANGE)
+            let index = u32::try_from(index).map_err(|_| OUT_OF_RANGE)?;
+            lattice_point(self.scale, index, self.samples).ok_or(OUT_OF_RANGE)
         };
         // Where the octaves double and the farthest point's finest octave is in range (so
         // every point's is), a block of columns at a time, the same sums; otherwise point
@@ -99,10 +98,8 @@ impl<'a> NoiseTerrain<'a> {
         }
         for (j, row) in (0_i64..).zip(heights.chunks_mut(self.samples as usize)) {
             let y = at(j)?;
-            // A row shares its y: each octave's part of it is computed once.
-            let sums = RowSums::row(&ladder, y);
             for (i, height) in (0_i64..).zip(row.iter_mut()) {
-                let value = sums.sum(self.noise, Sum::Fbm, (at(i)?, y, None))?;
+                let value = ladder.sum(self.noise, Sum::Fbm, (at(i)?, y, None))?;
                 *height = (value.to_bits() >> 16) as i32;
             }
         }

@@ -146,6 +146,20 @@ fn normalise(sum: Real, normaliser: Real) -> Option<Real> {
     }
 }
 
+/// The coordinate ⌊scale·index/across⌋ (in 2⁻³²) of a grid of `across` points a
+/// `scale` apart (`across` taken as at least 1, `scale` not negative); `None` past `Real`'s
+/// range. In 64 bits where the product fits (scales below 2¹⁵ cells across a few thousand
+/// points): a 128-bit division costs a Cortex-M tens of times more, for the same quotient.
+#[inline(never)]
+pub(super) fn lattice_point(scale: Real, index: u32, across: u32) -> Option<Real> {
+    let (scale, across) = (scale.to_bits(), i64::from(across.max(1)));
+    let bits = match scale.checked_mul(i64::from(index)) {
+        Some(product) => product / across,
+        None => i64::try_from(i128::from(scale) * i128::from(index) / i128::from(across)).ok()?,
+    };
+    Some(Real::from_bits(bits))
+}
+
 /// A value in [0, 1] as a level 0 to 255, rounded to nearest (clamped first): the
 /// value's 2⁻³² units times 255, in one 32×32 → 64-bit product below 1.
 #[inline]
@@ -210,16 +224,10 @@ impl<'a> NoiseTexture<'a> {
     /// The point pixel (`x`, `y`) of a picture of `width` pixels samples: its top-left
     /// corner, `scale / width` lattice units a pixel, y down.
     pub fn point(&self, (x, y): (u32, u32), width: u32) -> (Real, Real, Option<Real>) {
-        let width = width.max(1);
+        // Past `Real`'s range (a picture far taller than wide at a vast scale) the point
+        // saturates, and `fit` refuses it.
         let step = |pixels: u32| {
-            let scale = self.scale.to_bits();
-            // In 64 bits where the product fits (scales below 2¹⁵ cells): a 128-bit
-            // division costs a Cortex-M tens of times more, for the same quotient.
-            let bits = match scale.checked_mul(i64::from(pixels)) {
-                Some(product) => product / i64::from(width),
-                None => (i128::from(scale) * i128::from(pixels) / i128::from(width)) as i64,
-            };
-            Real::from_bits(bits)
+            lattice_point(self.scale, pixels, width).unwrap_or(Real::from_bits(i64::MAX))
         };
         (step(x), step(y), self.z)
     }
