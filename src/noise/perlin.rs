@@ -1,7 +1,7 @@
 //! Ken Perlin's improved noise (2002) in fixed point: his permutation, fade and gradients.
 
 use crate::math::random::Generator;
-use crate::math::wide::{mul_i32_wide, mul_u32_wide};
+use crate::math::wide::mul_i32_wide;
 use crate::math::Real;
 
 /// Fraction bits of a noise value ([`Sample`]): values lie in about ±1.04, and 29 bits keep
@@ -403,9 +403,32 @@ fn cell(value: Real) -> (i32, i32) {
 
 /// Perlin's fade 6t⁵ − 15t⁴ + 10t³ of `t` (2⁻²⁴ units, 0 ≤ t < 1), in 2⁻³⁰, by Horner's rule.
 /// Each product is exact while t has at most 6 fraction bits; past that each rounds down by
-/// less than 2⁻³⁰. In 32×32 → 64-bit products, so no core calls a library multiply.
+/// less than 2⁻³⁰. In 64-bit products where the core multiplies 32 × 32 → 64 bits; in
+/// 32-bit ones where it does not (ARMv6-M), so no core calls a library multiply: the same
+/// values.
 #[inline(always)]
 pub(crate) fn fade(t: i32) -> i32 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        fade_in_halves(t)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        let t = i64::from(t);
+        // 6t² − 15t + 10 in 2⁻⁴⁸ (below 2⁵²), taken to 2⁻³⁰.
+        let inner = (t * (6 * t - (15 << CELL_FRAC_BITS)) + (10 << (2 * CELL_FRAC_BITS)))
+            >> (2 * CELL_FRAC_BITS - FADE_FRAC_BITS);
+        // Times t three times, each product below 2⁵⁸ and taken back to 2⁻³⁰.
+        let cubic = (t * inner) >> CELL_FRAC_BITS;
+        let quartic = (t * cubic) >> CELL_FRAC_BITS;
+        ((t * quartic) >> CELL_FRAC_BITS) as i32
+    }
+}
+
+/// [`fade`] in 32 × 32 → 64-bit products of 32-bit halves.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+fn fade_in_halves(t: i32) -> i32 {
     // 6t² − 15t + 10 in 2⁻⁴⁸ (from 1 to 10, so positive and below 2⁵²), taken to 2⁻³⁰.
     let quadratic = mul_i32_wide(t, 6 * t - (15 << CELL_FRAC_BITS)) + (10 << (2 * CELL_FRAC_BITS));
     let inner = (quadratic >> (2 * CELL_FRAC_BITS - FADE_FRAC_BITS)) as u64;
@@ -415,7 +438,8 @@ pub(crate) fn fade(t: i32) -> i32 {
     let t = t as u32;
     let times_t = |x: u64| {
         let high = t * (x >> 32) as u32;
-        (mul_u32_wide(t, x as u32) >> CELL_FRAC_BITS) + (u64::from(high) << (32 - CELL_FRAC_BITS))
+        (crate::math::wide::mul_u32_wide(t, x as u32) >> CELL_FRAC_BITS)
+            + (u64::from(high) << (32 - CELL_FRAC_BITS))
     };
     times_t(times_t(times_t(inner))) as i32
 }
@@ -476,7 +500,7 @@ mod tests {
         assert_eq!(fade(1 << (CELL_FRAC_BITS - 1)), 1 << (FADE_FRAC_BITS - 1));
     }
 
-    /// The fade in 32-bit products is Horner's rule in 64-bit ones, over every place.
+    /// The fade, in either set of products, is Horner's rule in exact ones.
     #[test]
     fn fade_is_horners_rule() {
         let horner = |t: i32| {
@@ -494,6 +518,7 @@ mod tests {
             .chain(last - 4096..=last);
         for t in places {
             assert_eq!(fade(t), horner(t), "{t}");
+            assert_eq!(fade_in_halves(t), horner(t), "{t}");
         }
     }
 
