@@ -385,8 +385,19 @@ mod textures {
     fn a_drawing_covers_its_area_once_with_each_pixels_level() {
         let noise = Perlin::reference();
         let p = noise.permutation();
-        // Marble and fBm: the turbulence and fBm a drawing sums a row at a time.
-        for kind in [Texture::Marble, Texture::Fbm, Texture::Ridged] {
+        // Every texture: those a drawing sums a block of columns at a time (the plane at
+        // lacunarity 2, two blocks and a part of one across) and those it takes point by
+        // point (ridged), each pixel the level its point has.
+        let kinds = [
+            Texture::Perlin,
+            Texture::Fbm,
+            Texture::Clouds,
+            Texture::Turbulence,
+            Texture::Ridged,
+            Texture::Marble,
+            Texture::Wood,
+        ];
+        for kind in kinds {
             let texture = NoiseTexture::new(&noise, kind).with_scale(real(3.0));
             let area = Rectangle::new(Point::zero(), Size::new(48, 32));
             let drawing = texture.fit(area, Levels).unwrap();
@@ -397,7 +408,8 @@ mod textures {
                     let level = drawing.level_at(x, y);
                     assert_eq!(
                         display.get_pixel(Point::new(x as i32, y as i32)),
-                        Some(Gray8::new(level))
+                        Some(Gray8::new(level)),
+                        "{kind:?} ({x}, {y})"
                     );
                     // Pixel (x, y) samples its top-left corner, scale / width units a pixel.
                     let at = (3.0 * f64::from(x) / 48.0, 3.0 * f64::from(y) / 48.0);
@@ -406,6 +418,48 @@ mod textures {
                         (f64::from(level) - want).abs() <= 0.51,
                         "{kind:?} ({x}, {y})"
                     );
+                }
+            }
+        }
+    }
+
+    /// Octaves of every weight (eighths, powers of two, others), 3D and an area away from
+    /// the origin: the drawing is its points' levels.
+    #[test]
+    fn drawings_of_any_octaves_are_their_points_levels() {
+        let noise = Perlin::seeded(3);
+        let settings = [
+            (6, 0.5, 2.0, None),
+            (9, 0.37, 2.0, None),
+            (3, 1.0, 2.0, None),
+            (4, 0.5, 2.5, None),
+            (5, 0.5, 2.0, Some(0.75)),
+        ];
+        for (octaves, persistence, lacunarity, z) in settings {
+            let octaves = Octaves {
+                octaves,
+                persistence: real(persistence),
+                lacunarity: real(lacunarity),
+            };
+            for kind in [Texture::Fbm, Texture::Turbulence, Texture::Marble] {
+                let mut texture = NoiseTexture::new(&noise, kind)
+                    .with_octaves(octaves)
+                    .with_scale(real(5.5));
+                if let Some(z) = z {
+                    texture = texture.with_z(real(z));
+                }
+                let area = Rectangle::new(Point::new(3, 5), Size::new(57, 20));
+                let drawing = texture.fit(area, Levels).unwrap();
+                let mut display = MockDisplay::<Gray8>::new();
+                drawing.draw(&mut display).unwrap();
+                for y in 0..20 {
+                    for x in 0..57 {
+                        assert_eq!(
+                            display.get_pixel(Point::new(3 + x as i32, 5 + y as i32)),
+                            Some(Gray8::new(drawing.level_at(x, y))),
+                            "{kind:?} {octaves:?} {z:?} ({x}, {y})"
+                        );
+                    }
                 }
             }
         }
