@@ -1,5 +1,5 @@
 //! A texture fitted to an area: drawn a block of columns at a time where its octaves
-//! double in the plane, a row at a time otherwise.
+//! double, a row at a time otherwise.
 
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
@@ -13,12 +13,13 @@ use crate::render::palette::Palette;
 
 /// A texture fitted to an area with a palette: an embedded-graphics [`Drawable`].
 ///
-/// Where its octaves double in the plane (fBm, clouds, turbulence and marble at
-/// lacunarity 2, and Perlin's and wood's single sample) it is drawn a block of 32 columns
-/// at a time, one `fill_contiguous` a block: each column's x half of every octave is
-/// computed once for the block's height, which takes 4 KiB of stack while drawing (16
-/// octaves × 32 columns × 8 bytes). Otherwise (3D, ridged, other lacunarities) it is drawn
-/// a row at a time. Both give every pixel the value [`value_at`](Self::value_at) gives.
+/// Where its octaves double (fBm, clouds, turbulence and marble at lacunarity 2, and
+/// Perlin's and wood's single sample), in the plane or at a depth, it is drawn a block of
+/// 32 columns at a time, one `fill_contiguous` a block: each column's x half of every
+/// octave is computed once for the block's height, which takes 4 KiB of stack while
+/// drawing (16 octaves × 32 columns × 8 bytes). Otherwise (ridged, other lacunarities) it
+/// is drawn a row at a time. Both give every pixel the value [`value_at`](Self::value_at)
+/// gives.
 #[derive(Debug, Clone)]
 pub struct NoiseDrawing<'a, P> {
     texture: NoiseTexture<'a>,
@@ -65,14 +66,11 @@ impl<'a, P> NoiseDrawing<'a, P> {
             .unwrap_or(Real::ZERO)
     }
 
-    /// How the plane's octaves of this texture are summed a block of columns at a time
-    /// (the octaves, and whether of |noise|), where they can be: in the plane, octaves
-    /// that double or a single sample, and not the ridged multifractal (whose octaves
-    /// weight each other).
-    fn plane(&self) -> Option<(Ladder, bool)> {
-        if self.texture.z.is_some() {
-            return None;
-        }
+    /// How this texture's octaves are summed a block of columns at a time (the octaves,
+    /// and whether of |noise|), where they can be: octaves that double or a single sample,
+    /// in the plane or at one depth, and not the ridged multifractal (whose octaves weight
+    /// each other).
+    fn blocks(&self) -> Option<(Ladder, bool)> {
         match self.texture.texture.source() {
             None => {
                 let one = Octaves {
@@ -126,7 +124,7 @@ impl<P: Palette> Drawable for NoiseDrawing<'_, P> {
     where
         D: DrawTarget<Color = Self::Color>,
     {
-        match self.plane() {
+        match self.blocks() {
             Some((ladder, turbulence)) => self.draw_blocks(target, &ladder, turbulence),
             None => self.draw_rows(target),
         }
@@ -171,6 +169,13 @@ impl<P: Palette> NoiseDrawing<'_, P> {
         D: DrawTarget<Color = P::Color>,
     {
         let Size { width, height } = self.area.size;
+        // At a depth: each octave's part of it, once for the picture (`fit` checked its
+        // range).
+        let mut layers = [RowPart::default(); MAX_OCTAVES as usize];
+        let layers = match self.texture.z {
+            Some(z) => ladder.rows_into(z, &mut layers).map(|()| &layers),
+            None => None,
+        };
         let mut xs = self.row_points(0).map(|(x, _, _)| x);
         let mut block = ColumnBlock::EMPTY;
         let mut left = 0;
@@ -188,6 +193,7 @@ impl<P: Palette> NoiseDrawing<'_, P> {
                 block: &block,
                 ladder,
                 turbulence,
+                layers,
                 columns,
                 rows: [RowPart::default(); MAX_OCTAVES as usize],
                 levels: [0; BLOCK_COLUMNS],
@@ -210,6 +216,8 @@ struct BlockColors<'d, 'a, P> {
     block: &'d ColumnBlock,
     ladder: &'d Ladder,
     turbulence: bool,
+    /// Each octave's part of the depth, in 3D.
+    layers: Option<&'d [RowPart; MAX_OCTAVES as usize]>,
     /// The block's columns' x.
     columns: &'d [Real],
     /// The current row's part of each octave.
@@ -252,8 +260,12 @@ impl<P> BlockColors<'_, '_, P> {
             return false;
         }
         let (noise, turbulence) = (texture.noise, self.turbulence);
+        let (block, ladder, rows) = (self.block, self.ladder, &self.rows);
         let mut sums = [0; BLOCK_COLUMNS];
-        (self.block).sums(noise, self.ladder, &self.rows, turbulence, &mut sums);
+        match self.layers {
+            Some(layers) => block.sums_in_layer(noise, ladder, rows, layers, turbulence, &mut sums),
+            None => block.sums(noise, ladder, rows, turbulence, &mut sums),
+        }
         for ((level, sum), &x) in self.levels.iter_mut().zip(sums).zip(self.columns) {
             let value = texture
                 .texture

@@ -163,39 +163,10 @@ impl Perlin {
 
     /// The noise at (`x`, `y`, `z`).
     pub fn noise3(&self, x: Real, y: Real, z: Real) -> Sample {
-        let (xi, xf) = cell(x);
-        let (yi, yf) = cell(y);
-        let (zi, zf) = cell(z);
-        let (u, v, w) = (fade(xf), fade(yf), fade(zf));
-        let a = self.hash(xi) + yi;
-        let (aa, ab) = (self.hash(a) + zi, self.hash(a + 1) + zi);
-        let b = self.hash(xi + 1) + yi;
-        let (ba, bb) = (self.hash(b) + zi, self.hash(b + 1) + zi);
-        let one = 1 << CELL_FRAC_BITS;
-        let corner = |hash: i32, dx: i32, dy: i32, dz: i32| gradient(self.hash(hash), dx, dy, dz);
-        let near = lerp(
-            v,
-            lerp(u, corner(aa, xf, yf, zf), corner(ba, xf - one, yf, zf)),
-            lerp(
-                u,
-                corner(ab, xf, yf - one, zf),
-                corner(bb, xf - one, yf - one, zf),
-            ),
-        );
-        let far = lerp(
-            v,
-            lerp(
-                u,
-                corner(aa + 1, xf, yf, zf - one),
-                corner(ba + 1, xf - one, yf, zf - one),
-            ),
-            lerp(
-                u,
-                corner(ab + 1, xf, yf - one, zf - one),
-                corner(bb + 1, xf - one, yf - one, zf - one),
-            ),
-        );
-        Sample(lerp(w, near, far))
+        let column = ColumnPart::of(x);
+        let (row, layer) = (RowPart::of(y), RowPart::of(z));
+        self.cube_corners(column.cell(), row, layer)
+            .sample(column, row, layer)
     }
 
     /// The noise at (`x`, `y`): Perlin's noise at z = 0, where the far layer of the cell has
@@ -221,6 +192,43 @@ impl Perlin {
         let near = self.line(left, 0, row.place);
         let far = self.line(left + 1, 0, row.place - one);
         self.right_corners(cell, near, far, row)
+    }
+
+    /// The eight corners of lattice cell `cell` of `row` in `layer` (3D; a layer is z's
+    /// part, as a row is y's): what every point of the cell in that row and layer shares.
+    #[inline]
+    pub(super) fn cube_corners(&self, cell: i32, row: RowPart, layer: RowPart) -> CubeCorners {
+        let a = self.hash(cell) + row.cell;
+        let (aa, ab) = (self.hash(a) + layer.cell, self.hash(a + 1) + layer.cell);
+        let b = self.hash(cell + 1) + row.cell;
+        let (ba, bb) = (self.hash(b) + layer.cell, self.hash(b + 1) + layer.cell);
+        let one = 1 << CELL_FRAC_BITS;
+        let (near_y, far_y) = (row.place, row.place - one);
+        let (near_z, far_z) = (layer.place, layer.place - one);
+        let line = |hash: i32, dx: i32, dy: i32, dz: i32| {
+            let (gx, gy, gz) = gradient_of(self.hash(hash));
+            let (gx, gy, gz) = (i32::from(gx), i32::from(gy), i32::from(gz));
+            let shift = SAMPLE_FRAC_BITS - CELL_FRAC_BITS;
+            Line {
+                slope: gx << shift,
+                offset: (gx * dx + gy * dy + gz * dz) << shift,
+            }
+        };
+        CubeCorners {
+            cell: cell & 255,
+            near: [
+                line(aa, 0, near_y, near_z),
+                line(ba, -one, near_y, near_z),
+                line(ab, 0, far_y, near_z),
+                line(bb, -one, far_y, near_z),
+            ],
+            far: [
+                line(aa + 1, 0, near_y, far_z),
+                line(ba + 1, -one, near_y, far_z),
+                line(ab + 1, 0, far_y, far_z),
+                line(bb + 1, -one, far_y, far_z),
+            ],
+        }
     }
 
     /// The corners of the cell after `corners`' one (the next column, modulo 256) in
@@ -270,7 +278,7 @@ impl Perlin {
 
 /// A corner's gradient dotted with the offset from the corner, as a line in the point's
 /// place in its cell: `slope · place + offset` in 2⁻²⁹ (the same integers as
-/// [`gradient`]: the shift distributes over the sum, which stays within ±2).
+/// Perlin's `grad`, shifted to 2⁻²⁹: the shift distributes over the sum, which stays within ±2).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 struct Line {
     slope: i32,
@@ -324,6 +332,48 @@ impl CellCorners {
         let near = lerp_close(u, self.near_left.at(place), self.near_right.at(place));
         let far = lerp_close(u, self.far_left.at(place), self.far_right.at(place));
         Sample(lerp_close(row.fade, near, far))
+    }
+}
+
+/// The eight corners of a lattice cell of 3D noise in one row and layer, as lines in the
+/// point's place (near layer, then far; in each the near row's left and right corners,
+/// then the far row's): a row's points in one cell need only their x place and fade.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(super) struct CubeCorners {
+    /// The cell, 0 to 255.
+    cell: i32,
+    near: [Line; 4],
+    far: [Line; 4],
+}
+
+impl CubeCorners {
+    /// No cell's corners: those of cell 256, which no point is in.
+    pub(super) const NONE: Self = Self {
+        cell: 256,
+        near: [Line::ZERO; 4],
+        far: [Line::ZERO; 4],
+    };
+
+    /// The cell, 0 to 255.
+    #[inline(always)]
+    pub(super) fn cell(&self) -> i32 {
+        self.cell
+    }
+
+    /// The noise at the point of the cell whose x part is `column`, in `row` and
+    /// `layer`: Perlin's seven interpolations, each in 64 bits (in 3D the values joined
+    /// may be 2³¹ apart).
+    #[inline(always)]
+    pub(super) fn sample(&self, column: ColumnPart, row: RowPart, layer: RowPart) -> Sample {
+        let (place, u) = (column.place(), column.fade);
+        let square = |[near_left, near_right, far_left, far_right]: [Line; 4]| {
+            lerp(
+                row.fade,
+                lerp(u, near_left.at(place), near_right.at(place)),
+                lerp(u, far_left.at(place), far_right.at(place)),
+            )
+        };
+        Sample(lerp(layer.fade, square(self.near), square(self.far)))
     }
 }
 
@@ -451,16 +501,6 @@ fn gradient_of(hash: i32) -> (i8, i8, i8) {
         .get((hash & 15) as usize)
         .copied()
         .unwrap_or_default()
-}
-
-/// The dot product of the gradient `hash` picks with the offset (`dx`, `dy`, `dz`) (2⁻²⁴
-/// units) in 2⁻²⁹.
-#[inline(always)]
-fn gradient(hash: i32, dx: i32, dy: i32, dz: i32) -> i32 {
-    let (gx, gy, gz) = gradient_of(hash);
-    // Two of the three are nonzero, each offset within ±1: the dot is within ±2.
-    let dot = i32::from(gx) * dx + i32::from(gy) * dy + i32::from(gz) * dz;
-    dot << (SAMPLE_FRAC_BITS - CELL_FRAC_BITS)
 }
 
 /// `a + t(b − a)`, `t` in 2⁻³⁰, `a` and `b` in 2⁻²⁹ within ±2, rounded to nearest.
