@@ -4,12 +4,55 @@
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
+use super::fractal::OUT_OF_RANGE;
 use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES};
 use super::perlin::RowPart;
 use super::plane::{ColumnBlock, BLOCK_COLUMNS};
-use super::texture::{level_of, NoiseTexture};
+use super::texture::{level_of, normaliser, NoiseTexture};
+use crate::error::{Error, FitError, ParameterError};
 use crate::math::Real;
 use crate::render::palette::Palette;
+
+impl<'a> NoiseTexture<'a> {
+    /// The texture fitted to `area` with `palette`: level `l` is drawn as
+    /// `palette.color(l, u16::MAX)`. Refuses octaves out of range, a scale that is not
+    /// positive, and a picture whose finest octave would leave `Real`'s range (so that
+    /// drawing cannot fail).
+    pub fn fit<P: Palette>(
+        &self,
+        area: Rectangle,
+        palette: P,
+    ) -> Result<NoiseDrawing<'a, P>, Error> {
+        let ladder = self.octaves.ladder()?;
+        if self.scale <= Real::ZERO {
+            return Err(Error::Parameter(ParameterError::ScaleNotPositive {
+                scale: self.scale,
+            }));
+        }
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        // The farthest corner, times the finest octave's frequency, must stay in range.
+        let size = area.size;
+        let (x, y, z) = self.point((size.width, size.height), size.width);
+        let mut reach = x.max(y).max(z.map_or(Real::ZERO, Real::abs));
+        for _ in 1..self.octaves.octaves {
+            reach = reach
+                .checked_mul(self.octaves.lacunarity)
+                .ok_or(OUT_OF_RANGE)?;
+        }
+        // Marble adds the turbulence (at most Σaⁱ ≤ 16) to x.
+        reach.checked_add(Real::from_int(16)).ok_or(OUT_OF_RANGE)?;
+        let normaliser = normaliser(&ladder)?;
+        Ok(NoiseDrawing::new(
+            self.clone(),
+            normaliser,
+            ladder,
+            area,
+            palette,
+        ))
+    }
+}
 
 /// A texture fitted to an area with a palette: an embedded-graphics [`Drawable`].
 ///

@@ -1,15 +1,11 @@
 //! Perlin's textures: noise and its sums turned into a level of a palette, over a picture.
 
-use embedded_graphics::primitives::Rectangle;
-
-use super::drawing::NoiseDrawing;
 use super::fractal::{Ladder, Octaves, Sum, OUT_OF_RANGE};
 use super::perlin::Perlin;
-use crate::error::{Error, FitError, ParameterError};
+use crate::error::Error;
 use crate::math::trig::BinaryAngle;
 use crate::math::wide::{mul_u32_wide, shift_round_i64};
 use crate::math::Real;
-use crate::render::palette::Palette;
 
 /// Levels a texture takes, 0 to 255: a palette of 256 entries shows each one.
 pub const LEVELS: u16 = 256;
@@ -174,7 +170,7 @@ pub(super) fn level_of(value: Real) -> u8 {
 
 /// 1/Σaⁱ over the octaves, rounded to 2⁻³²: what a sum is multiplied by to stay within
 /// [−1, 1].
-fn normaliser(ladder: &Ladder) -> Result<Real, Error> {
+pub(super) fn normaliser(ladder: &Ladder) -> Result<Real, Error> {
     Real::ONE
         .checked_div(ladder.amplitude_total()?)
         .ok_or(OUT_OF_RANGE)
@@ -186,7 +182,7 @@ fn normaliser(ladder: &Ladder) -> Result<Real, Error> {
 pub struct NoiseTexture<'a> {
     pub(super) noise: &'a Perlin,
     pub(super) texture: Texture,
-    octaves: Octaves,
+    pub(super) octaves: Octaves,
     pub(super) scale: Real,
     pub(super) z: Option<Real>,
 }
@@ -230,45 +226,6 @@ impl<'a> NoiseTexture<'a> {
             lattice_point(self.scale, pixels, width).unwrap_or(Real::from_bits(i64::MAX))
         };
         (step(x), step(y), self.z)
-    }
-
-    /// The texture fitted to `area` with `palette`: level `l` is drawn as
-    /// `palette.color(l, u16::MAX)`. Refuses octaves out of range, a scale that is not
-    /// positive, and a picture whose finest octave would leave `Real`'s range (so that
-    /// drawing cannot fail).
-    pub fn fit<P: Palette>(
-        &self,
-        area: Rectangle,
-        palette: P,
-    ) -> Result<NoiseDrawing<'a, P>, Error> {
-        let ladder = self.octaves.ladder()?;
-        if self.scale <= Real::ZERO {
-            return Err(Error::Parameter(ParameterError::ScaleNotPositive {
-                scale: self.scale,
-            }));
-        }
-        if area.size.width == 0 || area.size.height == 0 {
-            return Err(Error::Fit(FitError::ZeroSizeTarget));
-        }
-        // The farthest corner, times the finest octave's frequency, must stay in range.
-        let size = area.size;
-        let (x, y, z) = self.point((size.width, size.height), size.width);
-        let mut reach = x.max(y).max(z.map_or(Real::ZERO, Real::abs));
-        for _ in 1..self.octaves.octaves {
-            reach = reach
-                .checked_mul(self.octaves.lacunarity)
-                .ok_or(OUT_OF_RANGE)?;
-        }
-        // Marble adds the turbulence (at most Σaⁱ ≤ 16) to x.
-        reach.checked_add(Real::from_int(16)).ok_or(OUT_OF_RANGE)?;
-        let normaliser = normaliser(&ladder)?;
-        Ok(NoiseDrawing::new(
-            self.clone(),
-            normaliser,
-            ladder,
-            area,
-            palette,
-        ))
     }
 }
 
