@@ -314,6 +314,17 @@ mod textures {
         Error, Real,
     };
 
+    /// Every texture.
+    const TEXTURES: [Texture; 7] = [
+        Texture::Perlin,
+        Texture::Fbm,
+        Texture::Clouds,
+        Texture::Turbulence,
+        Texture::Ridged,
+        Texture::Marble,
+        Texture::Wood,
+    ];
+
     /// Each texture's value in [0, 1] as its documentation states it, from the f64 model.
     fn model_value(p: &[u8; 256], texture: Texture, octaves: &Octaves, (x, y): (f64, f64)) -> f64 {
         let amplitudes: f64 = (0..octaves.octaves)
@@ -339,15 +350,7 @@ mod textures {
         let noise = Perlin::seeded(11);
         let p = noise.permutation();
         let octaves = Octaves::default();
-        for texture in [
-            Texture::Perlin,
-            Texture::Fbm,
-            Texture::Clouds,
-            Texture::Turbulence,
-            Texture::Ridged,
-            Texture::Marble,
-            Texture::Wood,
-        ] {
+        for texture in TEXTURES {
             for (x, y, _) in points(1_000, 6.0) {
                 let got = texture
                     .value(&noise, &octaves, (real(x), real(y), None))
@@ -388,16 +391,7 @@ mod textures {
         // Every texture: those a drawing sums a block of columns at a time (the plane at
         // lacunarity 2, two blocks and a part of one across) and those it takes point by
         // point (ridged), each pixel the level its point has.
-        let kinds = [
-            Texture::Perlin,
-            Texture::Fbm,
-            Texture::Clouds,
-            Texture::Turbulence,
-            Texture::Ridged,
-            Texture::Marble,
-            Texture::Wood,
-        ];
-        for kind in kinds {
+        for kind in TEXTURES {
             let texture = NoiseTexture::new(&noise, kind).with_scale(real(3.0));
             let area = Rectangle::new(Point::zero(), Size::new(48, 32));
             let drawing = texture.fit(area, Levels).unwrap();

@@ -35,14 +35,10 @@ impl<'a> NoiseTexture<'a> {
         // The farthest corner, times the finest octave's frequency, must stay in range.
         let size = area.size;
         let (x, y, z) = self.point((size.width, size.height), size.width);
-        let mut reach = x.max(y).max(z.map_or(Real::ZERO, Real::abs));
-        for _ in 1..self.octaves.octaves {
-            reach = reach
-                .checked_mul(self.octaves.lacunarity)
-                .ok_or(OUT_OF_RANGE)?;
-        }
+        let reach = x.max(y).max(z.map_or(Real::ZERO, Real::abs));
+        let finest = ladder.finest(reach).ok_or(OUT_OF_RANGE)?;
         // Marble adds the turbulence (at most Σaⁱ ≤ 16) to x.
-        reach.checked_add(Real::from_int(16)).ok_or(OUT_OF_RANGE)?;
+        finest.checked_add(Real::from_int(16)).ok_or(OUT_OF_RANGE)?;
         let normaliser = normaliser(&ladder)?;
         Ok(NoiseDrawing::new(
             self.clone(),

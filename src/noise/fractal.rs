@@ -133,17 +133,24 @@ impl Ladder {
             .map(|&amplitude| Weight::of(amplitude))
     }
 
+    /// `reach` (a coordinate's magnitude) at the finest octave: times the lacunarity once
+    /// an octave after the first; `None` past `Real`'s range. Where a picture's farthest
+    /// point stays in range, every point's every octave does.
+    pub(super) fn finest(&self, reach: Real) -> Option<Real> {
+        (1..self.octaves).try_fold(reach, |reach, _| reach.checked_mul(self.lacunarity))
+    }
+
     /// Σaⁱ: what the sums of samples in [−1, 1] stay within.
     pub(crate) fn amplitude_total(&self) -> Result<Real, Error> {
         let mut total = Real::ZERO;
-        for &amplitude in self.amplitudes.iter().take(self.octaves as usize) {
+        for &amplitude in self.amplitudes() {
             total = total.checked_add(amplitude).ok_or(OUT_OF_RANGE)?;
         }
         Ok(total)
     }
 
     /// [`Octaves::sum`] with the amplitudes ready. Point by point, the general path: kept
-    /// out of line where it is called (drawings in the plane take the blocks), to spare
+    /// out of line where it is called (drawings take the blocks where they can), to spare
     /// the smallest boards' flash.
     #[inline(never)]
     pub(crate) fn sum(
@@ -270,9 +277,9 @@ pub(super) fn times(sample: Sample, amplitude: Real) -> Real {
     Real::from_bits((product + half + (product >> 63)) >> SAMPLE_FRAC_BITS)
 }
 
-/// An octave's amplitude as its samples' terms are cheapest taken: [`times`] in fewer
-/// instructions where the amplitude is a multiple of 2⁻³ (fBm's first four octaves) or a
-/// power of two (its later ones), the same terms.
+/// An octave's amplitude as its samples' terms are cheapest taken: [`times`] without its
+/// 64-bit product and rounding where the amplitude is a multiple of 2⁻³ (fBm's first four
+/// octaves) or a power of two (its later ones), the same terms.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Weight {
     /// m·2⁻³ (m at most 8): the product m·sample in 2⁻³² is exact, nothing rounds.

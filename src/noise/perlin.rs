@@ -189,8 +189,10 @@ impl Perlin {
     pub(super) fn corners(&self, cell: i32, row: RowPart) -> CellCorners {
         let left = self.hash(cell) + row.cell;
         let one = 1 << CELL_FRAC_BITS;
-        let near = self.line(left, 0, row.place);
-        let far = self.line(left + 1, 0, row.place - one);
+        // z = 0: a corner's (x, y, z) hash is the permutation of its (x, y) hash plus 0,
+        // and its gradient's z part meets an offset of 0.
+        let near = self.line(self.hash(left), 0, row.place, 0);
+        let far = self.line(self.hash(left + 1), 0, row.place - one, 0);
         self.right_corners(cell, near, far, row)
     }
 
@@ -205,28 +207,19 @@ impl Perlin {
         let one = 1 << CELL_FRAC_BITS;
         let (near_y, far_y) = (row.place, row.place - one);
         let (near_z, far_z) = (layer.place, layer.place - one);
-        let line = |hash: i32, dx: i32, dy: i32, dz: i32| {
-            let (gx, gy, gz) = gradient_of(self.hash(hash));
-            let (gx, gy, gz) = (i32::from(gx), i32::from(gy), i32::from(gz));
-            let shift = SAMPLE_FRAC_BITS - CELL_FRAC_BITS;
-            Line {
-                slope: gx << shift,
-                offset: (gx * dx + gy * dy + gz * dz) << shift,
-            }
-        };
         CubeCorners {
             cell: cell & 255,
             near: [
-                line(aa, 0, near_y, near_z),
-                line(ba, -one, near_y, near_z),
-                line(ab, 0, far_y, near_z),
-                line(bb, -one, far_y, near_z),
+                self.line(aa, 0, near_y, near_z),
+                self.line(ba, -one, near_y, near_z),
+                self.line(ab, 0, far_y, near_z),
+                self.line(bb, -one, far_y, near_z),
             ],
             far: [
-                line(aa + 1, 0, near_y, far_z),
-                line(ba + 1, -one, near_y, far_z),
-                line(ab + 1, 0, far_y, far_z),
-                line(bb + 1, -one, far_y, far_z),
+                self.line(aa + 1, 0, near_y, far_z),
+                self.line(ba + 1, -one, near_y, far_z),
+                self.line(ab + 1, 0, far_y, far_z),
+                self.line(bb + 1, -one, far_y, far_z),
             ],
         }
     }
@@ -254,24 +247,22 @@ impl Perlin {
         CellCorners {
             cell: cell & 255,
             near_left: near,
-            near_right: self.line(right, -one, row.place),
+            near_right: self.line(self.hash(right), -one, row.place, 0),
             far_left: far,
-            far_right: self.line(right + 1, -one, row.place - one),
+            far_right: self.line(self.hash(right + 1), -one, row.place - one, 0),
         }
     }
 
-    /// The line of the corner whose (x, y) hash is `hash`, `dx` from the corner to the
-    /// cell's left edge and `dy` to the row's points (2⁻²⁴ units).
+    /// The line of the corner whose (x, y, z) hash is `hash`, `dx` from the corner to the
+    /// cell's left edge, `dy` to the row's points and `dz` to the layer's (2⁻²⁴ units).
     #[inline(always)]
-    fn line(&self, hash: i32, dx: i32, dy: i32) -> Line {
-        // z = 0: the corner's hash is the permutation of its (x, y) hash plus 0, and the
-        // gradient's z part meets an offset of 0.
-        let (gx, gy, _) = gradient_of(self.hash(self.hash(hash)));
-        let (gx, gy) = (i32::from(gx), i32::from(gy));
+    fn line(&self, hash: i32, dx: i32, dy: i32, dz: i32) -> Line {
+        let (gx, gy, gz) = gradient_of(self.hash(hash));
+        let (gx, gy, gz) = (i32::from(gx), i32::from(gy), i32::from(gz));
         let shift = SAMPLE_FRAC_BITS - CELL_FRAC_BITS;
         Line {
             slope: gx << shift,
-            offset: (gx * dx + gy * dy) << shift,
+            offset: (gx * dx + gy * dy + gz * dz) << shift,
         }
     }
 }

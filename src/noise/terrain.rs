@@ -94,9 +94,7 @@ impl<'a> NoiseTerrain<'a> {
         // Where the octaves double and the farthest point's finest octave is in range (so
         // every point's is), a block of columns at a time, the same sums; otherwise point
         // by point, which finds the point whose octave leaves the range.
-        let farthest = at(side - 1)?.to_bits();
-        let finest = farthest.checked_mul(1 << (self.octaves.octaves - 1).min(62));
-        if ladder.doubles() && finest.is_some() {
+        if ladder.doubles() && ladder.finest(at(side - 1)?).is_some() {
             return self.generate_in_blocks(&ladder, heights, at);
         }
         for (j, row) in (0_i64..).zip(heights.chunks_mut(self.samples as usize)) {
