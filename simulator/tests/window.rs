@@ -68,17 +68,21 @@ fn a_click_in_the_window_zooms_and_the_saved_picture_is_the_headless_render() {
         return;
     }
     let dir = scratch("window");
-    let display = format!(":{}", 90 + std::process::id() % 100);
-    let _server = Killed(
+    // Xvfb picks a free display itself and writes its number once it takes connections,
+    // so no display of another run (or a stale socket) is ever taken for ours.
+    let mut server = Killed(
         Command::new("Xvfb")
-            .args([display.as_str(), "-screen", "0", "320x240x24"])
-            .stdout(Stdio::null())
+            .args(["-displayfd", "1", "-screen", "0", "320x240x24"])
+            .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn()
             .unwrap(),
     );
-    let socket = format!("/tmp/.X11-unix/X{}", &display[1..]);
-    wait_for("Xvfb", || Path::new(&socket).exists());
+    let mut number = String::new();
+    let stdout = server.0.stdout.take().unwrap();
+    std::io::BufRead::read_line(&mut std::io::BufReader::new(stdout), &mut number).unwrap();
+    assert!(!number.trim().is_empty(), "Xvfb did not start");
+    let display = format!(":{}", number.trim());
     let mut explorer = Killed(
         Command::new(env!("CARGO_BIN_EXE_tinyfractal"))
             .args(["explore", "--size", "64x48"])
