@@ -18,7 +18,7 @@ use super::kernel::Kernel;
 use super::scaled::Scaled;
 use super::view::Tier;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
-use crate::math::wide::mul_i32_wide;
+use crate::math::wide::{mul_i32_wide, mul_u32_wide};
 
 /// log₂(ln 2 / 2) in Q16: ln|z| = log₂|z|² · ln 2 / 2.
 const LOG2_HALF_LN2: i64 = -100_189;
@@ -32,6 +32,7 @@ const RADIUS_Q20: i64 = 256 << 20;
 /// A derivative as a mantissa pair in Q30 and a shared exponent: (x + iy)·2^e, the larger
 /// mantissa kept in [2²⁹, 2³¹) while e > −30, so each fits 32 bits and a step's products
 /// are 32×32 → 64 (one instruction on Cortex-M3 and M4).
+#[derive(Debug, Clone, Copy)]
 pub(super) struct Derivative {
     x: i32,
     y: i32,
@@ -48,18 +49,47 @@ impl Derivative {
     /// dz₀ = 0: the derivative of the Mandelbrot set's z₀ = 0.
     pub(super) const ZERO: Self = Self { x: 0, y: 0, e: -30 };
 
+    /// 1 in the mantissa's units at exponent `e`: 2^(30 − e), or 0 where it is below the
+    /// mantissa's last bit (past e = 30) or not added (`plus_one` false).
+    #[inline(always)]
+    fn one_at(e: i32, plus_one: bool) -> i64 {
+        if plus_one && (-30..=30).contains(&e) {
+            1 << (30 - e)
+        } else {
+            0
+        }
+    }
+
     /// dz ← 2·z·dz, plus 1 if `plus_one`, z with `bits` fraction bits and |re|, |im| < 2³⁰
     /// in them (every product below 2⁶¹).
     #[inline(always)]
     fn step(&mut self, (zx, zy): (i32, i32), bits: u32, plus_one: bool) {
+        let one = Self::one_at(self.e, plus_one);
+        self.step_adding(zx, zy, bits, one);
+    }
+
+    /// [`step`](Self::step) with 1 already in the mantissa's units ([`one_at`]
+    /// (Self::one_at) of the exponent): the orbits' loops carry it from step to step and
+    /// make it again only when the exponent moves. The four products are in one block,
+    /// where the compiler sees their factors as 32-bit ones (across blocks it multiplies
+    /// them 64 × 64).
+    #[inline(always)]
+    fn step_adding(&mut self, zx: i32, zy: i32, bits: u32, one: i64) {
         let shift = bits - 1;
-        let mut x = (mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> shift;
+        let x = (mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> shift;
         let y = (mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> shift;
-        // 1 is 2^(30 − e) in the mantissa; below its last bit past e = 30.
-        if plus_one && (-30..=30).contains(&self.e) {
-            x += 1 << (30 - self.e);
+        self.normalise(x + one, y);
+    }
+
+    /// dz ← 2·z·dz (+ 1 for the Mandelbrot set) in the orbits' loops, z in Q28, with 1 in
+    /// the mantissa's units carried in `one`.
+    #[inline(always)]
+    fn step_carrying(&mut self, (zx, zy): (i32, i32), one: &mut i64, plus_one: bool) {
+        let e = self.e;
+        self.step_adding(zx, zy, 28, *one);
+        if self.e != e {
+            *one = Self::one_at(self.e, plus_one);
         }
-        self.normalise(x, y);
     }
 
     /// dz ← 2·z·dz + 1, z = (x + iy)·2^−`s` with mantissas below 2⁶² (a perturbed pixel's
@@ -100,6 +130,16 @@ impl Derivative {
     /// The mantissas `x`, `y` (at the current exponent) brought back to [2²⁹, 2³¹).
     #[inline(always)]
     fn normalise(&mut self, x: i64, y: i64) {
+        // Most steps leave both in 32 bits with the larger in [2²⁹, 2³¹): nothing to do.
+        let (x32, y32) = (x as i32, y as i32);
+        let larger = x32.unsigned_abs() | y32.unsigned_abs();
+        if i64::from(x32) == x
+            && i64::from(y32) == y
+            && larger.wrapping_sub(1 << 29) < (1 << 31) - (1 << 29)
+        {
+            (self.x, self.y) = (x32, y32);
+            return;
+        }
         let top = 63 - (x.unsigned_abs() | y.unsigned_abs() | 1).leading_zeros() as i32;
         let (x, y) = if top > 30 {
             let down = top - 30;
@@ -135,43 +175,24 @@ impl Kernel {
         c: (i64, i64),
     ) -> (Option<i64>, u32) {
         let mandelbrot = self.julia.is_none();
-        let mut dz = Derivative::ONE;
-        let mut k = u32::from(mandelbrot);
+        let start = (u32::from(mandelbrot), self.max);
         // z in Q60 (`WIDE`: products' high words) or Q28 (32-bit values, 64-bit products).
-        let z = if WIDE {
-            let mut z = first;
-            loop {
-                let (x2, y2) = (HighWords::mul(z.0, z.0), HighWords::mul(z.1, z.1));
-                if HighWords::escapes(x2, y2) {
-                    break;
-                }
-                if k >= self.max {
-                    return (None, k);
-                }
-                dz.step(((z.0 >> 32) as i32, (z.1 >> 32) as i32), 28, mandelbrot);
-                z = HighWords::square_plus(z, (x2, y2), c);
-                k += 1;
-            }
-            z
+        let (escaped, k) = if WIDE {
+            q60_orbit(first, c, start, Derivative::ONE, mandelbrot)
         } else {
             let q28 = |v: i64| (v >> 32) as i32;
-            let (cr, ci) = (q28(c.0), q28(c.1));
-            let (mut x, mut y) = (q28(first.0), q28(first.1));
-            loop {
-                let (x2, y2) = (mul_i32_wide(x, x) >> 28, mul_i32_wide(y, y) >> 28);
-                if x2 + y2 > 4 << 28 {
-                    break;
-                }
-                if k >= self.max {
-                    return (None, k);
-                }
-                dz.step((x, y), 28, mandelbrot);
-                // |z| ≤ 2 and |c| < 3.5: both parts stay below 8 (2³¹ in Q28).
-                let xy = (mul_i32_wide(x, y) >> 27) as i32;
-                (x, y) = ((x2 - y2) as i32 + cr, xy + ci);
-                k += 1;
-            }
-            (i64::from(x) << 32, i64::from(y) << 32)
+            let (escaped, k) = q28_orbit(
+                (q28(first.0), q28(first.1)),
+                (q28(c.0), q28(c.1)),
+                start,
+                Derivative::ONE,
+                mandelbrot,
+            );
+            let q60 = |v: i32| i64::from(v) << 32;
+            (escaped.map(|((x, y), dz)| ((q60(x), q60(y)), dz)), k)
+        };
+        let Some((z, dz)) = escaped else {
+            return (None, k);
         };
         let (estimate, steps) = log2_pixels_past_escape(z, c, dz, mandelbrot, self.spacing_log2);
         (estimate, k + steps)
@@ -192,6 +213,72 @@ impl Kernel {
     }
 }
 
+/// An orbit's point where it escaped and its derivative there (`None` at the cap), and
+/// the steps counted.
+type Escaped<T> = (Option<((T, T), Derivative)>, u32);
+
+/// The orbit from `z` (Q60, products' high words) with the derivative `d` carried
+/// beside it, counting steps from `k` up to `max`: the point where it escapes and its
+/// derivative there, or `None` at the cap; and the steps counted.
+///
+/// Each turn's products are taken together, 2xy before the escape test: the compiler
+/// would otherwise share a value's 32-bit halves between the squares (at the end of one
+/// turn) and 2xy (in the next), carry them as 64-bit values and multiply them 64 × 64.
+#[inline(always)]
+fn q60_orbit(
+    mut z: (i64, i64),
+    c: (i64, i64),
+    (mut k, max): (u32, u32),
+    mut d: Derivative,
+    mandelbrot: bool,
+) -> Escaped<i64> {
+    let mut one = Derivative::one_at(d.e, mandelbrot);
+    loop {
+        let (x2, y2) = (HighWords::square(z.0), HighWords::square(z.1));
+        let xy = HighWords::twice_xy(z.0, z.1, x2, y2);
+        if HighWords::escapes(x2, y2) {
+            return (Some((z, d)), k);
+        }
+        if k >= max {
+            return (None, k);
+        }
+        let high = |v: i64| (v >> 32) as i32;
+        d.step_carrying((high(z.0), high(z.1)), &mut one, mandelbrot);
+        z = (HighWords::to_value(x2 - y2) + c.0, xy + c.1);
+        k += 1;
+    }
+}
+
+/// The orbit from `z` (Q28, 32×32 → 64-bit products) with the derivative `d` carried
+/// beside it, as [`q60_orbit`]. The squares are taken from the magnitudes: from the
+/// signed values they would share their sign extension with the next turn's products,
+/// which the compiler would then carry as 64-bit values and multiply 64 × 64.
+#[inline(always)]
+fn q28_orbit(
+    (mut x, mut y): (i32, i32),
+    (cr, ci): (i32, i32),
+    (mut k, max): (u32, u32),
+    mut d: Derivative,
+    mandelbrot: bool,
+) -> Escaped<i32> {
+    let square = |v: i32| mul_u32_wide(v.unsigned_abs(), v.unsigned_abs()) as i64;
+    let mut one = Derivative::one_at(d.e, mandelbrot);
+    loop {
+        let (x2, y2) = (square(x) >> 28, square(y) >> 28);
+        if x2 + y2 > 4 << 28 {
+            return (Some(((x, y), d)), k);
+        }
+        if k >= max {
+            return (None, k);
+        }
+        d.step_carrying((x, y), &mut one, mandelbrot);
+        // |z| ≤ 2 and |c| < 3.5: both parts stay below 8 (2³¹ in Q28).
+        let xy = (mul_i32_wide(x, y) >> 27) as i32;
+        (x, y) = ((x2 - y2) as i32 + cr, xy + ci);
+        k += 1;
+    }
+}
+
 /// log₂ of the estimated distance in pixels (Q16) of an orbit that escaped at z with
 /// derivative `dz` (z and c in Q60), the pixel spacing 2^`spacing_log2` (Q16), taken on
 /// to |z| ≥ 256 in Q20 as the smooth value goes (`smooth_value`); also the steps that
@@ -208,12 +295,16 @@ pub(super) fn log2_pixels_past_escape(
     let (mut x, mut y) = (q20(x), q20(y));
     let mut steps = 0;
     while steps < STEPS_PAST_ESCAPE && x.abs() < RADIUS_Q20 && y.abs() < RADIUS_Q20 {
-        let (x2, y2) = (x * x, y * y);
+        // Below 2²⁸ here: 32-bit factors, the squares from the magnitudes.
+        let (xs, ys) = (x as i32, y as i32);
+        let square = |v: i32| mul_u32_wide(v.unsigned_abs(), v.unsigned_abs()) as i64;
+        let (x2, y2) = (square(xs), square(ys));
         if x2 + y2 >= RADIUS_Q20 * RADIUS_Q20 {
             break;
         }
-        dz.step((x as i32, y as i32), 20, plus_one);
-        (x, y) = (((x2 - y2) >> 20) + cr, ((2 * x * y) >> 20) + ci);
+        let xy = mul_i32_wide(xs, ys);
+        dz.step((xs, ys), 20, plus_one);
+        (x, y) = (((x2 - y2) >> 20) + cr, (xy >> 19) + ci);
         steps += 1;
     }
     // |z|² in Q16 from Q8 parts (|z| < 2¹⁷ after the last step).
@@ -225,4 +316,70 @@ pub(super) fn log2_pixels_past_escape(
         Some(numerator - dz.log2_magnitude()? - i64::from(spacing_log2))
     })();
     (estimate, steps)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::TestRunner;
+
+    /// Normalising keeps the derivative's value, (x + iy)·2^(e − 30), to the mantissas'
+    /// last bit, and leaves the larger mantissa in [2²⁹, 2³¹), or smaller only at the
+    /// lowest exponent, over mantissas of every size from 0 to 2⁴⁰ and exponents from
+    /// the lowest up: the fast path for mantissas already in range, and the shifts.
+    #[test]
+    fn normalising_keeps_the_value_with_the_mantissa_in_range() {
+        let mut runner = TestRunner::deterministic();
+        let mantissa = (-(1i64 << 40)..=1 << 40, 0u32..41).prop_map(|(v, s)| v >> s);
+        runner
+            .run(&(mantissa.clone(), mantissa, -30i32..60), |(x, y, e)| {
+                let mut d = Derivative { x: 0, y: 0, e };
+                d.normalise(x, y);
+                let larger = d.x.unsigned_abs().max(d.y.unsigned_abs());
+                prop_assert!(larger < 1 << 31);
+                prop_assert!(larger >= 1 << 29 || d.e == -30 || (x, y) == (0, 0));
+                // The value at the new exponent: the old one shifted, floored.
+                let at = |v: i64| {
+                    let moved = i128::from(v) << 64 >> (64 + d.e - e);
+                    i64::try_from(moved).unwrap()
+                };
+                prop_assert!(d.e >= e || (at(x), at(y)) == (i64::from(d.x), i64::from(d.y)));
+                prop_assert!(
+                    d.e < e || (x >> (d.e - e), y >> (d.e - e)) == (i64::from(d.x), i64::from(d.y))
+                );
+                Ok(())
+            })
+            .unwrap();
+    }
+
+    /// The loops' step, with 1 carried from step to step, is the plain step with 1 made
+    /// from the exponent each time, for the Mandelbrot set and Julia sets, over orbits
+    /// of random points within radius 2 (Q28) from derivatives of every exponent.
+    #[test]
+    fn carrying_one_steps_as_making_it_each_time() {
+        let mut runner = TestRunner::deterministic();
+        let two = 2i32 << 28;
+        let point = (-two..=two, -two..=two);
+        let points = proptest::collection::vec(point, 1..40);
+        runner
+            .run(
+                &(points, -30i32..40, any::<bool>(), 1i32 << 29..1 << 30),
+                |(points, e, mandelbrot, x)| {
+                    let mut plain = Derivative { x, y: -x / 3, e };
+                    let mut carried = plain;
+                    let mut one = Derivative::one_at(carried.e, mandelbrot);
+                    for z in points {
+                        plain.step(z, 28, mandelbrot);
+                        carried.step_carrying(z, &mut one, mandelbrot);
+                        prop_assert_eq!(
+                            (plain.x, plain.y, plain.e),
+                            (carried.x, carried.y, carried.e)
+                        );
+                    }
+                    Ok(())
+                },
+            )
+            .unwrap();
+    }
 }
