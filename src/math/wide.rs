@@ -29,6 +29,17 @@ pub(crate) fn mul_u32_halves(a: u32, b: u32) -> u64 {
     (u64::from(high) << 32) | u64::from(low)
 }
 
+/// `n / d` as `/` has it (toward zero; `d` not 0), by a 32-bit division where both fit 32
+/// bits: one instruction on Cortex-M3 and M4 and a short call on M0, where the 64-bit
+/// division is a long library routine on every core.
+#[inline(always)]
+pub(crate) fn div_narrow(n: i64, d: i64) -> i64 {
+    match (i32::try_from(n), i32::try_from(d)) {
+        (Ok(n), Ok(d)) if d != 0 && !(n == i32::MIN && d == -1) => i64::from(n / d),
+        _ => n / d,
+    }
+}
+
 /// The exact product of two i32 (`smull`, or 16-bit halves: see [`mul_u32_wide`]).
 #[inline(always)]
 pub(crate) fn mul_i32_wide(a: i32, b: i32) -> i64 {
@@ -180,6 +191,26 @@ pub(crate) const fn div_round(numerator: i128, denominator: i128) -> i128 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The narrow division is `/` on i64, for values of every size (either side of 32
+    /// bits, both signs, and the one quotient that overflows 32 bits).
+    #[test]
+    fn narrow_division_is_the_wide_one() {
+        use proptest::prelude::*;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let value = (any::<i64>(), 0u32..64).prop_map(|(v, s)| v >> s);
+        runner
+            .run(&(value.clone(), value), |(n, d)| {
+                prop_assume!(d != 0 && !(n == i64::MIN && d == -1));
+                prop_assert_eq!(div_narrow(n, d), n / d);
+                Ok(())
+            })
+            .unwrap();
+        let min = i64::from(i32::MIN);
+        assert_eq!(div_narrow(min, -1), 1 << 31);
+        assert_eq!(div_narrow(-7, 2), -3);
+        assert_eq!(div_narrow(7, -2), -3);
+    }
 
     #[test]
     fn products_from_halves_are_exact() {

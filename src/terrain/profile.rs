@@ -10,6 +10,7 @@ use super::displacement::{
 };
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::random::normal_q16;
+use crate::math::wide::div_narrow;
 use crate::math::Real;
 
 /// A profile of 2ᵏ + 1 heights by midpoint displacement.
@@ -188,7 +189,7 @@ impl<C: PixelColor> ProfileDrawing<C> {
         if high == low {
             return (rows / 2) as u32;
         }
-        (((high - height) * rows + (high - low) / 2) / (high - low)) as u32
+        div_narrow((high - height) * rows + (high - low) / 2, high - low) as u32
     }
 }
 
@@ -220,8 +221,9 @@ impl<C: PixelColor> Drawable for ProfileDrawing<C> {
         let mut a = (0i64, i64::from(heights.next().unwrap_or(0)));
         let mut b = (1i64, i64::from(heights.next().unwrap_or(0)));
         // The profile at position p/width samples, within segment [a, b].
-        let at =
-            |a: (i64, i64), b: (i64, i64), p: i64| a.1 + (b.1 - a.1) * (p - a.0 * width) / width;
+        let at = |a: (i64, i64), b: (i64, i64), p: i64| {
+            a.1 + div_narrow((b.1 - a.1) * (p - a.0 * width), width)
+        };
         for column in 0..width {
             let (from, to) = (column * intervals, (column + 1) * intervals);
             let mut highest = at(a, b, from);
