@@ -68,11 +68,11 @@ impl Derivative {
         self.step_adding(zx, zy, bits, one);
     }
 
-    /// [`step`](Self::step) with 1 already in the mantissa's units ([`one_at`]
-    /// (Self::one_at) of the exponent): the orbits' loops carry it from step to step and
-    /// make it again only when the exponent moves. The four products are in one block,
-    /// where the compiler sees their factors as 32-bit ones (across blocks it multiplies
-    /// them 64 × 64).
+    /// [`step`](Self::step) with 1 already in the mantissa's units (the exponent's
+    /// [`one_at`](Self::one_at)): the orbits' loops carry it from step to step and make it
+    /// again only when the exponent moves. The four products are in one block, where the
+    /// compiler sees their factors as 32-bit ones (across blocks it multiplies them
+    /// 64 × 64).
     #[inline(always)]
     fn step_adding(&mut self, zx: i32, zy: i32, bits: u32, one: i64) {
         let shift = bits - 1;

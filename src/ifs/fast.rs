@@ -19,6 +19,7 @@
 
 use super::maps::Ifs;
 use crate::math::random::Xorshift32;
+use crate::math::wide::dot_high;
 use crate::math::Real;
 
 /// Most maps the fast game takes (an IFS with more plays the `Real` game): eight keep a
@@ -55,10 +56,9 @@ impl PixelMap {
     #[inline(always)]
     fn apply(&self, (x, y): (i32, i32)) -> (i32, i32) {
         let along = |p: i32, q: i32, t: i32| {
-            let sum = i64::from(p) * i64::from(x) + i64::from(q) * i64::from(y);
             // Q1.31 × Q16.16 is Q17.47: twice the high word is the Q16.16 value (its lowest
             // bit dropped), wrapped.
-            (((sum >> 32) as i32) << 1).wrapping_add(t)
+            (dot_high(p, x, q, y) << 1).wrapping_add(t)
         };
         (along(self.a, self.b, self.e), along(self.c, self.d, self.f))
     }

@@ -40,6 +40,46 @@ pub(crate) fn div_narrow(n: i64, d: i64) -> i64 {
     }
 }
 
+/// The high word of a·x + b·y, exact (a dot product's, as a 2×2 map's row takes it):
+/// two `smull`s and an add where there is a long multiply; on cores without one (ARMv6-M)
+/// eight 16×16 products whose middle terms are added into the sum once, cheaper than two
+/// full [`mul_i32_wide`] products.
+#[inline(always)]
+pub(crate) fn dot_high(a: i32, x: i32, b: i32, y: i32) -> i32 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        dot_high_halves(a, x, b, y)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        // Each product is within ±2⁶², so their sum fits, and its high word 32 bits.
+        ((mul_i32_wide(a, x) + mul_i32_wide(b, y)) >> 32) as i32
+    }
+}
+
+/// [`dot_high`] from 16-bit halves in 32-bit arithmetic, with no carries: v = h·2¹⁶ + l
+/// with h signed and l in [0, 2¹⁶), so a·x + b·y = H·2³² + M·2¹⁶ + L for H the high
+/// halves' products, M the four middle products and L the two low ones. M and L are split
+/// again at 16 bits and their parts summed apart (every sum small), which leaves
+/// hi = H + Mₕ + ⌊(Mₗ + Lₕ + ⌊Lₗ / 2¹⁶⌋) / 2¹⁶⌋. H wraps in between, as the result fits.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn dot_high_halves(a: i32, x: i32, b: i32, y: i32) -> i32 {
+    let split = |v: i32| (v >> 16, v & 0xFFFF);
+    let ((ah, al), (xh, xl), (bh, bl), (yh, yl)) = (split(a), split(x), split(b), split(y));
+    let high = (ah * xh).wrapping_add(bh * yh);
+    // A signed half times an unsigned one is below 2³¹ in magnitude.
+    let middles = [ah * xl, al * xh, bh * yl, bl * yh];
+    let middle_high: i32 = middles.iter().map(|m| m >> 16).sum();
+    let middle_low: i32 = middles.iter().map(|m| m & 0xFFFF).sum();
+    // The low halves' products are below 2³² (unsigned).
+    let lows = [(al as u32) * (xl as u32), (bl as u32) * (yl as u32)];
+    let low_high: u32 = lows.iter().map(|l| l >> 16).sum();
+    let low_low: u32 = lows.iter().map(|l| l & 0xFFFF).sum();
+    let below = middle_low + (low_high + (low_low >> 16)) as i32;
+    high.wrapping_add(middle_high).wrapping_add(below >> 16)
+}
+
 /// The exact product of two i32 (`smull`, or 16-bit halves: see [`mul_u32_wide`]).
 #[inline(always)]
 pub(crate) fn mul_i32_wide(a: i32, b: i32) -> i64 {
@@ -191,6 +231,40 @@ pub(crate) const fn div_round(numerator: i128, denominator: i128) -> i128 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The halves' dot product's high word is the exact one (i128), for values of every
+    /// size and sign, the extremes included.
+    #[test]
+    fn dot_products_from_halves_are_exact() {
+        use proptest::prelude::*;
+        let exact = |a: i32, x: i32, b: i32, y: i32| {
+            ((i128::from(a) * i128::from(x) + i128::from(b) * i128::from(y)) >> 32) as i32
+        };
+        let value = (any::<i32>(), 0u32..32).prop_map(|(v, s)| v >> s);
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        runner
+            .run(
+                &(value.clone(), value.clone(), value.clone(), value),
+                |(a, x, b, y)| {
+                    prop_assert_eq!(dot_high_halves(a, x, b, y), exact(a, x, b, y));
+                    prop_assert_eq!(dot_high(a, x, b, y), exact(a, x, b, y));
+                    Ok(())
+                },
+            )
+            .unwrap();
+        let edges = [i32::MIN, i32::MIN + 1, -1, 0, 1, 0xFFFF, 0x1_0000, i32::MAX];
+        for a in edges {
+            for x in edges {
+                for (b, y) in [(a, x), (x, a), (i32::MAX, i32::MIN), (0, 0)] {
+                    assert_eq!(
+                        dot_high_halves(a, x, b, y),
+                        exact(a, x, b, y),
+                        "{a} {x} {b} {y}"
+                    );
+                }
+            }
+        }
+    }
 
     /// The narrow division is `/` on i64, for values of every size (either side of 32
     /// bits, both signs, and the one quotient that overflows 32 bits).
