@@ -1,5 +1,6 @@
-//! Exact wide products and rounding helpers, written so that no core calls a library
-//! routine for them (`__aeabi_lmul`, 128-bit multiplies): the same bits on every target.
+//! Exact wide products, a narrow division and rounding helpers, written so that no core
+//! calls a library routine for them where it can be avoided (`__aeabi_lmul`, 128-bit
+//! multiplies, 64-bit divisions): the same bits on every target.
 
 /// The exact product of two u32. A single instruction on Cortex-M3/M4 (`umull`); on cores
 /// without one (the `tinyfractal_no_long_multiply` cfg, set by build.rs for ARMv6-M) four
