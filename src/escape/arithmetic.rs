@@ -322,26 +322,28 @@ impl Arithmetic for Wide {
 pub(super) struct HighWords;
 
 impl HighWords {
+    /// Balanced halves: v = high·2^32 + low with low in [-2^31, 2^31), so every partial
+    /// product is a signed 32×32 one; |high| < 2^31 for |v| < 8 (Q60).
+    #[inline(always)]
+    fn halves(v: i64) -> (i32, i32) {
+        (((v - i64::from(v as i32)) >> 32) as i32, v as i32)
+    }
+
     /// (a·b) >> 64 (Q120 to Q56), within 1.25 units below or a quarter above.
     #[inline(always)]
     fn product(a: i64, b: i64) -> i64 {
-        // Balanced halves: a = high·2^32 + low with low in [-2^31, 2^31), so every partial
-        // product is a signed 32×32 one; |high| < 2^31 for |a| < 8 (Q60).
-        let split = |v: i64| (((v - i64::from(v as i32)) >> 32) as i32, v as i32);
-        let ((ah, al), (bh, bl)) = (split(a), split(b));
+        let ((ah, al), (bh, bl)) = (Self::halves(a), Self::halves(b));
         // Each cross product is below 2^62 in magnitude: their sum fits.
         let cross = mul_i32_wide(ah, bl) + mul_i32_wide(al, bh);
         mul_i32_wide(ah, bh) + (cross >> 32)
     }
-}
 
-impl HighWords {
     /// [`product`](Self::product)`(a, a)` in two products: the cross products are equal,
     /// so their sum shifted down 32 is one of them shifted down 31.
     #[inline(always)]
     pub(super) fn square(a: i64) -> i64 {
-        let high = ((a - i64::from(a as i32)) >> 32) as i32;
-        mul_i32_wide(high, high) + (mul_i32_wide(high, a as i32) >> 31)
+        let (high, low) = Self::halves(a);
+        mul_i32_wide(high, high) + (mul_i32_wide(high, low) >> 31)
     }
 }
 

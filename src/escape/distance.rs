@@ -18,7 +18,7 @@ use super::kernel::Kernel;
 use super::scaled::Scaled;
 use super::view::Tier;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
-use crate::math::wide::{mul_i32_wide, mul_u32_wide};
+use crate::math::wide::{mul_i32_wide, square_i32_wide};
 
 /// log₂(ln 2 / 2) in Q16: ln|z| = log₂|z|² · ln 2 / 2.
 const LOG2_HALF_LN2: i64 = -100_189;
@@ -250,9 +250,8 @@ fn q60_orbit(
 }
 
 /// The orbit from `z` (Q28, 32×32 → 64-bit products) with the derivative `d` carried
-/// beside it, as [`q60_orbit`]. The squares are taken from the magnitudes: from the
-/// signed values they would share their sign extension with the next turn's products,
-/// which the compiler would then carry as 64-bit values and multiply 64 × 64.
+/// beside it, as [`q60_orbit`]. The squares are taken from the magnitudes
+/// ([`square_i32_wide`]), so that the next turn's products keep their 32-bit factors.
 #[inline(always)]
 fn q28_orbit(
     (mut x, mut y): (i32, i32),
@@ -261,10 +260,9 @@ fn q28_orbit(
     mut d: Derivative,
     mandelbrot: bool,
 ) -> Escaped<i32> {
-    let square = |v: i32| mul_u32_wide(v.unsigned_abs(), v.unsigned_abs()) as i64;
     let mut one = Derivative::one_at(d.e, mandelbrot);
     loop {
-        let (x2, y2) = (square(x) >> 28, square(y) >> 28);
+        let (x2, y2) = (square_i32_wide(x) >> 28, square_i32_wide(y) >> 28);
         if x2 + y2 > 4 << 28 {
             return (Some(((x, y), d)), k);
         }
@@ -297,8 +295,7 @@ pub(super) fn log2_pixels_past_escape(
     while steps < STEPS_PAST_ESCAPE && x.abs() < RADIUS_Q20 && y.abs() < RADIUS_Q20 {
         // Below 2²⁸ here: 32-bit factors, the squares from the magnitudes.
         let (xs, ys) = (x as i32, y as i32);
-        let square = |v: i32| mul_u32_wide(v.unsigned_abs(), v.unsigned_abs()) as i64;
-        let (x2, y2) = (square(xs), square(ys));
+        let (x2, y2) = (square_i32_wide(xs), square_i32_wide(ys));
         if x2 + y2 >= RADIUS_Q20 * RADIUS_Q20 {
             break;
         }

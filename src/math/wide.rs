@@ -81,6 +81,15 @@ pub(crate) fn dot_high_halves(a: i32, x: i32, b: i32, y: i32) -> i32 {
     high.wrapping_add(middle_high).wrapping_add(below >> 16)
 }
 
+/// The exact square of an i32, from its magnitude (`umull`, or 16-bit halves). Where a
+/// loop also multiplies the signed value, a square of the signed value would share its
+/// sign extension with those products, which LLVM may then carry as a 64-bit value and
+/// multiply 64 × 64 (docs/performance.md, Fractint's modes and distance estimation).
+#[inline(always)]
+pub(crate) fn square_i32_wide(v: i32) -> i64 {
+    mul_u32_wide(v.unsigned_abs(), v.unsigned_abs()) as i64
+}
+
 /// The exact product of two i32 (`smull`, or 16-bit halves: see [`mul_u32_wide`]).
 #[inline(always)]
 pub(crate) fn mul_i32_wide(a: i32, b: i32) -> i64 {
