@@ -180,18 +180,18 @@ impl AttractorPicture {
         &self,
         area: &Rectangle,
     ) -> Result<Option<(Settled, SpaceFit, Option<Placer>)>, Error> {
-        let mut seen: Option<(State, [i32; 2], [i32; 2])> = None;
+        let mut seen: Option<(State, [Reach; 2])> = None;
         self.attractor
             .orbit(self.skip, self.sample())
             .run(|[u, v], state| {
-                let (_, [low_u, low_v], [high_u, high_v]) =
-                    seen.get_or_insert((state, [u, v], [u, v]));
-                (*low_u, *low_v) = ((*low_u).min(u), (*low_v).min(v));
-                (*high_u, *high_v) = ((*high_u).max(u), (*high_v).max(v));
+                let (_, [across, up]) = seen.get_or_insert((state, [Reach::of(u), Reach::of(v)]));
+                across.widen(u);
+                up.widen(v);
             })?;
-        let Some((first, low, high)) = seen else {
+        let Some((first, [across, up])) = seen else {
             return Ok(None);
         };
+        let (low, high) = ([across.low, up.low], [across.high(), up.high()]);
         let bits = self.attractor.kind().fraction_bits();
         let real = |[u, v]: [i32; 2]| [to_real(u, bits), to_real(v, bits), Real::ZERO];
         let space = SpaceFit::front_box(real(low), real(high), area, DEFAULT_MARGIN)?;
@@ -244,6 +244,45 @@ impl AttractorPicture {
             palette,
             density: Density::new(area, counts)?,
         })
+    }
+}
+
+/// The values met along one axis: from `low` to `low + width`.
+///
+/// Kept as a low end and a width so that a value inside (nearly every one, once an orbit
+/// has been round its attractor) is one subtraction and one comparison, not two of each.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Reach {
+    low: i32,
+    width: u32,
+}
+
+impl Reach {
+    /// The one value `v`.
+    fn of(v: i32) -> Self {
+        Self { low: v, width: 0 }
+    }
+
+    /// The highest value met.
+    fn high(self) -> i32 {
+        self.low.wrapping_add(self.width as i32)
+    }
+
+    /// Takes `v` in. Its distance above `low`, unsigned, is beyond the width exactly where
+    /// it is below `low` (the distance wraps past every width the 32 bits allow: a value
+    /// below `low` is more than 2³² − 2³¹ − 1 above what is left of `high`) or above the
+    /// high end.
+    #[inline(always)]
+    fn widen(&mut self, v: i32) {
+        let above = v.wrapping_sub(self.low) as u32;
+        if above > self.width {
+            if v < self.low {
+                self.width = self.high().wrapping_sub(v) as u32;
+                self.low = v;
+            } else {
+                self.width = above;
+            }
+        }
     }
 }
 
@@ -348,8 +387,8 @@ impl<P: Palette, T: HitCount> AttractorDensity<'_, P, T> {
             Some(placer) => {
                 let count = orbit.remaining();
                 orbit.run(|[u, v], _| {
-                    let hit = match placer.place(u, v) {
-                        Some((column, row)) => self.density.hit_inside(column, row),
+                    let hit = match placer.cell(u, v) {
+                        Some(cell) => self.density.hit_cell(cell as usize),
                         None => false,
                     };
                     if !hit {
@@ -405,6 +444,27 @@ mod tests {
         display.set_allow_overdraw(true);
         drawing.try_draw(&mut display).unwrap();
         display
+    }
+
+    /// A reach over any values is from their least to their greatest.
+    #[test]
+    fn a_reach_is_from_the_least_to_the_greatest() {
+        use proptest::prelude::*;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let values = proptest::collection::vec(any::<i32>(), 1..40);
+        let edges = proptest::sample::select(&[i32::MIN, i32::MAX, 0, -1][..]);
+        runner
+            .run(&(values, edges), |(values, edge)| {
+                let mut reach = Reach::of(edge);
+                for &v in &values {
+                    reach.widen(v);
+                }
+                let least = values.iter().copied().fold(edge, i32::min);
+                let greatest = values.iter().copied().fold(edge, i32::max);
+                prop_assert_eq!((reach.low, reach.high()), (least, greatest));
+                Ok(())
+            })
+            .unwrap();
     }
 
     /// Placing in the orbit's fixed point lights the pixels the projection does, for

@@ -17,7 +17,7 @@ pub(super) fn mul<const F: u32>(a: i32, b: i32) -> i64 {
 /// `mul::<F>(a, b)`, and never beyond 32 bits.
 #[inline(always)]
 pub(super) fn high_word(a: i32, b: i32) -> i32 {
-    (mul_i32_wide(a, b) >> 32) as i32
+    crate::math::wide::mul_high(a, b)
 }
 
 /// A rate of `F` fraction bits below ½ as a factor of [`high_word`]: `rate << (32 − F)`,

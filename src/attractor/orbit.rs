@@ -341,15 +341,19 @@ impl<V: FnMut([i32; 2], State)> WithStep for Run<'_, V> {
         // The rest in blocks a 32-bit counter covers: one register for the loop's count.
         while visited < count {
             let block = u32::try_from(count - visited).unwrap_or(u32::MAX);
-            for done in 0..block {
+            // Counted down to 0: the count is the loop's only register.
+            let mut left = block;
+            while left > 0 {
                 match step(state) {
                     Some(next) => state = next,
                     None => {
                         orbit.left = 0;
-                        return Err(orbit.fail(pending + visited + u64::from(done)));
+                        let done = u64::from(block - left);
+                        return Err(orbit.fail(pending + visited + done));
                     }
                 }
                 (self.visit)(plane::<THREE>(state), state);
+                left -= 1;
             }
             visited += u64::from(block);
         }

@@ -5,39 +5,39 @@
 use crate::math::Real;
 use crate::render::space::SpaceFit;
 
-/// One axis: the column (or row) of a coordinate `v` is ⌊(start + (v − edge)·step) /
-/// 2^shift⌋, where `edge` is a value at or beyond the area's edge, `start` where it falls
-/// (plus half a pixel, so the floor rounds to nearest) and `step` the pixels a unit of the
-/// fixed point, both scaled by 2^shift.
+/// One axis's rule: the column (or row) of a coordinate `v` is ⌊(start + (v − edge)·step)
+/// / 2^(32 + shift)⌋ for a distance v − edge (for rows: edge − v) from 0 to `span`, and
+/// beyond the area otherwise. `edge` is a value at or beyond the area's edge, `start`
+/// where it falls (plus half a pixel, so the floor rounds to nearest) and `step` the
+/// pixels a unit of the fixed point, both scaled by 2^(32 + shift).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct Axis<const DOWN: bool> {
+struct Rule {
     /// The value at the area's low edge (for rows: its high edge, rows counting down), or
     /// as far out as 32 bits reach, in state bits.
     edge: i32,
     /// The distance from the edge in state bits past which a coordinate is beyond the area
     /// (its column past the area's far edge).
     span: u32,
-    /// Pixels a state unit, times 2^shift.
+    /// Pixels a state unit, times 2^(32 + shift).
     step: u32,
-    /// Where the edge falls, in pixels from the area's edge plus ½, times 2^shift.
+    /// Where the edge falls, in pixels from the area's edge plus ½, times 2^(32 + shift).
     start: u64,
-    /// The shift beyond 32 bits: the product's high word is shifted by this.
+    /// The shift beyond 32 bits: the sum's high word is shifted by this.
     shift: u32,
 }
 
-/// `DOWN` for rows: the distance is taken from the high edge down.
-impl<const DOWN: bool> Axis<DOWN> {
-    /// The axis of a box from `low` to `high` (state bits with `bits` fraction bits) placed
-    /// at `screen(v) = origin ± v·scale` (− for rows), in an area starting at `area_start`
-    /// and `size` pixels long; `None` where the fixed point cannot place it exactly enough
-    /// (a box narrower than a pixel a state unit, or beyond 2¹⁵ pixels).
+impl Rule {
+    /// The rule of a box from `low` to `high` (state bits with `bits` fraction bits) placed
+    /// at `screen(v) = origin ± v·scale` (− for rows when `down`), in an area starting at
+    /// `area_start` and `size` pixels long; `None` where the fixed point cannot place it
+    /// exactly enough (a box narrower than a pixel a state unit, or beyond 2¹⁵ pixels).
     fn new(
+        down: bool,
         (low, high): (i32, i32),
         bits: u32,
         (scale, origin): (Real, Real),
         (area_start, size): (i32, u32),
     ) -> Option<Self> {
-        let down = DOWN;
         let edge = if down { high } else { low };
         // Where the edge lands, relative to the area's start, plus ½ (Q32).
         let edge_real = i128::from(edge) << (Real::FRAC_BITS - bits);
@@ -97,20 +97,72 @@ impl<const DOWN: bool> Axis<DOWN> {
             shift: shift - 32,
         })
     }
+}
+
+/// One axis placed as its [`Rule`] places it, in fewer values and steps: the sum
+/// start + distance·step is one unsigned multiply-accumulate on the coordinate with its
+/// sign bit flipped (for rows: on its complement's), from a base that takes the edge and
+/// the flip in, wrapping in 64 bits; and a coordinate is inside where the sum's column is
+/// below the area's size.
+///
+/// That is exact where no coordinate's sum wraps onto the area's: every sum from −(2⁶⁴ −
+/// size·2^(32 + shift)) to below 2⁶⁴, which [`Axis::of`] checks. A sum below
+/// size·2^(32 + shift) is then a distance from 0 to the span.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Axis<const DOWN: bool> {
+    /// start − (edge + 2³¹)·step for columns, start + (edge + 1 − 2³¹)·step for rows,
+    /// modulo 2⁶⁴.
+    base: u64,
+    /// Pixels a state unit, times 2^(32 + shift).
+    step: u32,
+    /// The shift beyond 32 bits.
+    shift: u32,
+    /// The area's length along the axis, in pixels.
+    size: u32,
+}
+
+/// `DOWN` for rows: the distance is taken from the high edge down.
+impl<const DOWN: bool> Axis<DOWN> {
+    /// The axis of `rule` over `size` pixels, or `None` where a coordinate's sum would
+    /// wrap onto the area's.
+    fn of(rule: Rule, size: u32) -> Option<Self> {
+        let (edge, step) = (i128::from(rule.edge), i128::from(rule.step));
+        let base = if DOWN {
+            i128::from(rule.start) + (edge + 1 - (1 << 31)) * step
+        } else {
+            i128::from(rule.start) - (edge + (1 << 31)) * step
+        };
+        // The sums run from the base (flipped coordinate 0) up by 2³² − 1 steps.
+        let (lowest, highest) = (base, base + (i128::from(u32::MAX) * step));
+        let area = i128::from(size) << (32 + rule.shift);
+        if lowest <= area - (1 << 64) || highest >= 1 << 64 {
+            return None;
+        }
+        Some(Self {
+            base: base as u64,
+            step: rule.step,
+            shift: rule.shift,
+            size,
+        })
+    }
 
     /// The column (row) of `v`, or `None` where it is beyond the area.
     #[inline(always)]
     fn place(&self, v: i32) -> Option<u32> {
-        let distance = if DOWN {
-            self.edge.wrapping_sub(v)
-        } else {
-            v.wrapping_sub(self.edge)
-        } as u32;
-        if distance > self.span {
-            return None;
-        }
-        let total = self.start + crate::math::wide::mul_u32_wide(distance, self.step);
-        Some(((total >> 32) as u32) >> self.shift)
+        let column = self.unchecked(v);
+        (column < self.size).then_some(column)
+    }
+
+    /// The column (row) of `v` where it is inside the area; where it is not, some value
+    /// at or beyond the area's size, below 2^(32 − shift).
+    #[inline(always)]
+    fn unchecked(&self, v: i32) -> u32 {
+        // Columns: v + 2³¹, unsigned. Rows: −v − 1 + 2³¹, the complement's.
+        let flipped = if DOWN { !v } else { v } as u32 ^ (1 << 31);
+        let sum = self
+            .base
+            .wrapping_add(crate::math::wide::mul_u32_wide(flipped, self.step));
+        ((sum >> 32) as u32) >> self.shift
     }
 }
 
@@ -133,20 +185,26 @@ impl Placer {
         (top_left, size): ((i32, i32), (u32, u32)),
     ) -> Option<Self> {
         let (scale, origin) = space.front_linear()?;
-        Some(Self {
-            columns: Axis::new(
-                (low[0], high[0]),
-                bits,
-                (scale, origin.0),
-                (top_left.0, size.0),
-            )?,
-            rows: Axis::new(
-                (low[1], high[1]),
-                bits,
-                (scale, origin.1),
-                (top_left.1, size.1),
-            )?,
-        })
+        let columns = Rule::new(
+            false,
+            (low[0], high[0]),
+            bits,
+            (scale, origin.0),
+            (top_left.0, size.0),
+        )?;
+        let rows = Rule::new(
+            true,
+            (low[1], high[1]),
+            bits,
+            (scale, origin.1),
+            (top_left.1, size.1),
+        )?;
+        let (columns, rows) = (Axis::of(columns, size.0)?, Axis::of(rows, size.1)?);
+        // A row beyond the area, times the width, stays within 32 bits (see `cell`).
+        if columns.size > 1 << rows.shift {
+            return None;
+        }
+        Some(Self { columns, rows })
     }
 
     /// The column and row of the point (`u`, `v`) of the picture, or `None` where it is
@@ -154,6 +212,18 @@ impl Placer {
     #[inline(always)]
     pub(super) fn place(&self, u: i32, v: i32) -> Option<(u32, u32)> {
         Some((self.columns.place(u)?, self.rows.place(v)?))
+    }
+
+    /// The cell of the point (`u`, `v`) in the area's cells, a row after another (row ×
+    /// width + column): `None` where its column is beyond the area, and a cell at or past
+    /// the last (width × height) where its row is, which the caller's count of cells
+    /// refuses. So the row takes no comparison of its own: below 2^(32 − shift), times a
+    /// width of at most 2^shift ([`Placer::new`] checks it), plus a column, it does not
+    /// wrap.
+    #[inline(always)]
+    pub(super) fn cell(&self, u: i32, v: i32) -> Option<u32> {
+        let column = self.columns.place(u)?;
+        Some(self.rows.unchecked(v) * self.columns.size + column)
     }
 }
 
@@ -163,16 +233,29 @@ mod tests {
     use proptest::prelude::*;
     use proptest::test_runner::TestRunner;
 
-    /// The column of a distance by the axis's formula, with no span to stop it.
-    fn column<const DOWN: bool>(axis: &Axis<DOWN>, distance: u32) -> u128 {
-        (u128::from(axis.start) + u128::from(distance) * u128::from(axis.step)) >> (32 + axis.shift)
+    /// The column of a distance by the rule's formula, with no span to stop it.
+    fn column(rule: &Rule, distance: u64) -> u128 {
+        (u128::from(rule.start) + u128::from(distance) * u128::from(rule.step)) >> (32 + rule.shift)
     }
 
-    /// An axis places exactly the distances whose column is inside the area: its span is
-    /// the last of them.
+    /// The place of `v` by the rule: its column where its distance from the edge is from 0
+    /// to the span.
+    fn by_rule(rule: &Rule, down: bool, v: i32) -> Option<u32> {
+        let distance = if down {
+            i64::from(rule.edge) - i64::from(v)
+        } else {
+            i64::from(v) - i64::from(rule.edge)
+        };
+        let distance = u64::try_from(distance).ok()?;
+        (distance <= u64::from(rule.span)).then(|| column(rule, distance) as u32)
+    }
+
+    /// A rule's span is the last distance whose column is inside the area, and an axis
+    /// places every coordinate (the span's ends, the edge's, 32 bits' and others) as its
+    /// rule does, columns and rows.
     #[test]
-    fn the_span_ends_at_the_areas_far_edge() {
-        let placed = core::cell::Cell::new(0);
+    fn axes_place_as_their_rules_up_to_the_areas_far_edge() {
+        let (placed, axes) = (core::cell::Cell::new(0), core::cell::Cell::new(0));
         let mut runner = TestRunner::deterministic();
         runner
             .run(
@@ -180,36 +263,119 @@ mod tests {
                     (-(1i32 << 29)..0, 1i32..(1 << 29)),
                     (1i64 << 28..1i64 << 45, 0i64..(1 << 36)),
                     (-300i32..300, 1u32..2000),
+                    (any::<bool>(), any::<[i32; 4]>()),
                 ),
-                |((low, high), (scale, offset), (area_start, size))| {
-                    // The box's low edge lands `offset` (Q32 pixels) into the area.
-                    let low_pixels = ((i128::from(low) << 4) * i128::from(scale)) >> 32;
-                    let origin = (i128::from(area_start) << 32) + i128::from(offset) - low_pixels;
+                |((low, high), (scale, offset), (area_start, size), (down, others))| {
+                    // The box's edge lands `offset` (Q32 pixels) into the area.
+                    let edge = if down { -high } else { low };
+                    let edge_pixels = ((i128::from(edge) << 4) * i128::from(scale)) >> 32;
+                    let origin = (i128::from(area_start) << 32) + i128::from(offset) - edge_pixels;
                     let origin = i64::try_from(origin).expect("within Q32.32");
                     let scale = (Real::from_bits(scale), Real::from_bits(origin));
-                    let Some(axis) = Axis::<false>::new((low, high), 28, scale, (area_start, size))
+                    let Some(rule) = Rule::new(down, (low, high), 28, scale, (area_start, size))
                     else {
                         return Ok(());
                     };
                     placed.set(placed.get() + 1);
-                    prop_assert!(column(&axis, axis.span) < u128::from(size));
-                    if axis.span < u32::MAX {
-                        prop_assert!(column(&axis, axis.span + 1) >= u128::from(size));
+                    prop_assert!(column(&rule, rule.span.into()) < u128::from(size));
+                    if rule.span < u32::MAX {
+                        prop_assert!(column(&rule, u64::from(rule.span) + 1) >= u128::from(size));
                     }
-                    let v = axis.edge.wrapping_add(axis.span as i32);
-                    prop_assert_eq!(
-                        axis.place(v).map(u128::from),
-                        Some(column(&axis, axis.span))
-                    );
-                    prop_assert_eq!(
-                        axis.place(v.wrapping_add(1)).is_none(),
-                        axis.span < u32::MAX
-                    );
+                    let sign = if down { -1 } else { 1 };
+                    let far = rule.edge.wrapping_add(sign * rule.span as i32);
+                    let ends = [
+                        far,
+                        far.wrapping_add(sign),
+                        rule.edge,
+                        rule.edge.wrapping_sub(sign),
+                        i32::MIN,
+                        i32::MAX,
+                        0,
+                    ];
+                    let coordinates = ends.into_iter().chain(others);
+                    // An axis refused is drawn by the projection instead.
+                    if down {
+                        let Some(axis) = Axis::<true>::of(rule, size) else {
+                            return Ok(());
+                        };
+                        for v in coordinates {
+                            prop_assert_eq!(axis.place(v), by_rule(&rule, down, v), "{}", v);
+                        }
+                    } else {
+                        let Some(axis) = Axis::<false>::of(rule, size) else {
+                            return Ok(());
+                        };
+                        for v in coordinates {
+                            prop_assert_eq!(axis.place(v), by_rule(&rule, down, v), "{}", v);
+                        }
+                    }
+                    axes.set(axes.get() + 1);
                     Ok(())
                 },
             )
             .unwrap();
         // Most boxes are placeable: the test is not of refusals alone.
         assert!(placed.get() > 128, "{} placed", placed.get());
+        assert!(axes.get() > 128, "{} axes", axes.get());
+    }
+
+    /// A point's cell is its row × width + column where it is inside the area, and at or
+    /// past the last cell where only its row is beyond (a column beyond: none).
+    #[test]
+    fn cells_are_rows_and_columns_inside_and_past_the_last_outside() {
+        let tried = core::cell::Cell::new(0);
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(
+                    (1i64 << 28..1i64 << 45, 0i64..(1 << 33)),
+                    (1u32..700, 1u32..700),
+                    any::<[[i32; 2]; 6]>(),
+                ),
+                |((scale, offset), (width, height), points)| {
+                    // A box of ±1 at 28 fraction bits, its corner `offset` into the area.
+                    let (low, high) = (-(1 << 28), 1 << 28);
+                    let pixels = |v: i32| ((i128::from(v) << 4) * i128::from(scale)) >> 32;
+                    let origin = Real::from_bits((i128::from(offset) - pixels(low)) as i64);
+                    let origin_down = Real::from_bits((i128::from(offset) + pixels(high)) as i64);
+                    let scale = Real::from_bits(scale);
+                    let (Some(across), Some(down)) = (
+                        Rule::new(false, (low, high), 28, (scale, origin), (0, width)),
+                        Rule::new(true, (low, high), 28, (scale, origin_down), (0, height)),
+                    ) else {
+                        return Ok(());
+                    };
+                    let (Some(columns), Some(rows)) =
+                        (Axis::of(across, width), Axis::of(down, height))
+                    else {
+                        return Ok(());
+                    };
+                    prop_assume!(width <= 1 << rows.shift);
+                    tried.set(tried.get() + 1);
+                    let placer = Placer { columns, rows };
+                    let edges = [
+                        [i32::MIN, i32::MIN],
+                        [i32::MAX, i32::MAX],
+                        [0, 0],
+                        [low, high],
+                    ];
+                    for [u, v] in points.into_iter().chain(edges) {
+                        let expected = match (by_rule(&across, false, u), by_rule(&down, true, v)) {
+                            (Some(column), Some(row)) => Some(Some(row * width + column)),
+                            (Some(_), None) => Some(None),
+                            (None, _) => None,
+                        };
+                        let cell = placer.cell(u, v);
+                        match expected {
+                            Some(Some(inside)) => prop_assert_eq!(cell, Some(inside)),
+                            Some(None) => prop_assert!(cell.is_some_and(|c| c >= width * height)),
+                            None => prop_assert_eq!(cell, None),
+                        }
+                    }
+                    Ok(())
+                },
+            )
+            .unwrap();
+        assert!(tried.get() > 128, "{} tried", tried.get());
     }
 }

@@ -185,9 +185,12 @@ impl Stepper {
         match *self {
             // The usual parameters inlined; others through a call (a loop of each costs
             // flash the micro:bit does not have).
-            Self::Henon { a, b } => match scaled_rate::<HENON>(b) {
-                Some(b_scaled) => run.with::<false>(move |s| henon_small_b(a, b_scaled, s)),
-                None => run.with::<false>(move |s| henon_called(a, b, s)),
+            Self::Henon { a, b } => match (scaled_rate::<HENON>(b), quartered(a)) {
+                (Some(b_scaled), Some(a4)) => {
+                    run.with::<false>(move |s| henon_quick(a, a4, b_scaled, s))
+                }
+                (Some(b_scaled), None) => run.with::<false>(move |s| henon_small_b(a, b_scaled, s)),
+                (None, _) => run.with::<false>(move |s| henon_called(a, b, s)),
             },
             Self::Clifford(p) => run.with::<false>(move |s| clifford(p, s)),
             Self::DeJong(p) => run.with::<false>(move |s| de_jong(p, s)),
@@ -248,6 +251,50 @@ fn henon_called(a: i32, b: i32, s: State) -> Option<State> {
 #[inline(always)]
 fn henon_small_b(a: i32, b_scaled: i32, [x, y, _]: State) -> Option<State> {
     Some([henon_x(a, x, y)?, high_word(b_scaled, x), 0])
+}
+
+/// A bound on |x| below √2 with [`HENON`] fraction bits (so that x² is below 2, a quarter
+/// of 32 bits' range): within it [`henon_quick`] takes each product as one high word.
+/// 1.40625, wide of the attractor's ±1.3, and one instruction's immediate operand on
+/// ARMv7-M, so that it takes no register.
+const HENON_QUICK_LIMIT: u32 = 0x5a << (HENON - 6);
+const _: () = assert!((HENON_QUICK_LIMIT as u64).pow(2) < 1 << (2 * HENON + 1));
+
+/// A parameter of [`HENON`] fraction bits below 2 as a factor of [`high_word`] beside a
+/// value shifted the same: `a << 2`, or `None` where it does not fit.
+fn quartered(a: i32) -> Option<i32> {
+    a.checked_mul(4)
+}
+
+/// [`henon_small_b`] with |a| below 2 given as `a4` = `a << 2`: where |x| is within
+/// [`HENON_QUICK_LIMIT`], x² and a·x² are each one product's high word (both factors
+/// shifted left by two bits, so the high word is the product shifted right by the
+/// fraction bits) and x′ a 32-bit sum checked once; elsewhere the checked step, out of
+/// line. The same values as [`henon`].
+#[inline(always)]
+fn henon_quick(a: i32, a4: i32, b_scaled: i32, s: State) -> Option<State> {
+    let [x, y, _] = s;
+    // −limit ≤ x < limit as one comparison: x with its sign's bits flipped is |x| − 1 for
+    // a negative x, |x| otherwise.
+    if ((x ^ (x >> 31)) as u32) >= HENON_QUICK_LIMIT {
+        let [x_next, y_next] = henon_small_b_called(a, b_scaled, x, y)?;
+        return Some([x_next, y_next, 0]);
+    }
+    // x² < 2, so its four times fits; |a·x²| < 2^30, so 1 − a·x² fits too.
+    let square = high_word(x << 2, x << 2);
+    let one_less = (1 << HENON) - high_word(a4, square << 2);
+    let x_next = y.checked_add(one_less)?;
+    Some([x_next, high_word(b_scaled, x), 0])
+}
+
+/// [`henon_small_b`] as a call of its own: [`henon_quick`]'s step beyond its limit.
+/// The state comes and goes as two values, not an array in memory the loop would store
+/// each step, and z stays the caller's 0.
+#[cold]
+#[inline(never)]
+fn henon_small_b_called(a: i32, b_scaled: i32, x: i32, y: i32) -> Option<[i32; 2]> {
+    let [x_next, y_next, _] = henon_small_b(a, b_scaled, [x, y, 0])?;
+    Some([x_next, y_next])
 }
 
 /// x′ = sin(a·y) + c·cos(a·x), y′ = sin(b·x) + d·cos(b·y).
@@ -577,6 +624,21 @@ mod tests {
             assert_eq!(henon_square(x), checked(x, x, HENON), "{x}");
             assert_eq!(henon(1, 1, [x, 0, 0]), henon_checked(1, 1, [x, 0, 0]));
         }
+        // The quick step at its limits: |x| at and past it, a at ±2's edges, y at 32 bits'.
+        let quick = HENON_QUICK_LIMIT as i32;
+        let b = scaled_rate::<HENON>(-(1 << (HENON - 1)) + 1).expect("b below ½");
+        for x in [quick - 1, quick, quick + 1, -quick, -quick - 1] {
+            for a in [i32::MAX / 4, i32::MIN / 4, 1, -1] {
+                for y in [i32::MIN, i32::MAX, 0, -(1 << 30), 1 << 30] {
+                    let a4 = quartered(a).expect("a below 2");
+                    assert_eq!(
+                        henon_quick(a, a4, b, [x, y, 0]),
+                        henon_checked(a, -(1 << (HENON - 1)) + 1, [x, y, 0]),
+                        "{a} {x} {y}"
+                    );
+                }
+            }
+        }
         let below_half = -(1 << (HENON - 1)) + 1..(1 << (HENON - 1));
         let mut runner = TestRunner::deterministic();
         runner
@@ -588,6 +650,9 @@ mod tests {
                     prop_assert_eq!(henon(a, b, state), expected);
                     let scaled = scaled_rate::<HENON>(b).expect("b below ½");
                     prop_assert_eq!(henon_small_b(a, scaled, state), expected);
+                    if let Some(a4) = quartered(a) {
+                        prop_assert_eq!(henon_quick(a, a4, scaled, state), expected);
+                    }
                     Ok(())
                 },
             )

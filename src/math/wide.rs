@@ -81,6 +81,37 @@ pub(crate) fn dot_high_halves(a: i32, x: i32, b: i32, y: i32) -> i32 {
     high.wrapping_add(middle_high).wrapping_add(below >> 16)
 }
 
+/// ⌊a·b / 2³²⌋, the high word of the exact product: one `smull` where there is a long
+/// multiply; on cores without one (ARMv6-M) four 16×16 products of signed halves whose
+/// middle terms are split and summed apart, with no signs to take off and put back as
+/// [`mul_i32_wide`] must.
+#[inline(always)]
+pub(crate) fn mul_high(a: i32, b: i32) -> i32 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        mul_high_halves(a, b)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        (mul_i32_wide(a, b) >> 32) as i32
+    }
+}
+
+/// [`mul_high`] from 16-bit halves, v = h·2¹⁶ + l with h signed and l in [0, 2¹⁶): a·b =
+/// H·2³² + (M₁ + M₂)·2¹⁶ + L, so its high word is H + ⌊M₁/2¹⁶⌋ + ⌊M₂/2¹⁶⌋ +
+/// ⌊(M₁ mod 2¹⁶ + M₂ mod 2¹⁶ + ⌊L/2¹⁶⌋) / 2¹⁶⌋, every part small.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn mul_high_halves(a: i32, b: i32) -> i32 {
+    let (ah, al) = (a >> 16, a & 0xFFFF);
+    let (bh, bl) = (b >> 16, b & 0xFFFF);
+    // A signed half times an unsigned one is below 2³¹ in magnitude.
+    let (m1, m2) = (ah * bl, al * bh);
+    let low = (al as u32) * (bl as u32);
+    let below = (m1 & 0xFFFF) + (m2 & 0xFFFF) + (low >> 16) as i32;
+    ah * bh + (m1 >> 16) + (m2 >> 16) + (below >> 16)
+}
+
 /// The exact square of an i32, from its magnitude (`umull`, or 16-bit halves). Where a
 /// loop also multiplies the signed value, a square of the signed value would share its
 /// sign extension with those products, which LLVM may then carry as a 64-bit value and
@@ -242,8 +273,8 @@ pub(crate) const fn div_round(numerator: i128, denominator: i128) -> i128 {
 mod tests {
     use super::*;
 
-    /// The halves' dot product's high word is the exact one (i128), for values of every
-    /// size and sign, the extremes included.
+    /// The halves' dot product's and product's high words are the exact ones (i128, i64),
+    /// for values of every size and sign, the extremes included.
     #[test]
     fn dot_products_from_halves_are_exact() {
         use proptest::prelude::*;
@@ -257,6 +288,9 @@ mod tests {
                 &(value.clone(), value.clone(), value.clone(), value),
                 |(a, x, b, y)| {
                     prop_assert_eq!(dot_high_halves(a, x, b, y), exact(a, x, b, y));
+                    let high = ((i64::from(a) * i64::from(x)) >> 32) as i32;
+                    prop_assert_eq!(mul_high_halves(a, x), high);
+                    prop_assert_eq!(mul_high(a, x), high);
                     prop_assert_eq!(dot_high(a, x, b, y), exact(a, x, b, y));
                     Ok(())
                 },
@@ -265,6 +299,8 @@ mod tests {
         let edges = [i32::MIN, i32::MIN + 1, -1, 0, 1, 0xFFFF, 0x1_0000, i32::MAX];
         for a in edges {
             for x in edges {
+                let high = ((i64::from(a) * i64::from(x)) >> 32) as i32;
+                assert_eq!(mul_high_halves(a, x), high, "{a} {x}");
                 for (b, y) in [(a, x), (x, a), (i32::MAX, i32::MIN), (0, 0)] {
                     assert_eq!(
                         dot_high_halves(a, x, b, y),

@@ -41,9 +41,12 @@ mod sealed {
 }
 
 impl HitCount for u8 {
+    /// Saturating as one more less its carry out: a subtraction of a shifted value where
+    /// a compare and a conditional move would be two instructions.
     #[inline]
     fn bumped(self) -> Self {
-        self.saturating_add(1)
+        let more = u32::from(self) + 1;
+        (more - (more >> 8)) as Self
     }
     #[inline]
     fn count(self) -> u16 {
@@ -52,9 +55,12 @@ impl HitCount for u8 {
 }
 
 impl HitCount for u16 {
+    /// Saturating as one more less its carry out: a subtraction of a shifted value where
+    /// a compare and a conditional move would be two instructions.
     #[inline]
     fn bumped(self) -> Self {
-        self.saturating_add(1)
+        let more = u32::from(self) + 1;
+        (more - (more >> 16)) as Self
     }
     #[inline]
     fn count(self) -> u16 {
@@ -123,7 +129,13 @@ impl<'b, T: HitCount> Density<'b, T> {
     /// is not, a cell beyond the counts is refused; another inside is counted instead).
     #[inline]
     pub(crate) fn hit_inside(&self, column: u32, row: u32) -> bool {
-        let index = row as usize * self.area.size.width as usize + column as usize;
+        self.hit_cell(row as usize * self.area.size.width as usize + column as usize)
+    }
+
+    /// Counts a hit on the cell `index`, row × width + column; false where it is beyond
+    /// the counts (past the area's last row).
+    #[inline]
+    pub(crate) fn hit_cell(&self, index: usize) -> bool {
         match self.counts.get(index) {
             Some(cell) => {
                 cell.set(cell.get().bumped());
