@@ -2,6 +2,7 @@
 //! subtraction, a 32×32→64 multiply-accumulate and a shift an axis, instead of converting
 //! each point to `Real` and projecting it.
 
+use crate::math::wide::RightShift;
 use crate::math::Real;
 use crate::render::space::SpaceFit;
 
@@ -116,7 +117,7 @@ struct Axis<const DOWN: bool> {
     /// Pixels a state unit, times 2^(32 + shift).
     step: u32,
     /// The shift beyond 32 bits.
-    shift: u32,
+    shift: RightShift,
     /// The area's length along the axis, in pixels.
     size: u32,
 }
@@ -124,7 +125,8 @@ struct Axis<const DOWN: bool> {
 /// `DOWN` for rows: the distance is taken from the high edge down.
 impl<const DOWN: bool> Axis<DOWN> {
     /// The axis of `rule` over `size` pixels, or `None` where a coordinate's sum would
-    /// wrap onto the area's.
+    /// wrap onto the area's or the rule does not shift the sum's high word (a scale of
+    /// more pixels a state unit than a picture has).
     fn of(rule: Rule, size: u32) -> Option<Self> {
         let (edge, step) = (i128::from(rule.edge), i128::from(rule.step));
         let base = if DOWN {
@@ -141,7 +143,7 @@ impl<const DOWN: bool> Axis<DOWN> {
         Some(Self {
             base: base as u64,
             step: rule.step,
-            shift: rule.shift,
+            shift: RightShift::new(rule.shift)?,
             size,
         })
     }
@@ -162,7 +164,7 @@ impl<const DOWN: bool> Axis<DOWN> {
         let sum = self
             .base
             .wrapping_add(crate::math::wide::mul_u32_wide(flipped, self.step));
-        ((sum >> 32) as u32) >> self.shift
+        self.shift.apply((sum >> 32) as u32)
     }
 }
 
@@ -199,12 +201,14 @@ impl Placer {
             (scale, origin.1),
             (top_left.1, size.1),
         )?;
-        let (columns, rows) = (Axis::of(columns, size.0)?, Axis::of(rows, size.1)?);
         // A row beyond the area, times the width, stays within 32 bits (see `cell`).
-        if columns.size > 1 << rows.shift {
+        if size.0 > 1 << rows.shift {
             return None;
         }
-        Some(Self { columns, rows })
+        Some(Self {
+            columns: Axis::of(columns, size.0)?,
+            rows: Axis::of(rows, size.1)?,
+        })
     }
 
     /// The column and row of the point (`u`, `v`) of the picture, or `None` where it is
@@ -350,7 +354,7 @@ mod tests {
                     else {
                         return Ok(());
                     };
-                    prop_assume!(width <= 1 << rows.shift);
+                    prop_assume!(width <= 1 << down.shift);
                     tried.set(tried.get() + 1);
                     let placer = Placer { columns, rows };
                     let edges = [

@@ -255,10 +255,11 @@ fn henon_small_b(a: i32, b_scaled: i32, [x, y, _]: State) -> Option<State> {
 
 /// A bound on |x| below √2 with [`HENON`] fraction bits (so that x² is below 2, a quarter
 /// of 32 bits' range): within it [`henon_quick`] takes each product as one high word.
-/// 1.40625, wide of the attractor's ±1.3, and one instruction's immediate operand on
+/// 1.40625, wide of the attractor's ±1.3, and one comparison's immediate operand on
 /// ARMv7-M, so that it takes no register.
 const HENON_QUICK_LIMIT: u32 = 0x5a << (HENON - 6);
-const _: () = assert!((HENON_QUICK_LIMIT as u64).pow(2) < 1 << (2 * HENON + 1));
+// A negative x may be one further out (see `henon_quick`).
+const _: () = assert!((HENON_QUICK_LIMIT as u64 + 1).pow(2) < 1 << (2 * HENON + 1));
 
 /// A parameter of [`HENON`] fraction bits below 2 as a factor of [`high_word`] beside a
 /// value shifted the same: `a << 2`, or `None` where it does not fit.
@@ -274,9 +275,9 @@ fn quartered(a: i32) -> Option<i32> {
 #[inline(always)]
 fn henon_quick(a: i32, a4: i32, b_scaled: i32, s: State) -> Option<State> {
     let [x, y, _] = s;
-    // −limit ≤ x < limit as one comparison: x with its sign's bits flipped is |x| − 1 for
-    // a negative x, |x| otherwise.
-    if ((x ^ (x >> 31)) as u32) >= HENON_QUICK_LIMIT {
+    // −limit − 1 ≤ x ≤ limit as one comparison: x with its sign's bits flipped is |x| − 1
+    // for a negative x, |x| otherwise.
+    if ((x ^ (x >> 31)) as u32) > HENON_QUICK_LIMIT {
         let [x_next, y_next] = henon_small_b_called(a, b_scaled, x, y)?;
         return Some([x_next, y_next, 0]);
     }
@@ -627,7 +628,7 @@ mod tests {
         // The quick step at its limits: |x| at and past it, a at ±2's edges, y at 32 bits'.
         let quick = HENON_QUICK_LIMIT as i32;
         let b = scaled_rate::<HENON>(-(1 << (HENON - 1)) + 1).expect("b below ½");
-        for x in [quick - 1, quick, quick + 1, -quick, -quick - 1] {
+        for x in [quick - 1, quick, quick + 1, -quick, -quick - 1, -quick - 2] {
             for a in [i32::MAX / 4, i32::MIN / 4, 1, -1] {
                 for y in [i32::MIN, i32::MAX, 0, -(1 << 30), 1 << 30] {
                     let a4 = quartered(a).expect("a below 2");

@@ -112,6 +112,43 @@ pub(crate) fn mul_high_halves(a: i32, b: i32) -> i32 {
     ah * bh + (m1 >> 16) + (m2 >> 16) + (below >> 16)
 }
 
+/// A right shift by 1 to 31 bits, kept as what applies it cheapest. Where there is a long
+/// multiply, the factor 2^(32 − s): the high word of the product is the shift, one
+/// `umull`, where a shift by a register takes a mask before it (Rust masks a variable
+/// shift's count). Elsewhere (ARMv6-M, where a long multiply is four) the count.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct RightShift(u32);
+
+impl RightShift {
+    /// A shift by `bits`, or `None` beyond 1 to 31.
+    pub(crate) const fn new(bits: u32) -> Option<Self> {
+        if bits == 0 || bits > 31 {
+            return None;
+        }
+        #[cfg(tinyfractal_no_long_multiply)]
+        {
+            Some(Self(bits))
+        }
+        #[cfg(not(tinyfractal_no_long_multiply))]
+        {
+            Some(Self(1 << (32 - bits)))
+        }
+    }
+
+    /// `v >> bits`.
+    #[inline(always)]
+    pub(crate) fn apply(self, v: u32) -> u32 {
+        #[cfg(tinyfractal_no_long_multiply)]
+        {
+            v >> self.0
+        }
+        #[cfg(not(tinyfractal_no_long_multiply))]
+        {
+            (mul_u32_wide(v, self.0) >> 32) as u32
+        }
+    }
+}
+
 /// The exact square of an i32, from its magnitude (`umull`, or 16-bit halves). Where a
 /// loop also multiplies the signed value, a square of the signed value would share its
 /// sign extension with those products, which LLVM may then carry as a 64-bit value and
@@ -310,6 +347,20 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A right shift applies as `>>`, for every count it takes, and refuses the others.
+    #[test]
+    fn right_shifts_are_shifts() {
+        let values = [0, 1, 0x8000_0000, u32::MAX, 0x1234_5678, 0xFFFF];
+        for bits in 1..32 {
+            let shift = RightShift::new(bits).expect("1 to 31");
+            for v in values {
+                assert_eq!(shift.apply(v), v >> bits, "{v} {bits}");
+            }
+        }
+        assert_eq!(RightShift::new(0), None);
+        assert_eq!(RightShift::new(32), None);
     }
 
     /// The narrow division is `/` on i64, for values of every size (either side of 32
