@@ -16,6 +16,7 @@ use crate::render::density::{Density, HitCount};
 use crate::render::fit::DEFAULT_MARGIN;
 use crate::render::palette::Palette;
 use crate::render::projection::Projection;
+use crate::render::reach::Reach;
 use crate::render::space::SpaceFit;
 
 /// The transient skipped by default: the steps from the start before the first plotted
@@ -247,45 +248,6 @@ impl AttractorPicture {
     }
 }
 
-/// The values met along one axis: from `low` to `low + width`.
-///
-/// Kept as a low end and a width so that a value inside (nearly every one, once an orbit
-/// has been round its attractor) is one subtraction and one comparison, not two of each.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct Reach {
-    low: i32,
-    width: u32,
-}
-
-impl Reach {
-    /// The one value `v`.
-    fn of(v: i32) -> Self {
-        Self { low: v, width: 0 }
-    }
-
-    /// The highest value met.
-    fn high(self) -> i32 {
-        self.low.wrapping_add(self.width as i32)
-    }
-
-    /// Takes `v` in. Its distance above `low`, unsigned, is beyond the width exactly where
-    /// it is below `low` (the distance wraps past every width the 32 bits allow: a value
-    /// below `low` is more than 2³² − 2³¹ − 1 above what is left of `high`) or above the
-    /// high end.
-    #[inline(always)]
-    fn widen(&mut self, v: i32) {
-        let above = v.wrapping_sub(self.low) as u32;
-        if above > self.width {
-            if v < self.low {
-                self.width = self.high().wrapping_sub(v) as u32;
-                self.low = v;
-            } else {
-                self.width = above;
-            }
-        }
-    }
-}
-
 /// The picture plane's coordinates of a state seen from the front: x and y, or for a 3D
 /// kind x and z (z up).
 #[inline(always)]
@@ -444,27 +406,6 @@ mod tests {
         display.set_allow_overdraw(true);
         drawing.try_draw(&mut display).unwrap();
         display
-    }
-
-    /// A reach over any values is from their least to their greatest.
-    #[test]
-    fn a_reach_is_from_the_least_to_the_greatest() {
-        use proptest::prelude::*;
-        let mut runner = proptest::test_runner::TestRunner::deterministic();
-        let values = proptest::collection::vec(any::<i32>(), 1..40);
-        let edges = proptest::sample::select(&[i32::MIN, i32::MAX, 0, -1][..]);
-        runner
-            .run(&(values, edges), |(values, edge)| {
-                let mut reach = Reach::of(edge);
-                for &v in &values {
-                    reach.widen(v);
-                }
-                let least = values.iter().copied().fold(edge, i32::min);
-                let greatest = values.iter().copied().fold(edge, i32::max);
-                prop_assert_eq!((reach.low, reach.high()), (least, greatest));
-                Ok(())
-            })
-            .unwrap();
     }
 
     /// Placing in the orbit's fixed point lights the pixels the projection does, for

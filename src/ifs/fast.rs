@@ -21,6 +21,7 @@ use super::maps::Ifs;
 use crate::math::random::Xorshift32;
 use crate::math::wide::dot_high;
 use crate::math::Real;
+use crate::render::reach::Reach;
 
 /// Most maps the fast game takes (an IFS with more plays the `Real` game): eight keep a
 /// drawing's maps at 264 bytes, for the micro:bit's 16 KiB.
@@ -328,12 +329,13 @@ pub(crate) fn sample_box(ifs: &Ifs, seed: u64, points: u64) -> Option<([Real; 3]
     let scale = Real::from_int(1 << k);
     let maps = PixelMaps::new(ifs, scale, (Real::ZERO, Real::ZERO))?;
     let mut game = maps.game(seed);
-    let (mut low, mut high) = ((i32::MAX, i32::MAX), (i32::MIN, i32::MIN));
+    let (x, y) = game.next_point().1;
+    let (mut across, mut down) = (Reach::of(x), Reach::of(y));
     let mut extend = |(x, y): (i32, i32)| {
-        low = (low.0.min(x), low.1.min(y));
-        high = (high.0.max(x), high.1.max(y));
+        across.widen(x);
+        down.widen(y);
     };
-    for _ in 0..points.clamp(1, FIT_POINTS) {
+    for _ in 1..points.clamp(1, FIT_POINTS) {
         extend(game.next_point().1);
     }
     // The maps' fixed points are on the attractor, and so are their images: the extremes
@@ -348,8 +350,8 @@ pub(crate) fn sample_box(ifs: &Ifs, seed: u64, points: u64) -> Option<([Real; 3]
     let unit = |v: i32| Real::from_bits(i64::from(v) << (16 - k));
     let negated = |v: i32| Real::from_bits(-(i64::from(v) << (16 - k)));
     Some((
-        [unit(low.0), negated(high.1), Real::ZERO],
-        [unit(high.0), negated(low.1), Real::ZERO],
+        [unit(across.low), negated(down.high()), Real::ZERO],
+        [unit(across.high()), negated(down.low), Real::ZERO],
     ))
 }
 

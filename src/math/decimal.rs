@@ -77,6 +77,18 @@ pub(crate) const fn split_decimal(text: &str) -> Option<DecimalText<'_>> {
     })
 }
 
+/// `numerator / divisor` rounded half up, as [`div_round`] has it for these magnitudes
+/// (below 2¹²⁷; the divisor not 0): by a 64-bit division where the sum it divides fits 64
+/// bits, since a 128-bit one is a long library routine on a 32-bit core.
+const fn divide_rounded(numerator: u128, divisor: u128) -> i128 {
+    let rounded = numerator + divisor / 2;
+    if rounded <= u64::MAX as u128 {
+        ((rounded as u64) / (divisor as u64)) as i128
+    } else {
+        div_round(numerator as i128, divisor as i128)
+    }
+}
+
 /// Parses a decimal number with an optional sign and exponent (`-0.75`, `.5`, `3`, `1e-9`,
 /// `2.5E-3`) into fixed point with `frac_bits` fractional bits (at most 62), rounded to
 /// nearest from its first 19 significant digits (beyond them a digit moves the value by
@@ -136,10 +148,7 @@ pub(crate) const fn parse_fixed(text: &str, frac_bits: u32) -> Option<i128> {
         // Below 10⁻¹⁹: less than half a unit of 62 fractional bits.
         0
     } else {
-        div_round(
-            (digits << frac_bits) as i128,
-            10i128.pow((-exponent) as u32),
-        )
+        divide_rounded(digits << frac_bits, 10u128.pow((-exponent) as u32))
     };
     Some(if negative { -magnitude } else { magnitude })
 }
@@ -264,4 +273,42 @@ pub(crate) fn write_four_decimals(
         write!(f, ".{digits:0width$}")?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The division by 64 bits rounds as the 128-bit one, either side of 64 bits.
+    #[test]
+    fn divisions_round_as_the_wide_one() {
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let numerator = (any::<u128>(), 1u32..128).prop_map(|(v, s)| v >> s);
+        let divisor = prop_oneof![
+            (0u32..39).prop_map(|e| 10u128.pow(e)),
+            1u128..u128::MAX >> 1
+        ];
+        runner
+            .run(&(numerator, divisor), |(n, d)| {
+                prop_assert_eq!(divide_rounded(n, d), div_round(n as i128, d as i128));
+                Ok(())
+            })
+            .unwrap();
+        let edge = u128::from(u64::MAX);
+        for (n, d) in [
+            (edge, 2),
+            (edge - 1, 2),
+            (edge - 1, 3),
+            (edge / 2, edge),
+            (0, 7),
+            (5, 10),
+        ] {
+            assert_eq!(
+                divide_rounded(n, d),
+                div_round(n as i128, d as i128),
+                "{n} {d}"
+            );
+        }
+    }
 }

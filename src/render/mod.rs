@@ -14,6 +14,7 @@ pub(crate) mod palette;
 pub(crate) mod polygon;
 pub(crate) mod projection;
 pub(crate) mod raster;
+pub(crate) mod reach;
 pub(crate) mod relief;
 pub(crate) mod shade;
 pub(crate) mod sink;
