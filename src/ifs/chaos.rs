@@ -341,7 +341,7 @@ impl<P: Palette> IfsDrawing<'_, P> {
         // more than the point.
         let pixels = FastPixels {
             game: maps.game(self.picture.seed),
-            left: Countdown::new(self.picture.points),
+            left: self.picture.points,
             clip: (clip.top_left, clip.size),
             colors,
         };
@@ -355,42 +355,9 @@ impl<P: Palette> IfsDrawing<'_, P> {
 struct FastPixels<'m, C> {
     game: PixelGame<'m>,
     /// Points still to play.
-    left: Countdown,
+    left: u64,
     clip: (Point, Size),
     colors: [C; FAST_MAPS],
-}
-
-/// A 64-bit count kept as `left` and 2³² more for each of `blocks`, so that counting one
-/// off is one register's decrement (a 64-bit count is two and a carry on a 32-bit core).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct Countdown {
-    left: u32,
-    blocks: u32,
-}
-
-impl Countdown {
-    /// `count` left.
-    fn new(count: u64) -> Self {
-        Self {
-            left: count as u32,
-            blocks: (count >> 32) as u32,
-        }
-    }
-
-    /// Counts one off, or `false` where none is left.
-    #[inline(always)]
-    fn take_one(&mut self) -> bool {
-        if self.left == 0 {
-            if self.blocks == 0 {
-                return false;
-            }
-            self.blocks -= 1;
-            self.left = u32::MAX;
-        } else {
-            self.left -= 1;
-        }
-        true
-    }
 }
 
 impl<C: PixelColor> Iterator for FastPixels<'_, C> {
@@ -399,7 +366,8 @@ impl<C: PixelColor> Iterator for FastPixels<'_, C> {
     #[inline]
     fn next(&mut self) -> Option<Pixel<C>> {
         let (corner, size) = self.clip;
-        while self.left.take_one() {
+        while self.left > 0 {
+            self.left -= 1;
             let (map, point) = self.game.next_point();
             let (x, y) = pixel(point);
             // Wrapped: a point left of or above the clip is a large column or row.
@@ -428,38 +396,5 @@ impl<P: Palette> Drawable for IfsDrawing<'_, P> {
         D: DrawTarget<Color = P::Color>,
     {
         only_target_errors(self.try_draw(target))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A countdown takes exactly its count: across a block's edge, and none from 0.
-    #[test]
-    fn a_countdown_takes_its_count() {
-        let taken = |count: u64| {
-            let mut countdown = Countdown::new(count);
-            (0..).take_while(|_| countdown.take_one()).count() as u64
-        };
-        for count in [0, 1, 2, 1000] {
-            assert_eq!(taken(count), count);
-        }
-        // 2³² + 1: one taken, then a block opened with 2³² − 1 left.
-        let mut countdown = Countdown::new((1 << 32) + 1);
-        assert!(countdown.take_one());
-        assert!(countdown.take_one());
-        assert_eq!(
-            countdown,
-            Countdown {
-                left: u32::MAX,
-                blocks: 0
-            }
-        );
-        let mut last = Countdown { left: 0, blocks: 0 };
-        assert!(!last.take_one());
-        let mut one = Countdown { left: 1, blocks: 0 };
-        assert!(one.take_one());
-        assert!(!one.take_one());
     }
 }
