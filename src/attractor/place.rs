@@ -1,6 +1,6 @@
 //! Placing an attractor's points seen from the front in the orbit's own fixed point: a
-//! subtraction, a 32×32→64 multiply-accumulate and a shift an axis, instead of converting
-//! each point to `Real` and projecting it.
+//! 32×32→64 multiply-accumulate and a shift an axis, instead of converting each point to
+//! `Real` and projecting it.
 
 use crate::math::wide::RightShift;
 use crate::math::Real;
