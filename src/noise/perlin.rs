@@ -494,9 +494,17 @@ fn gradient_of(hash: i32) -> (i8, i8, i8) {
         .unwrap_or_default()
 }
 
-/// `a + t(b − a)`, `t` in 2⁻³⁰, `a` and `b` in 2⁻²⁹ within ±2, rounded to nearest.
+/// `a + t(b − a)`, `t` in 2⁻³⁰, `a` and `b` in 2⁻²⁹ within ±2, rounded to nearest. Where
+/// there is no long multiply (ARMv6-M), a difference within 32 bits (every one but 2³¹)
+/// takes [`fade_step`]'s 16-bit parts, not a call of the library's 64-bit multiply.
 #[inline(always)]
 fn lerp(t: i32, a: i32, b: i32) -> i32 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        if let Some(d) = b.checked_sub(a) {
+            return a + fade_step_in_halves(t, d);
+        }
+    }
     let step = i64::from(t) * (i64::from(b) - i64::from(a));
     a + ((step + (1 << (FADE_FRAC_BITS - 1))) >> FADE_FRAC_BITS) as i32
 }
@@ -511,8 +519,40 @@ fn lerp(t: i32, a: i32, b: i32) -> i32 {
 /// corners' dots differ by gx′(xf − 1) − gx·xf, at most 1, and the y parts by at most 2.
 #[inline(always)]
 fn lerp_close(t: i32, a: i32, b: i32) -> i32 {
-    let step = mul_i32_wide(t, b.wrapping_sub(a));
-    a + ((step + (1 << (FADE_FRAC_BITS - 1))) >> FADE_FRAC_BITS) as i32
+    a + fade_step(t, b.wrapping_sub(a))
+}
+
+/// t·d in 2⁻³⁰ rounded to nearest (half up), for a fade `t` from 0 to 2³⁰ and any `d`:
+/// one `smull` and a shift where there is a long multiply; on cores without one (ARMv6-M)
+/// four 16-bit products whose parts are summed apart ([`fade_step_in_halves`]), where a
+/// signed 64-bit product from halves would take its signs off and put them back.
+#[inline(always)]
+fn fade_step(t: i32, d: i32) -> i32 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        fade_step_in_halves(t, d)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        ((mul_i32_wide(t, d) + (1 << (FADE_FRAC_BITS - 1))) >> FADE_FRAC_BITS) as i32
+    }
+}
+
+/// [`fade_step`] from 16-bit parts: t = tₕ·2¹⁶ + tₗ (tₕ at most 2¹⁴), d = dₕ·2¹⁶ + dₗ (dₕ
+/// signed, dₗ in [0, 2¹⁶)), so t·d = P·2³² + (M₁ + M₂)·2¹⁶ + L with P = tₕdₕ, M₁ = tₕdₗ
+/// (below 2³⁰), M₂ = tₗdₕ and L = tₗdₗ (unsigned). Split M₁ and M₂ at 2¹⁴ and L at 2³⁰:
+/// (t·d + 2²⁹) / 2³⁰ is 4P + ⌊M₁/2¹⁴⌋ + ⌊M₂/2¹⁴⌋ + ⌊L/2³⁰⌋ plus the floor of what is left,
+/// ((M₁ mod 2¹⁴ + M₂ mod 2¹⁴)·2¹⁶ + L mod 2³⁰ + 2²⁹) / 2³⁰, whose numerator fits 32 bits.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+fn fade_step_in_halves(t: i32, d: i32) -> i32 {
+    let (th, tl) = (t >> 16, t & 0xFFFF);
+    let (dh, dl) = (d >> 16, d & 0xFFFF);
+    let (m1, m2) = (th * dl, tl * dh);
+    let low = (tl as u32) * (dl as u32);
+    let rest = (((m1 & 0x3FFF) + (m2 & 0x3FFF)) as u32) << 16;
+    let below = (rest + (low & 0x3FFF_FFFF) + (1 << 29)) >> 30;
+    4 * th * dh + (m1 >> 14) + (m2 >> 14) + (low >> 30) as i32 + below as i32
 }
 
 #[cfg(test)]
@@ -529,6 +569,39 @@ mod tests {
         );
         assert_eq!(fade(0), 0);
         assert_eq!(fade(1 << (CELL_FRAC_BITS - 1)), 1 << (FADE_FRAC_BITS - 1));
+    }
+
+    /// The fade's step from 16-bit parts is the 64-bit product's, rounded, for every fade
+    /// and difference, the ends of both included.
+    #[test]
+    fn fade_steps_from_parts_are_the_wide_ones() {
+        use proptest::prelude::*;
+        let wide = |t: i32, d: i32| ((i64::from(t) * i64::from(d) + (1 << 29)) >> 30) as i32;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let difference = (any::<i32>(), 0u32..32).prop_map(|(v, s)| v >> s);
+        runner
+            .run(&(0..=(1i32 << 30), difference), |(t, d)| {
+                prop_assert_eq!(fade_step_in_halves(t, d), wide(t, d));
+                prop_assert_eq!(fade_step(t, d), wide(t, d));
+                Ok(())
+            })
+            .unwrap();
+        let fades = [0, 1, 0xFFFF, 0x1_0000, (1 << 30) - 1, 1 << 30];
+        let differences = [
+            i32::MIN,
+            i32::MIN + 1,
+            -1,
+            0,
+            1,
+            0xFFFF,
+            -0x1_0000,
+            i32::MAX,
+        ];
+        for t in fades {
+            for d in differences {
+                assert_eq!(fade_step_in_halves(t, d), wide(t, d), "{t} {d}");
+            }
+        }
     }
 
     /// The fade, in either set of products, is Horner's rule in exact ones.
