@@ -254,6 +254,22 @@ mod tests {
         (distance <= u64::from(rule.span)).then(|| column(rule, distance) as u32)
     }
 
+    /// Whether the axis of `rule` places each of `coordinates` as the rule does; `None`
+    /// where the rule has no axis.
+    fn places_as_rule<const DOWN: bool>(
+        rule: Rule,
+        size: u32,
+        coordinates: impl Iterator<Item = i32>,
+    ) -> Option<Result<(), TestCaseError>> {
+        let axis = Axis::<DOWN>::of(rule, size)?;
+        Some((|| {
+            for v in coordinates {
+                prop_assert_eq!(axis.place(v), by_rule(&rule, DOWN, v), "{}", v);
+            }
+            Ok(())
+        })())
+    }
+
     /// A rule's span is the last distance whose column is inside the area, and an axis
     /// places every coordinate (the span's ends, the edge's, 32 bits' and others) as its
     /// rule does, columns and rows.
@@ -298,22 +314,15 @@ mod tests {
                     ];
                     let coordinates = ends.into_iter().chain(others);
                     // An axis refused is drawn by the projection instead.
-                    if down {
-                        let Some(axis) = Axis::<true>::of(rule, size) else {
-                            return Ok(());
-                        };
-                        for v in coordinates {
-                            prop_assert_eq!(axis.place(v), by_rule(&rule, down, v), "{}", v);
-                        }
+                    let placed_by_axis = if down {
+                        places_as_rule::<true>(rule, size, coordinates)
                     } else {
-                        let Some(axis) = Axis::<false>::of(rule, size) else {
-                            return Ok(());
-                        };
-                        for v in coordinates {
-                            prop_assert_eq!(axis.place(v), by_rule(&rule, down, v), "{}", v);
-                        }
+                        places_as_rule::<false>(rule, size, coordinates)
+                    };
+                    if let Some(result) = placed_by_axis {
+                        result?;
+                        axes.set(axes.get() + 1);
                     }
-                    axes.set(axes.get() + 1);
                     Ok(())
                 },
             )

@@ -41,12 +41,13 @@ mod sealed {
 }
 
 impl HitCount for u8 {
-    /// Saturating as one more less its carry out: a subtraction of a shifted value where
-    /// a compare and a conditional move would be two instructions.
+    /// Saturating as one more less its carry out: one subtraction of a shifted value,
+    /// cheaper in a density loop than a compare and a conditional move
+    /// (docs/performance.md, The attractors against the sketches).
     #[inline]
     fn bumped(self) -> Self {
         let more = u32::from(self) + 1;
-        (more - (more >> 8)) as Self
+        (more - (more >> Self::BITS)) as Self
     }
     #[inline]
     fn count(self) -> u16 {
@@ -55,12 +56,13 @@ impl HitCount for u8 {
 }
 
 impl HitCount for u16 {
-    /// Saturating as one more less its carry out: a subtraction of a shifted value where
-    /// a compare and a conditional move would be two instructions.
+    /// Saturating as one more less its carry out: one subtraction of a shifted value,
+    /// cheaper in a density loop than a compare and a conditional move
+    /// (docs/performance.md, The attractors against the sketches).
     #[inline]
     fn bumped(self) -> Self {
         let more = u32::from(self) + 1;
-        (more - (more >> 16)) as Self
+        (more - (more >> Self::BITS)) as Self
     }
     #[inline]
     fn count(self) -> u16 {
@@ -175,5 +177,21 @@ impl<'b, T: HitCount> Density<'b, T> {
     /// The area counted.
     pub(crate) fn area(&self) -> Rectangle {
         self.area
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A count bumped is one more, saturating, for every count of either width.
+    #[test]
+    fn bumped_counts_saturate() {
+        for count in 0..=u8::MAX {
+            assert_eq!(count.bumped(), count.saturating_add(1), "{count}");
+        }
+        for count in 0..=u16::MAX {
+            assert_eq!(count.bumped(), count.saturating_add(1), "{count}");
+        }
     }
 }
