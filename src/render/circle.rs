@@ -5,12 +5,14 @@
 //! band of row y the curve's points lie at horizontal distances from wᵢ to wₒ of the
 //! centre, wₒ² = r² − (nearest dy)² and wᵢ² = r² − (farthest dy)²; the pixels touched are
 //! those meeting [cx − wₒ, cx − wᵢ] or [cx + wᵢ, cx + wₒ]. Each boundary moves a pixel
-//! at a time from the last row's, with squares compared in 64 bits: no square roots, and
+//! at a time from the last row's, with squares of 32-bit distances compared in 64 bits: no square roots, and
 //! the work is the circle's perimeter in pixels. The outline reaches exactly the pixels
 //! holding cx ± r and cy ± r, so a fit that measured centre ± radius is tight.
 
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
+
+use crate::math::wide::square_i32_wide as square;
 
 /// The largest radius drawn, in pixels: larger circles are a caller's polygon.
 pub(crate) const MAX_CIRCLE_RADIUS: i64 = 1 << 12;
@@ -29,6 +31,9 @@ fn holding(v: i64) -> i64 {
 /// Draws the outline of the circle about `centre` of `radius` (Q16.16 pixels, at most
 /// [`MAX_CIRCLE_RADIUS`]; larger ones draw nothing) in `color`, rows outside `clip`
 /// skipped and runs cut to it.
+///
+/// The edges are measured from the centre's pixel, so every distance fits 32 bits (at
+/// most the radius and a pixel) and each square is one 32 × 32 → 64-bit product.
 #[inline(never)]
 pub(crate) fn draw_circle<D: DrawTarget>(
     target: &mut D,
@@ -44,25 +49,37 @@ pub(crate) fn draw_circle<D: DrawTarget>(
         return Ok(());
     };
     let (clip_start, clip_end) = (clip.top_left, clip_end);
-    let r2 = radius * radius;
-    let middle = holding(cx);
-    // Left edge of pixel x less cx, and cx less its right edge.
-    let left_edge = |x: i64| (x << 16) - (1 << 15) - cx;
-    let right_edge = |x: i64| cx - (x << 16) - (1 << 15);
-    // Pixel x meets [cx, cx + w] (w² = w2) on the right, [cx − w, cx] on the left.
-    let meets_right = |x: i64, w2: i64| {
-        let d = left_edge(x);
-        d <= 0 || d * d <= w2
-    };
-    let meets_left = |x: i64, w2: i64| {
-        let e = right_edge(x);
-        e < 0 || e * e < w2
-    };
     let top = holding(cy - radius).max(i64::from(clip_start.y));
     let bottom = holding(cy + radius).min(i64::from(clip_end.y));
-    let (mut right, mut left) = (middle, middle);
-    for y in top..=bottom {
-        let low = (y << 16) - (1 << 15) - cy;
+    if top > bottom {
+        return Ok(());
+    }
+    // The radius is at most 2^28 (MAX_CIRCLE_RADIUS pixels in Q16.16).
+    let r2 = square(radius as i32);
+    let (middle, centre_row) = (holding(cx), holding(cy));
+    // Pixel middle + k: its left edge less cx is (k << 16) + left, cx less its right edge
+    // is right − (k << 16); both start within a pixel of 0.
+    let left = ((middle << 16) - (1 << 15) - cx) as i32;
+    let right = (cx - (middle << 16) - (1 << 15)) as i32;
+    // Pixel middle + k meets [cx, cx + w] (w² = w2) on the right, [cx − w, cx] on the left.
+    let meets_right = |k: i32, w2: i64| {
+        let d = (k << 16) + left;
+        d <= 0 || square(d) <= w2
+    };
+    let meets_left = |k: i32, w2: i64| {
+        let e = right - (k << 16);
+        e < 0 || square(e) < w2
+    };
+    // The clip's columns as offsets from the centre's pixel.
+    let offset = |x: i32| (i64::from(x) - middle).clamp(i32::MIN.into(), i32::MAX.into()) as i32;
+    let (clip_left, clip_right) = (offset(clip_start.x), offset(clip_end.x));
+    // Row centre_row + j: its band's top edge less cy is (j << 16) + band.
+    let band = ((centre_row << 16) - (1 << 15) - cy) as i32;
+    // Within a pixel and the radius of the centre's row.
+    let (first, last) = ((top - centre_row) as i32, (bottom - centre_row) as i32);
+    let (mut outer_right, mut outer_left) = (0, 0);
+    for j in first..=last {
+        let low = (j << 16) + band;
         let high = low + (1 << 16);
         let near = if low > 0 {
             low
@@ -71,52 +88,51 @@ pub(crate) fn draw_circle<D: DrawTarget>(
         } else {
             0
         };
-        let far = low.abs().max(high.abs());
-        let outer = r2 - near * near;
+        let far = low.unsigned_abs().max(high.unsigned_abs()) as i32;
+        let outer = r2 - square(near);
         if outer < 0 {
             continue;
         }
-        while meets_right(right + 1, outer) {
-            right += 1;
+        while meets_right(outer_right + 1, outer) {
+            outer_right += 1;
         }
-        while right > middle && !meets_right(right, outer) {
-            right -= 1;
+        while outer_right > 0 && !meets_right(outer_right, outer) {
+            outer_right -= 1;
         }
-        while meets_left(left - 1, outer) {
-            left -= 1;
+        while meets_left(outer_left - 1, outer) {
+            outer_left -= 1;
         }
-        while left < middle && !meets_left(left, outer) {
-            left += 1;
+        while outer_left < 0 && !meets_left(outer_left, outer) {
+            outer_left += 1;
         }
         // The hole: pixels between the ring's two sides in this row.
-        let inner = r2 - far * far;
-        let (mut inner_right, mut inner_left) = (right, left);
+        let inner = r2 - square(far);
+        let (mut inner_right, mut inner_left) = (outer_right, outer_left);
         if inner > 0 {
-            while inner_right > middle && !meets_right(inner_right, inner) {
+            while inner_right > 0 && !meets_right(inner_right, inner) {
                 inner_right -= 1;
             }
-            while inner_left < middle && !meets_left(inner_left, inner) {
+            while inner_left < 0 && !meets_left(inner_left, inner) {
                 inner_left += 1;
             }
         }
-        let row = y as i32;
-        let mut send = |from: i64, to: i64| -> Result<(), D::Error> {
-            let from = from.max(i64::from(clip_start.x));
-            let to = to.min(i64::from(clip_end.x));
+        let row = (centre_row + i64::from(j)) as i32;
+        let mut send = |from: i32, to: i32| -> Result<(), D::Error> {
+            let (from, to) = (from.max(clip_left), to.min(clip_right));
             if from > to {
                 return Ok(());
             }
             let run = Rectangle::new(
-                Point::new(from as i32, row),
-                Size::new((to - from + 1) as u32, 1),
+                Point::new((middle + i64::from(from)) as i32, row),
+                Size::new(to.abs_diff(from) + 1, 1),
             );
             target.fill_solid(&run, color)
         };
         if inner <= 0 || inner_left + 1 >= inner_right {
-            send(left, right)?;
+            send(outer_left, outer_right)?;
         } else {
-            send(left, inner_left)?;
-            send(inner_right, right)?;
+            send(outer_left, inner_left)?;
+            send(inner_right, outer_right)?;
         }
     }
     Ok(())
