@@ -14,7 +14,8 @@
 //! holds, and d is compared through the log table: no floats.
 
 use super::arithmetic::{Arithmetic, HighWords};
-use super::kernel::Kernel;
+use super::estimate::Estimate;
+use super::kernel::{Kernel, Orbit};
 use super::scaled::Scaled;
 use super::view::Tier;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
@@ -165,15 +166,14 @@ impl Derivative {
 }
 
 impl Kernel {
-    /// log₂ of the estimated distance, in pixels, of the orbit from `first` (z₁ = c for
-    /// the Mandelbrot set, the pixel z₀ for a Julia set; Q60), Q16: d ≈ |z|·ln|z| / |dz|
-    /// over the pixel spacing; `None` if the orbit does not escape by the cap. Also the
-    /// steps it took.
+    /// The estimated distance of the orbit from `first` (z₁ = c for the Mandelbrot set,
+    /// the pixel z₀ for a Julia set; Q60), d ≈ |z|·ln|z| / |dz| over the pixel spacing;
+    /// `None` if the orbit does not escape by the cap. Also the steps it took.
     fn log2_distance<const WIDE: bool>(
         &self,
         first: (i64, i64),
         c: (i64, i64),
-    ) -> (Option<i64>, u32) {
+    ) -> (Option<Distance>, u32) {
         let mandelbrot = self.julia.is_none();
         let start = (u32::from(mandelbrot), self.max);
         // z in Q60 (`WIDE`: products' high words) or Q28 (32-bit values, 64-bit products).
@@ -194,22 +194,35 @@ impl Kernel {
         let Some((z, dz)) = escaped else {
             return (None, k);
         };
-        let (estimate, steps) = log2_pixels_past_escape(z, c, dz, mandelbrot, self.spacing_log2);
+        let (estimate, steps) =
+            log2_pixels_past_escape((z, k), c, dz, mandelbrot, self.spacing_log2);
         (estimate, k + steps)
     }
 
-    /// The value of an escaped orbit from `first` (Q60) as distance estimation has it (see
-    /// [`Estimate::value`]): `None` for the ordinary value. Also the steps the estimate
-    /// took.
-    pub(super) fn estimated(&self, first: (i64, i64), c: (i64, i64)) -> (Option<u32>, u32) {
-        let (log2_pixels, steps) = match self.tier {
+    /// An escaped `orbit` from `first` (Q60) as distance estimation has it (see
+    /// [`Estimate::estimated`]), the estimate's steps added.
+    ///
+    /// The run again starts from the point of a mirrored pair the fast render computes, so
+    /// both of a pair get one estimate, whichever is computed: a Mandelbrot point's twin
+    /// in the upper half-plane (where the orbit takes it too), and of a Julia set's z₀ and
+    /// −z₀ (whose orbits meet at z₁) the one above the real axis, or right of 0 on it. The
+    /// derivative's products round down, so from the other of a pair its last bits differ.
+    pub(super) fn estimated(&self, orbit: Orbit, first: (i64, i64), c: (i64, i64)) -> Orbit {
+        let Some(estimate) = self.estimate else {
+            return orbit;
+        };
+        let first = match self.julia {
+            None if self.outside.symmetric() => (first.0, first.1.abs()),
+            Some(_) if first.1 < 0 || (first.1 == 0 && first.0 < 0) => (-first.0, -first.1),
+            _ => first,
+        };
+        // A Mandelbrot point's z₁ is c.
+        let c = if self.julia.is_none() { first } else { c };
+        let (distance, steps) = match self.tier {
             Tier::Narrow | Tier::Medium | Tier::Standard => self.log2_distance::<false>(first, c),
             _ => self.log2_distance::<true>(first, c),
         };
-        let value = self
-            .estimate
-            .and_then(|estimate| estimate.value(log2_pixels, self.inside));
-        (value, steps)
+        estimated(estimate, orbit, distance, steps, self.inside)
     }
 }
 
@@ -277,17 +290,47 @@ fn q28_orbit(
     }
 }
 
-/// log₂ of the estimated distance in pixels (Q16) of an orbit that escaped at z with
+/// What an escaped pixel's `orbit` becomes at `distance` from the set, with `steps` more
+/// taken: its value as `estimate` has it ([`Estimate::value`]), and how far the set is
+/// proven to be.
+pub(super) fn estimated(
+    estimate: Estimate,
+    orbit: Orbit,
+    distance: Option<Distance>,
+    steps: u32,
+    inside: u32,
+) -> Orbit {
+    let value = estimate
+        .value(distance.map(|d| d.log2_pixels), inside)
+        .unwrap_or(orbit.dwell);
+    Orbit {
+        dwell: value | u32::from(distance.map_or(0, |d| d.far)) << 16,
+        iterations: orbit.iterations.saturating_add(steps),
+    }
+}
+
+/// An escaped point's distance from the set, in pixels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Distance {
+    /// log₂ of the estimate d = |z|·ln|z| / |dz|, Q16.
+    pub(super) log2_pixels: i64,
+    /// The set is at least 2^(`far`/4) pixels away: proven from d (see [`proven_far`]);
+    /// 0 proves nothing.
+    pub(super) far: u8,
+}
+
+/// The estimated distance (see [`Distance`]) of an orbit that escaped at z, the `n`th
+/// point of its orbit (z₀ = 0 for the Mandelbrot set, the pixel for a Julia set), with
 /// derivative `dz` (z and c in Q60), the pixel spacing 2^`spacing_log2` (Q16), taken on
 /// to |z| ≥ 256 in Q20 as the smooth value goes (`smooth_value`); also the steps that
 /// took.
 pub(super) fn log2_pixels_past_escape(
-    (x, y): (i64, i64),
+    ((x, y), n): ((i64, i64), u32),
     c: (i64, i64),
     mut dz: Derivative,
     plus_one: bool,
     spacing_log2: i32,
-) -> (Option<i64>, u32) {
+) -> (Option<Distance>, u32) {
     let q20 = |v: i64| v >> 40;
     let (cr, ci) = (q20(c.0), q20(c.1));
     let (mut x, mut y) = (q20(x), q20(y));
@@ -309,10 +352,42 @@ pub(super) fn log2_pixels_past_escape(
     let estimate = (|| {
         let log_square = i64::from(log2((x * x + y * y).unsigned_abs(), 16)?);
         let log_log = i64::from(log2(u64::try_from(log_square).ok()?, LOG2_FRAC_BITS)?);
-        let numerator = log_square / 2 + log_log + LOG2_HALF_LN2;
-        Some(numerator - dz.log2_magnitude()? - i64::from(spacing_log2))
+        let log_ln = log_log + LOG2_HALF_LN2;
+        let log2_pixels = log_square / 2 + log_ln - dz.log2_magnitude()? - i64::from(spacing_log2);
+        // G = ln|z_N| / 2^N at the N-th point.
+        let log2_green = log_ln - (i64::from(n + steps) << LOG2_FRAC_BITS);
+        Some(Distance {
+            log2_pixels,
+            far: proven_far(log2_pixels, log2_green),
+        })
     })();
     (estimate, steps)
+}
+
+/// How far the set is proven to be from a point whose estimate is 2^`log2_pixels` pixels
+/// and whose Green's function G is 2^`log2_green` (both Q16), in quarters of log₂
+/// (0: nothing proven).
+///
+/// Koebe's quarter theorem on the Böttcher map bounds the distance δ to the set by
+/// d·(1 − e^(−2G))/(4G) < δ < 2d·sinh(G)/G, where d = G/|∇G| is the estimate at the
+/// limit (d/2 < δ < 2d as G → 0). The lower bound is taken as d/2^1.25 for G ≤ 0.1,
+/// d/2^2.0625 for G ≤ 0.79 and d/2^3.0625 for G ≤ 1.9 (each below the bound over its
+/// range by more than the log table's errors); every point of a view (|re|, |im| ≤ 3.5)
+/// has G below 1.8.
+fn proven_far(log2_pixels: i64, log2_green: i64) -> u8 {
+    const ONE: i64 = 1 << LOG2_FRAC_BITS;
+    // G against log₂ 0.1, log₂ 0.79 and log₂ 1.9, Q16, rounded down.
+    let below = if log2_green <= -217_706 {
+        ONE + ONE / 4
+    } else if log2_green <= -22_288 {
+        2 * ONE + ONE / 16
+    } else if log2_green <= 60_685 {
+        3 * ONE + ONE / 16
+    } else {
+        return 0;
+    };
+    // Quarters of log₂, rounded down.
+    ((log2_pixels - below) >> (LOG2_FRAC_BITS - 2)).clamp(0, i64::from(u8::MAX)) as u8
 }
 
 #[cfg(test)]
@@ -348,6 +423,40 @@ mod tests {
                 Ok(())
             })
             .unwrap();
+    }
+
+    /// The distance proven is below the lower bound Koebe's theorem gives, d·(1 −
+    /// e^(−2G))/(4G), in f64, over G from 2⁻²⁰ to 1.9 and estimates from 2⁻⁴ to 2⁴⁰
+    /// pixels, and within a factor 2^1.5 of it (the classes' steps and the quarters);
+    /// past G = 1.9 (outside every view) nothing is proven.
+    #[test]
+    fn the_distance_proven_is_below_koebes_bound() {
+        let q16 = |v: f64| (v * 65536.0).floor() as i64;
+        let mut checked = 0;
+        for g_step in 0..=400 {
+            let green = 2f64.powf(-20.0 + f64::from(g_step) * (20.0 + 1.899f64.log2()) / 400.0);
+            for d_step in 0..=88 {
+                let log2_d = -4.0 + f64::from(d_step) / 2.0;
+                let far = proven_far(q16(log2_d), q16(green.log2()));
+                let bound = 2f64.powf(log2_d) * (1.0 - (-2.0 * green).exp()) / (4.0 * green);
+                let proven = 2f64.powf(f64::from(far) / 4.0);
+                if far > 0 {
+                    assert!(
+                        proven <= bound,
+                        "G {green} d 2^{log2_d}: {proven} > {bound}"
+                    );
+                    checked += 1;
+                }
+                if bound >= 2.0 && far < u8::MAX {
+                    assert!(
+                        proven * 2f64.powf(1.5) >= bound,
+                        "G {green}: {proven} ≪ {bound}"
+                    );
+                }
+            }
+        }
+        assert!(checked > 20_000);
+        assert_eq!(proven_far(q16(30.0), q16(1.95f64.log2())), 0);
     }
 
     /// The loops' step, with 1 carried from step to step, is the plain step with 1 made

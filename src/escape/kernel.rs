@@ -57,13 +57,30 @@ pub(crate) enum Periodicity {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct Orbit {
     /// The pixel's value: the dwell 1..=max, max meaning "did not escape"; or with smooth
-    /// shading the normalised count in sixteenths, max·16 meaning "did not escape".
+    /// shading the normalised count in sixteenths, max·16 meaning "did not escape". At most
+    /// the inside value, a u16 ([`value`](Self::value)); with distance estimation the bits
+    /// above hold [`far`](Self::far).
     pub(crate) dwell: u32,
     /// z ← z² + c steps taken.
     pub(crate) iterations: u32,
 }
 
 impl Orbit {
+    /// The pixel's value: the dwell's low 16 bits.
+    #[inline(always)]
+    pub(crate) const fn value(&self) -> u16 {
+        self.dwell as u16
+    }
+
+    /// With distance estimation, the set is proven at least 2^(`far`/4) pixels from an
+    /// escaping pixel (0: nothing proven, or not estimated): what a block's border must
+    /// show before the block is filled (see `subdivide`). Kept in the dwell above its
+    /// value, so that an orbit stays two words.
+    #[inline(always)]
+    pub(crate) const fn far(&self) -> u16 {
+        (self.dwell >> 16) as u16
+    }
+
     /// Did not escape (a repeat, or the cap), found after `iterations` steps.
     #[inline(always)]
     pub(super) const fn inside_after(kernel: &Kernel, iterations: u32) -> Self {

@@ -221,11 +221,7 @@ fn estimated_in_tier<A: Arithmetic>(kernel: &Kernel, re: i64, im: i64, orbit: Or
     let pixel = (q60(re), q60(im));
     // z₁ = c for the Mandelbrot set; a Julia set's pixel is z₀.
     let c = kernel.julia.map_or(pixel, |(kr, ki)| (q60(kr), q60(ki)));
-    let (estimated, steps) = kernel.estimated(pixel, c);
-    Orbit {
-        dwell: estimated.unwrap_or(orbit.dwell),
-        iterations: orbit.iterations + steps,
-    }
+    kernel.estimated(orbit, pixel, c)
 }
 
 /// What a stretch of an orbit comes to: `Ok` goes on; `Err` is the orbit's value, found

@@ -28,7 +28,7 @@
 //! so its interior pixels run to the cap. A pixel that never rebases is never tested. The
 //! cardioid and bulb test is made at the reference's precision.
 
-use super::distance::{log2_pixels_past_escape, Derivative};
+use super::distance::{estimated, log2_pixels_past_escape, Derivative};
 use super::estimate::Estimate;
 use super::kernel::MAX_FAST_TOLERANCE;
 use super::kernel::{Kernel, Orbit, Periodicity};
@@ -424,14 +424,14 @@ impl<'r> Perturbation<'r> {
             return orbit;
         };
         let q60 = |(x, y): (i32, i32)| (i64::from(x) << 32, i64::from(y) << 32);
-        let (log2_pixels, steps) =
-            log2_pixels_past_escape(q60(z), q60(point), dz, true, self.spacing_log2);
-        Orbit {
-            dwell: estimate
-                .value(log2_pixels, self.inside)
-                .unwrap_or(orbit.dwell),
-            iterations: orbit.iterations.saturating_add(steps),
-        }
+        let (distance, steps) = log2_pixels_past_escape(
+            (q60(z), orbit.iterations),
+            q60(point),
+            dz,
+            true,
+            self.spacing_log2,
+        );
+        estimated(estimate, orbit, distance, steps, self.inside)
     }
 }
 

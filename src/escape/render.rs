@@ -171,6 +171,11 @@ pub struct Render<'r, const CELLS: usize = TILE_CELLS> {
     /// Steps and pixels computed in the current tile, not yet in `stats`.
     pub(super) tile_steps: u32,
     pub(super) tile_pixels: u32,
+    /// Where each cell's [`far`](super::kernel::Orbit::far) is kept in `tile`, this many
+    /// cells past its value: with distance estimation (not its shading), in the tile's
+    /// second half, and tiles of at most half the cells, so that a block whose border
+    /// escapes can be filled (see `subdivide`); 0 when not kept.
+    pub(super) far_at: u32,
     /// The current tile's dwells, row by row with no gaps (w×h of them): a tile leaves as
     /// one slice. Last (`repr(C)`), so that the other fields are a load's short offset
     /// away.

@@ -29,7 +29,7 @@ use super::render::{
 };
 use super::scaled::ReferencePoint;
 use super::tile::{AnyCells, Cells};
-use super::view::{Symmetry, View};
+use super::view::{Shading, Symmetry, View};
 use crate::error::{Error, ViewError};
 use crate::render::sink::DwellSink;
 
@@ -127,6 +127,18 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         ))
     }
 
+    /// Where cells keep how far the set is proven to be (see [`Render::far_at`]): past
+    /// half the cells with distance estimation (not its shading, whose values are not
+    /// filled), where tiles of half the cells still have 4 rows.
+    #[inline(never)]
+    fn far_offset(view: &View) -> u32 {
+        if view.distance != 0 && view.shading != Shading::Distance && Self::ROWS >= 4 {
+            (CELLS / 2) as u32
+        } else {
+            0
+        }
+    }
+
     pub(super) fn with_pixels(view: View, algorithm: Algorithm, pixels: Pixels<'r>) -> Self {
         let () = Self::ROWS_FIT;
         Self {
@@ -145,6 +157,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
                 skipped: 0,
             },
             tile: [0; CELLS],
+            far_at: Self::far_offset(&view),
             width: TILE,
             columns: [Part::default(); TILE as usize],
             rows: [Part::default(); TILE_ROWS],
@@ -291,7 +304,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         self.stats.pixels += 1;
         // A dwell is at most the view's inside value, a u16 (the view checks the cap): the
         // cast keeps it whole, and costs less a pixel than a checked conversion.
-        orbit.dwell as u16
+        orbit.value()
     }
 
     pub(super) fn exact_row<S: DwellSink>(&mut self, sink: &mut S) -> Result<(), S::Error> {
@@ -339,6 +352,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         if let (Some(to), Some(from)) = (self.tile.get_mut(..known), kept.get(..known)) {
             to.copy_from_slice(from);
         }
+
         self.width = w;
         // Rows and columns past the view's edge are not used. The columns are the same
         // for a whole column of tiles.

@@ -3,7 +3,7 @@
 
 use heapless::Vec;
 
-use super::render::Render;
+use super::render::{Render, TILE};
 use super::tile::{Cells, TileDwells};
 
 /// A block whose border is not one dwell and which spans fewer than this many cells past
@@ -43,12 +43,38 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
                 return None;
             }
         }
-        // With distance estimation a block whose border escapes may hide a strand drawn
-        // as the set: only an inside border fills.
-        if self.view.estimates_distance() && first != self.view.inside_value() {
-            return None;
+        self.fills(b, first).then_some(first)
+    }
+
+    /// Whether block `b`, its border all `value`, fills with it. With distance estimation
+    /// a block whose border escapes may hide a strand drawn as the set: it fills only if
+    /// every cell of its border (all computed) proves the set so far that no pixel inside
+    /// is drawn as the set. Each pixel inside lies within D = ⌊min(width, height)/2⌋
+    /// pixels of a border cell q, so it is at least δ_q − D from the set; where that is at
+    /// least 4w for the width w, its estimate is at least w (the estimate is more than a
+    /// quarter of the distance for every point of a view: see `distance::proven_far`). So
+    /// every border cell must prove δ_q ≥ D + 4w. Out of line: one copy for every tier's
+    /// subdivision.
+    #[inline(never)]
+    fn fills(&self, b: Block, value: u16) -> bool {
+        if !self.view.estimates_distance() || value == self.view.inside_value() {
+            return true;
         }
-        Some(first)
+        if self.far_at == 0 {
+            return false;
+        }
+        let need = far_needed(min_half(b), self.view.distance);
+        let (far_at, width) = (self.far_at as usize, self.width as usize);
+        let (x0, y0, x1, y1) = (b.x0 as usize, b.y0 as usize, b.x1 as usize, b.y1 as usize);
+        let (across, down) = (b.x1 - b.x0 + 1, b.y1 - b.y0 + 1);
+        let far = |x: usize, y: usize| far_at + y * width + x;
+        let proves = |from: usize, count: u32, step: usize| {
+            all_at_least(&self.tile, from, count, step, need)
+        };
+        proves(far(x0, y0), across, 1)
+            && proves(far(x0, y1), across, 1)
+            && proves(far(x0, y0), down, width)
+            && proves(far(x1, y0), down, width)
     }
 
     /// Mariani–Silver over the current tile, of size w×h: every cell, or the tile's dwell
@@ -118,5 +144,74 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
             next = stack.pop().map(|b| (b, self.border(cells, b)));
         }
         uniform.map_or(TileDwells::Cells, TileDwells::Uniform)
+    }
+}
+
+/// ⌊min(width, height)/2⌋ of a block, in cells from corner to corner: how far a cell
+/// inside can be from the nearest border cell along its row or column.
+fn min_half(b: Block) -> u32 {
+    (b.x1 - b.x0).min(b.y1 - b.y0) / 2
+}
+
+/// 2^(k/4) for k = 0..4, Q16, rounded down.
+const QUARTER_POWERS: [u32; 4] = [65_536, 77_935, 92_681, 110_217];
+
+/// The `far` (quarters of log₂ pixels) a border cell must prove for a block whose
+/// inside lies within `reach` pixels of its border, at the width `distance` (256ths of
+/// a pixel): the least q with 2^(q/4) ≥ reach + 4w (or one more, where the powers'
+/// rounding leaves them just short). A reach is at most half a tile's side.
+fn far_needed(reach: u32, distance: u16) -> u32 {
+    // reach + 4w in Q16: below 2^18.1, so 2^(q/4) in Q16 reaches it before 2^32.
+    let needed = ((reach % TILE) * 256 + 4 * u32::from(distance)) << 8;
+    // 2^whole ≤ reach + 4w < 2^(whole + 1), or whole = 0 below 1.
+    let whole = (31 - (needed | 1).leading_zeros()).saturating_sub(16);
+    let mut q = 4 * whole;
+    for power in QUARTER_POWERS {
+        if power << whole >= needed {
+            return q;
+        }
+        q += 1;
+    }
+    q
+}
+
+/// Whether `count` values of `cells` from `from`, `step` apart, are all at least `need`.
+#[inline(never)]
+fn all_at_least(cells: &[u16], mut from: usize, count: u32, step: usize, need: u32) -> bool {
+    for _ in 0..count {
+        match cells.get(from) {
+            Some(&value) if u32::from(value) >= need => from += step,
+            _ => return false,
+        }
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The far a border must prove is ⌈4·log₂(reach + 4w)⌉ (at least 0), in f64, over reaches and
+    /// widths (or one more within 10⁻⁵ of a quarter), and 2^(q/4) is at least reach + 4w.
+    #[test]
+    fn the_far_needed_is_the_quarter_log_of_the_reach_and_four_widths() {
+        for reach in 0..32u32 {
+            for distance in (0..=4096u16).step_by(13) {
+                let pixels = f64::from(reach) + 4.0 * f64::from(distance) / 256.0;
+                let q = far_needed(reach, distance);
+                assert!(
+                    2f64.powf(f64::from(q) / 4.0) >= pixels,
+                    "{reach} {distance}"
+                );
+                if pixels > 0.0 {
+                    let exact = (4.0 * pixels.log2()).ceil().max(0.0);
+                    let near = (4.0 * pixels.log2() - exact).abs() < 1e-5;
+                    assert!(
+                        f64::from(q) == exact || (near && f64::from(q) == exact + 1.0),
+                        "{reach} {distance}: {q} for {exact}"
+                    );
+                }
+            }
+        }
     }
 }

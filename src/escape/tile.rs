@@ -28,11 +28,14 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     /// down a column before the next, so the shared row is still in `tile`). A tile's
     /// edge is on the outline of every region along it, so its cells are all computed,
     /// and sharing them computes fewer; not where it would add a row of tiles (64 rows:
-    /// three tiles of 31, not two of 32).
+    /// three tiles of 31, not two of 32), nor where cells keep how far the set is (the
+    /// shared row's would have to move with it).
     pub(super) fn tile_stride(&self) -> u32 {
         let rows = self.computed_rows();
         let tile_rows = self.tile_rows();
-        if rows.saturating_sub(1).div_ceil(tile_rows - 1) > rows.div_ceil(tile_rows) {
+        if self.far_at != 0
+            || rows.saturating_sub(1).div_ceil(tile_rows - 1) > rows.div_ceil(tile_rows)
+        {
             tile_rows
         } else {
             tile_rows - 1
@@ -45,6 +48,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     pub(super) fn tile_rows(&self) -> u32 {
         match self.pixels {
             Pixels::Fixed(kernel) if kernel.traceable() => Self::ROWS as u32,
+            _ if self.far_at != 0 => TILE.min(Self::ROWS as u32 / 2),
             _ => TILE.min(Self::ROWS as u32),
         }
     }
@@ -108,16 +112,37 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
             .copied()
             .unwrap_or_default();
         let orbit = cells.orbit(&self.pixels, re, im, &mut self.stats);
+        // On Cortex-M0 every caller passes true: one copy, no test of the cells' kind.
+        self.keep(
+            orbit,
+            index,
+            C::ESTIMATES || cfg!(tinyfractal_no_long_multiply),
+        )
+    }
+
+    /// Keeps cell `index`'s `orbit`: its value (returned, widened once: the callers
+    /// compare it with cells read as u32), its steps, and how far the set is where that
+    /// is kept and the cells may carry it (`estimates`). A call on Cortex-M0, where each
+    /// tier's copy of it would take flash; in line elsewhere.
+    #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
+    #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
+    fn keep(&mut self, orbit: Orbit, index: usize, estimates: bool) -> u32 {
         // Counted in 32 bits (a tile's cells take at most 2,048 × 65,535 steps) and added
         // to the stats once a tile.
         self.tile_steps += orbit.iterations;
         self.tile_pixels += 1;
-        // A dwell is at most the view's inside value, a u16 (see `record`).
-        let value = orbit.dwell as u16;
+        let value = orbit.value();
+        if estimates && self.far_at != 0 {
+            if let Some(far) = self
+                .tile
+                .get_mut((self.far_at as usize + index) & (CELLS - 1))
+            {
+                *far = orbit.far();
+            }
+        }
         if let Some(cell) = self.tile.get_mut(index) {
             *cell = value;
         }
-        // Widened here, once: the callers compare it with cells read as u32.
         u32::from(value)
     }
 
@@ -144,6 +169,9 @@ pub(super) fn perturbed_dwell(pixels: &Perturbation<'_>, re: Part, im: Part) -> 
 /// How a tile's cells get their orbits: a fixed tier's (compiled once per tier, the
 /// orbit in line) or by perturbation.
 pub(super) trait Cells {
+    /// Whether an orbit may carry how far the set is (a traced kernel's never does).
+    const ESTIMATES: bool = true;
+
     /// The orbit of the point (`re`, `im`) of a render computing `pixels`, counting a
     /// perturbed pixel's extra stats.
     fn orbit(&self, pixels: &Pixels<'_>, re: Part, im: Part, stats: &mut RenderStats) -> Orbit;
@@ -160,6 +188,8 @@ impl<T: TierOrbit> Cells for T {
 pub(super) struct Traced<T>(T);
 
 impl<T: TierOrbit> Cells for Traced<T> {
+    const ESTIMATES: bool = false;
+
     #[inline(always)]
     fn orbit(&self, _: &Pixels<'_>, re: Part, im: Part, _: &mut RenderStats) -> Orbit {
         self.0.traced_dwell(re, im)

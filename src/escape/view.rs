@@ -475,9 +475,12 @@ impl View {
     /// from the inside value up as the set, and the render tells it from the set itself.
     ///
     /// Each escaping orbit is run again with its derivative (see the `distance` module),
-    /// and the render fills only the blocks whose border is all inside the set (the set
-    /// is full, so their pixels are too): a block whose border escapes, or is only near
-    /// the set, may hide a strand or a gap, so its pixels are computed, and tracing is off.
+    /// and tracing is off. `Fast` fills a block whose border is all inside the set (the set
+    /// is full, so its pixels are too), and a block whose border escapes with one dwell only
+    /// where every border pixel's estimate proves the set so far (Koebe's quarter theorem
+    /// bounds the true distance by the estimate, within the view's ±3.5) that no pixel
+    /// inside is within the width: elsewhere a strand may cross it, and its pixels are
+    /// computed. Not with the distance shading, whose values vary with the distance.
     /// A perturbed render's pixels carry dz beside their differences instead, from the
     /// series' derivative at the skip, each step from the full point Zₘ + δ.
     #[must_use]

@@ -300,7 +300,7 @@ impl<'a, V: ZoomValue> ZoomFrame<'a, V> {
                                 let orbit = dwell(&kernel, re, im);
                                 stats.computed += 1;
                                 stats.iterations += u64::from(orbit.iterations);
-                                V::from_value(u16::try_from(orbit.dwell).unwrap_or(u16::MAX))
+                                V::from_value(orbit.value())
                             }
                         };
                         if let Some(cell) = values.get_mut(r * width + c) {
