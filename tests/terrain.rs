@@ -190,11 +190,35 @@ fn the_profile_fills_its_area_once_from_lowest_to_highest() {
         // row everywhere.
         assert!((0..width as i32).any(|x| frame.pixel(x, 0) == Some(Rgb888::GREEN)));
         assert!((0..width as i32).all(|x| frame.pixel(x, 119) == Some(Rgb888::GREEN)));
-        // Each column: sky, then ground, no sky below ground.
+        // Each column: sky, then ground, no sky below ground, from the row of the highest
+        // point of the piecewise-linear profile over the column (heights as Q16.16
+        // integers in f64, quotients truncated, the row rounded half up).
+        let q16 = |h: Real| h.to_f64() * 65536.0;
+        let heights: Vec<f64> = terrain.heights().unwrap().map(q16).collect();
+        let (low, high) = (q16(drawing.range().0), q16(drawing.range().1));
+        let (w, last) = (f64::from(width), f64::from(samples - 2));
+        let at = |p: f64| {
+            let k = (p / w).floor().min(last);
+            let (a, b) = (heights[k as usize], heights[k as usize + 1]);
+            a + ((b - a) * (p - k * w) / w).trunc()
+        };
+        let rows = 119.0;
+        let row = |h: f64| ((high - h) * rows + ((high - low) / 2.0).floor()) / (high - low);
         for x in 0..width as i32 {
             let column: Vec<_> = (0..120).map(|y| frame.pixel(x, y).unwrap()).collect();
             let ground = column.iter().position(|&c| c == Rgb888::GREEN).unwrap();
             assert!(column[ground..].iter().all(|&c| c == Rgb888::GREEN));
+            let intervals = f64::from(samples - 1);
+            let (from, to) = (f64::from(x) * intervals, f64::from(x + 1) * intervals);
+            let inside = (0..samples as usize)
+                .filter(|&i| i as f64 * w > from && i as f64 * w <= to)
+                .map(|i| heights[i]);
+            let highest = inside.fold(at(from).max(at(to)), f64::max);
+            assert_eq!(
+                ground,
+                row(highest).floor() as usize,
+                "{samples} {width}: {x}"
+            );
         }
     }
 }

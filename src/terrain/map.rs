@@ -17,7 +17,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::displacement::{displaced, levels_of, Displacement};
 use crate::error::{Error, FitError};
-use crate::math::random::normal_q16;
+use crate::math::random::Seeded;
 use crate::render::Relief;
 
 /// A landscape fitted to an area: the shared [`Relief`] drawing of its heights.
@@ -78,11 +78,11 @@ impl TerrainMap {
         let n = self.samples as usize;
         let last = n - 1;
         let sigmas = self.displacement.sigmas();
-        let seed = self.displacement.seed;
+        let seeded = Seeded::new(self.displacement.seed);
         let key = |x: usize, y: usize| (y * n + x) as u32;
         let mut grid = Grid { heights, n };
         let first_sigma = sigmas.first().copied().unwrap_or(0);
-        let corner = |x, y| displaced(0, first_sigma, normal_q16(seed, key(x, y)));
+        let corner = |x, y| displaced(0, first_sigma, seeded.normal_q16(key(x, y)));
         if self.wrap {
             let shared = corner(0, 0);
             for (x, y) in [(0, 0), (last, 0), (0, last), (last, last)] {
@@ -107,7 +107,7 @@ impl TerrainMap {
                     grid.set(
                         x,
                         y,
-                        displaced(sum >> 2, sigma, normal_q16(seed, key(x, y))),
+                        displaced(sum >> 2, sigma, seeded.normal_q16(key(x, y))),
                     );
                 }
             }
@@ -145,7 +145,7 @@ impl TerrainMap {
                         }
                     }
                     let mean = sum.div_euclid(count.max(1));
-                    grid.set(x, y, displaced(mean, sigma, normal_q16(seed, key(x, y))));
+                    grid.set(x, y, displaced(mean, sigma, seeded.normal_q16(key(x, y))));
                 }
             }
             if self.wrap {

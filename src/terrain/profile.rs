@@ -9,7 +9,7 @@ use super::displacement::{
     displaced, levels_of, real_of, Displacement, MAX_END, MAX_TERRAIN_LEVELS,
 };
 use crate::error::{Error, FitError, ParameterError};
-use crate::math::random::normal_q16;
+use crate::math::random::Seeded;
 use crate::math::wide::div_narrow;
 use crate::math::Real;
 
@@ -71,7 +71,7 @@ impl Terrain {
             *slot = (last, q16(self.ends.1));
         }
         Ok(Heights {
-            seed: self.displacement.seed,
+            seeded: Seeded::new(self.displacement.seed),
             sigmas: self.displacement.sigmas(),
             levels,
             left: None,
@@ -110,7 +110,7 @@ impl Terrain {
 /// the Q16.16 values).
 #[derive(Debug, Clone)]
 pub struct Heights {
-    seed: u64,
+    seeded: Seeded,
     sigmas: [i64; MAX_TERRAIN_LEVELS as usize + 1],
     levels: u32,
     /// The last sample given out: (index, height).
@@ -149,7 +149,7 @@ impl Heights {
             let middle = left_index + span / 2;
             let mean = (i64::from(left_height) + i64::from(right_height)) >> 1;
             let sigma = self.sigmas.get(level).copied().unwrap_or(0);
-            let height = displaced(mean, sigma, normal_q16(self.seed, middle));
+            let height = displaced(mean, sigma, self.seeded.normal_q16(middle));
             *self.pending.get_mut(self.depth)? = (middle, height);
             self.depth += 1;
         }
@@ -220,9 +220,17 @@ impl<C: PixelColor> Drawable for ProfileDrawing<C> {
         // The segment [a, b] of the profile in use: (index, height) of its ends.
         let mut a = (0i64, i64::from(heights.next().unwrap_or(0)));
         let mut b = (1i64, i64::from(heights.next().unwrap_or(0)));
-        // The profile at position p/width samples, within segment [a, b].
+        // The profile at position p/width samples, within segment [a, b] (b one sample
+        // on): at its ends, the ends' heights, with no product or division.
         let at = |a: (i64, i64), b: (i64, i64), p: i64| {
-            a.1 + div_narrow((b.1 - a.1) * (p - a.0 * width), width)
+            let along = p - a.0 * width;
+            if along == 0 {
+                a.1
+            } else if along == width {
+                b.1
+            } else {
+                a.1 + div_narrow((b.1 - a.1) * along, width)
+            }
         };
         for column in 0..width {
             let (from, to) = (column * intervals, (column + 1) * intervals);
