@@ -200,7 +200,7 @@ impl Kernel {
     }
 
     /// An escaped `orbit` from `first` (Q60) as distance estimation has it (see
-    /// [`Estimate::estimated`]), the estimate's steps added.
+    /// [`estimated`]), the estimate's steps added.
     ///
     /// The run again starts from the point of a mirrored pair the fast render computes, so
     /// both of a pair get one estimate, whichever is computed: a Mandelbrot point's twin

@@ -34,6 +34,15 @@ pub trait HitCount: Copy + Default + core::fmt::Debug + sealed::Sealed {
     fn count(self) -> u16;
 }
 
+/// `count` (below 2^`bits`) plus one, saturating at 2^`bits` − 1, as one more less its
+/// carry out: one subtraction of a shifted value, cheaper in a density loop than a compare
+/// and a conditional move (docs/performance.md, The attractors against the sketches).
+#[inline(always)]
+const fn saturating_bump(count: u32, bits: u32) -> u32 {
+    let more = count + 1;
+    more - (more >> bits)
+}
+
 mod sealed {
     pub trait Sealed {}
     impl Sealed for u8 {}
@@ -41,13 +50,10 @@ mod sealed {
 }
 
 impl HitCount for u8 {
-    /// Saturating as one more less its carry out: one subtraction of a shifted value,
-    /// cheaper in a density loop than a compare and a conditional move
-    /// (docs/performance.md, The attractors against the sketches).
     #[inline]
     fn bumped(self) -> Self {
-        let more = u32::from(self) + 1;
-        (more - (more >> Self::BITS)) as Self
+        // At most 2^BITS − 1 again: the cast keeps it whole.
+        saturating_bump(u32::from(self), Self::BITS) as Self
     }
     #[inline]
     fn count(self) -> u16 {
@@ -56,13 +62,10 @@ impl HitCount for u8 {
 }
 
 impl HitCount for u16 {
-    /// Saturating as one more less its carry out: one subtraction of a shifted value,
-    /// cheaper in a density loop than a compare and a conditional move
-    /// (docs/performance.md, The attractors against the sketches).
     #[inline]
     fn bumped(self) -> Self {
-        let more = u32::from(self) + 1;
-        (more - (more >> Self::BITS)) as Self
+        // At most 2^BITS − 1 again: the cast keeps it whole.
+        saturating_bump(u32::from(self), Self::BITS) as Self
     }
     #[inline]
     fn count(self) -> u16 {
