@@ -335,7 +335,9 @@ pub(crate) fn sample_box(ifs: &Ifs, seed: u64, points: u64) -> Option<([Real; 3]
         across.widen(x);
         down.widen(y);
     };
-    for _ in 1..points.clamp(1, FIT_POINTS) {
+    // In 32 bits, as [`repeat`] counts.
+    let fit_points = u32::try_from(points.clamp(1, FIT_POINTS)).unwrap_or(1);
+    for _ in 1..fit_points {
         extend(game.next_point().1);
     }
     // The maps' fixed points are on the attractor, and so are their images: the extremes
