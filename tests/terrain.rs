@@ -174,13 +174,32 @@ fn roughness_means_what_the_lecture_says() {
 
 #[test]
 fn the_profile_fills_its_area_once_from_lowest_to_highest() {
-    for (samples, width) in [(1025, 300), (33, 300), (257, 257)] {
+    // More samples than columns, fewer, and one a column (a loop of its own), at σ = 10
+    // (a row's numerator in 32 bits) and 200 (in 64); each profile fitted with its
+    // heights generated twice and kept in a buffer.
+    let cases = [
+        (1025, 300, 10.0),
+        (33, 300, 10.0),
+        (257, 257, 10.0),
+        (129, 128, 10.0),
+        (65, 64, 10.0),
+        (3, 2, 10.0),
+        (257, 100, 200.0),
+        (129, 128, 200.0),
+    ];
+    let both = |case| [(case, false), (case, true)];
+    for ((samples, width, sigma), stored) in cases.into_iter().flat_map(both) {
         let size = Size::new(width, 120);
         let mut frame = Counting::new(Frame::filled(size, Rgb888::RED));
-        let terrain = Terrain::new(samples, displacement(0.7, 10.0, 5));
-        let drawing = terrain
-            .fit(frame.bounding_box(), Rgb888::GREEN, Rgb888::BLUE)
-            .unwrap();
+        let terrain = Terrain::new(samples, displacement(0.7, sigma, 5));
+        let mut buffer = vec![0; samples as usize + 3];
+        let area = frame.bounding_box();
+        let drawing = if stored {
+            terrain.fit_with_heights(area, Rgb888::GREEN, Rgb888::BLUE, &mut buffer)
+        } else {
+            terrain.fit(area, Rgb888::GREEN, Rgb888::BLUE)
+        }
+        .unwrap();
         assert_eq!(drawing.draw(&mut frame).unwrap(), u64::from(samples));
         assert_eq!(frame.run_pixels, (width * 120) as usize);
         assert_eq!(frame.fill_solid_calls, 2 * width as usize);
@@ -217,7 +236,7 @@ fn the_profile_fills_its_area_once_from_lowest_to_highest() {
             assert_eq!(
                 ground,
                 row(highest).floor() as usize,
-                "{samples} {width}: {x}"
+                "{samples} {width} {stored}: {x}"
             );
         }
     }
@@ -330,6 +349,40 @@ fn landscapes_reproduce_and_wrapped_ones_tile() {
     assert!(!frame.inner.pixels.contains(&Rgb888::RED));
 }
 
+/// Heights generated into a buffer a level at a time are the iterator's, generated depth
+/// first, for any seed, size, roughness and ends; the buffer past them is untouched.
+#[test]
+fn stored_heights_are_the_iterators() {
+    let mut random = 0x2545_F491_4F6C_DD1Du64;
+    let mut next = move || {
+        random ^= random << 13;
+        random ^= random >> 7;
+        random ^= random << 17;
+        random
+    };
+    for _ in 0..200 {
+        let samples = (1 << (1 + next() % 11)) + 1;
+        let roughness = 0.05 + (next() % 95) as f64 / 100.0;
+        let sigma = (next() % 2000) as f64 / 10.0;
+        let ends = [0, 1].map(|_| Real::from_int((next() % 2001) as i32 - 1000));
+        let terrain = Terrain::new(samples as u32, displacement(roughness, sigma, next()))
+            .with_ends(ends[0], ends[1]);
+        let mut buffer = vec![7; samples + 5];
+        let area = Rectangle::new(Point::zero(), Size::new(100, 50));
+        let drawing = terrain
+            .fit_with_heights(area, Rgb888::GREEN, Rgb888::BLUE, &mut buffer)
+            .unwrap();
+        let range = drawing.range();
+        let expected: Vec<i32> = terrain.heights().unwrap().raw().collect();
+        assert_eq!(buffer[..samples], expected[..]);
+        assert!(buffer[samples..].iter().all(|&h| h == 7));
+        let real = |h: i32| Real::from_bits(i64::from(h) << 16);
+        let low = expected.iter().copied().min().map(real);
+        let high = expected.iter().copied().max().map(real);
+        assert_eq!((Some(range.0), Some(range.1)), (low, high));
+    }
+}
+
 #[test]
 fn bad_parameters_are_typed_errors() {
     let parameter = |result: Result<Vec<Real>, Error>| match result {
@@ -389,6 +442,25 @@ fn bad_parameters_are_typed_errors() {
             given: 100
         }))
     );
+    // A profile's buffer too small, and a bad parameter before it.
+    let area = Rectangle::new(Point::zero(), Size::new(10, 5));
+    assert_eq!(
+        Terrain::new(33, displacement(0.5, 1.0, 1))
+            .fit_with_heights(area, Rgb888::GREEN, Rgb888::BLUE, &mut [0; 32])
+            .map(|_| ()),
+        Err(Error::Fit(FitError::BufferTooSmall {
+            needed: 33,
+            given: 32
+        }))
+    );
+    assert!(matches!(
+        Terrain::new(32, displacement(0.5, 1.0, 1))
+            .fit_with_heights(area, Rgb888::GREEN, Rgb888::BLUE, &mut [0; 40])
+            .map(|_| ()),
+        Err(Error::Parameter(
+            ParameterError::SamplesNotPowerOfTwoPlusOne { samples: 32 }
+        ))
+    ));
     let zero = Rectangle::new(Point::zero(), Size::new(0, 5));
     assert!(Terrain::new(9, displacement(0.5, 1.0, 1))
         .fit(zero, Rgb888::GREEN, Rgb888::BLUE)

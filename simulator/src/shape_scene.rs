@@ -242,8 +242,12 @@ pub fn render_terrain(options: &TerrainOptions) -> Result<(), String> {
         .with_ends(options.ends.0, options.ends.1);
     let mut target = options.common.display();
     let started = Instant::now();
+    // The heights kept, so they are generated once (a count past the most a profile has
+    // is refused by the fit, before the buffer is used).
+    let most = (1 << Terrain::MAX_LEVELS) + 1;
+    let mut heights = vec![0; options.samples.min(most) as usize];
     let drawing = terrain
-        .fit(options.common.area(), GROUND, Rgb888::BLACK)
+        .fit_with_heights(options.common.area(), GROUND, Rgb888::BLACK, &mut heights)
         .map_err(failed)?;
     let Ok(samples) = drawing.draw(&mut target);
     let (low, high) = drawing.range();

@@ -48,7 +48,9 @@ impl Displacement {
         Ok(())
     }
 
-    /// σ·rʲ for j = 0..=MAX_TERRAIN_LEVELS, as Q32.
+    /// σ·rʲ for j = 0..=MAX_TERRAIN_LEVELS, as Q32. Out of line: its 128-bit products
+    /// are long on Cortex-M0, and every generator of heights calls it once.
+    #[inline(never)]
     pub(crate) fn sigmas(&self) -> [i64; MAX_TERRAIN_LEVELS as usize + 1] {
         let mut sigmas = [0; MAX_TERRAIN_LEVELS as usize + 1];
         let mut sigma = self.sigma.to_bits();

@@ -47,7 +47,9 @@ impl Terrain {
         self
     }
 
-    /// Checks every parameter; returns the number of levels.
+    /// Checks every parameter; returns the number of levels. Out of line: both ways of
+    /// generating the heights call it.
+    #[inline(never)]
     fn check(&self) -> Result<u32, Error> {
         self.displacement.check()?;
         for end in [self.ends.0, self.ends.1] {
@@ -83,27 +85,99 @@ impl Terrain {
 
     /// The profile fitted to `area`: its lowest and highest heights to the area's bottom
     /// and top rows, its samples spread over the columns; ground in `ground`, sky in `sky`.
+    /// Needs no buffer: the heights are generated once to fit and again to draw (see
+    /// [`fit_with_heights`](Self::fit_with_heights) to generate them once).
     pub fn fit<C: PixelColor>(
         &self,
         area: Rectangle,
         ground: C,
         sky: C,
-    ) -> Result<ProfileDrawing<C>, Error> {
-        if area.size.width == 0 || area.size.height == 0 {
-            return Err(Error::Fit(FitError::ZeroSizeTarget));
-        }
-        let mut range = (i32::MAX, i32::MIN);
-        for height in self.heights()?.raw() {
-            range = (range.0.min(height), range.1.max(height));
-        }
+    ) -> Result<ProfileDrawing<'static, C>, Error> {
+        check_area(area)?;
+        let range = range_of(self.heights()?.raw());
         Ok(ProfileDrawing {
             terrain: *self,
             area,
             range,
             ground,
             sky,
+            stored: None,
         })
     }
+
+    /// Like [`fit`](Self::fit), with the heights kept in the caller's `heights` (at least
+    /// [`samples`](Self::samples) long, 4 bytes a sample): generated once, not once to fit
+    /// and again to draw. The same picture.
+    pub fn fit_with_heights<'a, C: PixelColor>(
+        &self,
+        area: Rectangle,
+        ground: C,
+        sky: C,
+        heights: &'a mut [i32],
+    ) -> Result<ProfileDrawing<'a, C>, Error> {
+        check_area(area)?;
+        let stored = self.generate(heights)?;
+        Ok(ProfileDrawing {
+            terrain: *self,
+            area,
+            range: range_of(stored.iter().copied()),
+            ground,
+            sky,
+            stored: Some(stored),
+        })
+    }
+
+    /// The heights (Q16.16, left to right) written into the first `samples` of `heights`,
+    /// a level at a time, coarsest first. Each midpoint's deviate is keyed by its index,
+    /// so the values are [`heights`](Self::heights)'s, which generates them depth first.
+    fn generate<'a>(&self, heights: &'a mut [i32]) -> Result<&'a [i32], Error> {
+        let levels = self.check()?;
+        let (needed, given) = (self.samples as usize, heights.len());
+        let heights = heights
+            .get_mut(..needed)
+            .ok_or(Error::Fit(FitError::BufferTooSmall { needed, given }))?;
+        let q16 = |end: Real| (end.to_bits() >> 16) as i32;
+        if let Some(first) = heights.first_mut() {
+            *first = q16(self.ends.0);
+        }
+        if let Some(last) = heights.last_mut() {
+            *last = q16(self.ends.1);
+        }
+        let (seeded, sigmas) = (
+            Seeded::new(self.displacement.seed),
+            self.displacement.sigmas(),
+        );
+        // A span of 2^k samples splits at level `levels` − k.
+        for (level, &sigma) in (0..levels).zip(sigmas.iter()) {
+            let span = 1usize << (levels - level);
+            let half = span / 2;
+            let mut left = 0;
+            while let (Some(&l), Some(&r)) = (heights.get(left), heights.get(left + span)) {
+                let mean = (i64::from(l) + i64::from(r)) >> 1;
+                let middle = left + half;
+                if let Some(slot) = heights.get_mut(middle) {
+                    *slot = displaced(mean, sigma, seeded.normal_q16(middle as u32));
+                }
+                left += span;
+            }
+        }
+        Ok(heights)
+    }
+}
+
+/// An area with no pixels is refused.
+fn check_area(area: Rectangle) -> Result<(), Error> {
+    if area.size.width == 0 || area.size.height == 0 {
+        return Err(Error::Fit(FitError::ZeroSizeTarget));
+    }
+    Ok(())
+}
+
+/// The lowest and highest of `heights`.
+fn range_of(heights: impl Iterator<Item = i32>) -> (i32, i32) {
+    heights.fold((i32::MAX, i32::MIN), |(low, high), height| {
+        (low.min(height), high.max(height))
+    })
 }
 
 /// A profile's heights, left to right: an iterator of [`Real`] (see [`Heights::raw`] for
@@ -167,84 +241,65 @@ impl Iterator for Heights {
 /// A profile fitted to an area: an embedded-graphics [`Drawable`] that paints every pixel
 /// of the area once, two `fill_solid` columns (sky above, ground below) per pixel column.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ProfileDrawing<C> {
+pub struct ProfileDrawing<'a, C> {
     terrain: Terrain,
     area: Rectangle,
     /// The lowest and highest heights (Q16.16).
     range: (i32, i32),
     ground: C,
     sky: C,
+    /// The heights, where the caller keeps them ([`Terrain::fit_with_heights`]); else
+    /// they are generated again as the columns are drawn.
+    stored: Option<&'a [i32]>,
 }
 
-impl<C: PixelColor> ProfileDrawing<C> {
+impl<C: PixelColor> ProfileDrawing<'_, C> {
     /// The lowest and highest heights.
     pub fn range(&self) -> (Real, Real) {
         (real_of(self.range.0), real_of(self.range.1))
     }
 
-    /// The row (from the area's top) of the ground's surface at `height`.
-    fn row(&self, height: i64) -> u32 {
-        let (low, high) = (i64::from(self.range.0), i64::from(self.range.1));
-        let rows = i64::from(self.area.size.height) - 1;
-        if high == low {
-            return (rows / 2) as u32;
-        }
-        div_narrow((high - height) * rows + (high - low) / 2, high - low) as u32
-    }
-}
-
-impl<C: PixelColor> Dimensions for ProfileDrawing<C> {
-    fn bounding_box(&self) -> Rectangle {
-        self.area
-    }
-}
-
-impl<C: PixelColor> Drawable for ProfileDrawing<C> {
-    type Color = C;
-    type Output = u64;
-
+    /// The columns from `heights`, left to right (one copy of the loop for either
+    /// source of heights).
+    ///
     /// Column c covers the profile from c·(n−1)/W to (c+1)·(n−1)/W samples (n samples, W
     /// columns); its ground reaches the highest point of the piecewise-linear profile
-    /// there, so no peak is lost when there are more samples than columns. Returns the
-    /// samples generated.
-    fn draw<D>(&self, target: &mut D) -> Result<u64, D::Error>
+    /// there, so no peak is lost when there are more samples than columns. Positions are
+    /// in W-ths of a sample, stepped by additions.
+    #[inline(never)]
+    fn draw_columns<D>(
+        &self,
+        heights: &mut dyn Iterator<Item = i32>,
+        target: &mut D,
+    ) -> Result<u64, D::Error>
     where
         D: DrawTarget<Color = C>,
     {
-        let Ok(heights) = self.terrain.heights() else {
-            return Ok(0);
-        };
-        let mut heights = heights.raw();
         let width = i64::from(self.area.size.width);
         let intervals = i64::from(self.terrain.samples) - 1;
-        // The segment [a, b] of the profile in use: (index, height) of its ends.
-        let mut a = (0i64, i64::from(heights.next().unwrap_or(0)));
-        let mut b = (1i64, i64::from(heights.next().unwrap_or(0)));
-        // The profile at position p/width samples, within segment [a, b] (b one sample
-        // on): at its ends, the ends' heights, with no product or division.
-        let at = |a: (i64, i64), b: (i64, i64), p: i64| {
-            let along = p - a.0 * width;
+        // The segment [a, b] of the profile in use: the position and height of its ends,
+        // and b's index.
+        let mut a = (0i64, heights.next().unwrap_or(0));
+        let mut b = (width, heights.next().unwrap_or(0));
+        let mut b_index = 1;
+        // The profile at position p, within segment [a, b]: at its ends, the ends'
+        // heights, with no product or division; between them, between their heights.
+        let at = |a: (i64, i32), b: (i64, i32), p: i64| {
+            let along = p - a.0;
             if along == 0 {
                 a.1
             } else if along == width {
                 b.1
             } else {
-                a.1 + div_narrow((b.1 - a.1) * along, width)
+                let (low, high) = (i64::from(a.1), i64::from(b.1));
+                (low + div_narrow((high - low) * along, width)) as i32
             }
         };
-        for column in 0..width {
-            let (from, to) = (column * intervals, (column + 1) * intervals);
-            let mut highest = at(a, b, from);
-            // Samples inside the column, moving the segment along.
-            while b.0 * width <= to && b.0 < intervals {
-                highest = highest.max(b.1);
-                a = b;
-                b = (b.0 + 1, i64::from(heights.next().unwrap_or(0)));
-            }
-            highest = highest.max(at(a, b, to.min(b.0 * width)));
-            let row = self.row(highest);
-            let x = self.area.top_left.x + column as i32;
-            let top = self.area.top_left.y;
+        let row_of = RowOf::new(self.range, self.area.size.height);
+        let (x, top) = (self.area.top_left.x, self.area.top_left.y);
+        let mut paint = |column: u32, highest: i32| {
+            let row = row_of.row(highest);
+            let x = x.wrapping_add(column as i32);
             target.fill_solid(
                 &Rectangle::new(Point::new(x, top), Size::new(1, row)),
                 self.sky,
@@ -255,8 +310,104 @@ impl<C: PixelColor> Drawable for ProfileDrawing<C> {
                     Size::new(1, self.area.size.height - row),
                 ),
                 self.ground,
-            )?;
+            )
+        };
+        if intervals == width {
+            // One sample a column: column c spans samples c and c + 1 exactly, and its
+            // highest point is the higher of theirs (what the general loop finds).
+            let mut left = a.1;
+            let mut right = b.1;
+            for column in 0..self.area.size.width {
+                paint(column, left.max(right))?;
+                left = right;
+                right = heights.next().unwrap_or(0);
+            }
+            return Ok(u64::from(self.terrain.samples));
+        }
+        let mut from = 0;
+        for column in 0..self.area.size.width {
+            let to = from + intervals;
+            let mut highest = at(a, b, from);
+            // Samples inside the column, moving the segment along.
+            while b.0 <= to && b_index < intervals {
+                highest = highest.max(b.1);
+                a = b;
+                b = (b.0 + width, heights.next().unwrap_or(0));
+                b_index += 1;
+            }
+            highest = highest.max(at(a, b, to.min(b.0)));
+            from = to;
+            paint(column, highest)?;
         }
         Ok(u64::from(self.terrain.samples))
+    }
+}
+
+/// The row (from the area's top) of the ground's surface at a height:
+/// ⌊((high − height)·(rows − 1) + ⌊(high − low)/2⌋) / (high − low)⌋, the middle row where
+/// the profile is flat.
+#[derive(Debug, Clone, Copy)]
+struct RowOf {
+    range: (i32, i32),
+    rows: i64,
+    /// Every numerator fits 32 bits (one 32-bit product and division a column).
+    narrow: bool,
+}
+
+impl RowOf {
+    fn new(range: (i32, i32), height: u32) -> Self {
+        let rows = i64::from(height) - 1;
+        let span = i64::from(range.1) - i64::from(range.0);
+        Self {
+            range,
+            rows,
+            narrow: i32::try_from(span * rows + span / 2).is_ok() && i32::try_from(span).is_ok(),
+        }
+    }
+
+    #[inline(always)]
+    fn row(&self, height: i32) -> u32 {
+        let (low, high) = self.range;
+        if high == low {
+            return (self.rows / 2) as u32;
+        }
+        if self.narrow {
+            // high − height is within the span, so each term fits as the whole does.
+            let span = high.wrapping_sub(low);
+            let numerator = high.wrapping_sub(height) * self.rows as i32 + span / 2;
+            return (numerator / span) as u32;
+        }
+        let (low, high) = (i64::from(low), i64::from(high));
+        div_narrow(
+            (high - i64::from(height)) * self.rows + (high - low) / 2,
+            high - low,
+        ) as u32
+    }
+}
+
+impl<C: PixelColor> Dimensions for ProfileDrawing<'_, C> {
+    fn bounding_box(&self) -> Rectangle {
+        self.area
+    }
+}
+
+impl<C: PixelColor> Drawable for ProfileDrawing<'_, C> {
+    type Color = C;
+    type Output = u64;
+
+    /// Draws the columns (see [`Terrain::fit`]). Returns the samples used.
+    fn draw<D>(&self, target: &mut D) -> Result<u64, D::Error>
+    where
+        D: DrawTarget<Color = C>,
+    {
+        match self.stored {
+            Some(stored) => self.draw_columns(&mut stored.iter().copied(), target),
+            None => {
+                let Ok(heights) = self.terrain.heights() else {
+                    return Ok(0);
+                };
+                self.draw_columns(&mut heights.raw(), target)
+            }
+        }
     }
 }

@@ -310,17 +310,44 @@ where
     D: DrawTarget,
     D::Color: From<Rgb888>,
 {
-    let area = target.bounding_box();
     let heights = if map {
         draw_landscape(target, displacement, samples)?
     } else {
-        Terrain::new(samples, displacement)
-            .fit(area, look.ink, look.background)?
-            .draw(target)
-            .map_err(DrawError::Target)?
+        draw_profile(target, look, displacement, samples)?
     };
     Ok(Work::Cells(heights))
 }
+
+/// A profile, out of line: its heights (at most [`MAX_BOARD_MAP_CELLS`], as many as a
+/// landscape's) are on the stack only while it draws, generated once into them. A profile
+/// of one sample a column of the OLED takes a buffer of its own size, as a sketch would
+/// (the whole buffer is zeroed first).
+#[inline(never)]
+fn draw_profile<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    displacement: Displacement,
+    samples: u32,
+) -> Result<u64, DrawError<D::Error>>
+where
+    D: DrawTarget,
+{
+    let terrain = Terrain::new(samples, displacement);
+    let mut draw = |heights: &mut [i32]| {
+        terrain
+            .fit_with_heights(target.bounding_box(), look.ink, look.background, heights)?
+            .draw(target)
+            .map_err(DrawError::Target)
+    };
+    if samples as usize <= OLED_PROFILE_SAMPLES {
+        draw(&mut [0; OLED_PROFILE_SAMPLES])
+    } else {
+        draw(&mut [0; MAX_BOARD_MAP_CELLS])
+    }
+}
+
+/// A profile of one sample a column of a 128-pixel display.
+const OLED_PROFILE_SAMPLES: usize = 129;
 
 /// A landscape, out of line: its heights (at most [`MAX_BOARD_MAP_CELLS`], 4.3 KiB) are on
 /// the stack only while it draws, not while a profile does.
