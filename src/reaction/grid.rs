@@ -258,8 +258,25 @@ impl Column {
 
 /// Writes the next state of a row into `out` from the old rows `above`, `centre` and
 /// `below` (all one width long), wrapping at the row's ends.
-#[inline(never)]
 fn update_row(
+    above: &[Cell],
+    centre: &[Cell],
+    below: &[Cell],
+    out: &mut [Cell],
+    coefficients: &Coefficients,
+    carry: &mut Carry,
+) {
+    // Δt = 1, every preset's: a product fewer a cell, and a rate fewer to hold.
+    if coefficients.dt == i32::from(ONE) {
+        update_row_with::<true>(above, centre, below, out, coefficients, carry);
+    } else {
+        update_row_with::<false>(above, centre, below, out, coefficients, carry);
+    }
+}
+
+/// [`update_row`], with Δt = 1 known where `UNIT_DT`.
+#[inline(never)]
+fn update_row_with<const UNIT_DT: bool>(
     above: &[Cell],
     centre: &[Cell],
     below: &[Cell],
@@ -288,12 +305,12 @@ fn update_row(
         .zip(below.iter().skip(1));
     for (cell, ((&up, &mid), &down)) in body.iter_mut().zip(rights) {
         let right = Column::of(up, mid, down);
-        *cell = next_cell(left, here, right, &c, (&mut carry_a, &mut carry_b));
+        *cell = next_cell::<UNIT_DT>(left, here, right, &c, (&mut carry_a, &mut carry_b));
         left = here;
         here = right;
     }
     // The last cell's right neighbour is the first column.
-    *last = next_cell(left, here, first, &c, (&mut carry_a, &mut carry_b));
+    *last = next_cell::<UNIT_DT>(left, here, first, &c, (&mut carry_a, &mut carry_b));
     *carry = Carry {
         a: carry_a,
         b: carry_b,
@@ -306,7 +323,7 @@ fn update_row(
 /// at most 1638), 20·∇² within ±20·2¹⁵; so each term is within ±2³⁰, and the sums for A
 /// and for B, with the carry, within ±2³¹ (the checks in [`GrayScott`] keep them there).
 #[inline(always)]
-fn next_cell(
+fn next_cell<const UNIT_DT: bool>(
     left: Column,
     here: Column,
     right: Column,
@@ -320,7 +337,13 @@ fn next_cell(
     // AB²·Δt in Q30: A·B rounded to Q15, times Δt rounded to Q15 (exact when Δt is 1),
     // times B.
     let ab = (here.a * here.b + half) >> CELL_BITS;
-    let reaction = ((ab * c.dt + half) >> COEFFICIENT_BITS) * here.b;
+    // With Δt = 1 (2¹⁵) the rounding of ab·Δt leaves ab as it was.
+    let ab_dt = if UNIT_DT {
+        ab
+    } else {
+        (ab * c.dt + half) >> COEFFICIENT_BITS
+    };
+    let reaction = ab_dt * here.b;
     let change_a = c.diffusion_a * laplacian_a - reaction + c.feed * (i32::from(ONE) - here.a);
     let change_b = c.diffusion_b * laplacian_b + reaction - c.decay * here.b;
     Cell {
@@ -342,3 +365,59 @@ fn settle(value: i32, change: i32, carry: &mut i32) -> u16 {
 
 /// Fraction bits of a cell.
 const CELL_BITS: u32 = super::model::CELL_FRAC_BITS;
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+
+    use super::*;
+    use crate::reaction::Preset;
+    use std::vec;
+    use std::vec::Vec;
+
+    /// The row step that knows Δt = 1 writes the cells and carries the remainders the
+    /// general one does with Δt = 1, for every preset, on random rows of random widths.
+    #[test]
+    fn unit_time_step_is_the_general_step_at_one() {
+        let mut random = Generator::new(11);
+        let mut cell = || Cell {
+            a: (random.next_u32() % (u32::from(ONE) + 1)) as u16,
+            b: (random.next_u32() % (u32::from(ONE) + 1)) as u16,
+        };
+        for preset in Preset::ALL {
+            let coefficients = preset.model().coefficients().unwrap();
+            assert_eq!(coefficients.dt, i32::from(ONE));
+            for width in [3, 4, 7, 24, 33] {
+                let rows: [Vec<Cell>; 3] =
+                    core::array::from_fn(|_| (0..width).map(|_| cell()).collect());
+                let [above, centre, below] = &rows;
+                let start = Carry { a: 123, b: 32_000 };
+                let (mut general, mut unit) = (vec![Cell::REST; width], vec![Cell::REST; width]);
+                let (mut general_carry, mut unit_carry) = (start, start);
+                update_row_with::<false>(
+                    above,
+                    centre,
+                    below,
+                    &mut general,
+                    &coefficients,
+                    &mut general_carry,
+                );
+                update_row_with::<true>(
+                    above,
+                    centre,
+                    below,
+                    &mut unit,
+                    &coefficients,
+                    &mut unit_carry,
+                );
+                assert_eq!(general, unit, "{} {width}", preset.name());
+                assert_eq!(
+                    (general_carry.a, general_carry.b),
+                    (unit_carry.a, unit_carry.b),
+                    "{} {width}",
+                    preset.name()
+                );
+            }
+        }
+    }
+}
