@@ -361,7 +361,11 @@ impl RowOf {
         Self {
             range,
             rows,
-            narrow: i32::try_from(span * rows + span / 2).is_ok() && i32::try_from(span).is_ok(),
+            narrow: span
+                .checked_mul(rows)
+                .and_then(|product| product.checked_add(span / 2))
+                .is_some_and(|numerator| i32::try_from(numerator).is_ok())
+                && i32::try_from(span).is_ok(),
         }
     }
 
