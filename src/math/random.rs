@@ -76,7 +76,8 @@ impl Seeded {
 
     /// 32 random bits for (the seed, `key`, `word`): counter-based, so any sample of a
     /// picture is computed on its own, in any order, the same on every target. 32-bit
-    /// multiplies only (single instructions on Cortex-M0).
+    /// multiplies only, which Cortex-M0 has in hardware (its 64-bit products are library
+    /// calls; docs/performance.md, The fern against the sketches).
     #[inline]
     pub(crate) const fn hash(self, key: u32, word: u32) -> u32 {
         mix(mix(self.0 ^ key).wrapping_add(word.wrapping_mul(0x9E37_79B9)) ^ 0x85EB_CA6B)

@@ -344,25 +344,26 @@ impl<C: PixelColor> ProfileDrawing<'_, C> {
 }
 
 /// The row (from the area's top) of the ground's surface at a height:
-/// ⌊((high − height)·(rows − 1) + ⌊(high − low)/2⌋) / (high − low)⌋, the middle row where
+/// ⌊((high − height)·last_row + ⌊(high − low)/2⌋) / (high − low)⌋, the middle row where
 /// the profile is flat.
 #[derive(Debug, Clone, Copy)]
 struct RowOf {
     range: (i32, i32),
-    rows: i64,
+    /// The area's last row: its height less one.
+    last_row: i64,
     /// Every numerator fits 32 bits (one 32-bit product and division a column).
     narrow: bool,
 }
 
 impl RowOf {
     fn new(range: (i32, i32), height: u32) -> Self {
-        let rows = i64::from(height) - 1;
+        let last_row = i64::from(height) - 1;
         let span = i64::from(range.1) - i64::from(range.0);
         Self {
             range,
-            rows,
+            last_row,
             narrow: span
-                .checked_mul(rows)
+                .checked_mul(last_row)
                 .and_then(|product| product.checked_add(span / 2))
                 .is_some_and(|numerator| i32::try_from(numerator).is_ok())
                 && i32::try_from(span).is_ok(),
@@ -373,17 +374,17 @@ impl RowOf {
     fn row(&self, height: i32) -> u32 {
         let (low, high) = self.range;
         if high == low {
-            return (self.rows / 2) as u32;
+            return (self.last_row / 2) as u32;
         }
         if self.narrow {
             // high − height is within the span, so each term fits as the whole does.
             let span = high.wrapping_sub(low);
-            let numerator = high.wrapping_sub(height) * self.rows as i32 + span / 2;
+            let numerator = high.wrapping_sub(height) * self.last_row as i32 + span / 2;
             return (numerator / span) as u32;
         }
         let (low, high) = (i64::from(low), i64::from(high));
         div_narrow(
-            (high - i64::from(height)) * self.rows + (high - low) / 2,
+            (high - i64::from(height)) * self.last_row + (high - low) / 2,
             high - low,
         ) as u32
     }
