@@ -164,7 +164,8 @@ fn bench(c: &mut Criterion) {
 }
 
 /// The general engine: ABOP's monopodial tree (figure 2.6, parametric, 3D) at its order,
-/// 1,023 segments, walked, and fitted and drawn into 320×240.
+/// 1,023 segments, walked, and fitted and drawn into 320×240 (walked twice, or once with
+/// the marks kept).
 fn general(c: &mut Criterion) {
     const TREE_SEGMENTS: u64 = 1023;
     let file = tinyfractal::LsysFile::new(include_str!("../data/abop.lsys"));
@@ -186,6 +187,18 @@ fn general(c: &mut Criterion) {
             let drawing = system
                 .fit(framebuffer.bounding_box(), &[Rgb565::WHITE])
                 .unwrap();
+            drawing.draw(&mut framebuffer).unwrap()
+        })
+    });
+    let mut marks = vec![tinyfractal::lsystem::StoredMark::EMPTY; TREE_SEGMENTS as usize];
+    group.bench_function("fit keeping marks + draw 320x240", |b| {
+        b.iter(|| {
+            let system: tinyfractal::ParametricLSystem =
+                tinyfractal::ParametricLSystem::new(black_box(&grammar), 10);
+            let drawing = system
+                .fit_with_marks(framebuffer.bounding_box(), &[Rgb565::WHITE], &mut marks)
+                .unwrap();
+            assert_eq!(drawing.kept_marks(), Some(TREE_SEGMENTS as usize));
             drawing.draw(&mut framebuffer).unwrap()
         })
     });

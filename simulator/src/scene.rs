@@ -182,6 +182,10 @@ pub fn general_system<'g>(
     system
 }
 
+/// The marks a fit of the general engine keeps for its drawing to replay (1 MiB): a
+/// plant that draws more is walked twice, as a board with less RAM walks it.
+const HOST_MARKS: usize = 16_384;
+
 /// Fits and draws a system of the general engine into a `width`×`height` picture (with
 /// a `view`, that window of it: the whole is fitted to the enlarged area and clipped).
 pub fn render_general(
@@ -199,7 +203,8 @@ pub fn render_general(
     } else {
         look.colormap.unwrap_or(&crate::palette::BOOK)
     };
-    let drawing = system.fit(fitted_area(width, height, view)?, palette)?;
+    let mut marks = vec![tinyfractal::lsystem::StoredMark::EMPTY; HOST_MARKS];
+    let drawing = system.fit_with_marks(fitted_area(width, height, view)?, palette, &mut marks)?;
     let fit = started.elapsed();
     // The host always sorts surfaces by depth.
     let mut depth = vec![0u16; width as usize * height as usize];

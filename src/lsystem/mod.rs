@@ -48,6 +48,7 @@ pub use parametric::context::MAX_CONTEXT_SLOTS;
 pub use parametric::draw::{ParametricDrawing, ParametricLSystem, ParametricSegments};
 pub use parametric::environment::{Environment, TurtleState};
 pub use parametric::grammar::ParametricGrammar;
+pub use parametric::kept::StoredMark;
 pub use parametric::marks::{Mark, Marks3, Segments3};
 pub use parametric::space::Segment3;
 pub use parametric::surface::{MAX_OPEN_POLYGONS, MAX_POLYGON_VERTICES};

@@ -10,6 +10,7 @@
 
 use super::real::Real;
 use super::trig::{binary_angle_of_radians, BinaryAngle, ONE_Q30};
+use super::wide::{div_u64_by_u32, isqrt_u64};
 
 /// A vector with Q30 components (2³⁰ = 1.0).
 pub(crate) type Unit = [i32; 3];
@@ -68,7 +69,7 @@ const SHORTEST: i64 = 1 << 10;
 /// if it is shorter than [`SHORTEST`].
 fn normalised(v: Unit) -> Option<Unit> {
     let squared = squared_length(v);
-    let length = i64::try_from(squared.isqrt())
+    let length = i64::try_from(isqrt_u64(squared))
         .ok()
         .filter(|&l| l >= SHORTEST)?;
     let over = Reciprocal::of(length.unsigned_abs());
@@ -92,7 +93,8 @@ struct Reciprocal {
 impl Reciprocal {
     /// The reciprocal of `length` (at least [`SHORTEST`], below 2³²).
     fn of(length: u64) -> Self {
-        let inverse = (1u64 << 62) / length.max(1);
+        // Below 2³², as the length is: a 64-by-32 division.
+        let inverse = div_u64_by_u32(1 << 62, u32::try_from(length).unwrap_or(u32::MAX).max(1));
         Self {
             length,
             high: inverse >> 32,
@@ -205,7 +207,7 @@ impl Frame3 {
         let Some(axis) = normalised(across) else {
             return;
         };
-        let sine = i64::try_from(squared_length(across).isqrt()).unwrap_or(i64::MAX);
+        let sine = i64::try_from(isqrt_u64(squared_length(across))).unwrap_or(i64::MAX);
         // strength (Q32) · sine (Q30) >> 32: radians in Q30.
         let radians = clamp(((i128::from(strength.to_bits()) * i128::from(sine)) >> 32) as i64);
         let angle = BinaryAngle(binary_angle_of_radians(radians, 30));

@@ -146,11 +146,25 @@ pub(crate) struct BinaryAngle(pub(crate) u32);
 impl BinaryAngle {
     const QUARTER: u32 = 1 << 30;
 
-    /// From decimal degrees given as Q32 bits (any sign, any size), rounded to nearest.
+    /// From decimal degrees given as Q32 bits (any sign, any size), rounded to nearest
+    /// (halves away from zero).
+    ///
+    /// A degree is 2³²/360 binary units, so the angle is ±⌊(|d| + 180) / 360⌋ for Q32
+    /// bits d, taken modulo 2³² (a full turn). ⌊x / 360⌋ = ⌊⌊x / 8⌋ / 45⌋, and the low
+    /// 32 bits of a quotient by 45 need only the high word's remainder: three 32-bit
+    /// divisions instead of a 64-bit one (a library call on Cortex-M).
     pub(crate) fn from_degrees_bits(degrees_q32: i64) -> Self {
-        let turns = super::wide::div_round(i128::from(degrees_q32), 360);
-        // Wrapping to u32 is the reduction modulo one full turn.
-        Self(turns as u32)
+        // |d| + 180 ≤ 2⁶³ + 180: no overflow.
+        let eighths = (degrees_q32.unsigned_abs() + 180) >> 3;
+        let high = (eighths >> 32) as u32;
+        let middle = ((high % 45) << 16) | ((eighths >> 16) as u32 & 0xFFFF);
+        let low = ((middle % 45) << 16) | (eighths as u32 & 0xFFFF);
+        let turns = ((middle / 45) << 16).wrapping_add(low / 45);
+        Self(if degrees_q32 < 0 {
+            turns.wrapping_neg()
+        } else {
+            turns
+        })
     }
 
     /// Cosine and sine in Q30: table lookup with linear interpolation (error < 3·10⁻⁷).
@@ -286,6 +300,44 @@ fn quarter_sine(position: u32) -> i32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Degrees become binary angles as their definition in 128 bits has it: d·2³²/360
+    /// (d in Q32 bits) rounded half away from zero, modulo 2³²; random values of every
+    /// size, and the halves and their neighbours, where rounding decides.
+    #[test]
+    fn degrees_are_rounded_binary_angles() {
+        use proptest::prelude::*;
+        let by_definition = |d: i64| {
+            let (n, half) = (i128::from(d).unsigned_abs(), 180u128);
+            let q = ((n + half) / 360) as u32;
+            if d < 0 {
+                q.wrapping_neg()
+            } else {
+                q
+            }
+        };
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let degrees = (any::<i64>(), 0u32..64).prop_map(|(v, s)| v >> s);
+        runner
+            .run(&degrees, |d| {
+                prop_assert_eq!(BinaryAngle::from_degrees_bits(d).0, by_definition(d));
+                Ok(())
+            })
+            .unwrap();
+        let halves = (any::<i64>(), 2u32..64).prop_map(|(v, s)| (v >> s) / 360 * 360 + 180);
+        runner
+            .run(&halves, |h| {
+                for d in [h - 1, h, h + 1, -h - 1, -h, -h + 1] {
+                    prop_assert_eq!(BinaryAngle::from_degrees_bits(d).0, by_definition(d));
+                }
+                Ok(())
+            })
+            .unwrap();
+        for d in [0, 1, -1, 180, -180, 360, i64::MAX, i64::MIN, i64::MIN + 1] {
+            assert_eq!(BinaryAngle::from_degrees_bits(d).0, by_definition(d), "{d}");
+        }
+        assert_eq!(BinaryAngle::from_degrees_bits(90 << 32).0, 1 << 30);
+    }
 
     fn q30(v: f64) -> f64 {
         v * f64::from(ONE_Q30)

@@ -41,6 +41,70 @@ pub(crate) fn div_narrow(n: i64, d: i64) -> i64 {
     }
 }
 
+/// ⌊`n` / `d`⌋ for a 64-bit `n` and a 32-bit `d` (not 0) from 32-bit divisions: one
+/// instruction each on Cortex-M3 and M4, where a 64-bit division is a long library call.
+pub(crate) fn div_u64_by_u32(n: u64, d: u32) -> u64 {
+    let (high, low) = ((n >> 32) as u32, n as u32);
+    let (quotient, remainder) = (high / d, high % d);
+    (u64::from(quotient) << 32) | u64::from(div_with_remainder(remainder, low, d))
+}
+
+/// ⌊(`r`·2³² + `low`) / `d`⌋ for `r` < `d` (so the quotient fits 32 bits): Knuth's
+/// algorithm D in base 2¹⁶ as Hacker's Delight gives it (`divlu`), each quotient digit
+/// estimated by one 32-bit division and corrected at most twice.
+fn div_with_remainder(r: u32, low: u32, d: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let shift = d.leading_zeros();
+    let d = d << shift;
+    let (d1, d0) = (d >> 16, d & 0xFFFF);
+    let top = if shift == 0 {
+        r
+    } else {
+        (r << shift) | (low >> (32 - shift))
+    };
+    let low = low << shift;
+    let (low1, low0) = (low >> 16, low & 0xFFFF);
+    let digit = |numerator: u32, next: u32| {
+        let mut q = numerator / d1;
+        let mut rest = numerator - q * d1;
+        while q >= B || q * d0 > (rest << 16) + next {
+            q -= 1;
+            rest += d1;
+            if rest >= B {
+                break;
+            }
+        }
+        q
+    };
+    let q1 = digit(top, low1);
+    let middle = (top << 16)
+        .wrapping_add(low1)
+        .wrapping_sub(q1.wrapping_mul(d));
+    let q0 = digit(middle, low0);
+    (q1 << 16) + q0
+}
+
+/// ⌊√`n`⌋ for any u64: a 32-bit root of its top bits, one Newton step with a
+/// [`div_u64_by_u32`] division, and at most a few steps down (no 64-bit division, which
+/// the library's root takes).
+pub(crate) fn isqrt_u64(n: u64) -> u64 {
+    let Ok(small) = u32::try_from(n) else {
+        // n has 33 to 64 bits: its top 31 or 32 bits, an even shift away.
+        let shift = (64 - n.leading_zeros() - 31) & !1;
+        let top = (n >> shift) as u32;
+        // Above √n: (t + 1)² > top ≥ n / 2^shift. At most 2³² − 1 still is (√n < 2³²).
+        let above = ((u64::from(top.isqrt()) + 1) << (shift / 2)).min(u64::from(u32::MAX));
+        let divisor = above as u32;
+        // Newton's step from above stays at or above ⌊√n⌋, within 2 of it here.
+        let mut root = (above + div_u64_by_u32(n, divisor)) / 2;
+        while root.checked_mul(root).is_none_or(|square| square > n) {
+            root -= 1;
+        }
+        return root;
+    };
+    u64::from(small.isqrt())
+}
+
 /// The high word of a·x + b·y, exact (a dot product's, as a 2×2 map's row takes it):
 /// two `smull`s and an add where there is a long multiply; on cores without one (ARMv6-M)
 /// eight 16×16 products whose middle terms are added into the sum once, cheaper than two
@@ -381,6 +445,66 @@ mod tests {
         assert_eq!(div_narrow(min, -1), 1 << 31);
         assert_eq!(div_narrow(-7, 2), -3);
         assert_eq!(div_narrow(7, -2), -3);
+    }
+
+    /// The 64-by-32 division is `/` on u64: random values of every size, divisors of
+    /// every size, and the edges.
+    #[test]
+    fn division_by_32_bits_is_the_wide_one() {
+        use proptest::prelude::*;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let n = (any::<u64>(), 0u32..64).prop_map(|(v, s)| v >> s);
+        let d = (1u32.., 0u32..32).prop_map(|(v, s)| (v >> s).max(1));
+        runner
+            .run(&(n, d), |(n, d)| {
+                prop_assert_eq!(div_u64_by_u32(n, d), n / u64::from(d));
+                Ok(())
+            })
+            .unwrap();
+        for n in [0, 1, u64::MAX, 1 << 62, (1 << 32) - 1, 1 << 32] {
+            for d in [1, 2, 3, 0xFFFF, 0x1_0000, 0x8000_0000, u32::MAX] {
+                assert_eq!(div_u64_by_u32(n, d), n / u64::from(d), "{n} / {d}");
+            }
+        }
+    }
+
+    /// The root is the library's: random values of every size, squares and their
+    /// neighbours, and the edges.
+    #[test]
+    fn the_root_is_the_library_root() {
+        use proptest::prelude::*;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let n = (any::<u64>(), 0u32..64).prop_map(|(v, s)| v >> s);
+        runner
+            .run(&n, |n| {
+                prop_assert_eq!(isqrt_u64(n), n.isqrt());
+                Ok(())
+            })
+            .unwrap();
+        let roots = (any::<u32>(), 0u32..32).prop_map(|(v, s)| u64::from(v >> s));
+        runner
+            .run(&roots, |r| {
+                let square = r * r;
+                for n in [square.saturating_sub(1), square, square + 1, square + 2 * r] {
+                    prop_assert_eq!(isqrt_u64(n), n.isqrt());
+                }
+                Ok(())
+            })
+            .unwrap();
+        for n in [
+            0,
+            1,
+            2,
+            3,
+            4,
+            u64::MAX,
+            u64::MAX - 1,
+            1 << 32,
+            (1 << 32) - 1,
+            1 << 62,
+        ] {
+            assert_eq!(isqrt_u64(n), n.isqrt(), "{n}");
+        }
     }
 
     #[test]

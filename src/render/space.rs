@@ -41,9 +41,26 @@ pub(crate) struct SpaceFit {
 
 /// The extent of a projected picture.
 #[derive(Debug, Clone, Copy)]
-struct Extent {
+pub(crate) struct Extent {
     low: Seen,
     high: Seen,
+}
+
+impl Extent {
+    /// Widens `extent` (`None`: nothing yet) to hold `seen`.
+    #[inline]
+    pub(crate) fn include(extent: &mut Option<Self>, seen: Seen) {
+        let e = extent.get_or_insert(Self {
+            low: seen,
+            high: seen,
+        });
+        e.low.x = e.low.x.min(seen.x);
+        e.low.y = e.low.y.min(seen.y);
+        e.low.depth = e.low.depth.min(seen.depth);
+        e.high.x = e.high.x.max(seen.x);
+        e.high.y = e.high.y.max(seen.y);
+        e.high.depth = e.high.depth.max(seen.depth);
+    }
 }
 
 /// The projected extent of `points`, or `None` for a picture of nothing.
@@ -55,17 +72,7 @@ fn extent<const N: usize>(
     let mut extent: Option<Extent> = None;
     for group in points {
         for p in group? {
-            let seen = projection.project(p, eye);
-            let e = extent.get_or_insert(Extent {
-                low: seen,
-                high: seen,
-            });
-            e.low.x = e.low.x.min(seen.x);
-            e.low.y = e.low.y.min(seen.y);
-            e.low.depth = e.low.depth.min(seen.depth);
-            e.high.x = e.high.x.max(seen.x);
-            e.high.y = e.high.y.max(seen.y);
-            e.high.depth = e.high.depth.max(seen.depth);
+            Extent::include(&mut extent, projection.project(p, eye));
         }
     }
     Ok(extent)
@@ -149,7 +156,7 @@ impl SpaceFit {
 
     /// The fit of a measured extent (`None`: a picture of nothing). Not generic: one copy
     /// whatever the walks that measured it.
-    fn from_extent(
+    pub(crate) fn from_extent(
         seen: Option<Extent>,
         projection: Projection,
         eye: Option<Eye>,
@@ -218,16 +225,21 @@ impl SpaceFit {
         let level = into * i128::from(DEPTH_LEVELS - 1) / i128::from(span);
         u16::try_from(level.clamp(0, i128::from(DEPTH_LEVELS - 1))).unwrap_or(0)
     }
-    /// Where a point of space lands in Q16 pixels on the fill rule's grid (pixel (x, y)
-    /// covers [x, x + 1) × [y, y + 1), so a point [`place`](Self::place) puts on a pixel
-    /// lands on its centre), and how it is seen.
-    pub(crate) fn place_subpixel(&self, p: [Real; 3]) -> (SubPixel, Seen) {
-        let seen = self.projection.project(p, self.eye);
+
+    /// Where a seen point lands in Q16 pixels on the fill rule's grid (pixel (x, y) covers
+    /// [x, x + 1) × [y, y + 1), so a point [`place`](Self::place) puts on a pixel lands on
+    /// its centre).
+    pub(crate) fn subpixel(&self, seen: Seen) -> SubPixel {
         let scaled = |v: Real| v.checked_mul(self.scale).unwrap_or(Real::ZERO);
         let q16 = |v: Real| (v.to_bits() + (1 << 31)) >> 16;
         let x = self.origin.0.saturating_add(scaled(seen.x));
         let y = self.origin.1.saturating_sub(scaled(seen.y));
-        ((q16(x), q16(y)), seen)
+        (q16(x), q16(y))
+    }
+
+    /// The projection and, for a perspective, the eye it is seen with.
+    pub(crate) const fn view(&self) -> (Projection, Option<Eye>) {
+        (self.projection, self.eye)
     }
 
     /// Pixels a picture unit (across the screen; a perspective's at its middle depth).

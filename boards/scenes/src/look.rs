@@ -9,7 +9,7 @@ use tinyfractal::{
     error::DrawError,
     escape::{ReferencePoint, Shading, Tier, ZoomFrame, ZoomLine},
     ifs::IfsPicture,
-    lsystem::{Cell, DEFAULT_DEPTH, DEFAULT_STACK},
+    lsystem::{Cell, StoredMark, DEFAULT_DEPTH, DEFAULT_STACK},
     math::DeepCoord,
     noise::{Octaves, Texture},
     render::{Colors, Gradient, Orientation, Shade},
@@ -920,12 +920,18 @@ where
 /// Most colours of an entry's `colors:` line a board keeps.
 const MAX_PLANT_COLORS: usize = 16;
 
+/// The marks a still plant's fit keeps for its drawing to replay, instead of walking its
+/// derivation twice: the monopodial tree's 1,023 lines and the leafy bush's 420 lines and
+/// 135 leaves (540 records) fit ([`StoredMark::BYTES`] each, on the stack).
+const PLANT_MARKS: usize = 1_100;
+
 impl GeneralEntry {
     /// Draws the system over the whole of `target`, cleared to `look.background` first,
     /// in its colours (its `colors:` line, else the catalogue's `BOOK`) with its surfaces
     /// lit, in walk order (no depth buffer); a swaying entry's frames one after another.
-    /// Its grammar (12 KiB) and a walk (about 8 KiB, with no room for contexts: the scenes
-    /// have none) are on the stack while it draws: a scene for cores with the RAM for them.
+    /// Its grammar (12 KiB), a walk (about 8 KiB, with no room for contexts: the scenes
+    /// have none) and, for a still plant, the marks its fit keeps (70 KiB) are on the stack
+    /// while it draws: a scene for cores with the RAM for them.
     pub fn draw<D>(
         &self,
         target: &mut D,
@@ -968,7 +974,8 @@ impl GeneralEntry {
         let area = target.bounding_box();
         if self.frames == 0 {
             target.clear(look.background).map_err(DrawError::Target)?;
-            let drawing = system.fit(area, palette)?;
+            let mut marks = [StoredMark::EMPTY; PLANT_MARKS];
+            let drawing = system.fit_with_marks(area, palette, &mut marks)?;
             let stats = drawing.try_draw_lit(target, None)?;
             return Ok(Work::Segments(stats.segments));
         }

@@ -267,6 +267,10 @@ fn general_table(records: &[Value], results: &Value) -> String {
             "walk + 3D turtle (`Segments3`)",
         ),
         ("fit + draw 320x240", "fit + draw into 320×240"),
+        (
+            "fit keeping marks + draw 320x240",
+            "fit keeping its marks + draw into 320×240",
+        ),
     ] {
         let ns = number(times, &format!("monopodial-tree-order-10 / {key}")).unwrap_or(0);
         table.push_str(&format!(

@@ -10,6 +10,7 @@ use super::action::command;
 use super::context::MAX_CONTEXT_SLOTS;
 use super::environment::{Environment, Held};
 use super::grammar::ParametricGrammar;
+use super::kept::{measure_keeping, Projected, Replay, StoredMark};
 use super::marks::{MarkPoints, Marks3, Segments3, WalkOptions};
 use super::paint::{paint, Flat, Lighting, Lit};
 use super::tropism::{Tropism, Wind};
@@ -236,13 +237,24 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
             area,
             DEFAULT_MARGIN,
         )?;
-        Ok(ParametricDrawing {
+        Ok(self.placed(space, palette, None))
+    }
+
+    /// This system's drawing placed in space by `space`, replaying `kept` marks if any.
+    fn placed<P>(
+        &self,
+        space: SpaceFit,
+        palette: P,
+        kept: Option<&'g [StoredMark]>,
+    ) -> ParametricDrawing<'g, P, DEPTH, STACK, SLOTS> {
+        ParametricDrawing {
             system: *self,
             start: Start::default(),
             palette,
             bounding_box: space.bounding_box,
             space: Some(space),
-        })
+            kept,
+        }
     }
 
     /// Fits the plant as it sways in `wind` over a loop of `frames` (the union of every
@@ -270,13 +282,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
             &area,
             DEFAULT_MARGIN,
         )?;
-        Ok(ParametricDrawing {
-            system: swaying(0),
-            start: Start::default(),
-            palette,
-            bounding_box: space.bounding_box,
-            space: Some(space),
-        })
+        Ok(swaying(0).placed(space, palette, None))
     }
 
     /// Which way the first heading points on screen.
@@ -316,6 +322,43 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         }
     }
 
+    /// [`fit`](Self::fit), keeping what the measuring walk draws in `marks` (a buffer of
+    /// the caller's: one [`StoredMark`] a line, 1 + ⌊n / 2⌋ a polygon of n vertices), so
+    /// that the drawing replays them instead of walking the derivation again: about half
+    /// the work of a fit and a draw, for [`StoredMark::BYTES`] of RAM a record. The same
+    /// pixels either way. Where the marks outgrow the buffer, or the system is drawn in
+    /// 2D or in perspective (whose eye is placed from a first walk), the drawing walks as
+    /// [`fit`](Self::fit)'s does.
+    pub fn fit_with_marks<'p, C: PixelColor>(
+        &self,
+        area: Rectangle,
+        palette: &'p [C],
+        marks: &'g mut [StoredMark],
+    ) -> Result<ParametricDrawing<'g, Colors<'p, C>, DEPTH, STACK, SLOTS>, Error> {
+        if area.size.width == 0 || area.size.height == 0 {
+            return Err(Error::Fit(FitError::ZeroSizeTarget));
+        }
+        let palette = colors(palette)?;
+        match self.projection() {
+            Some(projection) if !matches!(projection, Projection::Perspective { .. }) => {
+                let (extent, written) =
+                    measure_keeping(&mut self.walk_3d(), projection, &mut *marks)?;
+                let space = SpaceFit::from_extent(
+                    extent,
+                    projection,
+                    None,
+                    self.depth_cue,
+                    &area,
+                    DEFAULT_MARGIN,
+                )?;
+                let kept: &'g [StoredMark] = marks;
+                Ok(self.placed(space, palette, written.and_then(|n| kept.get(..n))))
+            }
+            Some(projection) => self.fit_3d(projection, &area, palette),
+            None => self.fit_2d(&area, palette),
+        }
+    }
+
     /// [`fit`](Self::fit) in 2D, out of line (its walks off the 3D path's stack).
     #[inline(never)]
     fn fit_2d<P>(
@@ -333,6 +376,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
             palette,
             bounding_box: pixel_box(self.orientation, pixels, start),
             space: None,
+            kept: None,
         })
     }
 }
@@ -351,6 +395,9 @@ pub struct ParametricDrawing<
     palette: P,
     bounding_box: Rectangle,
     space: Option<SpaceFit>,
+    /// The marks the fit kept, to replay instead of walking (see
+    /// [`ParametricLSystem::fit_with_marks`]).
+    kept: Option<&'g [StoredMark]>,
 }
 
 impl<P, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
@@ -361,7 +408,14 @@ impl<P, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     #[must_use]
     pub const fn with_tropism(mut self, tropism: Option<Tropism>) -> Self {
         self.system = self.system.with_tropism(tropism);
+        self.kept = None;
         self
+    }
+
+    /// How many records of the fit's buffer hold the marks this drawing replays (see
+    /// [`ParametricLSystem::fit_with_marks`]); `None` where it walks the derivation instead.
+    pub fn kept_marks(&self) -> Option<usize> {
+        self.kept.map(<[StoredMark]>::len)
     }
 
     /// The same placement, the plant at `order` grown `fraction` of the way from the order
@@ -370,6 +424,7 @@ impl<P, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
     pub const fn growing(mut self, order: u32, fraction: Real) -> Self {
         self.system.order = order;
         self.system = self.system.growing(fraction);
+        self.kept = None;
         self
     }
 }
@@ -425,9 +480,16 @@ impl<P: Palette, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         T: Layered<Color = P::Color>,
         L: Lighting<P::Color>,
     {
-        let mut marks = self.system.walk_3d();
-        let (lines, polygons) =
-            paint::<_, _, L, DEPTH, STACK, SLOTS>(space, target, &mut marks, &self.palette)?;
+        let (lines, polygons) = match self.kept {
+            Some(records) => {
+                paint::<_, _, L>(space, target, &mut Replay::new(records), &self.palette)?
+            }
+            None => {
+                let mut marks = self.system.walk_3d();
+                let mut seen = Projected::new(&mut marks, space.view());
+                paint::<_, _, L>(space, target, &mut seen, &self.palette)?
+            }
+        };
         Ok(WalkStats {
             segments: lines,
             polygons,

@@ -39,6 +39,7 @@ pub(crate) mod environment;
 pub(crate) mod expansion;
 pub(crate) mod expr;
 pub(crate) mod grammar;
+pub(crate) mod kept;
 pub(crate) mod marks;
 pub(crate) mod matrix;
 pub(crate) mod paint;

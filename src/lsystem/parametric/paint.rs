@@ -4,7 +4,7 @@
 
 use heapless::Vec;
 
-use super::marks::{Mark, Marks3};
+use super::kept::{SeenMark, SeenMarks};
 use super::surface::MAX_POLYGON_VERTICES;
 use crate::error::DrawError;
 use crate::math::Real;
@@ -70,13 +70,13 @@ fn mean_depth(seen: &[Seen]) -> Real {
     Real::from_bits(i64::try_from(sum / count).unwrap_or(0))
 }
 
-/// Draws every mark of `marks`, fitted by `space`, into `target` in `palette`'s colours
-/// (by colour index, or by depth with depth cue); surfaces lit by `L`. Returns the lines and
-/// the polygons drawn.
-pub(crate) fn paint<T, P, L, const DEPTH: usize, const STACK: usize, const SLOTS: usize>(
+/// Draws every mark of `marks` (seen through `space`'s projection), fitted by `space`,
+/// into `target` in `palette`'s colours (by colour index, or by depth with depth cue);
+/// surfaces lit by `L`. Returns the lines and the polygons drawn.
+pub(crate) fn paint<T, P, L>(
     space: &SpaceFit,
     target: &mut T,
-    marks: &mut Marks3<'_, DEPTH, STACK, SLOTS>,
+    marks: &mut impl SeenMarks,
     palette: &P,
 ) -> Result<(u64, u64), DrawError<T::Error>>
 where
@@ -88,15 +88,18 @@ where
     let scale = space.scale();
     let (mut lines, mut polygons) = (0u64, 0u64);
     let mut last_end = None;
-    while let Some(mark) = marks.next_mark() {
+    while let Some(mark) = marks.next_seen() {
         match mark? {
-            Mark::Line { segment, width } => {
+            SeenMark::Line {
+                ends: &[start, end],
+                width,
+                color,
+            } => {
                 lines += 1;
                 let pixels = width.checked_mul(scale).map_or(0, |w| w.to_bits() >> 16);
-                let ((from, near), (to, far)) =
-                    (space.place(segment.start), space.place(segment.end));
-                let depth = middle(near, far);
-                let (value, max) = space.color_value(depth, u16::from(segment.color));
+                let (from, to) = (space.pixel(start), space.pixel(end));
+                let depth = middle(start.depth, end.depth);
+                let (value, max) = space.color_value(depth, u16::from(color));
                 let color = palette.color(value, max);
                 if T::KEEPS_DEPTH {
                     target.at_depth(space.buffer_depth(depth));
@@ -106,27 +109,23 @@ where
                         .map_err(DrawError::Target)?;
                     last_end = Some(to);
                 } else {
-                    let (a, _) = space.place_subpixel(segment.start);
-                    let (b, _) = space.place_subpixel(segment.end);
+                    let (a, b) = (space.subpixel(start), space.subpixel(end));
                     fill_thick_line(target, (a, b), pixels, color, &clip)
                         .map_err(DrawError::Target)?;
                     last_end = None;
                 }
             }
-            Mark::Polygon { vertices, color } => {
+            SeenMark::Polygon { vertices, color } => {
                 polygons += 1;
                 let mut points: Vec<SubPixel, MAX_POLYGON_VERTICES> = Vec::new();
-                let mut seen: Vec<Seen, MAX_POLYGON_VERTICES> = Vec::new();
                 for &vertex in vertices {
-                    let (point, view) = space.place_subpixel(vertex);
                     // Cannot fail: a polygon has at most MAX_POLYGON_VERTICES vertices.
-                    let _ = points.push(point);
-                    let _ = seen.push(view);
+                    let _ = points.push(space.subpixel(vertex));
                 }
-                let depth = mean_depth(&seen);
+                let depth = mean_depth(vertices);
                 let (value, max) = space.color_value(depth, u16::from(color));
                 let light = if L::LIT {
-                    brightness(normal(&seen))
+                    brightness(normal(vertices))
                 } else {
                     255
                 };
