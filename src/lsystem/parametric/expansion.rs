@@ -89,14 +89,24 @@ pub(crate) enum Expansion {
 impl ParametricGrammar {
     /// The module at `at` of a frame whose predecessor bound `bound`, with its values.
     pub(super) fn read(&self, at: u16, bound: &Values, query: Query) -> Result<Neighbour, Error> {
+        let mut values = Values::default();
+        let symbol = self.read_into(at, bound, query, &mut values)?;
+        Ok(Neighbour { symbol, values })
+    }
+
+    /// [`read`](Self::read), the values written into `values` (a walk's caller keeps
+    /// them, instead of each module's passing up by value): the module's symbol.
+    pub(super) fn read_into(
+        &self,
+        at: u16,
+        bound: &Values,
+        query: Query,
+        values: &mut Values,
+    ) -> Result<u8, Error> {
         let module = self.module(at);
-        let values = self
-            .values(&module, bound.as_slice(), query)
+        self.values_into(&module, bound.as_slice(), query, values)
             .map_err(|problem| arithmetic(module.symbol, problem))?;
-        Ok(Neighbour {
-            symbol: module.symbol,
-            values,
-        })
+        Ok(module.symbol)
     }
 
     /// How `module`, read at `at` in the frame `parent`, expands between `left` and
@@ -163,14 +173,15 @@ impl ParametricGrammar {
 }
 
 impl ParametricGrammar {
-    /// The values of a module's parameters, given its production's bound ones.
-    pub(super) fn values(
+    /// The values of a module's parameters, given its production's bound ones, written
+    /// into `values`.
+    fn values_into(
         &self,
         module: &Module,
         bound: &[Real],
         query: Query,
-    ) -> Result<Values, EvalError> {
-        let mut values = Values::default();
+        values: &mut Values,
+    ) -> Result<(), EvalError> {
         for index in 0..usize::from(module.arguments) {
             let code = self
                 .arguments
@@ -183,7 +194,7 @@ impl ParametricGrammar {
             }
         }
         values.count = module.arguments;
-        Ok(values)
+        Ok(())
     }
 
     /// The parameters a production binds (its contexts' and its predecessor's, in order)

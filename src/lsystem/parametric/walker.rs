@@ -215,26 +215,45 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
         top.position += 1;
         // The frame is copied only where an expansion needs it, not for every module.
         let (drawn, growing) = (top.drawn, top.growing);
-        let module = grammar.read(at, &top.bound, query)?;
-        if module.symbol == b'%' {
+        // Read straight into the caller's module: most are handed out as they are read,
+        // and a module is a copy of 40 bytes each time it moves.
+        let symbol = grammar.read_into(at, &top.bound, query, &mut out.values)?;
+        if symbol == b'%' {
             self.cut();
             return Ok(Advanced::Again);
         }
+        let read = |out: &DerivedModule| Neighbour {
+            symbol,
+            values: out.values,
+        };
         if level >= order || drawn {
             if !drawn && self.interpret {
                 if let Some(&parent) = self.frames.last() {
-                    if self.interpreted(&module, at, &parent, query)? {
+                    if self.interpreted(&read(out), at, &parent, query)? {
                         return Ok(Advanced::Again);
                     }
                 }
             }
-            *out = self.grown(derived(&module), growing);
+            out.symbol = char::from(symbol);
+            if self.growth.is_some() {
+                *out = self.grown(*out, growing);
+            }
+            return Ok(Advanced::Module);
+        }
+        let careful = self.contextual || self.growth.is_some();
+        // Most modules of a production no production rewrites (`F`, `[`, the turns): they
+        // are what they are at every level below, without a look at the productions (nor a
+        // copy of the frame they are in).
+        let rewritten = grammar.may_rewrite(Rewrite::Derivation, symbol);
+        if !careful && !rewritten && !self.interpret {
+            out.symbol = char::from(symbol);
             return Ok(Advanced::Module);
         }
         let Some(&parent) = self.frames.last() else {
             return Ok(Advanced::End);
         };
-        if self.contextual || self.growth.is_some() {
+        if careful {
+            let module = read(out);
             return Ok(
                 match self.expand_with_care(&module, at, &parent, (level, order), query)? {
                     Some(module) => {
@@ -245,15 +264,14 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
                 },
             );
         }
-        // Most modules of a production no production rewrites (`F`, `[`, the turns): they
-        // are what they are at every level below, without a look at the productions.
-        if !grammar.may_rewrite(Rewrite::Derivation, module.symbol) {
-            if self.interpret && self.interpreted(&module, at, &parent, query)? {
+        if !rewritten {
+            if self.interpret && self.interpreted(&read(out), at, &parent, query)? {
                 return Ok(Advanced::Again);
             }
-            *out = derived(&module);
+            out.symbol = char::from(symbol);
             return Ok(Advanced::Module);
         }
+        let module = read(out);
         match grammar.expand(&module, at, &parent, (None, None), query)? {
             Expansion::Successor(frame) | Expansion::Kept(frame) => {
                 // Cannot fail: `new` checked that order + 1 <= DEPTH.
