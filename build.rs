@@ -17,6 +17,7 @@ use std::path::PathBuf;
 
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_long_multiply)");
+    println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_hardware_divide)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_corpus)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_rounding_multiply)");
     println!("cargo:rerun-if-changed=build.rs");
@@ -46,6 +47,11 @@ fn main() {
     let target = env::var("TARGET").unwrap_or_default();
     if target.starts_with("thumbv6m") || target.starts_with("thumbv8m.base") {
         println!("cargo:rustc-cfg=tinyfractal_no_long_multiply");
+    }
+    // ARMv6-M divides in library calls even for 32 bits: there a 64-bit division is one
+    // call where the 32-bit way is several.
+    if target.starts_with("thumbv6m") {
+        println!("cargo:rustc-cfg=tinyfractal_no_hardware_divide");
     }
     // ARMv7E-M (Cortex-M4/M7) has the DSP extension's rounding high-word multiplies.
     if target.starts_with("thumbv7em") {

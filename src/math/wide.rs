@@ -105,6 +105,26 @@ pub(crate) fn isqrt_u64(n: u64) -> u64 {
     u64::from(small.isqrt())
 }
 
+/// ⌊√`n`⌋ for any u128: [`isqrt_u64`] of its top bits (an even shift away, since
+/// ⌊√(n / 4ᵏ)⌋ = ⌊⌊√n⌋ / 2ᵏ⌋), then its low k bits one at a time, each kept where its
+/// square stays at most `n` (no 128-bit division, which the library's root takes).
+pub(crate) fn isqrt_u128(n: u128) -> u128 {
+    let Ok(small) = u64::try_from(n) else {
+        let half_shift = (128 - n.leading_zeros() - 63) / 2;
+        let top = (n >> (2 * half_shift)) as u64;
+        let mut root = u128::from(isqrt_u64(top)) << half_shift;
+        for bit in (0..half_shift).rev() {
+            let candidate = root | (1 << bit);
+            // Below 2⁶⁴: the square fits.
+            if candidate * candidate <= n {
+                root = candidate;
+            }
+        }
+        return root;
+    };
+    u128::from(isqrt_u64(small))
+}
+
 /// The high word of a·x + b·y, exact (a dot product's, as a 2×2 map's row takes it):
 /// two `smull`s and an add where there is a long multiply; on cores without one (ARMv6-M)
 /// eight 16×16 products whose middle terms are added into the sum once, cheaper than two
@@ -504,6 +524,41 @@ mod tests {
             1 << 62,
         ] {
             assert_eq!(isqrt_u64(n), n.isqrt(), "{n}");
+        }
+    }
+
+    /// The 128-bit root is the library's, for values of every size and squares' edges.
+    #[test]
+    fn the_wide_root_is_the_library_root() {
+        use proptest::prelude::*;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let n = (any::<u128>(), 0u32..128).prop_map(|(v, s)| v >> s);
+        runner
+            .run(&n, |n| {
+                prop_assert_eq!(isqrt_u128(n), n.isqrt());
+                Ok(())
+            })
+            .unwrap();
+        let roots = (any::<u64>(), 0u32..64).prop_map(|(v, s)| u128::from(v >> s));
+        runner
+            .run(&roots, |r| {
+                let square = r * r;
+                for n in [square.saturating_sub(1), square, square + 1, square + 2 * r] {
+                    prop_assert_eq!(isqrt_u128(n), n.isqrt());
+                }
+                Ok(())
+            })
+            .unwrap();
+        for n in [
+            0,
+            1,
+            u128::MAX,
+            u128::MAX - 1,
+            1 << 64,
+            (1 << 64) - 1,
+            1 << 84,
+        ] {
+            assert_eq!(isqrt_u128(n), n.isqrt(), "{n}");
         }
     }
 

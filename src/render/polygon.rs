@@ -9,6 +9,7 @@
 //! outline winds around its centre a nonzero number of times (a figure eight's two loops
 //! are both filled, whichever way each turns).
 
+use crate::math::wide::div_u64_by_u32;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
@@ -33,7 +34,29 @@ fn crossing(a: SubPixel, b: SubPixel, y: i64) -> i64 {
     if dy == 0 {
         return top.0;
     }
-    top.0 + (y - top.1) * (bottom.0 - top.0) / dy
+    let numerator = (y - top.1) * (bottom.0 - top.0);
+    top.0 + divided(numerator, dy)
+}
+
+/// `n / d` as `/` has it (toward zero) for `d` > 0: by 32-bit divisions where `d` fits 32
+/// bits (any edge of a picture's size), not a 64-bit library division; on cores without a
+/// divide instruction, the library's one call.
+fn divided(n: i64, d: i64) -> i64 {
+    if cfg!(tinyfractal_no_hardware_divide) {
+        return n / d;
+    }
+    match u32::try_from(d) {
+        Ok(d) if d > 0 => {
+            // At most |n| ≤ 2⁶³: i64::MIN / 1 wraps back to itself, as `/` gives it.
+            let magnitude = div_u64_by_u32(n.unsigned_abs(), d) as i64;
+            if n < 0 {
+                magnitude.wrapping_neg()
+            } else {
+                magnitude
+            }
+        }
+        _ => n / d,
+    }
 }
 
 /// The first pixel whose centre is at or after `edge` (Q16).
@@ -214,6 +237,28 @@ mod tests {
     use super::*;
     use std::vec;
     use std::vec::Vec;
+
+    /// The crossing's division is `/`: values of every size and sign, divisors of every
+    /// positive size (32 bits and beyond), and the edges.
+    #[test]
+    fn crossings_divide_as_the_operator_does() {
+        use proptest::prelude::*;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let n = (any::<i64>(), 0u32..64).prop_map(|(v, s)| v >> s);
+        let d = (1i64.., 0u32..63).prop_map(|(v, s)| (v >> s).max(1));
+        runner
+            .run(&(n, d), |(n, d)| {
+                prop_assert_eq!(divided(n, d), n / d);
+                Ok(())
+            })
+            .unwrap();
+        for n in [i64::MIN + 1, i64::MAX, -1, 0, 1] {
+            for d in [1, 2, 3, i64::from(u32::MAX), 1 << 32, i64::MAX] {
+                assert_eq!(divided(n, d), n / d, "{n} / {d}");
+            }
+        }
+        assert_eq!(divided(i64::MIN, 1), i64::MIN);
+    }
 
     /// A whole-pixel point in Q16.
     const fn subpixel(x: i64, y: i64) -> SubPixel {

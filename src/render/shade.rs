@@ -5,6 +5,7 @@
 //! up, z towards the viewer); a surface is lit from both sides (a leaf has two). Its
 //! brightness is 35% (ambient) plus 65% of |n · l| for its unit normal n: 255 is full.
 
+use crate::math::wide::isqrt_u128;
 use embedded_graphics::pixelcolor::{
     Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb555, Rgb565,
     Rgb666, Rgb888, RgbColor,
@@ -69,11 +70,16 @@ pub(crate) fn brightness(normal: [i128; 3]) -> u8 {
     let n = normal.map(|c| c >> shift);
     let dot: i128 = n.iter().zip(&LIGHT).map(|(a, b)| a * b).sum();
     let squared: u128 = n.iter().map(|&a| a.unsigned_abs().pow(2)).sum();
-    // |n|·√6, the dot's full scale.
-    let full = squared.saturating_mul(6).isqrt();
+    // |n|·√6, the dot's full scale: below 2⁴⁴ (squared·6 < 2⁸⁵), so the share below is
+    // a 64-bit division where the library's would be a 128-bit one.
+    let full = isqrt_u128(squared.saturating_mul(6));
     if full == 0 {
         return 255;
     }
-    let facing = (dot.unsigned_abs().min(full) * 166) / full; // 0..=166 (65%)
+    let share = |x: u128| match (u64::try_from(x * 166), u64::try_from(full)) {
+        (Ok(x), Ok(full)) => u128::from(x / full),
+        _ => x * 166 / full,
+    };
+    let facing = share(dot.unsigned_abs().min(full)); // 0..=166 (65%)
     u8::try_from(89 + facing).unwrap_or(255)
 }

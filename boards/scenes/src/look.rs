@@ -920,6 +920,24 @@ where
 /// Most colours of an entry's `colors:` line a board keeps.
 const MAX_PLANT_COLORS: usize = 16;
 
+/// Draws a still plant fitted to the whole of `target`, its fit's marks kept for the
+/// drawing to replay: out of line, so that only a still plant's frame holds them.
+#[inline(never)]
+fn draw_still<D>(
+    target: &mut D,
+    system: &ParametricLSystem<'_, DEFAULT_DEPTH, DEFAULT_STACK, 0>,
+    palette: &[D::Color],
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: Shade,
+{
+    let mut marks = [StoredMark::EMPTY; PLANT_MARKS];
+    let drawing = system.fit_with_marks(target.bounding_box(), palette, &mut marks)?;
+    let stats = drawing.try_draw_lit(target, None)?;
+    Ok(Work::Segments(stats.segments))
+}
+
 /// The marks a still plant's fit keeps for its drawing to replay, instead of walking its
 /// derivation twice: the monopodial tree's 1,023 lines and the leafy bush's 420 lines and
 /// 135 leaves (540 records) fit ([`StoredMark::BYTES`] each, on the stack).
@@ -974,10 +992,7 @@ impl GeneralEntry {
         let area = target.bounding_box();
         if self.frames == 0 {
             target.clear(look.background).map_err(DrawError::Target)?;
-            let mut marks = [StoredMark::EMPTY; PLANT_MARKS];
-            let drawing = system.fit_with_marks(area, palette, &mut marks)?;
-            let stats = drawing.try_draw_lit(target, None)?;
-            return Ok(Work::Segments(stats.segments));
+            return draw_still(target, &system, palette);
         }
         let fitted = system.fit_in_wind(area, palette, &crate::catalogue::WIND, self.frames)?;
         let mut segments = 0;

@@ -18,38 +18,53 @@ use crate::render::space::Extent;
 /// of the caller's: a line takes one, a polygon of n vertices 1 + ⌊n / 2⌋;
 /// [`StoredMark::BYTES`] each.
 #[derive(Debug, Clone, Copy)]
-pub struct StoredMark(Record);
+pub struct StoredMark {
+    /// A line's ends; a polygon's first vertex (and nothing); two more of its vertices.
+    points: [Seen; 2],
+    /// A line's width.
+    width: Real,
+    kind: Kind,
+    color: u8,
+    /// A polygon's vertices.
+    count: u8,
+}
+
+/// What a record holds. A plain struct with a kind, not an enum: each record is written
+/// field by field into its slot (an enum's was built apart and copied in, byte by byte).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Empty,
+    Line,
+    /// A polygon's first vertex, its count and colour; the rest follow two a record.
+    Polygon,
+    Vertices,
+}
 
 impl StoredMark {
     /// An empty record, to fill a buffer with.
-    pub const EMPTY: Self = Self(Record::Empty);
+    pub const EMPTY: Self = Self {
+        points: [ORIGIN; 2],
+        width: Real::ZERO,
+        kind: Kind::Empty,
+        color: 0,
+        count: 0,
+    };
 
     /// The bytes a record takes.
     pub const BYTES: usize = size_of::<Self>();
 }
 
+/// The origin, seen from anywhere: an empty record's points.
+const ORIGIN: Seen = Seen {
+    x: Real::ZERO,
+    y: Real::ZERO,
+    depth: Real::ZERO,
+};
+
 impl Default for StoredMark {
     fn default() -> Self {
         Self::EMPTY
     }
-}
-
-/// What a record holds.
-#[derive(Debug, Clone, Copy)]
-enum Record {
-    Empty,
-    Line {
-        ends: [Seen; 2],
-        width: Real,
-        color: u8,
-    },
-    /// A polygon's first vertex, its count and colour; the rest follow two a record.
-    Polygon {
-        first: Seen,
-        vertices: u8,
-        color: u8,
-    },
-    Vertices([Seen; 2]),
 }
 
 /// A mark as seen through the fit's projection: what the painter draws.
@@ -151,27 +166,26 @@ impl SeenMarks for Replay<'_> {
     fn next_seen(&mut self) -> Option<Result<SeenMark<'_>, Error>> {
         loop {
             // Read in place: a record is too large to copy out whole at every mark.
-            match &self.records.next()?.0 {
-                Record::Line { ends, width, color } => {
+            let record = self.records.next()?;
+            match record.kind {
+                Kind::Line => {
                     return Some(Ok(SeenMark::Line {
-                        ends,
-                        width: *width,
-                        color: *color,
+                        ends: &record.points,
+                        width: record.width,
+                        color: record.color,
                     }))
                 }
-                &Record::Polygon {
-                    first,
-                    vertices,
-                    color,
-                } => {
+                Kind::Polygon => {
+                    let count = usize::from(record.count);
                     self.vertices.clear();
-                    let _ = self.vertices.push(first);
-                    while self.vertices.len() < usize::from(vertices) {
-                        let Some(&StoredMark(Record::Vertices(pair))) = self.records.next() else {
+                    let _ = self.vertices.push(record.points[0]);
+                    while self.vertices.len() < count {
+                        let Some(pair) = self.records.next().filter(|r| r.kind == Kind::Vertices)
+                        else {
                             break;
                         };
-                        for seen in pair {
-                            if self.vertices.len() < usize::from(vertices) {
+                        for &seen in &pair.points {
+                            if self.vertices.len() < count {
                                 // Cannot fail: the count kept is at most the capacity.
                                 let _ = self.vertices.push(seen);
                             }
@@ -179,11 +193,11 @@ impl SeenMarks for Replay<'_> {
                     }
                     return Some(Ok(SeenMark::Polygon {
                         vertices: &self.vertices,
-                        color,
+                        color: record.color,
                     }));
                 }
                 // Only a polygon's records hold vertices, and it reads its own.
-                Record::Vertices(_) | Record::Empty => {}
+                Kind::Vertices | Kind::Empty => {}
             }
         }
     }
@@ -197,45 +211,44 @@ struct Keeper<'k> {
 }
 
 impl Keeper<'_> {
-    /// Writes `record` next, or gives up keeping if the buffer is full. Inlined, so the
-    /// record is built in its slot rather than copied there.
+    /// The next record to write, or `None` (and no keeping from then on) if the buffer
+    /// is full.
     #[inline(always)]
-    fn write(&mut self, record: Record) {
-        if let Some(written) = self.written {
-            match self.records.get_mut(written) {
-                Some(slot) => {
-                    *slot = StoredMark(record);
-                    self.written = Some(written + 1);
-                }
-                None => self.written = None,
-            }
-        }
+    fn next(&mut self) -> Option<&mut StoredMark> {
+        let written = self.written?;
+        self.written = Some(written + 1).filter(|&n| n <= self.records.len());
+        self.records.get_mut(written)
     }
 
     #[inline(always)]
     fn keep(&mut self, mark: &SeenMark<'_>) {
         match *mark {
-            SeenMark::Line { ends, width, color } => self.write(Record::Line {
-                ends: *ends,
-                width,
-                color,
-            }),
+            SeenMark::Line { ends, width, color } => {
+                if let Some(record) = self.next() {
+                    record.points = *ends;
+                    record.width = width;
+                    record.kind = Kind::Line;
+                    record.color = color;
+                }
+            }
             SeenMark::Polygon { vertices, color } => {
                 let Some((&first, rest)) = vertices.split_first() else {
                     return;
                 };
-                self.write(Record::Polygon {
-                    first,
+                if let Some(record) = self.next() {
+                    record.points[0] = first;
+                    record.kind = Kind::Polygon;
+                    record.color = color;
                     // Cannot saturate: at most MAX_POLYGON_VERTICES.
-                    vertices: u8::try_from(vertices.len()).unwrap_or(u8::MAX),
-                    color,
-                });
+                    record.count = u8::try_from(vertices.len()).unwrap_or(u8::MAX);
+                }
                 for pair in rest.chunks(2) {
-                    let last = pair.last().copied().unwrap_or(first);
-                    self.write(Record::Vertices([
-                        pair.first().copied().unwrap_or(last),
-                        last,
-                    ]));
+                    if let (Some(&a), Some(&b), Some(record)) =
+                        (pair.first(), pair.last(), self.next())
+                    {
+                        record.points = [a, b];
+                        record.kind = Kind::Vertices;
+                    }
                 }
             }
         }

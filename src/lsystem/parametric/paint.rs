@@ -7,6 +7,7 @@ use heapless::Vec;
 use super::kept::{SeenMark, SeenMarks};
 use super::surface::MAX_POLYGON_VERTICES;
 use crate::error::DrawError;
+use crate::math::wide::div_u64_by_u32;
 use crate::math::Real;
 use crate::render::depth::Layered;
 use crate::render::palette::Palette;
@@ -50,9 +51,34 @@ impl<C: Shade> Lighting<C> for Lit {
 
 /// The normal of a polygon seen in view space (Newell's method: any polygon, its length
 /// twice the area), from coordinates in 2⁻¹⁶ units.
+///
+/// In 64 bits where every coordinate is below 2²⁸ (a picture's usual size): each term is
+/// then below 2⁵⁸ and a polygon's at most 32 of them sum below 2⁶³, the same integers as
+/// in 128 bits, whose products are several times dearer on a 32-bit core.
 fn normal(seen: &[Seen]) -> [i128; 3] {
-    let coordinates = |s: &Seen| [s.x, s.y, s.depth].map(|v| i128::from(v.to_bits() >> 16));
-    let mut n = [0i128; 3];
+    let coordinates = |s: &Seen| [s.x, s.y, s.depth].map(|v| v.to_bits() >> 16);
+    let narrow = seen.len() <= MAX_POLYGON_VERTICES
+        && seen
+            .iter()
+            .all(|s| coordinates(s).iter().all(|c| c.unsigned_abs() < 1 << 28));
+    if narrow {
+        return newell(seen, coordinates).map(i128::from);
+    }
+    newell(seen, |s| coordinates(s).map(i128::from))
+}
+
+/// Newell's sums over `seen`'s edges in the integers `coordinates` gives.
+#[inline(always)]
+fn newell<T>(seen: &[Seen], coordinates: impl Fn(&Seen) -> [T; 3]) -> [T; 3]
+where
+    T: Copy
+        + Default
+        + core::ops::Add<Output = T>
+        + core::ops::Sub<Output = T>
+        + core::ops::Mul<Output = T>
+        + core::ops::AddAssign,
+{
+    let mut n = [T::default(); 3];
     for (i, a) in seen.iter().enumerate() {
         let b = seen.get(i + 1).or(seen.first()).unwrap_or(a);
         let ([ax, ay, az], [bx, by, bz]) = (coordinates(a), coordinates(b));
@@ -63,10 +89,25 @@ fn normal(seen: &[Seen]) -> [i128; 3] {
     n
 }
 
-/// The mean depth of `seen`.
+/// The mean depth of `seen`, rounded towards zero: in 64 bits and a division by the
+/// count's 32 bits where the sum fits (always, for depths below 2⁵⁸), else in 128.
 fn mean_depth(seen: &[Seen]) -> Real {
+    let count = seen.len().max(1);
+    let narrow = seen
+        .iter()
+        .try_fold(0i64, |sum, s| sum.checked_add(s.depth.to_bits()));
+    if let (Some(sum), Ok(divisor)) = (narrow, u32::try_from(count)) {
+        let magnitude = div_u64_by_u32(sum.unsigned_abs(), divisor);
+        // At most |sum|: fits an i64 with its sign.
+        let magnitude = magnitude as i64;
+        return Real::from_bits(if sum < 0 {
+            magnitude.wrapping_neg()
+        } else {
+            magnitude
+        });
+    }
     let sum: i128 = seen.iter().map(|s| i128::from(s.depth.to_bits())).sum();
-    let count = i128::try_from(seen.len().max(1)).unwrap_or(1);
+    let count = i128::try_from(count).unwrap_or(1);
     Real::from_bits(i64::try_from(sum / count).unwrap_or(0))
 }
 
@@ -139,4 +180,59 @@ where
         }
     }
     Ok((lines, polygons))
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use proptest::prelude::*;
+    use std::vec::Vec as StdVec;
+
+    /// Newell's normal and the mean depth in 128 bits throughout, where nothing can
+    /// overflow: what the 64-bit paths must give.
+    fn by_definition(seen: &[Seen]) -> ([i128; 3], Real) {
+        let n = newell(seen, |s: &Seen| {
+            [s.x, s.y, s.depth].map(|v| i128::from(v.to_bits() >> 16))
+        });
+        let sum: i128 = seen.iter().map(|s| i128::from(s.depth.to_bits())).sum();
+        let count = i128::try_from(seen.len().max(1)).unwrap();
+        (n, Real::from_bits(i64::try_from(sum / count).unwrap()))
+    }
+
+    /// Polygons of 1 to 32 vertices with coordinates of every size, the 64-bit paths'
+    /// bounds on either side included.
+    fn polygons() -> impl Strategy<Value = StdVec<Seen>> {
+        let coordinate = (any::<i64>(), 0u32..64).prop_map(|(v, s)| Real::from_bits(v >> s));
+        let vertex = (coordinate.clone(), coordinate.clone(), coordinate)
+            .prop_map(|(x, y, depth)| Seen { x, y, depth });
+        proptest::collection::vec(vertex, 1..=MAX_POLYGON_VERTICES)
+    }
+
+    #[test]
+    fn normals_and_depths_are_their_definitions() {
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        runner
+            .run(&polygons(), |seen| {
+                let (n, depth) = by_definition(&seen);
+                prop_assert_eq!(normal(&seen), n);
+                prop_assert_eq!(mean_depth(&seen), depth);
+                Ok(())
+            })
+            .unwrap();
+        let extreme = |v: i64| Seen {
+            x: Real::from_bits(v),
+            y: Real::from_bits(v),
+            depth: Real::from_bits(v),
+        };
+        for v in [i64::MIN, i64::MAX, (1 << 44) - 1, 1 << 44, -(1 << 44)] {
+            let seen = [extreme(v), extreme(v / 3), extreme(v / -2)];
+            assert_eq!(
+                (normal(&seen), mean_depth(&seen)),
+                by_definition(&seen),
+                "{v}"
+            );
+            assert_eq!(mean_depth(&seen[..1]), by_definition(&seen[..1]).1, "{v}");
+        }
+    }
 }

@@ -18,18 +18,17 @@ pub const MAX_POLYGON_VERTICES: usize = 32;
 /// Most polygons open at once (a `{` inside a `{`).
 pub const MAX_OPEN_POLYGONS: usize = 2;
 
-/// One polygon being recorded.
-#[derive(Debug, Clone)]
-struct Polygon {
-    vertices: Vec<[Real; 3], MAX_POLYGON_VERTICES>,
-    /// Whether a `.` has recorded a vertex (then only `.`s do).
-    dotted: bool,
-}
-
-/// The polygons open, and whether the last one has just closed.
+/// The polygons open, and whether the last one has just closed. Kept in place, one slot a
+/// nesting level: a polygon is 768 bytes, and moving one in or out at each `{` and after
+/// each `}` was a copy of all of them.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Polygons {
-    open: Vec<Polygon, MAX_OPEN_POLYGONS>,
+    /// Each open polygon's vertices (slot i for the polygon opened at depth i).
+    vertices: [Vec<[Real; 3], MAX_POLYGON_VERTICES>; MAX_OPEN_POLYGONS],
+    /// Whether a `.` has recorded a vertex of the polygon (then only `.`s do).
+    dotted: [bool; MAX_OPEN_POLYGONS],
+    /// How many are open.
+    open: usize,
     /// The last open polygon closed with the last module: dropped at the next one.
     closed: bool,
 }
@@ -42,65 +41,69 @@ fn too_many_vertices() -> Error {
 
 impl Polygons {
     /// Forgets a polygon closed by the previous module.
+    #[inline]
     pub(crate) fn settle(&mut self) {
         if self.closed {
-            self.open.pop();
+            self.open = self.open.saturating_sub(1);
             self.closed = false;
         }
     }
 
     /// Whether a polygon is open (moves inside one draw no lines).
     pub(crate) fn recording(&self) -> bool {
-        !self.open.is_empty()
+        self.open > 0
     }
 
     /// `{` at `position`.
     pub(crate) fn start(&mut self, position: [Real; 3]) -> Result<(), Error> {
-        let mut vertices = Vec::new();
+        let level = self.open;
+        let (Some(vertices), Some(dotted)) =
+            (self.vertices.get_mut(level), self.dotted.get_mut(level))
+        else {
+            return Err(Error::Walk(WalkError::PolygonsNestTooDeep {
+                capacity: MAX_OPEN_POLYGONS,
+            }));
+        };
+        vertices.clear();
         // Cannot fail: the capacity is above 0.
         let _ = vertices.push(position);
-        self.open
-            .push(Polygon {
-                vertices,
-                dotted: false,
-            })
-            .map_err(|_| {
-                Error::Walk(WalkError::PolygonsNestTooDeep {
-                    capacity: MAX_OPEN_POLYGONS,
-                })
-            })
+        *dotted = false;
+        self.open = level + 1;
+        Ok(())
     }
 
-    /// The turtle moved to `position` by `F` or `f`.
+    /// The innermost open polygon's vertices and whether it is dotted.
+    fn innermost(&mut self) -> Option<(&mut Vec<[Real; 3], MAX_POLYGON_VERTICES>, &mut bool)> {
+        let level = self.open.checked_sub(1)?;
+        Some((self.vertices.get_mut(level)?, self.dotted.get_mut(level)?))
+    }
+
+    /// A move (`F`, `f`) ended at `position`: a vertex of a polygon with no `.`.
     pub(crate) fn moved(&mut self, position: [Real; 3]) -> Result<(), Error> {
-        match self.open.last_mut() {
-            Some(polygon) if !polygon.dotted => polygon
-                .vertices
-                .push(position)
-                .map_err(|_| too_many_vertices()),
+        match self.innermost() {
+            Some((vertices, &mut false)) => {
+                vertices.push(position).map_err(|_| too_many_vertices())
+            }
             _ => Ok(()),
         }
     }
 
     /// `.` at `position`.
     pub(crate) fn vertex(&mut self, position: [Real; 3]) -> Result<(), Error> {
-        let Some(polygon) = self.open.last_mut() else {
+        let Some((vertices, dotted)) = self.innermost() else {
             return Ok(());
         };
-        if !polygon.dotted {
-            polygon.vertices.clear();
-            polygon.dotted = true;
+        if !*dotted {
+            vertices.clear();
+            *dotted = true;
         }
-        polygon
-            .vertices
-            .push(position)
-            .map_err(|_| too_many_vertices())
+        vertices.push(position).map_err(|_| too_many_vertices())
     }
 
     /// `}`: the polygon closes; [`closed`](Self::closed) has its vertices until the next
     /// module.
     pub(crate) fn end(&mut self) -> Result<(), Error> {
-        if self.open.is_empty() {
+        if self.open == 0 {
             return Err(Error::Walk(WalkError::PolygonNotOpen));
         }
         self.closed = true;
@@ -109,8 +112,12 @@ impl Polygons {
 
     /// The vertices of the polygon the last module closed, in turtle units.
     pub(crate) fn closed(&self) -> &[[Real; 3]] {
-        match self.open.last() {
-            Some(polygon) if self.closed => &polygon.vertices,
+        match self
+            .open
+            .checked_sub(1)
+            .and_then(|level| self.vertices.get(level))
+        {
+            Some(vertices) if self.closed => vertices,
             _ => &[],
         }
     }
@@ -118,7 +125,7 @@ impl Polygons {
     /// At the end of the walk: a polygon still open is an error (it would be lost).
     pub(crate) fn finish(&mut self) -> Result<(), Error> {
         self.settle();
-        if self.open.is_empty() {
+        if self.open == 0 {
             Ok(())
         } else {
             Err(Error::Walk(WalkError::PolygonNotClosed))
