@@ -49,6 +49,22 @@ pub(crate) fn div_u64_by_u32(n: u64, d: u32) -> u64 {
     (u64::from(quotient) << 32) | u64::from(div_with_remainder(remainder, low, d))
 }
 
+/// `n / d` as `/` has it (toward zero) for a 32-bit `d` (not 0): the magnitude by
+/// [`div_u64_by_u32`], the sign put back; on cores without a divide instruction
+/// (ARMv6-M), where 32-bit divisions are library calls too, the library's one 64-bit call.
+pub(crate) fn div_i64_by_u32(n: i64, d: u32) -> i64 {
+    if cfg!(tinyfractal_no_hardware_divide) {
+        return n / i64::from(d);
+    }
+    // At most |n| ≤ 2⁶³: i64::MIN / 1 wraps back to itself, as `/` gives it.
+    let magnitude = div_u64_by_u32(n.unsigned_abs(), d) as i64;
+    if n < 0 {
+        magnitude.wrapping_neg()
+    } else {
+        magnitude
+    }
+}
+
 /// ⌊(`r`·2³² + `low`) / `d`⌋ for `r` < `d` (so the quotient fits 32 bits): Knuth's
 /// algorithm D in base 2¹⁶ as Hacker's Delight gives it (`divlu`), each quotient digit
 /// estimated by one 32-bit division and corrected at most twice.

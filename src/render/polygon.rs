@@ -9,7 +9,7 @@
 //! outline winds around its centre a nonzero number of times (a figure eight's two loops
 //! are both filled, whichever way each turns).
 
-use crate::math::wide::div_u64_by_u32;
+use crate::math::wide::div_i64_by_u32;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
@@ -46,15 +46,7 @@ fn divided(n: i64, d: i64) -> i64 {
         return n / d;
     }
     match u32::try_from(d) {
-        Ok(d) if d > 0 => {
-            // At most |n| ≤ 2⁶³: i64::MIN / 1 wraps back to itself, as `/` gives it.
-            let magnitude = div_u64_by_u32(n.unsigned_abs(), d) as i64;
-            if n < 0 {
-                magnitude.wrapping_neg()
-            } else {
-                magnitude
-            }
-        }
+        Ok(d) if d > 0 => div_i64_by_u32(n, d),
         _ => n / d,
     }
 }

@@ -7,7 +7,7 @@ use heapless::Vec;
 use super::kept::{SeenMark, SeenMarks};
 use super::surface::MAX_POLYGON_VERTICES;
 use crate::error::DrawError;
-use crate::math::wide::div_u64_by_u32;
+use crate::math::wide::div_i64_by_u32;
 use crate::math::Real;
 use crate::render::depth::Layered;
 use crate::render::palette::Palette;
@@ -97,14 +97,7 @@ fn mean_depth(seen: &[Seen]) -> Real {
         .iter()
         .try_fold(0i64, |sum, s| sum.checked_add(s.depth.to_bits()));
     if let (Some(sum), Ok(divisor)) = (narrow, u32::try_from(count)) {
-        let magnitude = div_u64_by_u32(sum.unsigned_abs(), divisor);
-        // At most |sum|: fits an i64 with its sign.
-        let magnitude = magnitude as i64;
-        return Real::from_bits(if sum < 0 {
-            magnitude.wrapping_neg()
-        } else {
-            magnitude
-        });
+        return Real::from_bits(div_i64_by_u32(sum, divisor));
     }
     let sum: i128 = seen.iter().map(|s| i128::from(s.depth.to_bits())).sum();
     let count = i128::try_from(count).unwrap_or(1);
