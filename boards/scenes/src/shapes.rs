@@ -10,7 +10,7 @@ use tinyfractal::error::DrawError;
 use tinyfractal::{
     error::FitError,
     figure::{walk as walk_pose, BODY},
-    render::Colors,
+    render::{Colors, LastFrame},
     Carpet, Error, Figure, Gasket, Real, SierpinskiCube,
 };
 
@@ -146,12 +146,18 @@ fn clear_around<D: DrawTarget>(
     Ok(())
 }
 
+/// The runs of the walking figure's frame kept to erase it (8 bytes each): every frame
+/// on the OLED; a larger display's frames are erased by drawing them again.
 #[cfg(feature = "shapes")]
+const WALK_RUNS: usize = 256;
+
 /// The walk cycle in `look.ink`, out of line: `frames` frames fitted once over all of
-/// them, each frame erasing the last one's lines (drawn again in the background) before
-/// drawing its own, so the display is cleared once, not every frame. What stays on the
-/// target is the last frame alone.
+/// them, each frame erasing the last one before drawing its own (the runs it sent filled
+/// again in the background, or where they were too many for [`WALK_RUNS`], its lines drawn
+/// again in the background), so the display is cleared once, not every frame. What stays
+/// on the target is the last frame alone.
 #[inline(never)]
+#[cfg(feature = "shapes")]
 fn draw_walk<D>(
     target: &mut D,
     look: &Look<'_, D::Color>,
@@ -177,11 +183,21 @@ where
         drawing.with_palette(Colors::new(&paper).ok_or(Error::Fit(FitError::EmptyPalette))?);
     let mut lines = 0;
     let mut last = None;
+    // The last frame's runs, erased by filling them again in the background; a frame of
+    // more runs than this holds is erased by drawing it again.
+    let mut last_frame = LastFrame::<WALK_RUNS>::new();
     for frame in (0..frames).filter_map(pose) {
         if let Some(last) = last {
-            eraser.with_pose(last).try_draw(target)?;
+            let erased = last_frame
+                .erase(target, look.background)
+                .map_err(DrawError::Target)?;
+            if !erased {
+                eraser.with_pose(last).try_draw(target)?;
+            }
         }
-        lines += drawing.with_pose(frame).try_draw(target)?;
+        lines += drawing
+            .with_pose(frame)
+            .try_draw(&mut last_frame.recording(target))?;
         last = Some(frame);
         between_frames();
     }
