@@ -15,6 +15,12 @@ use crate::error::{Error, FitError};
 /// `DENSITY_LEVELS`.
 pub const DENSITY_LEVELS: u16 = 16;
 
+/// The shortest stretch of pixels never hit that is sent as a `fill_solid` of its own.
+///
+/// A shorter stretch goes with its row's lit pixels: on an SPI display a run's address
+/// window costs about what a few pixels do.
+pub const MIN_BLANK_RUN: usize = 8;
+
 /// The density level of a hit count.
 #[inline]
 pub(crate) fn level(count: u16) -> u16 {
@@ -150,7 +156,10 @@ impl<'b, T: HitCount> Density<'b, T> {
         }
     }
 
-    /// Writes every pixel of the area, a row at a time (`fill_contiguous`).
+    /// Writes every pixel of the area, a row at a time, left to right: a stretch of at
+    /// least [`MIN_BLANK_RUN`] pixels never hit as one `fill_solid` of the unlit colour, the
+    /// rest of the row in `fill_contiguous` runs between them (the same pixels in the same
+    /// order as a row a call).
     pub(crate) fn emit<P: Palette, D>(&self, palette: &P, target: &mut D) -> Result<(), D::Error>
     where
         D: DrawTarget<Color = P::Color>,
@@ -168,11 +177,46 @@ impl<'b, T: HitCount> Density<'b, T> {
                 .copied()
                 .unwrap_or(unlit)
         };
+        let left = self.area.top_left.x;
+        // A stretch of the row from `from`, `count` pixels (both within the row).
+        let stretch = |y: i32, from: usize, count: usize| {
+            Rectangle::new(
+                Point::new(left + from as i32, y),
+                Size::new(count as u32, 1),
+            )
+        };
         for (row, cells) in self.counts.chunks(width_cells.max(1)).enumerate() {
             let y = self.area.top_left.y + i32::try_from(row).unwrap_or(i32::MAX);
-            let line = Rectangle::new(Point::new(self.area.top_left.x, y), Size::new(width, 1));
-            let colors = cells.iter().map(|cell| shade(cell.get().count()));
-            target.fill_contiguous(&line, colors)?;
+            let blank = |x: usize| cells.get(x).is_some_and(|cell| cell.get().count() == 0);
+            // The cells `from..to` of the row, in their colours.
+            let colors = |from: usize, to: usize| {
+                let part = cells.get(from..to).unwrap_or_default();
+                part.iter().map(|cell| shade(cell.get().count()))
+            };
+            // Cells from `sent` on are not sent yet; `x` reads on.
+            let (mut sent, mut x) = (0, 0);
+            while x < cells.len() {
+                if !blank(x) {
+                    x += 1;
+                    continue;
+                }
+                let start = x;
+                while blank(x) {
+                    x += 1;
+                }
+                if x - start < MIN_BLANK_RUN {
+                    continue;
+                }
+                if start > sent {
+                    target.fill_contiguous(&stretch(y, sent, start - sent), colors(sent, start))?;
+                }
+                target.fill_solid(&stretch(y, start, x - start), unlit)?;
+                sent = x;
+            }
+            if sent < cells.len() {
+                let end = cells.len();
+                target.fill_contiguous(&stretch(y, sent, end - sent), colors(sent, end))?;
+            }
         }
         Ok(())
     }
@@ -185,7 +229,100 @@ impl<'b, T: HitCount> Density<'b, T> {
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
+    use std::vec::Vec;
+
     use super::*;
+    use crate::math::Generator;
+    use crate::render::palette::Colors;
+    use embedded_graphics::pixelcolor::Gray8;
+
+    /// Every pixel sent in order, and the `fill_solid` calls.
+    #[derive(Default)]
+    struct Sent {
+        pixels: Vec<(Point, Gray8)>,
+        solid: Vec<Rectangle>,
+    }
+
+    impl OriginDimensions for Sent {
+        fn size(&self) -> Size {
+            Size::new(1 << 12, 1 << 12)
+        }
+    }
+
+    impl DrawTarget for Sent {
+        type Color = Gray8;
+        type Error = core::convert::Infallible;
+
+        fn draw_iter<I: IntoIterator<Item = Pixel<Gray8>>>(
+            &mut self,
+            pixels: I,
+        ) -> Result<(), Self::Error> {
+            self.pixels
+                .extend(pixels.into_iter().map(|Pixel(p, c)| (p, c)));
+            Ok(())
+        }
+
+        fn fill_solid(&mut self, area: &Rectangle, color: Gray8) -> Result<(), Self::Error> {
+            self.solid.push(*area);
+            self.pixels.extend(area.points().map(|p| (p, color)));
+            Ok(())
+        }
+    }
+
+    /// Rows with blanks of every length from none to a whole row: every pixel is sent
+    /// once, left to right and row by row, in its level's colour; each blank of at least
+    /// `MIN_BLANK_RUN` pixels is one `fill_solid` and no shorter one is.
+    #[test]
+    fn rows_go_in_order_with_long_blanks_alone() {
+        let mut random = Generator::new(5);
+        let greys: [Gray8; DENSITY_LEVELS as usize] =
+            core::array::from_fn(|level| Gray8::new(level as u8 * 16 + 3));
+        let palette = Colors::new(&greys).unwrap();
+        for width in [1u32, 7, 8, 9, 40] {
+            let height = 5;
+            let mut counts = std::vec![0u16; (width * height) as usize];
+            for cell in counts.iter_mut() {
+                // Mostly blank, in stretches of random length.
+                if random.next_u32().is_multiple_of(6) {
+                    *cell = (random.next_u32() % 300) as u16;
+                }
+            }
+            // A whole blank row and a whole lit one.
+            counts[..width as usize].fill(0);
+            counts[width as usize..2 * width as usize].fill(3);
+            let expected_counts = counts.clone();
+            let area = Rectangle::new(Point::new(-3, 11), Size::new(width, height));
+            let density = Density::new(area, &mut counts).unwrap();
+            let mut sent = Sent::default();
+            density.emit(&palette, &mut sent).unwrap();
+            let expected: Vec<(Point, Gray8)> = area
+                .points()
+                .zip(&expected_counts)
+                .map(|(p, &count)| (p, palette.color(level(count), DENSITY_LEVELS)))
+                .collect();
+            assert_eq!(sent.pixels, expected, "width {width}");
+            // The blanks of at least MIN_BLANK_RUN, from the counts.
+            let mut blanks = Vec::new();
+            for (row, cells) in expected_counts.chunks(width as usize).enumerate() {
+                let mut x = 0;
+                while x < cells.len() {
+                    let start = x;
+                    while x < cells.len() && cells[x] == 0 {
+                        x += 1;
+                    }
+                    if x - start >= MIN_BLANK_RUN {
+                        blanks.push(Rectangle::new(
+                            area.top_left + Point::new(start as i32, row as i32),
+                            Size::new((x - start) as u32, 1),
+                        ));
+                    }
+                    x = x.max(start + 1);
+                }
+            }
+            assert_eq!(sent.solid, blanks, "width {width}");
+        }
+    }
 
     /// A count bumped is one more, saturating, for every count of either width.
     #[test]

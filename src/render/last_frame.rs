@@ -121,7 +121,7 @@ impl<const N: usize> LastFrame<N> {
             self.forget();
             return Ok(false);
         }
-        for run in &self.runs[..self.kept.min(N)] {
+        for run in self.runs.get(..self.kept).unwrap_or_default() {
             target.fill_solid(&run.area(), background)?;
         }
         self.forget();

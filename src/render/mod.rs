@@ -23,7 +23,7 @@ pub(crate) mod space;
 pub(crate) mod subpixel;
 pub(crate) mod thick;
 
-pub use density::{HitCount, DENSITY_LEVELS};
+pub use density::{HitCount, DENSITY_LEVELS, MIN_BLANK_RUN};
 pub use dither::{Dither, Dithered, Quantize};
 pub use fit::{Orientation, DEFAULT_MARGIN};
 pub use histogram::Histogram;
