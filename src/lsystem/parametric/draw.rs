@@ -312,10 +312,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         area: Rectangle,
         palette: &'p [C],
     ) -> Result<ParametricDrawing<'g, Colors<'p, C>, DEPTH, STACK, SLOTS>, Error> {
-        if area.size.width == 0 || area.size.height == 0 {
-            return Err(Error::Fit(FitError::ZeroSizeTarget));
-        }
-        let palette = colors(palette)?;
+        let palette = fit_palette(&area, palette)?;
         match self.projection() {
             Some(projection) => self.fit_3d(projection, &area, palette),
             None => self.fit_2d(&area, palette),
@@ -335,10 +332,7 @@ impl<'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         palette: &'p [C],
         marks: &'g mut [StoredMark],
     ) -> Result<ParametricDrawing<'g, Colors<'p, C>, DEPTH, STACK, SLOTS>, Error> {
-        if area.size.width == 0 || area.size.height == 0 {
-            return Err(Error::Fit(FitError::ZeroSizeTarget));
-        }
-        let palette = colors(palette)?;
+        let palette = fit_palette(&area, palette)?;
         match self.projection() {
             Some(projection) if !matches!(projection, Projection::Perspective { .. }) => {
                 let (extent, written) =
@@ -542,4 +536,19 @@ impl<P, const DEPTH: usize, const STACK: usize, const SLOTS: usize> Dimensions
     fn bounding_box(&self) -> Rectangle {
         self.bounding_box
     }
+}
+
+/// A fit's palette, once its target is known to have an area: what [`fit`] and
+/// [`fit_with_marks`] check first.
+///
+/// [`fit`]: ParametricLSystem::fit
+/// [`fit_with_marks`]: ParametricLSystem::fit_with_marks
+fn fit_palette<'p, C: PixelColor>(
+    area: &Rectangle,
+    palette: &'p [C],
+) -> Result<Colors<'p, C>, Error> {
+    if area.size.width == 0 || area.size.height == 0 {
+        return Err(Error::Fit(FitError::ZeroSizeTarget));
+    }
+    colors(palette)
 }

@@ -105,12 +105,12 @@ impl<'w, 'g, const DEPTH: usize, const STACK: usize, const SLOTS: usize>
         marks: &'w mut Marks3<'g, DEPTH, STACK, SLOTS>,
         (projection, eye): (Projection, Option<Eye>),
     ) -> Self {
-        let origin = projection.project([Real::ZERO; 3], eye);
         Self {
             marks,
             projection,
             eye,
-            ends: [origin; 2],
+            // Written before each line is handed out: any start will do.
+            ends: [ORIGIN; 2],
             vertices: Vec::new(),
         }
     }
