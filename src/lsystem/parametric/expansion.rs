@@ -210,35 +210,57 @@ impl ParametricGrammar {
         if !production.predecessor.matches(module) {
             return Ok(None);
         }
-        let mut bound = Values::default();
-        let contexts = [(production.left, left), (production.right, right)];
-        for (pattern, neighbour) in contexts {
-            match (pattern, neighbour) {
-                (None, _) => {}
-                (Some(pattern), Some(neighbour)) if pattern.matches(neighbour) => {}
-                (Some(_), _) => return Ok(None),
+        let bound = if production.left.is_none() && production.right.is_none() {
+            // No contexts: the predecessor's values are the binding, as they are.
+            module.values
+        } else {
+            match bind_in_context(production, module, left, right) {
+                Some(bound) => bound,
+                None => return Ok(None),
             }
-        }
-        let parts = [
-            production.left.and(left),
-            Some(module),
-            production.right.and(right),
-        ];
-        for part in parts.into_iter().flatten() {
-            for &value in part.values.as_slice() {
-                if let Some(slot) = bound.values.get_mut(usize::from(bound.count)) {
-                    *slot = value;
-                    bound.count += 1;
-                }
-            }
-        }
+        };
         let holds = match production.condition {
             None => true,
             Some(code) => evaluate(self.code(code), bound.as_slice(), query)? != Real::ZERO,
         };
         Ok(holds.then_some(bound))
     }
+}
 
+/// The parameters a production with a context binds: its left context's, its
+/// predecessor's and its right context's, in order; `None` where a context does not match.
+fn bind_in_context(
+    production: &Production,
+    module: &Neighbour,
+    left: Option<&Neighbour>,
+    right: Option<&Neighbour>,
+) -> Option<Values> {
+    let mut bound = Values::default();
+    let contexts = [(production.left, left), (production.right, right)];
+    for (pattern, neighbour) in contexts {
+        match (pattern, neighbour) {
+            (None, _) => {}
+            (Some(pattern), Some(neighbour)) if pattern.matches(neighbour) => {}
+            (Some(_), _) => return None,
+        }
+    }
+    let parts = [
+        production.left.and(left),
+        Some(module),
+        production.right.and(right),
+    ];
+    for part in parts.into_iter().flatten() {
+        for &value in part.values.as_slice() {
+            if let Some(slot) = bound.values.get_mut(usize::from(bound.count)) {
+                *slot = value;
+                bound.count += 1;
+            }
+        }
+    }
+    Some(bound)
+}
+
+impl ParametricGrammar {
     /// The production that rewrites `module` between `left` and `right` (contexts as
     /// found, skipping ignored symbols), and the parameters it binds: the first that
     /// applies, or when that one is stochastic, one of the applicable stochastic ones
@@ -259,6 +281,10 @@ impl ParametricGrammar {
         let index_of = |index: usize| u8::try_from(first + index).ok();
         let mut total = 0u64;
         for (index, production) in productions.iter().enumerate() {
+            // Another symbol's production, passed over here without a call to `binding`.
+            if !production.predecessor.matches(module) {
+                continue;
+            }
             let Some(bound) = self.binding(production, module, left, right, query)? else {
                 continue;
             };
@@ -272,7 +298,7 @@ impl ParametricGrammar {
         }
         let mut pick = pick(key, total);
         for (index, production) in productions.iter().enumerate() {
-            if production.weight == 0 {
+            if production.weight == 0 || !production.predecessor.matches(module) {
                 continue;
             }
             let Some(bound) = self.binding(production, module, left, right, query)? else {

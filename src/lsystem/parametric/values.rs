@@ -8,11 +8,22 @@ use crate::math::Real;
 pub const MAX_PARAMS: usize = 4;
 
 /// A module's parameter values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+///
+/// Two are equal where their values are ([`as_slice`](Self::as_slice)): the slots past
+/// the count are whatever a buffer held before, and mean nothing.
+#[derive(Debug, Clone, Copy, Default)]
 pub struct Values {
     pub(super) values: [Real; MAX_PARAMS],
     pub(super) count: u8,
 }
+
+impl PartialEq for Values {
+    fn eq(&self, other: &Self) -> bool {
+        self.as_slice() == other.as_slice()
+    }
+}
+
+impl Eq for Values {}
 
 impl Values {
     /// The first value, if any.
@@ -64,5 +75,32 @@ impl fmt::Display for DerivedModule {
             value.write_four_decimals(f)?;
         }
         f.write_char(')')
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Values are equal by their counted values alone, whatever the slots past the count.
+    #[test]
+    fn equality_ignores_the_slots_past_the_count() {
+        let one = Real::ONE;
+        let a = Values {
+            values: [one, one, Real::ZERO, Real::ZERO],
+            count: 2,
+        };
+        let stale = Values {
+            values: [one, one, one, Real::from_int(7)],
+            count: 2,
+        };
+        assert_eq!(a, stale);
+        let longer = Values { count: 3, ..stale };
+        assert_ne!(a, longer);
+        let other = Values {
+            values: [one, Real::ZERO, Real::ZERO, Real::ZERO],
+            count: 2,
+        };
+        assert_ne!(a, other);
     }
 }
