@@ -64,7 +64,7 @@ const CHUNK: u64 = if cfg!(test) {
 /// [`CHUNK`] (one load, test and store a symbol on Cortex-M, where a 64-bit count and
 /// comparison took nine).
 #[derive(Debug, Clone, Copy)]
-struct Spent {
+pub(crate) struct Spent {
     /// Symbols read before the current chunk.
     read_before: u64,
     /// The current chunk's size, and what is left of it.
@@ -74,7 +74,8 @@ struct Spent {
 }
 
 impl Spent {
-    const fn new(budget: u64) -> Self {
+    /// Nothing read yet, against `budget`.
+    pub(crate) const fn new(budget: u64) -> Self {
         Self {
             read_before: 0,
             chunk: 0,
@@ -84,13 +85,26 @@ impl Spent {
     }
 
     /// Symbols read so far.
-    const fn read(&self) -> u64 {
+    pub(crate) const fn read(&self) -> u64 {
         self.read_before + (self.chunk - self.left) as u64
+    }
+
+    /// The budget.
+    pub(crate) const fn budget(&self) -> u64 {
+        self.budget
+    }
+
+    /// The same count against another budget.
+    pub(crate) const fn with_budget(self, budget: u64) -> Self {
+        Self {
+            read_before: self.read(),
+            ..Self::new(budget)
+        }
     }
 
     /// Counts one symbol read; `false` if the budget is spent (nothing counted).
     #[inline(always)]
-    fn one_more(&mut self) -> bool {
+    pub(crate) fn one_more(&mut self) -> bool {
         if self.left == 0 && !self.next_chunk() {
             return false;
         }
@@ -195,10 +209,7 @@ impl<'g, 'a, const DEPTH: usize> Walker<'g, 'a, DEPTH> {
     /// (expanded or interpreted), so no order can hang a device.
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
-        self.spent = Spent {
-            read_before: self.spent.read(),
-            ..Spent::new(symbols)
-        };
+        self.spent = self.spent.with_budget(symbols);
         self
     }
 

@@ -7,6 +7,7 @@ use super::values::Values;
 use crate::error::{Arithmetic, Error, WalkError};
 use crate::lsystem::alphabet::SymbolSet;
 use crate::lsystem::choice::{child_key, kept, pick};
+use crate::lsystem::walker::Spent;
 use crate::math::Real;
 
 /// One expansion level: a production's modules (or the axiom's, or one module kept for a
@@ -39,22 +40,43 @@ pub(crate) const fn path_of(parent: u64, at: u16) -> u64 {
     z ^ (z >> 31)
 }
 
-/// Symbols read by a walk and by its context searches, against a budget.
+/// Symbols read by a walk and by its context searches, against a budget (counted down in
+/// a machine word, as the plain walk counts).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Work {
-    pub(super) read: u64,
-    pub(super) budget: u64,
+    spent: Spent,
 }
 
 impl Work {
-    pub(super) fn tick(&mut self) -> Result<(), Error> {
-        if self.read >= self.budget {
-            return Err(Error::Walk(WalkError::BudgetExhausted {
-                budget: self.budget,
-            }));
+    /// Nothing read yet, against `budget`.
+    pub(super) const fn new(budget: u64) -> Self {
+        Self {
+            spent: Spent::new(budget),
         }
-        self.read += 1;
-        Ok(())
+    }
+
+    /// Counts one symbol read, or the error of a spent budget.
+    #[inline(always)]
+    pub(super) fn tick(&mut self) -> Result<(), Error> {
+        if self.spent.one_more() {
+            Ok(())
+        } else {
+            Err(Error::Walk(WalkError::BudgetExhausted {
+                budget: self.spent.budget(),
+            }))
+        }
+    }
+
+    /// Symbols read so far.
+    pub(super) const fn read(&self) -> u64 {
+        self.spent.read()
+    }
+
+    /// The same count against another budget.
+    pub(super) const fn with_budget(self, budget: u64) -> Self {
+        Self {
+            spent: self.spent.with_budget(budget),
+        }
     }
 }
 

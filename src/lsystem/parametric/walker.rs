@@ -80,7 +80,7 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
             order,
             frames,
             pending,
-            work: Work { read: 0, budget },
+            work: Work::new(budget),
             levels: Levels::new(),
             branches: Branches::new(),
             expansions: Expansions::new(),
@@ -122,7 +122,7 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
     /// (context searches included).
     #[must_use]
     pub fn with_budget(mut self, symbols: u64) -> Self {
-        self.work.budget = symbols;
+        self.work = self.work.with_budget(symbols);
         self
     }
 
@@ -177,7 +177,7 @@ impl<'g, const DEPTH: usize, const SLOTS: usize> ParametricWalker<'g, DEPTH, SLO
 
     /// Modules read so far, context searches included.
     pub const fn symbols_read(&self) -> u64 {
-        self.work.read
+        self.work.read()
     }
 
     /// The next module written into `out`: false at the end.
@@ -452,5 +452,49 @@ impl<const DEPTH: usize, const SLOTS: usize> Iterator for ParametricWalker<'_, D
 
     fn next(&mut self) -> Option<Self::Item> {
         self.next_queried(None)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+
+    use super::*;
+    use crate::error::WalkError;
+    use crate::lsystem::LsysFile;
+
+    /// Over the unit tests' chunks of 7: a budget of b stops a parametric walk after
+    /// exactly b modules read, with the count right when it stops; a budget past the walk's
+    /// length never stops it.
+    #[test]
+    fn budgets_hold_across_chunks() {
+        let text = "Grow {\n  axiom: A(1)\n  angle: 30\n  A(x) --> F(x)[+A(x*0.5)]-A(x*0.7)\n}\n";
+        let mut grammar = ParametricGrammar::new();
+        LsysFile::new(text)
+            .entry("Grow")
+            .unwrap()
+            .parametric_into(&mut grammar)
+            .unwrap();
+        let mut whole = ParametricWalker::<'_, 8>::new(&grammar, 4).unwrap();
+        let handed = whole.by_ref().map(Result::unwrap).count() as u64;
+        let total = whole.symbols_read();
+        assert!(
+            total > handed && total > 20,
+            "{total} read, {handed} handed out"
+        );
+        for budget in 0..total + 10 {
+            let mut walk = ParametricWalker::<'_, 8>::new(&grammar, 4)
+                .unwrap()
+                .with_budget(budget);
+            let errors: std::vec::Vec<Error> = walk.by_ref().filter_map(Result::err).collect();
+            if budget < total {
+                let exhausted = Error::Walk(WalkError::BudgetExhausted { budget });
+                assert_eq!(errors, [exhausted], "budget {budget}");
+                assert_eq!(walk.symbols_read(), budget);
+            } else {
+                assert!(errors.is_empty(), "budget {budget}");
+                assert_eq!(walk.symbols_read(), total);
+            }
+        }
     }
 }
