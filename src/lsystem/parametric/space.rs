@@ -162,6 +162,50 @@ impl<const STACK: usize> Turtle3<STACK> {
         }))
     }
 
+    /// `[`: the state saved, a field at a time (inline copies, where the whole 80-byte
+    /// state went through the library's `memcpy`).
+    fn push(&mut self) -> Result<(), Error> {
+        let state = &self.state;
+        let saved = State3 {
+            position: state.position,
+            frame: state.frame,
+            step: state.step,
+            color: state.color,
+            width: state.width,
+        };
+        self.stack
+            .push(saved)
+            .map_err(|_| Error::Walk(WalkError::StackTooDeep { capacity: STACK }))
+    }
+
+    /// `]`: the state saved last, back (nothing where none is saved), a value at a time:
+    /// copied whole, or an array at a time, it went through the library's `memmove`.
+    fn pop(&mut self) {
+        if let Some(saved) = self.stack.last() {
+            // Every field named, so that a field added to the state cannot be left out.
+            let State3 {
+                position,
+                frame,
+                step,
+                color,
+                width,
+            } = saved;
+            let state = &mut self.state;
+            let [x, y, z] = *position;
+            state.position = [x, y, z];
+            let Frame3 { heading, left, up } = frame;
+            let unit = |&[a, b, c]: &[i32; 3]| [a, b, c];
+            state.frame.heading = unit(heading);
+            state.frame.left = unit(left);
+            state.frame.up = unit(up);
+            state.step = *step;
+            state.color = *color;
+            state.width = *width;
+            let depth = self.stack.len() - 1;
+            self.stack.truncate(depth);
+        }
+    }
+
     /// `!`, `_`: the new line width (never below 0).
     fn change_width(&mut self, change: WidthChange) {
         let width = self.state.width;
@@ -198,15 +242,8 @@ impl<const STACK: usize> Turtle3<STACK> {
                         .ok_or(Error::Walk(WalkError::Overflow))?;
                 }
                 Action::Color(color) => self.state.color = color.apply(self.state.color),
-                Action::Push => self
-                    .stack
-                    .push(self.state)
-                    .map_err(|_| Error::Walk(WalkError::StackTooDeep { capacity: STACK }))?,
-                Action::Pop => {
-                    if let Some(state) = self.stack.pop() {
-                        self.state = state;
-                    }
-                }
+                Action::Push => self.push()?,
+                Action::Pop => self.pop(),
                 Action::Width(change) => self.change_width(change),
                 Action::StartPolygon => self.polygons.start(self.state.position)?,
                 Action::Vertex => self.polygons.vertex(self.state.position)?,
