@@ -178,9 +178,9 @@ impl<'b, T: HitCount> Density<'b, T> {
                 .unwrap_or(unlit)
         };
         let left = self.area.top_left.x;
-        // A stretch of the row from `from`, `count` pixels (both within the row).
-        // Both below the width, a u32: the casts keep them whole; an area at the end of
-        // the i32 range wraps there instead of overflowing (no panic in a debug build).
+        // A stretch of the row from `from`, `count` pixels: both below the width, a u32,
+        // so the casts keep them whole; an area at the end of the i32 range wraps there
+        // instead of overflowing (no panic in a debug build).
         let stretch = |y: i32, from: usize, count: usize| {
             Rectangle::new(
                 Point::new(left.wrapping_add(from as i32), y),

@@ -220,7 +220,11 @@ impl ParametricGrammar {
     }
 
     /// The parameters a production binds (its contexts' and its predecessor's, in order)
-    /// if it rewrites `module` between `left` and `right` and its condition holds.
+    /// if it rewrites `module` between `left` and `right` and its condition holds. For a
+    /// production whose predecessor matches `module` ([`production_for`] passes over the
+    /// others before calling this).
+    ///
+    /// [`production_for`]: Self::production_for
     pub(super) fn binding(
         &self,
         production: &Production,
@@ -229,9 +233,7 @@ impl ParametricGrammar {
         right: Option<&Neighbour>,
         query: Query,
     ) -> Result<Option<Values>, EvalError> {
-        if !production.predecessor.matches(module) {
-            return Ok(None);
-        }
+        debug_assert!(production.predecessor.matches(module));
         let bound = if production.left.is_none() && production.right.is_none() {
             // No contexts: the predecessor's values are the binding, as they are.
             module.values
@@ -247,42 +249,7 @@ impl ParametricGrammar {
         };
         Ok(holds.then_some(bound))
     }
-}
 
-/// The parameters a production with a context binds: its left context's, its
-/// predecessor's and its right context's, in order; `None` where a context does not match.
-fn bind_in_context(
-    production: &Production,
-    module: &Neighbour,
-    left: Option<&Neighbour>,
-    right: Option<&Neighbour>,
-) -> Option<Values> {
-    let mut bound = Values::default();
-    let contexts = [(production.left, left), (production.right, right)];
-    for (pattern, neighbour) in contexts {
-        match (pattern, neighbour) {
-            (None, _) => {}
-            (Some(pattern), Some(neighbour)) if pattern.matches(neighbour) => {}
-            (Some(_), _) => return None,
-        }
-    }
-    let parts = [
-        production.left.and(left),
-        Some(module),
-        production.right.and(right),
-    ];
-    for part in parts.into_iter().flatten() {
-        for &value in part.values.as_slice() {
-            if let Some(slot) = bound.values.get_mut(usize::from(bound.count)) {
-                *slot = value;
-                bound.count += 1;
-            }
-        }
-    }
-    Some(bound)
-}
-
-impl ParametricGrammar {
     /// The production that rewrites `module` between `left` and `right` (contexts as
     /// found, skipping ignored symbols), and the parameters it binds: the first that
     /// applies, or when that one is stochastic, one of the applicable stochastic ones
@@ -334,4 +301,37 @@ impl ParametricGrammar {
         }
         Ok(None)
     }
+}
+
+/// The parameters a production with a context binds: its left context's, its
+/// predecessor's and its right context's, in order; `None` where a context does not match.
+fn bind_in_context(
+    production: &Production,
+    module: &Neighbour,
+    left: Option<&Neighbour>,
+    right: Option<&Neighbour>,
+) -> Option<Values> {
+    let mut bound = Values::default();
+    let contexts = [(production.left, left), (production.right, right)];
+    for (pattern, neighbour) in contexts {
+        match (pattern, neighbour) {
+            (None, _) => {}
+            (Some(pattern), Some(neighbour)) if pattern.matches(neighbour) => {}
+            (Some(_), _) => return None,
+        }
+    }
+    let parts = [
+        production.left.and(left),
+        Some(module),
+        production.right.and(right),
+    ];
+    for part in parts.into_iter().flatten() {
+        for &value in part.values.as_slice() {
+            if let Some(slot) = bound.values.get_mut(usize::from(bound.count)) {
+                *slot = value;
+                bound.count += 1;
+            }
+        }
+    }
+    Some(bound)
 }
