@@ -236,15 +236,31 @@ pub fn frames_in_order<P: Send>(
     Ok(())
 }
 
-/// Runs `work` with a pool of `threads` threads (every core when `None`): what the
-/// `--threads` option sets.
+/// Each of the pool's threads' stack.
+///
+/// The host's L-system walkers keep 1,024 levels by value, and an unoptimised build
+/// copies them from frame to frame: the deepest scene's frames then need several times
+/// a thread's default 2 MiB (docs/memory.md). Only what a thread touches is committed.
+pub const WORKER_STACK: usize = 32 << 20;
+
+/// Runs `work` with a pool of `threads` threads (every core when `None`), each with a
+/// stack of [`WORKER_STACK`] bytes: what the `--threads` option sets.
+///
+/// With `None`, `work` runs on the calling thread (the explorer's window stays on the
+/// main thread, where some platforms require it) and its parallel parts on rayon's global
+/// pool, made here with that stack unless the process made it before.
 pub fn with_threads<T: Send>(
     threads: Option<usize>,
     work: impl FnOnce() -> T + Send,
 ) -> Result<T, String> {
+    let builder = rayon::ThreadPoolBuilder::new().stack_size(WORKER_STACK);
     match threads {
-        None => Ok(work()),
-        Some(n) => rayon::ThreadPoolBuilder::new()
+        None => {
+            // Fails only where the global pool already exists: it is then kept as it is.
+            let _ = builder.build_global();
+            Ok(work())
+        }
+        Some(n) => builder
             .num_threads(n)
             .build()
             .map_err(|e| format!("--threads {n}: the threads could not start: {e}"))
@@ -337,5 +353,19 @@ mod tests {
                 "{algorithm:?}"
             );
         }
+    }
+
+    /// Work on a pool of a chosen number of threads has the stack it is promised: a
+    /// frame four times a thread's default stack holds (it would abort the test on a
+    /// default thread). `tests/threads.rs` checks the global pool, in a process of its own.
+    #[test]
+    fn the_pool_holds_frames_beyond_a_default_stack() {
+        #[inline(never)]
+        fn deep() -> usize {
+            let frame = std::hint::black_box([1u8; 8 << 20]);
+            frame.iter().map(|&byte| usize::from(byte)).sum()
+        }
+        let both = with_threads(Some(2), || rayon::join(deep, deep));
+        assert_eq!(both, Ok((8 << 20, 8 << 20)));
     }
 }
