@@ -1,9 +1,9 @@
 //! The house's structure: no module imports itself through others, and the layers stand as
 //! the developers' guide draws them.
 //!
-//! Every source file of the core, the simulator and the scene catalogue is read as a module,
-//! and every path it names (`use` trees and paths in code, tests and comments aside) as an
-//! arrow to the deepest module that path reaches. A cycle of arrows between files, or
+//! Every source file of the core, the simulator, the scene catalogue and the playground is
+//! read as a module, and every path it names (`use` trees and paths in code, tests and
+//! comments aside) as an arrow to the deepest module that path reaches. A cycle of arrows between files, or
 //! between the core's top-level modules, fails; so does a family that imports another
 //! family, or a shared layer that imports one above it. Paths that reach a module only
 //! through a re-export (`crate::Name`, `super::Name` of a `mod.rs` that hands `Name` on)
@@ -294,7 +294,7 @@ fn workspace() -> PathBuf {
 /// The crates whose files must not import each other in a loop.
 fn crates() -> Vec<(&'static str, Crate)> {
     let root = workspace();
-    ["src", "simulator/src", "boards/scenes/src"]
+    ["src", "simulator/src", "boards/scenes/src", "web/src"]
         .into_iter()
         .map(|src| (src, Crate::read(&root.join(src))))
         .collect()

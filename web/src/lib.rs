@@ -11,12 +11,14 @@
 // The exports' `#[no_mangle]` names are the page's interface; nothing else is unsafe.
 #![allow(unsafe_code)]
 
+mod picture;
 mod request;
 mod session;
 
 use std::cell::RefCell;
 
-pub use request::{respond, respond_in, Picture, Response};
+pub use picture::Picture;
+pub use request::{respond, respond_in, Response};
 pub use session::{Session, STEP_ITERATIONS};
 
 /// What the module holds between the page's calls.

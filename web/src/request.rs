@@ -18,8 +18,8 @@
 
 use std::path::Path;
 
+use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
-use embedded_graphics::{pixelcolor::Rgb888, primitives::Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use tinyfractal::escape::Tier;
 use tinyfractal::{LFile, LsysFile};
@@ -27,40 +27,11 @@ use tinyfractal_simulator::escape_scene::{self, Modes};
 use tinyfractal_simulator::files::FileKind;
 use tinyfractal_simulator::{gallery, scene};
 
+use crate::picture::Picture;
 use crate::session::{Session, STEP_ITERATIONS};
 
 /// The largest picture side the page may ask for.
 pub const MAX_SIDE: u32 = 2048;
-
-/// A picture as the page's canvas takes it: RGBA bytes, row by row.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Picture {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// Four bytes a pixel (alpha 255), rows top to bottom.
-    pub rgba: Vec<u8>,
-}
-
-impl Picture {
-    /// The pixels of a simulator display (the gallery's pictures).
-    pub fn of(display: &SimulatorDisplay<Rgb888>) -> Self {
-        let Rectangle { size, .. } = display.bounding_box();
-        let mut rgba = Vec::with_capacity((size.width * size.height * 4) as usize);
-        for y in 0..size.height as i32 {
-            for x in 0..size.width as i32 {
-                let colour = display.get_pixel(Point::new(x, y));
-                rgba.extend_from_slice(&[colour.r(), colour.g(), colour.b(), 255]);
-            }
-        }
-        Self {
-            width: size.width,
-            height: size.height,
-            rgba,
-        }
-    }
-}
 
 /// The answer to a request: a text (a list, the render's stats, or an error's message)
 /// and a picture where one was drawn.

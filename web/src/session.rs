@@ -8,7 +8,7 @@ use tinyfractal::render::DwellBuffer;
 use tinyfractal::View;
 use tinyfractal_simulator::escape_scene::{self, HostPalette};
 
-use crate::request::Picture;
+use crate::picture::Picture;
 
 /// Iterations a step computes: a few tens of milliseconds in a browser.
 pub const STEP_ITERATIONS: u64 = 2_000_000;
