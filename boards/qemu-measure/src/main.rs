@@ -31,7 +31,8 @@ mod firmware {
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::naive::{
-        bezier_f32, fountain_f32, gray_scott_f32, henon_f32, lorenz_f32, noise_f32,
+        bezier_f32, fountain_f32, gray_scott_f32, henon_f32, henon_fixed, lorenz_f32, lorenz_fixed,
+        noise_f32,
     };
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::naive::{
@@ -431,6 +432,13 @@ mod firmware {
                         henon_f32(points, target);
                     } else {
                         lorenz_f32(points, target);
+                    }
+                });
+                fixed_cost = run(&mut |target| {
+                    if kind == Kind::Henon {
+                        henon_fixed(points, target);
+                    } else {
+                        lorenz_fixed(points, target);
                     }
                 });
             }

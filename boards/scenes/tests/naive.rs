@@ -212,3 +212,129 @@ fn the_landscape_sketch_paints_every_pixel_in_bands() {
     );
     assert_eq!(landscape_f32((0.6, 40.0, 3), 30, &mut sketch), 0);
 }
+
+/// The pixels an f64 model of an attractor's sketch lights: `step` from `start`, 1,000
+/// steps skipped, then `points` points each placed by `place`.
+fn modelled<S: Copy>(
+    size: Size,
+    start: S,
+    step: impl Fn(S) -> S,
+    place: impl Fn(S, Size) -> (f64, f64),
+    points: u32,
+) -> std::collections::BTreeSet<(i32, i32)> {
+    let mut state = start;
+    let mut lit = std::collections::BTreeSet::new();
+    for n in 0..1000 + points {
+        state = step(state);
+        if n >= 1000 {
+            let (x, y) = place(state, size);
+            let (x, y) = (x.floor() as i32, y.floor() as i32);
+            if (0..size.width as i32).contains(&x) && (0..size.height as i32).contains(&y) {
+                lit.insert((x, y));
+            }
+        }
+    }
+    lit
+}
+
+/// The pixels a sketch lit on black.
+fn lit_pixels(frame: &Frame<Gray4>) -> std::collections::BTreeSet<(i32, i32)> {
+    let mut lit = std::collections::BTreeSet::new();
+    for y in 0..frame.size.height as i32 {
+        for x in 0..frame.size.width as i32 {
+            if frame.pixel(x, y).is_some_and(|c| c != Gray4::BLACK) {
+                lit.insert((x, y));
+            }
+        }
+    }
+    lit
+}
+
+/// The share of `model`'s pixels a sketch lit, and of the sketch's the model lit.
+fn shares(
+    sketch: &std::collections::BTreeSet<(i32, i32)>,
+    model: &std::collections::BTreeSet<(i32, i32)>,
+) -> (f64, f64) {
+    let both = sketch.intersection(model).count() as f64;
+    (both / model.len() as f64, both / sketch.len() as f64)
+}
+
+/// The Hénon sketches, in `f32` and in Q4.28, light the pixels an f64 orbit of the map
+/// lights in their box (the orbits part after a few dozen steps, the attractor they fill
+/// does not), and not those of an orbit placed two pixels off.
+#[test]
+fn the_henon_sketches_draw_the_attractor() {
+    use tinyfractal_scenes::naive::{henon_f32, henon_fixed};
+    let size = Size::new(128, 64);
+    let place = |shift: f64| {
+        move |(x, y): (f64, f64), size: Size| {
+            (
+                (x + 1.5) * f64::from(size.width) / 3.0 + shift,
+                (0.45 - y) * f64::from(size.height) / 0.9,
+            )
+        }
+    };
+    let step = |(x, y): (f64, f64)| (1.0 - 1.4 * x * x + y, 0.3 * x);
+    let model = modelled(size, (0.0, 0.0), step, place(0.0), 20_000);
+    let off = modelled(size, (0.0, 0.0), step, place(2.0), 20_000);
+    for sketch in [henon_f32::<Frame<Gray4>>, henon_fixed::<Frame<Gray4>>] {
+        let mut frame = Frame::filled(size, Gray4::BLACK);
+        assert_eq!(sketch(20_000, &mut frame), 20_000);
+        let lit = lit_pixels(&frame);
+        let (of_model, of_sketch) = shares(&lit, &model);
+        assert!(
+            of_model > 0.95 && of_sketch > 0.95,
+            "{of_model} {of_sketch}"
+        );
+        let (of_off, _) = shares(&lit, &off);
+        assert!(of_off < 0.75, "two pixels off: {of_off}");
+    }
+}
+
+/// The Lorenz sketches, in `f32` and in Q16.16, light the pixels an f64 RK4 orbit of the
+/// flow lights in their box (x across, z up), and not those of an orbit placed six pixels
+/// off.
+#[test]
+fn the_lorenz_sketches_draw_the_attractor() {
+    use tinyfractal_scenes::naive::{lorenz_f32, lorenz_fixed};
+    type State = [f64; 3];
+    fn f([x, y, z]: State) -> State {
+        [10.0 * (y - x), x * (28.0 - z) - y, x * y - 8.0 / 3.0 * z]
+    }
+    fn ahead(s: State, k: State, h: f64) -> State {
+        [s[0] + h * k[0], s[1] + h * k[1], s[2] + h * k[2]]
+    }
+    let step = |s: State| {
+        let dt = 0.01;
+        let k1 = f(s);
+        let k2 = f(ahead(s, k1, dt / 2.0));
+        let k3 = f(ahead(s, k2, dt / 2.0));
+        let k4 = f(ahead(s, k3, dt));
+        std::array::from_fn(|i| s[i] + dt / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]))
+    };
+    let place = |shift: f64| {
+        move |s: State, size: Size| {
+            (
+                (s[0] + 25.0) * f64::from(size.width) / 50.0 + shift,
+                (50.0 - s[2]) * f64::from(size.height) / 50.0,
+            )
+        }
+    };
+    let size = Size::new(128, 64);
+    let model = modelled(size, [1.0; 3], step, place(0.0), 20_000);
+    let off = modelled(size, [1.0; 3], step, place(6.0), 20_000);
+    for sketch in [lorenz_f32::<Frame<Gray4>>, lorenz_fixed::<Frame<Gray4>>] {
+        let mut frame = Frame::filled(size, Gray4::BLACK);
+        assert_eq!(sketch(20_000, &mut frame), 20_000);
+        let lit = lit_pixels(&frame);
+        let (of_model, of_sketch) = shares(&lit, &model);
+        // The flow's projection is dense at 128×64: orbits part, and a trajectory of 200
+        // time units lights about nine in ten of another's pixels.
+        assert!(
+            of_model > 0.88 && of_sketch > 0.88,
+            "{of_model} {of_sketch}"
+        );
+        let (of_off, _) = shares(&lit, &off);
+        assert!(of_off < 0.84, "six pixels off: {of_off}");
+    }
+}
