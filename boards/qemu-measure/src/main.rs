@@ -1,10 +1,11 @@
-//! Measuring firmware, two builds per core: runs every scene (and, where they apply, the
+//! Measuring firmware, four builds per core: runs every scene (and, where they apply, the
 //! f32 and fixed-point baselines) into a checksum target and reports, over semihosting,
 //! one line per scene: instructions, work, checksum and stack high-water mark. The build
 //! with `--features newer` measures the newer families' scenes (noise, reaction–diffusion,
-//! the attractors, the panels) and only them, the build with `--features shapes`
-//! Sierpiński's shapes and the walking figure with their baselines, the other build every
-//! other scene: together they would overflow the micro:bit's 256 KiB of flash.
+//! the attractors, Bézier curves, particles) and only them, the build with `--features
+//! panels` the dithered panels', the build with `--features shapes` Sierpiński's shapes
+//! and the walking figure with their baselines, the other build every other scene:
+//! together they would overflow the micro:bit's 256 KiB of flash.
 //!
 //! Under QEMU with `-icount shift=0` each instruction is one virtual nanosecond. SysTick
 //! runs from the core clock, so its ticks are proportional to instructions; the ratio is
@@ -38,14 +39,14 @@ mod firmware {
     use tinyfractal_scenes::naive::{
         carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed, sponge_f32,
     };
-    #[cfg(not(any(feature = "newer", feature = "shapes")))]
+    #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
     use tinyfractal_scenes::naive::{
         fern_f32, fern_fixed, landscape_f32, lsystem_f32, terrain_f32,
     };
     use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::{Shape, SCENES};
-    #[cfg(not(any(feature = "newer", feature = "shapes")))]
+    #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::{DYNAMICS_SCENES, TEXTURE_SCENES};
@@ -56,11 +57,11 @@ mod firmware {
     enum Baseline {
         Escape(BaselineView),
         /// The lecture's fern by the chaos game: the points.
-        #[cfg(not(any(feature = "newer", feature = "shapes")))]
+        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
         Fern(u32),
         /// A deterministic L-system: its system, its turn in degrees, order, and whether
         /// it grows up.
-        #[cfg(not(any(feature = "newer", feature = "shapes")))]
+        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
         LSystem(&'static tinyfractal_scenes::System, f32, u32, bool),
         /// fBm of Perlin's 2D noise: the permutation's seed, octaves, lattice cells across.
         #[cfg(feature = "newer")]
@@ -79,7 +80,7 @@ mod firmware {
         Bezier(&'static [[(i16, i16); 4]]),
         /// A midpoint-displacement profile (or, if the flag is set, a landscape):
         /// roughness, σ, seed; heights (along a side for a landscape).
-        #[cfg(not(any(feature = "newer", feature = "shapes")))]
+        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
         Terrain((f32, f32, u32), usize, bool),
         /// Sierpiński's carpet (true) or gasket at an order.
         #[cfg(feature = "shapes")]
@@ -92,7 +93,10 @@ mod firmware {
         Sponge(u32),
         /// ABOP's monopodial tree at an order, its string expanded (where the RAM holds
         /// it: not the micro:bit's).
-        #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
+        #[cfg(all(
+            measure_general,
+            not(any(feature = "newer", feature = "panels", feature = "shapes"))
+        ))]
         Tree(u32),
     }
 
@@ -132,7 +136,7 @@ mod firmware {
                 }
                 #[cfg(feature = "newer")]
                 Scene::Bezier { curves } => Some(Self::Bezier(curves)),
-                #[cfg(not(any(feature = "newer", feature = "shapes")))]
+                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
                 Scene::Terrain {
                     displacement,
                     samples,
@@ -170,7 +174,7 @@ mod firmware {
                 } => Some(Self::Sponge(order)),
                 // A stochastic system's choices are the engine's own generator: no sketch
                 // draws the same plant.
-                #[cfg(not(any(feature = "newer", feature = "shapes")))]
+                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
                 Scene::LSystem {
                     system,
                     order,
@@ -180,7 +184,7 @@ mod firmware {
                     let up = orientation == tinyfractal::render::Orientation::Up;
                     Some(Self::LSystem(system, degrees, order, up))
                 }
-                #[cfg(not(any(feature = "newer", feature = "shapes")))]
+                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
                 Scene::Ifs {
                     system: "fern",
                     points,
@@ -314,13 +318,12 @@ mod firmware {
         // Every core's scenes, with the baselines where they apply: the newer families in
         // their own build, the rest in the other.
         #[cfg(feature = "newer")]
-        let every_core = TEXTURE_SCENES
-            .iter()
-            .chain(&DYNAMICS_SCENES)
-            .chain(&tinyfractal_scenes::PANEL_SCENES);
+        let every_core = TEXTURE_SCENES.iter().chain(&DYNAMICS_SCENES);
+        #[cfg(feature = "panels")]
+        let every_core = tinyfractal_scenes::PANEL_SCENES.iter();
         #[cfg(feature = "shapes")]
         let every_core = SCENES.iter().filter(|entry| entry.scene.is_shape());
-        #[cfg(not(any(feature = "newer", feature = "shapes")))]
+        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
         let every_core = SCENES
             .iter()
             .filter(|entry| !entry.scene.is_shape())
@@ -339,7 +342,12 @@ mod firmware {
                     .scene
                     .draw_texture(target, &GREY)
                     .or_else(|| entry.scene.draw_dynamics(target, &GREY))
-                    .or_else(|| entry.scene.draw_panel(target, &GREY))
+                    .unwrap_or(Ok(Work::Samples(0)));
+                // The panels' build reaches only the panels' code.
+                #[cfg(feature = "panels")]
+                return entry
+                    .scene
+                    .draw_panel(target, &GREY)
                     .unwrap_or(Ok(Work::Samples(0)));
                 // The shapes' build reaches only the shapes' code.
                 #[cfg(feature = "shapes")]
@@ -347,12 +355,15 @@ mod firmware {
                     .scene
                     .draw_shape(target, &GREY)
                     .unwrap_or(Ok(Work::Segments(0)));
-                #[cfg(not(any(feature = "newer", feature = "shapes")))]
+                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
                 entry.scene.draw(target, &GREY)
             });
         }
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
-        #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
+        #[cfg(all(
+            measure_general,
+            not(any(feature = "newer", feature = "panels", feature = "shapes"))
+        ))]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
             // The parametric 3D tree beside its sketch (the sketch is of that tree only).
             let baseline = (entry.name == "monopodial-tree").then_some(Baseline::Tree(entry.order));
@@ -361,7 +372,10 @@ mod firmware {
             });
         }
         // Perturbation's views, where the RAM holds a reference orbit (not the micro:bit's).
-        #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
+        #[cfg(all(
+            measure_general,
+            not(any(feature = "newer", feature = "panels", feature = "shapes"))
+        ))]
         for entry in tinyfractal_scenes::DEEP_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.scene.draw(target, &GREY)
@@ -456,7 +470,7 @@ mod firmware {
                     bezier_f32(curves, place, NAIVE_BEZIER_STEPS, target);
                 });
             }
-            #[cfg(not(any(feature = "newer", feature = "shapes")))]
+            #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
             Some(Baseline::Terrain(displacement, samples, map)) => {
                 f32_cost = run(&mut |target| {
                     if map {
@@ -495,14 +509,14 @@ mod firmware {
                     figure_f32(frames, target);
                 });
             }
-            #[cfg(not(any(feature = "newer", feature = "shapes")))]
+            #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
             Some(Baseline::LSystem(system, degrees, order, up)) => {
                 let rules = (system.axiom, system.rules, system.draw_symbols);
                 f32_cost = run(&mut |target| {
                     lsystem_f32(rules, degrees, order, up, target);
                 });
             }
-            #[cfg(not(any(feature = "newer", feature = "shapes")))]
+            #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
             Some(Baseline::Fern(points)) => {
                 f32_cost = run(&mut |target| {
                     fern_f32(points, target);
@@ -511,7 +525,10 @@ mod firmware {
                     fern_fixed(points, target);
                 });
             }
-            #[cfg(all(measure_general, not(any(feature = "newer", feature = "shapes"))))]
+            #[cfg(all(
+                measure_general,
+                not(any(feature = "newer", feature = "panels", feature = "shapes"))
+            ))]
             Some(Baseline::Tree(order)) => {
                 f32_cost = run(&mut |target| {
                     tinyfractal_scenes::naive::monopodial_tree_f32(order, target);
