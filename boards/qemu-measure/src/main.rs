@@ -32,8 +32,8 @@ mod firmware {
     use tinyfractal_scenes::measure::{baseline_f32, baseline_fixed20, BaselineView, Checksum};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::naive::{
-        bezier_f32, fountain_f32, gray_scott_f32, henon_f32, henon_fixed, lorenz_f32, lorenz_fixed,
-        noise_f32,
+        bezier_f32, bezier_fixed, fountain_f32, fountain_fixed, gray_scott_f32, gray_scott_fixed,
+        henon_f32, henon_fixed, lorenz_f32, lorenz_fixed, noise_f32, noise_fixed,
     };
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::naive::{
@@ -432,11 +432,17 @@ mod firmware {
                 f32_cost = run(&mut |target| {
                     noise_f32(&permutation, octaves, scale, target);
                 });
+                fixed_cost = run(&mut |target| {
+                    noise_fixed(&permutation, octaves, scale, target);
+                });
             }
             #[cfg(feature = "newer")]
             Some(Baseline::Reaction(rates, grid, steps)) => {
                 f32_cost = run(&mut |target| {
                     gray_scott_f32(rates, grid, steps, target);
+                });
+                fixed_cost = run(&mut |target| {
+                    gray_scott_fixed(rates, grid, steps, target);
                 });
             }
             #[cfg(feature = "newer")]
@@ -461,6 +467,9 @@ mod firmware {
                 f32_cost = run(&mut |target| {
                     fountain_f32(frames, target);
                 });
+                fixed_cost = run(&mut |target| {
+                    fountain_fixed(frames, target);
+                });
             }
             #[cfg(feature = "newer")]
             Some(Baseline::Bezier(curves)) => {
@@ -468,6 +477,11 @@ mod firmware {
                     let area = embedded_graphics::geometry::Dimensions::bounding_box(target);
                     let place = tinyfractal_scenes::design_placement(area);
                     bezier_f32(curves, place, NAIVE_BEZIER_STEPS, target);
+                });
+                fixed_cost = run(&mut |target| {
+                    let area = embedded_graphics::geometry::Dimensions::bounding_box(target);
+                    let place = tinyfractal_scenes::design_placement(area);
+                    bezier_fixed(curves, place, NAIVE_BEZIER_STEPS, target);
                 });
             }
             #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]

@@ -11,6 +11,8 @@
 //! it with a float turtle, and ABOP's monopodial tree, parametric and 3D, the same way
 //! ([`monopodial_tree_f32`]).
 
+use core::ops::{Add, Neg};
+
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use micromath::F32Ext;
 
@@ -59,7 +61,9 @@ impl NaivePerlin {
         a + t * (b - a)
     }
 
-    fn grad(hash: u8, x: f32, y: f32) -> f32 {
+    /// His gradient of `hash` dotted with (x, y), in any number that negates and adds (0 is
+    /// its default).
+    fn grad<T: Copy + Default + Neg<Output = T> + Add<Output = T>>(hash: u8, x: T, y: T) -> T {
         let h = hash & 15;
         let u = if h < 8 { x } else { y };
         let v = if h < 4 {
@@ -67,28 +71,36 @@ impl NaivePerlin {
         } else if h == 12 || h == 14 {
             x
         } else {
-            0.0
+            T::default()
         };
         (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
     }
 
-    fn noise(&self, x: f32, y: f32) -> f32 {
-        let (fx, fy) = (fast_floor(x), fast_floor(y));
-        let (cx, cy) = ((fx & 255) as usize, (fy & 255) as usize);
-        let (x, y) = (x - fx as f32, y - fy as f32);
-        let (u, v) = (Self::fade(x), Self::fade(y));
+    /// The hashes of the lattice cell (cx, cy)'s corners: (0, 0), (1, 0), (0, 1), (1, 1).
+    fn corners(&self, cx: usize, cy: usize) -> [u8; 4] {
         let p = &self.p;
         let a = p[cx] as usize + cy;
-        let (aa, ab) = (p[a] as usize, p[a + 1] as usize);
         let b = p[cx + 1] as usize + cy;
-        let (ba, bb) = (p[b] as usize, p[b + 1] as usize);
+        [
+            p[p[a] as usize],
+            p[p[b] as usize],
+            p[p[a + 1] as usize],
+            p[p[b + 1] as usize],
+        ]
+    }
+
+    fn noise(&self, x: f32, y: f32) -> f32 {
+        let (fx, fy) = (fast_floor(x), fast_floor(y));
+        let [aa, ba, ab, bb] = self.corners((fx & 255) as usize, (fy & 255) as usize);
+        let (x, y) = (x - fx as f32, y - fy as f32);
+        let (u, v) = (Self::fade(x), Self::fade(y));
         Self::lerp(
             v,
-            Self::lerp(u, Self::grad(p[aa], x, y), Self::grad(p[ba], x - 1.0, y)),
+            Self::lerp(u, Self::grad(aa, x, y), Self::grad(ba, x - 1.0, y)),
             Self::lerp(
                 u,
-                Self::grad(p[ab], x, y - 1.0),
-                Self::grad(p[bb], x - 1.0, y - 1.0),
+                Self::grad(ab, x, y - 1.0),
+                Self::grad(bb, x - 1.0, y - 1.0),
             ),
         )
     }
@@ -122,6 +134,64 @@ pub fn noise_f32<D: DrawTarget<Color = Gray4>>(
                 Point::new(i as i32, j as i32),
                 grey(value),
             )));
+        }
+    }
+    samples
+}
+
+/// fBm of Perlin's 2D noise as a careful fixed-point sketch writes it: [`noise_f32`]'s
+/// loop in Q16.16; returns the samples taken.
+///
+/// A coordinate's lattice cell is its high half and its place in the cell its low half;
+/// `fade`, `grad` and `lerp` are his, with Q16 products (32 × 32 → 64 bits); the octaves'
+/// weights are halvings, and the sum is scaled to [0, 1] by its total's reciprocal once.
+pub fn noise_fixed<D: DrawTarget<Color = Gray4>>(
+    permutation: &[u8; 256],
+    octaves: u32,
+    scale: f32,
+    target: &mut D,
+) -> u64 {
+    const ONE: i32 = 1 << 16;
+    fn mul(a: i32, b: i32) -> i32 {
+        ((i64::from(a) * i64::from(b)) >> 16) as i32
+    }
+    fn fade(t: i32) -> i32 {
+        mul(
+            mul(mul(t, t), t),
+            mul(t, mul(t, 6 * ONE) - 15 * ONE) + 10 * ONE,
+        )
+    }
+    let lerp = |t: i32, a: i32, b: i32| a + mul(t, b - a);
+    let grad = NaivePerlin::grad::<i32>;
+    let perlin = NaivePerlin::new(permutation);
+    let noise = |x: i32, y: i32| {
+        let [aa, ba, ab, bb] =
+            perlin.corners(((x >> 16) & 255) as usize, ((y >> 16) & 255) as usize);
+        let (x, y) = (x & 0xFFFF, y & 0xFFFF);
+        let (u, v) = (fade(x), fade(y));
+        lerp(
+            v,
+            lerp(u, grad(aa, x, y), grad(ba, x - ONE, y)),
+            lerp(u, grad(ab, x, y - ONE), grad(bb, x - ONE, y - ONE)),
+        )
+    };
+    let size = target.bounding_box().size;
+    let step = (scale * 65536.0) as i32 / size.width.max(1) as i32;
+    // The octaves' total weight, 2 − 2^(1 − octaves), and its reciprocal, Q16.
+    let total = (0..octaves).fold(0, |total, octave| total + (ONE >> octave));
+    let reciprocal = ((1i64 << 32) / i64::from(total.max(1))) as i32;
+    let mut samples = 0;
+    for j in 0..size.height as i32 {
+        for i in 0..size.width as i32 {
+            let (x, y) = (i * step, j * step);
+            let mut sum = 0;
+            for octave in 0..octaves {
+                sum += noise(x << octave, y << octave) >> octave;
+                samples += 1;
+            }
+            let value = (mul(sum, reciprocal) + ONE) / 2;
+            let level = ((value.clamp(0, ONE) * 15 + ONE / 2) >> 16) as u8;
+            let _ = target.draw_iter(core::iter::once(Pixel(Point::new(i, j), Gray4::new(level))));
         }
     }
     samples
@@ -197,6 +267,118 @@ pub fn gray_scott_f32<D: DrawTarget<Color = Gray4>>(
         }
     }
     u64::from(steps) * (w * h) as u64
+}
+
+/// Gray–Scott as a careful fixed-point sketch writes it; returns the cell-steps.
+///
+/// The same two grids, start, rates and picture as [`gray_scott_f32`], in Q16 (1.0 is
+/// 65,536) with 64-bit products: the kernel's weights as whole numbers (corners 1, edges 4,
+/// centre −20) and their sum times 1/20 once, the neighbours' rows and columns found once a
+/// row and a cell instead of by `%`, each value constrained to [0, 1].
+pub fn gray_scott_fixed<D: DrawTarget<Color = Gray4>>(
+    (feed, kill): (f32, f32),
+    (w, h): (usize, usize),
+    steps: u32,
+    target: &mut D,
+) -> u64 {
+    const ONE: i32 = 1 << 16;
+    fn mul(a: i32, b: i32) -> i32 {
+        ((i64::from(a) * i64::from(b)) >> 16) as i32
+    }
+    if w * h > NAIVE_REACTION_CELLS || w == 0 || h == 0 {
+        return 0;
+    }
+    let (feed, kill) = ((feed * 65536.0) as i32, (kill * 65536.0) as i32);
+    let twentieth = ONE / 20;
+    let mut grids = [[[ONE, 0i32]; NAIVE_REACTION_CELLS]; 2];
+    let last = reaction_steps(&mut grids, (w, h), ONE, steps, |old, new| {
+        for y in 0..h {
+            let (up, down) = (
+                if y == 0 { h - 1 } else { y - 1 },
+                if y + 1 == h { 0 } else { y + 1 },
+            );
+            let rows = [up * w, y * w, down * w];
+            for x in 0..w {
+                let (left, right) = (
+                    if x == 0 { w - 1 } else { x - 1 },
+                    if x + 1 == w { 0 } else { x + 1 },
+                );
+                let at = |row: usize, column: usize| old[rows[row] + column];
+                let (mut corners, mut edges) = ([0i32; 2], [0i32; 2]);
+                for (row, column) in [(0, left), (0, right), (2, left), (2, right)] {
+                    let cell = at(row, column);
+                    corners = [corners[0] + cell[0], corners[1] + cell[1]];
+                }
+                for (row, column) in [(0, x), (2, x), (1, left), (1, right)] {
+                    let cell = at(row, column);
+                    edges = [edges[0] + cell[0], edges[1] + cell[1]];
+                }
+                let [a, b] = at(1, x);
+                let la = mul(corners[0] + 4 * edges[0] - 20 * a, twentieth);
+                let lb = mul(corners[1] + 4 * edges[1] - 20 * b, twentieth);
+                let abb = mul(a, mul(b, b));
+                new[y * w + x] = [
+                    (a + la - abb + mul(feed, ONE - a)).clamp(0, ONE),
+                    (b + lb / 2 + abb - mul(kill + feed, b)).clamp(0, ONE),
+                ];
+            }
+        }
+    });
+    let level = |cell: [i32; 2]| Gray4::new(((cell[1] * 15 + ONE / 2) >> 16) as u8);
+    draw_cells(last, (w, h), level, target);
+    u64::from(steps) * (w * h) as u64
+}
+
+/// Sims's square start (B = `one` in a centred square of side ⌊min(w, h)/8⌋) in the
+/// first of two grids, then `steps` steps, each writing one grid from the other; the grid
+/// written last.
+fn reaction_steps<T: Copy>(
+    grids: &mut [[[T; 2]; NAIVE_REACTION_CELLS]; 2],
+    (w, h): (usize, usize),
+    one: T,
+    steps: u32,
+    mut step: impl FnMut(&[[T; 2]; NAIVE_REACTION_CELLS], &mut [[T; 2]; NAIVE_REACTION_CELLS]),
+) -> &[[T; 2]; NAIVE_REACTION_CELLS] {
+    let side = (w.min(h) / 8).max(1);
+    let (x0, y0) = ((w - side) / 2, (h - side) / 2);
+    for y in y0..y0 + side {
+        for x in x0..x0 + side {
+            grids[0][y * w + x][1] = one;
+        }
+    }
+    let [first, second] = grids;
+    for n in 0..steps {
+        if n.is_multiple_of(2) {
+            step(first, second);
+        } else {
+            step(second, first);
+        }
+    }
+    if steps.is_multiple_of(2) {
+        first
+    } else {
+        second
+    }
+}
+
+/// Each pixel of the target the grey of the grid's cell under it.
+fn draw_cells<T: Copy, D: DrawTarget<Color = Gray4>>(
+    cells: &[[T; 2]],
+    (w, h): (usize, usize),
+    grey: impl Fn([T; 2]) -> Gray4,
+    target: &mut D,
+) {
+    let size = target.bounding_box().size;
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let cell = cells[(j as usize * h / size.height as usize) * w
+                + i as usize * w / size.width as usize];
+            let _ = target.draw_iter(core::iter::once(Pixel(
+                Point::new(i as i32, j as i32),
+                grey(cell),
+            )));
+        }
+    }
 }
 
 /// Steps from the start before a sketch plots, as the scenes skip.
@@ -391,6 +573,68 @@ pub fn fountain_f32<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -
         for i in 0..N {
             if age[i] < life[i] {
                 let p = Point::new(x[i] as i32, y[i] as i32);
+                let _ = target.draw_iter(core::iter::once(Pixel(p, Gray4::WHITE)));
+            }
+        }
+    }
+    steps
+}
+
+/// A fountain of particles as a careful fixed-point sketch writes it.
+///
+/// [`fountain_f32`]'s pool, generator, spawns and forces with positions and velocities in
+/// Q16.16 (a product by a rate one 64-bit multiply, the rates scaled to the display once);
+/// returns the particle-steps.
+pub fn fountain_fixed<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -> u64 {
+    const N: usize = 128;
+    const HALF: i32 = 1 << 15;
+    fn mul(a: i32, b: i32) -> i32 {
+        ((i64::from(a) * i64::from(b)) >> 16) as i32
+    }
+    let size = target.bounding_box().size;
+    let (w, h) = (size.width as i32, size.height as i32);
+    // Pixels a tick a pixel a second of the 240-high design, Q16.16.
+    let scale = q16_of(h) / (240 * 30);
+    let (gravity, ground) = (10 * scale, q16_of(h) / 100 * 95);
+    let mut seed: u32 = 1;
+    let mut random = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        (seed >> 16) as i32
+    };
+    let (mut x, mut y, mut vx, mut vy) = ([0i32; N], [0i32; N], [0i32; N], [0i32; N]);
+    let (mut age, mut life) = ([0u16; N], [0u16; N]);
+    let mut steps = 0;
+    for _ in 0..frames {
+        for _ in 0..4 {
+            let slot = (0..N)
+                .find(|&i| age[i] >= life[i])
+                .unwrap_or_else(|| (0..N).max_by_key(|&i| age[i]).unwrap_or(0));
+            x[slot] = q16_of(w) / 2;
+            y[slot] = ground;
+            vx[slot] = mul(random() - HALF, 90 * scale);
+            vy[slot] = -(250 * scale + mul(random() - HALF, 60 * scale));
+            age[slot] = 0;
+            life[slot] = 57 + ((random() * 18) >> 16) as u16;
+        }
+        for i in 0..N {
+            if age[i] < life[i] {
+                vy[i] += gravity;
+                x[i] += vx[i];
+                y[i] += vy[i];
+                if y[i] > ground {
+                    y[i] = ground;
+                    vy[i] = -vy[i] / 4;
+                }
+                age[i] += 1;
+                steps += 1;
+            }
+        }
+        let _ = target.clear(Gray4::BLACK);
+        for i in 0..N {
+            if age[i] < life[i] {
+                let p = Point::new(x[i] >> 16, y[i] >> 16);
                 let _ = target.draw_iter(core::iter::once(Pixel(p, Gray4::WHITE)));
             }
         }
@@ -954,6 +1198,80 @@ pub fn bezier_f32<D: DrawTarget<Color = Gray4>>(
             last = next;
             drawn += 1;
         }
+    }
+    drawn
+}
+
+/// Lines joining each point to the next (embedded-graphics' `Line`, a sketch's
+/// `drawLine`); returns how many.
+fn polyline<D: DrawTarget<Color = Gray4>>(
+    target: &mut D,
+    points: impl IntoIterator<Item = Point>,
+) -> u64 {
+    use embedded_graphics::primitives::{Line, PrimitiveStyle};
+    let mut points = points.into_iter();
+    let Some(mut last) = points.next() else {
+        return 0;
+    };
+    let mut drawn = 0;
+    for next in points {
+        let _ = Line::new(last, next)
+            .into_styled(PrimitiveStyle::with_stroke(Gray4::WHITE, 1))
+            .draw(target);
+        last = next;
+        drawn += 1;
+    }
+    drawn
+}
+
+/// Cubic Bézier curves as a careful fixed-point sketch draws them; returns the lines drawn.
+///
+/// Each curve's polynomial stepped by forward differences in Q16.16 (three additions a
+/// point, the differences from the control points once a curve; exact where `steps` is a
+/// power of two up to 16), the points rounded and joined with `Line` as [`bezier_f32`].
+pub fn bezier_fixed<D: DrawTarget<Color = Gray4>>(
+    curves: &[[(i16, i16); 4]],
+    place: impl Fn((i16, i16)) -> Point,
+    steps: u32,
+    target: &mut D,
+) -> u64 {
+    let _ = target.clear(Gray4::BLACK);
+    let steps = steps.max(1);
+    let n = i64::from(steps);
+    let mut drawn = 0;
+    for curve in curves {
+        let [p0, p1, p2, p3] = curve.map(&place);
+        // p(t) = a·t³ + b·t² + c·t + d; with h = 1/steps the differences, Q16.16, are
+        // Δ = a·h³ + b·h² + c·h, Δ² = 6a·h³ + 2b·h², Δ³ = 6a·h³.
+        let differences = |v0: i32, v1: i32, v2: i32, v3: i32| {
+            let (v0, v1, v2, v3) = (i64::from(v0), i64::from(v1), i64::from(v2), i64::from(v3));
+            let (a, b, c) = (
+                -v0 + 3 * v1 - 3 * v2 + v3,
+                3 * v0 - 6 * v1 + 3 * v2,
+                3 * (v1 - v0),
+            );
+            let q = |numerator: i64, denominator: i64| ((numerator << 16) / denominator) as i32;
+            [
+                (v0 << 16) as i32,
+                q(a + b * n + c * n * n, n * n * n),
+                q(6 * a + 2 * b * n, n * n * n),
+                q(6 * a, n * n * n),
+            ]
+        };
+        let mut x = differences(p0.x, p1.x, p2.x, p3.x);
+        let mut y = differences(p0.y, p1.y, p2.y, p3.y);
+        let point =
+            |x: [i32; 4], y: [i32; 4]| Point::new((x[0] + 0x8000) >> 16, (y[0] + 0x8000) >> 16);
+        let start = point(x, y);
+        let ahead = (0..steps).map(|_| {
+            for v in [&mut x, &mut y] {
+                v[0] += v[1];
+                v[1] += v[2];
+                v[2] += v[3];
+            }
+            point(x, y)
+        });
+        drawn += polyline(target, core::iter::once(start).chain(ahead));
     }
     drawn
 }

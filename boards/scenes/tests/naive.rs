@@ -338,3 +338,302 @@ fn the_lorenz_sketches_draw_the_attractor() {
         assert!(of_off < 0.84, "six pixels off: {of_off}");
     }
 }
+
+/// How far a frame's grey levels (row by row) are from `levels`: the largest difference,
+/// and the share of pixels with the same level.
+fn levels_apart(frame: &Frame<Gray4>, levels: &[i32]) -> (i32, f64) {
+    let drawn: Vec<i32> = (0..frame.size.height as i32)
+        .flat_map(|y| (0..frame.size.width as i32).map(move |x| (x, y)))
+        .map(|(x, y)| i32::from(frame.pixel(x, y).unwrap().luma()))
+        .collect();
+    assert_eq!(drawn.len(), levels.len());
+    let most = drawn.iter().zip(levels).map(|(a, b)| (a - b).abs()).max();
+    let same = drawn.iter().zip(levels).filter(|(a, b)| a == b).count();
+    (most.unwrap(), same as f64 / drawn.len() as f64)
+}
+
+/// The B field of Sims's Gray–Scott (D_A = 1, D_B = ½, Δt = 1, the 3×3 kernel, periodic
+/// edges) in f64 after `steps` steps from the square start, on a `w`×`h` grid.
+fn gray_scott_model((feed, kill): (f64, f64), (w, h): (usize, usize), steps: u32) -> Vec<f64> {
+    let mut grid = vec![[1.0f64, 0.0]; w * h];
+    let side = (w.min(h) / 8).max(1);
+    let (x0, y0) = ((w - side) / 2, (h - side) / 2);
+    for y in y0..y0 + side {
+        for x in x0..x0 + side {
+            grid[y * w + x][1] = 1.0;
+        }
+    }
+    for _ in 0..steps {
+        let old = grid.clone();
+        for y in 0..h {
+            for x in 0..w {
+                let mut laplacian = [0.0; 2];
+                for dy in 0..3 {
+                    for dx in 0..3 {
+                        let weight = match (dx, dy) {
+                            (1, 1) => -1.0,
+                            (1, _) | (_, 1) => 0.2,
+                            _ => 0.05,
+                        };
+                        let cell = old[((y + h + dy - 1) % h) * w + (x + w + dx - 1) % w];
+                        laplacian[0] += weight * cell[0];
+                        laplacian[1] += weight * cell[1];
+                    }
+                }
+                let [a, b] = old[y * w + x];
+                let abb = a * b * b;
+                grid[y * w + x] = [
+                    (a + laplacian[0] - abb + feed * (1.0 - a)).clamp(0.0, 1.0),
+                    (b + 0.5 * laplacian[1] + abb - (kill + feed) * b).clamp(0.0, 1.0),
+                ];
+            }
+        }
+    }
+    grid.iter().map(|cell| cell[1]).collect()
+}
+
+/// The Gray–Scott sketches, in `f32` and in Q16, draw the grey levels of an f64 model's B
+/// field (the scene's grid, rates and steps): at most one level apart on every pixel, and
+/// the same level on most; the model at other rates (coral's) is not that close.
+#[test]
+fn the_gray_scott_sketches_draw_the_model() {
+    use tinyfractal::reaction::Preset;
+    use tinyfractal_scenes::naive::{gray_scott_f32, gray_scott_fixed};
+    let rates = |preset: Preset| {
+        let model = preset.model();
+        (model.feed.to_f64(), model.kill.to_f64())
+    };
+    let (grid, steps, size) = ((24, 24), 700, Size::new(128, 64));
+    let levels = |field: &[f64]| -> Vec<i32> {
+        let mut levels = Vec::new();
+        for j in 0..size.height as usize {
+            for i in 0..size.width as usize {
+                let cell = field[(j * grid.1 / size.height as usize) * grid.0
+                    + i * grid.0 / size.width as usize];
+                levels.push((cell.clamp(0.0, 1.0) * 15.0 + 0.5) as i32);
+            }
+        }
+        levels
+    };
+    let model = levels(&gray_scott_model(rates(Preset::Mitosis), grid, steps));
+    let other = levels(&gray_scott_model(rates(Preset::Coral), grid, steps));
+    let (feed, kill) = rates(Preset::Mitosis);
+    type Sketch = fn((f32, f32), (usize, usize), u32, &mut Frame<Gray4>) -> u64;
+    let sketches: [Sketch; 2] = [gray_scott_f32, gray_scott_fixed];
+    for sketch in sketches {
+        let mut frame = Frame::filled(size, Gray4::BLACK);
+        let cell_steps = sketch((feed as f32, kill as f32), grid, steps, &mut frame);
+        assert_eq!(cell_steps, 700 * 24 * 24);
+        let apart = |levels: &[i32]| levels_apart(&frame, levels);
+        let (most, same) = apart(&model);
+        assert!(most <= 1 && same > 0.98, "{most} {same}");
+        let (most, same) = apart(&other);
+        assert!(most > 1 || same < 0.9, "{most} {same}");
+    }
+}
+
+/// The fixed-point Bézier sketch's forward differences land on the cubic's own points (an
+/// f64 model of each curve at t = k/16 and k/8, rounded, joined by the same `Line`s), and
+/// one step less does not.
+#[test]
+fn the_fixed_bezier_sketch_steps_onto_the_curves_points() {
+    use embedded_graphics::primitives::{Line, PrimitiveStyle};
+    use tinyfractal_scenes::{design_placement, naive::bezier_fixed, SMOOTH_FIGURE};
+    let size = Size::new(128, 64);
+    let model = |steps: u32, frame: &mut Frame<Gray4>| {
+        let place = design_placement(frame.bounding_box());
+        for curve in &SMOOTH_FIGURE {
+            let [p0, p1, p2, p3] = curve.map(&place);
+            let at = |t: f64| {
+                let u = 1.0 - t;
+                let axis = |v0: i32, v1: i32, v2: i32, v3: i32| {
+                    let value = u * u * u * f64::from(v0)
+                        + 3.0 * u * u * t * f64::from(v1)
+                        + 3.0 * u * t * t * f64::from(v2)
+                        + t * t * t * f64::from(v3);
+                    (value + 0.5).floor() as i32
+                };
+                Point::new(axis(p0.x, p1.x, p2.x, p3.x), axis(p0.y, p1.y, p2.y, p3.y))
+            };
+            for k in 0..steps {
+                let (from, to) = (
+                    at(f64::from(k) / f64::from(steps)),
+                    at(f64::from(k + 1) / f64::from(steps)),
+                );
+                Line::new(from, to)
+                    .into_styled(PrimitiveStyle::with_stroke(Gray4::WHITE, 1))
+                    .draw(frame)
+                    .unwrap();
+            }
+        }
+    };
+    for steps in [16, 8] {
+        let mut expected = Frame::filled(size, Gray4::BLACK);
+        model(steps, &mut expected);
+        let mut sketch = Frame::filled(size, Gray4::BLACK);
+        let place = design_placement(sketch.bounding_box());
+        let lines = bezier_fixed(&SMOOTH_FIGURE, place, steps, &mut sketch);
+        assert_eq!(lines, u64::from(steps) * SMOOTH_FIGURE.len() as u64);
+        assert!(sketch == expected, "{steps} steps");
+        let mut coarser = Frame::filled(size, Gray4::BLACK);
+        model(steps / 2, &mut coarser);
+        assert!(sketch != coarser, "{steps} steps against half as many");
+    }
+}
+
+/// The fountain sketches' last frame, in `f32` and in Q16.16, against an f64 model of the
+/// same pool, generator and forces: every lit pixel within one of a modelled particle's,
+/// most of them on one, the particle-steps within 1 %; and not against the model five
+/// frames earlier.
+#[test]
+fn the_fountain_sketches_draw_the_model() {
+    use tinyfractal_scenes::naive::{fountain_f32, fountain_fixed};
+    const N: usize = 128;
+    let size = Size::new(128, 64);
+    let model = |frames: u32| {
+        let (w, h) = (f64::from(size.width), f64::from(size.height));
+        let scale = h / 240.0 / 30.0;
+        let (gravity, ground) = (300.0 * scale / 30.0, h * 0.95);
+        let mut seed: u32 = 1;
+        let mut random = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 17;
+            seed ^= seed << 5;
+            f64::from(seed >> 8) / 16_777_216.0
+        };
+        let mut particles = [(0.0f64, 0.0f64, 0.0f64, 0.0f64, 0u32, 0u32); N];
+        let mut steps = 0u64;
+        for _ in 0..frames {
+            for _ in 0..4 {
+                let slot = (0..N)
+                    .find(|&i| particles[i].4 >= particles[i].5)
+                    .unwrap_or_else(|| (0..N).max_by_key(|&i| particles[i].4).unwrap());
+                let vx = (random() - 0.5) * 90.0 * scale;
+                let vy = -(250.0 + (random() - 0.5) * 60.0) * scale;
+                let life = 57 + (random() * 18.0) as u32;
+                particles[slot] = (w * 0.5, ground, vx, vy, 0, life);
+            }
+            for p in particles.iter_mut().filter(|p| p.4 < p.5) {
+                p.3 += gravity;
+                p.0 += p.2;
+                p.1 += p.3;
+                if p.1 > ground {
+                    p.1 = ground;
+                    p.3 = -p.3 * 0.25;
+                }
+                p.4 += 1;
+                steps += 1;
+            }
+        }
+        let lit: std::collections::BTreeSet<(i32, i32)> = particles
+            .iter()
+            .filter(|p| p.4 < p.5)
+            .map(|p| (p.0.floor() as i32, p.1.floor() as i32))
+            .collect();
+        (lit, steps)
+    };
+    let (expected, steps) = model(60);
+    let (earlier, _) = model(55);
+    let sketches: [fn(u32, &mut Frame<Gray4>) -> u64; 2] = [fountain_f32, fountain_fixed];
+    for sketch in sketches {
+        let mut frame = Frame::filled(size, Gray4::BLACK);
+        let drawn = sketch(60, &mut frame);
+        assert!(
+            drawn.abs_diff(steps) * 100 <= steps,
+            "{drawn} against {steps}"
+        );
+        let lit = lit_pixels(&frame);
+        let near = |set: &std::collections::BTreeSet<(i32, i32)>, (x, y): (i32, i32)| {
+            (-1..=1).any(|dx| (-1..=1).any(|dy| set.contains(&(x + dx, y + dy))))
+        };
+        assert!(
+            lit.iter().all(|&p| near(&expected, p)),
+            "a pixel far from the model"
+        );
+        let (of_model, of_sketch) = shares(&lit, &expected);
+        assert!(
+            of_model > 0.95 && of_sketch > 0.95,
+            "{of_model} {of_sketch}"
+        );
+        let (of_earlier, _) = shares(&lit, &earlier);
+        assert!(of_earlier < 0.5, "five frames before: {of_earlier}");
+    }
+}
+
+/// The grey levels of fBm (six octaves, halving) of Perlin's improved 2D noise in f64 over
+/// a `size` picture `scale` lattice cells across, for `permutation` (his reference code's
+/// fade, grad and lerp).
+fn perlin_model(permutation: &[u8; 256], size: Size, scale: f64) -> Vec<i32> {
+    let p: Vec<usize> = (0..512)
+        .map(|i| usize::from(permutation[i % 256]))
+        .collect();
+    let fade = |t: f64| t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    let lerp = |t: f64, a: f64, b: f64| a + t * (b - a);
+    let grad = |hash: usize, x: f64, y: f64| {
+        let h = hash & 15;
+        let u = if h < 8 { x } else { y };
+        let v = match h {
+            0..4 => y,
+            12 | 14 => x,
+            _ => 0.0,
+        };
+        (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
+    };
+    let noise = |x: f64, y: f64| {
+        let (fx, fy) = (x.floor(), y.floor());
+        let (cx, cy) = ((fx as i64 & 255) as usize, (fy as i64 & 255) as usize);
+        let (x, y) = (x - fx, y - fy);
+        let (u, v) = (fade(x), fade(y));
+        let a = p[cx] + cy;
+        let b = p[cx + 1] + cy;
+        lerp(
+            v,
+            lerp(u, grad(p[p[a]], x, y), grad(p[p[b]], x - 1.0, y)),
+            lerp(
+                u,
+                grad(p[p[a + 1]], x, y - 1.0),
+                grad(p[p[b + 1]], x - 1.0, y - 1.0),
+            ),
+        )
+    };
+    let step = scale / f64::from(size.width);
+    let mut levels = Vec::new();
+    for j in 0..size.height {
+        for i in 0..size.width {
+            let (x, y) = (f64::from(i) * step, f64::from(j) * step);
+            let (mut sum, mut total) = (0.0, 0.0);
+            for octave in 0..6 {
+                let frequency = f64::from(1u32 << octave);
+                sum += noise(x * frequency, y * frequency) / frequency;
+                total += 1.0 / frequency;
+            }
+            let value = (sum / total + 1.0) / 2.0;
+            levels.push((value.clamp(0.0, 1.0) * 15.0 + 0.5) as i32);
+        }
+    }
+    levels
+}
+
+/// The noise sketches, in `f32` and in Q16.16, draw the grey levels of an f64 model of
+/// Perlin's fBm (the scene's six octaves, four cells across, his permutation): at most one
+/// level apart on every pixel and the same on most; another permutation's are not.
+#[test]
+fn the_noise_sketches_draw_the_model() {
+    use tinyfractal::noise::Perlin;
+    use tinyfractal_scenes::naive::{noise_f32, noise_fixed};
+    let size = Size::new(128, 64);
+    let permutation = *Perlin::seeded(0).permutation();
+    let model = perlin_model(&permutation, size, 4.0);
+    let other = perlin_model(Perlin::seeded(1).permutation(), size, 4.0);
+    type Sketch = fn(&[u8; 256], u32, f32, &mut Frame<Gray4>) -> u64;
+    let sketches: [Sketch; 2] = [noise_f32, noise_fixed];
+    for sketch in sketches {
+        let mut frame = Frame::filled(size, Gray4::BLACK);
+        assert_eq!(sketch(&permutation, 6, 4.0, &mut frame), 6 * 128 * 64);
+        let apart = |levels: &[i32]| levels_apart(&frame, levels);
+        let (most, same) = apart(&model);
+        assert!(most <= 1 && same > 0.95, "{most} {same}");
+        let (most, same) = apart(&other);
+        assert!(most > 1 && same < 0.5, "{most} {same}");
+    }
+}
