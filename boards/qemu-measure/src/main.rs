@@ -37,7 +37,7 @@ mod firmware {
     };
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::naive::{
-        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed, sponge_f32,
+        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed, sponge_f32, sponge_fixed,
     };
     #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
     use tinyfractal_scenes::naive::{
@@ -515,6 +515,9 @@ mod firmware {
             Some(Baseline::Sponge(order)) => {
                 f32_cost = run(&mut |target| {
                     sponge_f32(order, target);
+                });
+                fixed_cost = run(&mut |target| {
+                    sponge_fixed(order, target);
                 });
             }
             #[cfg(feature = "shapes")]

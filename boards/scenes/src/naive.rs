@@ -1463,6 +1463,108 @@ pub fn sponge_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u
     visit((0.0, 0.0, 0.0), 1.0, order, &mut draw)
 }
 
+/// The Menger sponge as a careful fixed-point sketch draws it; returns the cubes drawn.
+///
+/// [`sponge_f32`]'s cubes, faces, greys and order, with the corners on an integer lattice
+/// (3^order units a side), the isometric axes as Q16 constants, and the fit a Q32 scale
+/// found once, so that a corner is three integer products an axis and one 64-bit one.
+pub fn sponge_fixed<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
+    use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
+    type Corner = (i32, i32, i32);
+    let _ = target.clear(Gray4::BLACK);
+    let n = 3i32.pow(order.min(6));
+    // cos 45°, sin 45°·sin 35.264° and cos 35.264°: screen x right, y up.
+    let (c, s, e) = (
+        q16(core::f32::consts::FRAC_1_SQRT_2),
+        q16(0.408_248_3),
+        q16(0.816_496_6),
+    );
+    let project = |(x, y, z): Corner| ((x - z) * c, y * e - (x + z) * s);
+    let (mut low, mut high) = ((i32::MAX, i32::MAX), (i32::MIN, i32::MIN));
+    for corner in 0..8 {
+        let p = project((corner & 1, (corner >> 1) & 1, (corner >> 2) & 1));
+        let p = (p.0 * n, p.1 * n);
+        low = (low.0.min(p.0), low.1.min(p.1));
+        high = (high.0.max(p.0), high.1.max(p.1));
+    }
+    let size = target.bounding_box().size;
+    let (w, h) = (i64::from(size.width) - 4, i64::from(size.height) - 4);
+    let span = (i64::from(high.0 - low.0), i64::from(high.1 - low.1));
+    // Pixels a projected unit, Q32, the smaller axis's; the box centred less 2 pixels.
+    let scale = ((w << 32) / span.0).min((h << 32) / span.1);
+    let left = (2 << 32) + ((w << 32) - span.0 * scale) / 2;
+    let bottom = ((2 + h) << 32) - ((h << 32) - span.1 * scale) / 2;
+    let pixel = |corner: Corner| {
+        let (x, y) = project(corner);
+        Point::new(
+            ((left + i64::from(x - low.0) * scale + (1 << 31)) >> 32) as i32,
+            ((bottom - i64::from(y - low.1) * scale + (1 << 31)) >> 32) as i32,
+        )
+    };
+    fn visit(corner: Corner, side: i32, depth: u32, draw: &mut dyn FnMut(Corner, i32)) -> u64 {
+        if depth == 0 {
+            draw(corner, side);
+            return 1;
+        }
+        let third = side / 3;
+        let mut drawn = 0;
+        for i in 0..3 {
+            for j in 0..3 {
+                for k in 0..3 {
+                    if u8::from(i == 1) + u8::from(j == 1) + u8::from(k == 1) >= 2 {
+                        continue;
+                    }
+                    let at = (
+                        corner.0 + i * third,
+                        corner.1 + j * third,
+                        corner.2 + k * third,
+                    );
+                    drawn += visit(at, third, depth - 1, draw);
+                }
+            }
+        }
+        drawn
+    }
+    let mut draw = |(x, y, z): Corner, t: i32| {
+        let faces = [
+            (
+                [
+                    (x + t, y, z),
+                    (x + t, y + t, z),
+                    (x + t, y + t, z + t),
+                    (x + t, y, z + t),
+                ],
+                9,
+            ),
+            (
+                [
+                    (x, y + t, z),
+                    (x + t, y + t, z),
+                    (x + t, y + t, z + t),
+                    (x, y + t, z + t),
+                ],
+                15,
+            ),
+            (
+                [
+                    (x, y, z + t),
+                    (x + t, y, z + t),
+                    (x + t, y + t, z + t),
+                    (x, y + t, z + t),
+                ],
+                12,
+            ),
+        ];
+        for (corners, grey) in faces {
+            let [a, b, c, d] = corners.map(pixel);
+            let style = PrimitiveStyle::with_fill(Gray4::new(grey));
+            let _ = Triangle::new(a, b, c).into_styled(style).draw(target);
+            let _ = Triangle::new(a, c, d).into_styled(style).draw(target);
+        }
+    };
+    visit((0, 0, 0), n, order.min(6), &mut draw)
+}
+
 /// The most heights along a side of the naive landscape.
 pub const NAIVE_LANDSCAPE_SIDE: usize = 33;
 
