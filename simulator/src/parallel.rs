@@ -357,7 +357,7 @@ mod tests {
 
     /// Work on a pool of a chosen number of threads has the stack it is promised: a
     /// frame four times a thread's default stack holds (it would abort the test on a
-    /// default thread). `tests/threads.rs` checks the global pool, in a process of its own.
+    /// default thread). `tests/stack.rs` checks the global pool, in a process of its own.
     #[test]
     fn the_pool_holds_frames_beyond_a_default_stack() {
         #[inline(never)]

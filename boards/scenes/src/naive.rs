@@ -5,11 +5,16 @@
 //! lecture's fern by the chaos game in `f32` and in careful Q16.16. Each draws its picture
 //! pixel by pixel into the target, as such sketches do; Sierpiński's carpet and gasket,
 //! recursive in `f32` and in Q16.16, fill their last level's squares and triangles with
-//! embedded-graphics' styled primitives (Adafruit's `fillRect` and `fillTriangle`).; the
+//! embedded-graphics' styled primitives (Adafruit's `fillRect` and `fillTriangle`); the
 //! walking figure by a float matrix stack draws lines and circles with them (`drawLine`,
 //! `drawCircle`); a deterministic L-system expands its string in a byte buffer and draws
 //! it with a float turtle, and ABOP's monopodial tree, parametric and 3D, the same way
 //! ([`monopodial_tree_f32`]).
+//!
+//! Beside most `f32` sketches a careful fixed-point one (`*_fixed`: Q16 or Q16.16 with
+//! 64-bit products, Hénon in Q4.28). The fixed sketches share helpers among themselves,
+//! not with the `f32` ones, whose code stays as a sketch writes it: sharing changed their
+//! instruction counts, which are the baselines.
 
 use core::ops::{Add, Neg};
 
@@ -152,16 +157,13 @@ pub fn noise_fixed<D: DrawTarget<Color = Gray4>>(
     target: &mut D,
 ) -> u64 {
     const ONE: i32 = 1 << 16;
-    fn mul(a: i32, b: i32) -> i32 {
-        ((i64::from(a) * i64::from(b)) >> 16) as i32
-    }
     fn fade(t: i32) -> i32 {
-        mul(
-            mul(mul(t, t), t),
-            mul(t, mul(t, 6 * ONE) - 15 * ONE) + 10 * ONE,
+        mul_q16(
+            mul_q16(mul_q16(t, t), t),
+            mul_q16(t, mul_q16(t, 6 * ONE) - 15 * ONE) + 10 * ONE,
         )
     }
-    let lerp = |t: i32, a: i32, b: i32| a + mul(t, b - a);
+    let lerp = |t: i32, a: i32, b: i32| a + mul_q16(t, b - a);
     let grad = NaivePerlin::grad::<i32>;
     let perlin = NaivePerlin::new(permutation);
     let noise = |x: i32, y: i32| {
@@ -189,7 +191,7 @@ pub fn noise_fixed<D: DrawTarget<Color = Gray4>>(
                 sum += noise(x << octave, y << octave) >> octave;
                 samples += 1;
             }
-            let value = (mul(sum, reciprocal) + ONE) / 2;
+            let value = (mul_q16(sum, reciprocal) + ONE) / 2;
             let level = ((value.clamp(0, ONE) * 15 + ONE / 2) >> 16) as u8;
             let _ = target.draw_iter(core::iter::once(Pixel(Point::new(i, j), Gray4::new(level))));
         }
@@ -282,9 +284,6 @@ pub fn gray_scott_fixed<D: DrawTarget<Color = Gray4>>(
     target: &mut D,
 ) -> u64 {
     const ONE: i32 = 1 << 16;
-    fn mul(a: i32, b: i32) -> i32 {
-        ((i64::from(a) * i64::from(b)) >> 16) as i32
-    }
     if w * h > NAIVE_REACTION_CELLS || w == 0 || h == 0 {
         return 0;
     }
@@ -314,12 +313,12 @@ pub fn gray_scott_fixed<D: DrawTarget<Color = Gray4>>(
                     edges = [edges[0] + cell[0], edges[1] + cell[1]];
                 }
                 let [a, b] = at(1, x);
-                let la = mul(corners[0] + 4 * edges[0] - 20 * a, twentieth);
-                let lb = mul(corners[1] + 4 * edges[1] - 20 * b, twentieth);
-                let abb = mul(a, mul(b, b));
+                let la = mul_q16(corners[0] + 4 * edges[0] - 20 * a, twentieth);
+                let lb = mul_q16(corners[1] + 4 * edges[1] - 20 * b, twentieth);
+                let abb = mul_q16(a, mul_q16(b, b));
                 new[y * w + x] = [
-                    (a + la - abb + mul(feed, ONE - a)).clamp(0, ONE),
-                    (b + lb / 2 + abb - mul(kill + feed, b)).clamp(0, ONE),
+                    (a + la - abb + mul_q16(feed, ONE - a)).clamp(0, ONE),
+                    (b + lb / 2 + abb - mul_q16(kill + feed, b)).clamp(0, ONE),
                 ];
             }
         }
@@ -478,21 +477,18 @@ pub fn henon_fixed<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) ->
 /// 2,500), RK4 with Δt = 0.01 as [`lorenz_f32`], the sixth of Δt folded into one
 /// constant; the same start, skip and box; returns the points plotted.
 pub fn lorenz_fixed<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> u64 {
-    fn mul(a: i32, b: i32) -> i32 {
-        ((i64::from(a) * i64::from(b)) >> 16) as i32
-    }
     fn f([x, y, z]: [i32; 3]) -> [i32; 3] {
         [
-            mul(q16(10.0), y - x),
-            mul(x, q16(28.0) - z) - y,
-            mul(x, y) - mul(q16(8.0 / 3.0), z),
+            mul_q16(q16(10.0), y - x),
+            mul_q16(x, q16(28.0) - z) - y,
+            mul_q16(x, y) - mul_q16(q16(8.0 / 3.0), z),
         ]
     }
     fn ahead(s: [i32; 3], k: [i32; 3], h: i32) -> [i32; 3] {
         [
-            s[0] + mul(h, k[0]),
-            s[1] + mul(h, k[1]),
-            s[2] + mul(h, k[2]),
+            s[0] + mul_q16(h, k[0]),
+            s[1] + mul_q16(h, k[1]),
+            s[2] + mul_q16(h, k[2]),
         ]
     }
     const DT: i32 = q16(0.01);
@@ -510,11 +506,11 @@ pub fn lorenz_fixed<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -
         let k3 = f(ahead(s, k2, HALF_DT));
         let k4 = f(ahead(s, k3, DT));
         for i in 0..3 {
-            s[i] += mul(SIXTH_DT, k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+            s[i] += mul_q16(SIXTH_DT, k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
         }
         if step >= NAIVE_SKIP {
-            let px = mul(s[0] + q16(25.0), sx) >> 16;
-            let py = mul(q16(50.0) - s[2], sz) >> 16;
+            let px = mul_q16(s[0] + q16(25.0), sx) >> 16;
+            let py = mul_q16(q16(50.0) - s[2], sz) >> 16;
             let _ = target.draw_iter(core::iter::once(Pixel(Point::new(px, py), Gray4::WHITE)));
         }
     }
@@ -588,9 +584,6 @@ pub fn fountain_f32<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -
 pub fn fountain_fixed<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D) -> u64 {
     const N: usize = 128;
     const HALF: i32 = 1 << 15;
-    fn mul(a: i32, b: i32) -> i32 {
-        ((i64::from(a) * i64::from(b)) >> 16) as i32
-    }
     let size = target.bounding_box().size;
     let (w, h) = (size.width as i32, size.height as i32);
     // Pixels a tick a pixel a second of the 240-high design, Q16.16.
@@ -613,8 +606,8 @@ pub fn fountain_fixed<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D)
                 .unwrap_or_else(|| (0..N).max_by_key(|&i| age[i]).unwrap_or(0));
             x[slot] = q16_of(w) / 2;
             y[slot] = ground;
-            vx[slot] = mul(random() - HALF, 90 * scale);
-            vy[slot] = -(250 * scale + mul(random() - HALF, 60 * scale));
+            vx[slot] = mul_q16(random() - HALF, 90 * scale);
+            vy[slot] = -(250 * scale + mul_q16(random() - HALF, 60 * scale));
             age[slot] = 0;
             life[slot] = 57 + ((random() * 18) >> 16) as u16;
         }
@@ -684,14 +677,16 @@ const fn q16(value: f32) -> i32 {
     (value * 65536.0) as i32
 }
 
+/// The careful sketches' product in Q16 (or Q16.16): 32 × 32 → 64 bits, shifted back.
+fn mul_q16(a: i32, b: i32) -> i32 {
+    ((i64::from(a) * i64::from(b)) >> 16) as i32
+}
+
 /// The fern as a careful fixed-point sketch writes it.
 ///
 /// Q16.16 with 64-bit products, the same choice and box as [`fern_f32`], the scale to
 /// pixels folded into one multiply an axis.
 pub fn fern_fixed<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> u64 {
-    fn mul(a: i32, b: i32) -> i32 {
-        ((i64::from(a) * i64::from(b)) >> 16) as i32
-    }
     const MAPS: [[i32; 6]; 4] = [
         [0, 0, 0, q16(0.16), 0, 0],
         [q16(0.85), q16(0.04), q16(-0.04), q16(0.85), 0, q16(1.6)],
@@ -714,10 +709,13 @@ pub fn fern_fixed<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> 
             86..=92 => 2,
             _ => 3,
         }];
-        (x, y) = (mul(a, x) + mul(b, y) + e, mul(c, x) + mul(d, y) + f);
+        (x, y) = (
+            mul_q16(a, x) + mul_q16(b, y) + e,
+            mul_q16(c, x) + mul_q16(d, y) + f,
+        );
         if step >= NAIVE_SKIP {
-            let px = mul(x + q16(2.2), sx) >> 16;
-            let py = mul(q16(10.0) - y, sy) >> 16;
+            let px = mul_q16(x + q16(2.2), sx) >> 16;
+            let py = mul_q16(q16(10.0) - y, sy) >> 16;
             let _ = target.draw_iter(core::iter::once(Pixel(Point::new(px, py), Gray4::WHITE)));
         }
     }

@@ -169,11 +169,15 @@ fn the_terrain_sketch_draws_ground_from_the_bottom() {
     assert_eq!(terrain_f32((0.7, 40.0, 7), 2000, &mut sketch), 0);
 }
 
-/// The sponge's sketch draws the 400 cubes of order 2 over about the scene's box, lighting
-/// about as many pixels.
+/// The sponge's sketches, in `f32` and in fixed point, draw the 400 cubes of order 2 over
+/// about the scene's box, lighting about as many pixels; and the same picture but for
+/// pixels on the triangles' edges.
 #[test]
-fn the_sponge_sketch_draws_the_scenes_sponge() {
-    use tinyfractal_scenes::{naive::sponge_f32, Shape};
+fn the_sponge_sketches_draw_the_scenes_sponge() {
+    use tinyfractal_scenes::{
+        naive::{sponge_f32, sponge_fixed},
+        Shape,
+    };
     let size = Size::new(128, 64);
     let mut ours = Frame::filled(size, GREY.background);
     Scene::Subdivision {
@@ -182,14 +186,23 @@ fn the_sponge_sketch_draws_the_scenes_sponge() {
     }
     .draw(&mut ours, &GREY)
     .unwrap();
-    let mut sketch = Frame::filled(size, Gray4::BLACK);
-    assert_eq!(sponge_f32(2, &mut sketch), 400);
-    assert_alike(
-        reach(&sketch, |c| c != Gray4::BLACK),
-        reach(&ours, |c| c != GREY.background),
-        4,
-        0.8..1.25,
-    );
+    let sketches: [fn(u32, &mut Frame<Gray4>) -> u64; 2] = [sponge_f32, sponge_fixed];
+    let [float, fixed] = sketches.map(|sketch| {
+        let mut frame = Frame::filled(size, Gray4::BLACK);
+        assert_eq!(sketch(2, &mut frame), 400);
+        assert_alike(
+            reach(&frame, |c| c != Gray4::BLACK),
+            reach(&ours, |c| c != GREY.background),
+            4,
+            0.8..1.25,
+        );
+        frame
+    });
+    let differing = (0..64)
+        .flat_map(|y| (0..128).map(move |x| (x, y)))
+        .filter(|&(x, y)| fixed.pixel(x, y) != float.pixel(x, y))
+        .count();
+    assert!(differing * 100 < 128 * 64, "{differing} pixels differ");
 }
 
 /// The landscape's sketch makes its 33² heights and paints every pixel, in bands: the
@@ -636,37 +649,4 @@ fn the_noise_sketches_draw_the_model() {
         let (most, same) = apart(&other);
         assert!(most > 1 && same < 0.5, "{most} {same}");
     }
-}
-
-/// The sponge's fixed-point sketch draws the 400 cubes of order 2 over about the scene's
-/// box, and the `f32` sketch's picture but for pixels on the triangles' edges.
-#[test]
-fn the_fixed_sponge_sketch_draws_the_scenes_sponge() {
-    use tinyfractal_scenes::{
-        naive::{sponge_f32, sponge_fixed},
-        Shape,
-    };
-    let size = Size::new(128, 64);
-    let mut ours = Frame::filled(size, GREY.background);
-    Scene::Subdivision {
-        shape: Shape::Cube(tinyfractal::subdivision::CubeVariant::Axes),
-        order: 2,
-    }
-    .draw(&mut ours, &GREY)
-    .unwrap();
-    let mut fixed = Frame::filled(size, Gray4::BLACK);
-    assert_eq!(sponge_fixed(2, &mut fixed), 400);
-    assert_alike(
-        reach(&fixed, |c| c != Gray4::BLACK),
-        reach(&ours, |c| c != GREY.background),
-        4,
-        0.8..1.25,
-    );
-    let mut float = Frame::filled(size, Gray4::BLACK);
-    sponge_f32(2, &mut float);
-    let differing = (0..64)
-        .flat_map(|y| (0..128).map(move |x| (x, y)))
-        .filter(|&(x, y)| fixed.pixel(x, y) != float.pixel(x, y))
-        .count();
-    assert!(differing * 100 < 128 * 64, "{differing} pixels differ");
 }
