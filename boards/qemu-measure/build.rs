@@ -16,6 +16,15 @@ fn main() {
     };
     fs::write(out.join("memory.x"), memory).expect("OUT_DIR is writable");
     println!("cargo:rerun-if-changed=build.rs");
+    // The default build (every scene not in a build of its own): one name for it, where
+    // the code would otherwise repeat the list of the other builds' features.
+    println!("cargo::rustc-check-cfg=cfg(measure_default)");
+    let own_build = ["NEWER", "PANELS", "SHAPES", "TERRAIN"]
+        .iter()
+        .any(|feature| env::var_os(format!("CARGO_FEATURE_{feature}")).is_some());
+    if !own_build {
+        println!("cargo:rustc-cfg=measure_default");
+    }
     // The general engine's scenes need more RAM than the micro:bit has.
     println!("cargo::rustc-check-cfg=cfg(measure_general)");
     if !target.starts_with("thumbv6m") {

@@ -1,10 +1,11 @@
-//! Measuring firmware, four builds per core: runs every scene (and, where they apply, the
+//! Measuring firmware, five builds per core: runs every scene (and, where they apply, the
 //! f32 and fixed-point baselines) into a checksum target and reports, over semihosting,
 //! one line per scene: instructions, work, checksum and stack high-water mark. The build
 //! with `--features newer` measures the newer families' scenes (noise, reaction–diffusion,
 //! the attractors, Bézier curves, particles) and only them, the build with `--features
 //! panels` the dithered panels', the build with `--features shapes` Sierpiński's shapes
-//! and the walking figure with their baselines, the other build every other scene:
+//! and the walking figure with their baselines, the build with `--features terrain` the
+//! terrains with theirs, the other build every other scene:
 //! together they would overflow the micro:bit's 256 KiB of flash.
 //!
 //! Under QEMU with `-icount shift=0` each instruction is one virtual nanosecond. SysTick
@@ -37,16 +38,19 @@ mod firmware {
     };
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::naive::{
-        carpet_f32, carpet_fixed, figure_f32, gasket_f32, gasket_fixed, sponge_f32, sponge_fixed,
+        carpet_f32, carpet_fixed, figure_f32, figure_fixed, gasket_f32, gasket_fixed, sponge_f32,
+        sponge_fixed,
     };
-    #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
-    use tinyfractal_scenes::naive::{
-        fern_f32, fern_fixed, landscape_f32, lsystem_f32, terrain_f32,
-    };
+    #[cfg(measure_default)]
+    use tinyfractal_scenes::naive::{fern_f32, fern_fixed, lsystem_f32, lsystem_fixed};
+    #[cfg(feature = "terrain")]
+    use tinyfractal_scenes::naive::{landscape_f32, landscape_fixed, terrain_f32, terrain_fixed};
+    #[cfg(feature = "terrain")]
+    use tinyfractal_scenes::SCENES;
     use tinyfractal_scenes::{Scene, Work, GREY};
     #[cfg(feature = "shapes")]
     use tinyfractal_scenes::{Shape, SCENES};
-    #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+    #[cfg(measure_default)]
     use tinyfractal_scenes::{DISPLAY_SCENES, SCENES, ZOOM_SCENES};
     #[cfg(feature = "newer")]
     use tinyfractal_scenes::{DYNAMICS_SCENES, TEXTURE_SCENES};
@@ -57,12 +61,17 @@ mod firmware {
     enum Baseline {
         Escape(BaselineView),
         /// The lecture's fern by the chaos game: the points.
-        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+        #[cfg(measure_default)]
         Fern(u32),
-        /// A deterministic L-system: its system, its turn in degrees, order, and whether
-        /// it grows up.
-        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
-        LSystem(&'static tinyfractal_scenes::System, f32, u32, bool),
+        /// A deterministic L-system: its system, its turn in degrees and (for the careful
+        /// sketch) in divisions of the circle, order, and whether it grows up.
+        #[cfg(measure_default)]
+        LSystem(
+            &'static tinyfractal_scenes::System,
+            (f32, Option<u32>),
+            u32,
+            bool,
+        ),
         /// fBm of Perlin's 2D noise: the permutation's seed, octaves, lattice cells across.
         #[cfg(feature = "newer")]
         Noise(u32, u32, f32),
@@ -80,7 +89,7 @@ mod firmware {
         Bezier(&'static [[(i16, i16); 4]]),
         /// A midpoint-displacement profile (or, if the flag is set, a landscape):
         /// roughness, σ, seed; heights (along a side for a landscape).
-        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+        #[cfg(feature = "terrain")]
         Terrain((f32, f32, u32), usize, bool),
         /// Sierpiński's carpet (true) or gasket at an order.
         #[cfg(feature = "shapes")]
@@ -93,10 +102,7 @@ mod firmware {
         Sponge(u32),
         /// ABOP's monopodial tree at an order, its string expanded (where the RAM holds
         /// it: not the micro:bit's).
-        #[cfg(all(
-            measure_general,
-            not(any(feature = "newer", feature = "panels", feature = "shapes"))
-        ))]
+        #[cfg(all(measure_general, measure_default))]
         Tree(u32),
     }
 
@@ -136,7 +142,7 @@ mod firmware {
                 }
                 #[cfg(feature = "newer")]
                 Scene::Bezier { curves } => Some(Self::Bezier(curves)),
-                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+                #[cfg(feature = "terrain")]
                 Scene::Terrain {
                     displacement,
                     samples,
@@ -174,20 +180,22 @@ mod firmware {
                 } => Some(Self::Sponge(order)),
                 // A stochastic system's choices are the engine's own generator: no sketch
                 // draws the same plant.
-                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+                #[cfg(measure_default)]
                 Scene::LSystem {
                     system,
                     order,
                     orientation,
                 } if system.alternatives.is_empty() => {
                     let degrees = tinyfractal_scenes::naive::turn_degrees(system.angle);
+                    let divisions = tinyfractal_scenes::naive::turn_divisions(system.angle);
                     let up = orientation == tinyfractal::render::Orientation::Up;
-                    Some(Self::LSystem(system, degrees, order, up))
+                    Some(Self::LSystem(system, (degrees, divisions), order, up))
                 }
-                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+                #[cfg(measure_default)]
                 Scene::Ifs {
                     system: "fern",
                     points,
+                    density: false,
                     ..
                 } => Some(Self::Fern(points as u32)),
                 _ => BaselineView::of(scene).map(Self::Escape),
@@ -323,10 +331,12 @@ mod firmware {
         let every_core = tinyfractal_scenes::PANEL_SCENES.iter();
         #[cfg(feature = "shapes")]
         let every_core = SCENES.iter().filter(|entry| entry.scene.is_shape());
-        #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+        #[cfg(feature = "terrain")]
+        let every_core = SCENES.iter().filter(|entry| entry.scene.is_terrain());
+        #[cfg(measure_default)]
         let every_core = SCENES
             .iter()
-            .filter(|entry| !entry.scene.is_shape())
+            .filter(|entry| !entry.scene.is_shape() && !entry.scene.is_terrain())
             .chain(&DISPLAY_SCENES)
             .chain(&ZOOM_SCENES);
         for entry in every_core {
@@ -355,15 +365,18 @@ mod firmware {
                     .scene
                     .draw_shape(target, &GREY)
                     .unwrap_or(Ok(Work::Segments(0)));
-                #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+                // The terrains' build reaches only the terrains' code.
+                #[cfg(feature = "terrain")]
+                return entry
+                    .scene
+                    .draw_terrain(target, &GREY)
+                    .unwrap_or(Ok(Work::Cells(0)));
+                #[cfg(measure_default)]
                 entry.scene.draw(target, &GREY)
             });
         }
         // The general engine's scenes, where the RAM holds them (not the micro:bit's).
-        #[cfg(all(
-            measure_general,
-            not(any(feature = "newer", feature = "panels", feature = "shapes"))
-        ))]
+        #[cfg(all(measure_general, measure_default))]
         for entry in tinyfractal_scenes::GENERAL_SCENES.iter() {
             // The parametric 3D tree beside its sketch (the sketch is of that tree only).
             let baseline = (entry.name == "monopodial-tree").then_some(Baseline::Tree(entry.order));
@@ -372,10 +385,7 @@ mod firmware {
             });
         }
         // Perturbation's views, where the RAM holds a reference orbit (not the micro:bit's).
-        #[cfg(all(
-            measure_general,
-            not(any(feature = "newer", feature = "panels", feature = "shapes"))
-        ))]
+        #[cfg(all(measure_general, measure_default))]
         for entry in tinyfractal_scenes::DEEP_SCENES.iter() {
             measure(&clock, (entry.name, entry.size), None, |target| {
                 entry.scene.draw(target, &GREY)
@@ -484,13 +494,20 @@ mod firmware {
                     bezier_fixed(curves, place, NAIVE_BEZIER_STEPS, target);
                 });
             }
-            #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+            #[cfg(feature = "terrain")]
             Some(Baseline::Terrain(displacement, samples, map)) => {
                 f32_cost = run(&mut |target| {
                     if map {
                         landscape_f32(displacement, samples, target);
                     } else {
                         terrain_f32(displacement, samples, target);
+                    }
+                });
+                fixed_cost = run(&mut |target| {
+                    if map {
+                        landscape_fixed(displacement, samples, target);
+                    } else {
+                        terrain_fixed(displacement, samples, target);
                     }
                 });
             }
@@ -525,15 +542,23 @@ mod firmware {
                 f32_cost = run(&mut |target| {
                     figure_f32(frames, target);
                 });
+                fixed_cost = run(&mut |target| {
+                    figure_fixed(frames, target);
+                });
             }
-            #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
-            Some(Baseline::LSystem(system, degrees, order, up)) => {
+            #[cfg(measure_default)]
+            Some(Baseline::LSystem(system, (degrees, divisions), order, up)) => {
                 let rules = (system.axiom, system.rules, system.draw_symbols);
                 f32_cost = run(&mut |target| {
                     lsystem_f32(rules, degrees, order, up, target);
                 });
+                if let Some(divisions) = divisions {
+                    fixed_cost = run(&mut |target| {
+                        lsystem_fixed(rules, divisions, order, up, target);
+                    });
+                }
             }
-            #[cfg(not(any(feature = "newer", feature = "panels", feature = "shapes")))]
+            #[cfg(measure_default)]
             Some(Baseline::Fern(points)) => {
                 f32_cost = run(&mut |target| {
                     fern_f32(points, target);
@@ -542,13 +567,13 @@ mod firmware {
                     fern_fixed(points, target);
                 });
             }
-            #[cfg(all(
-                measure_general,
-                not(any(feature = "newer", feature = "panels", feature = "shapes"))
-            ))]
+            #[cfg(all(measure_general, measure_default))]
             Some(Baseline::Tree(order)) => {
                 f32_cost = run(&mut |target| {
                     tinyfractal_scenes::naive::monopodial_tree_f32(order, target);
+                });
+                fixed_cost = run(&mut |target| {
+                    tinyfractal_scenes::naive::monopodial_tree_fixed(order, target);
                 });
             }
             None => {}

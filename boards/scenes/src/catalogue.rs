@@ -90,6 +90,9 @@ pub enum Scene {
         points: u64,
         /// The game's seed.
         seed: u64,
+        /// Drawn by density (each pixel by how many points hit it, through the look's
+        /// gradient) instead of each point in ink.
+        density: bool,
     },
     /// A subdivision fractal at an order.
     Subdivision {
@@ -216,6 +219,12 @@ impl Scene {
     /// their baselines.
     pub const fn is_shape(&self) -> bool {
         matches!(self, Self::Subdivision { .. } | Self::Walk { .. })
+    }
+
+    /// Whether the scene is a midpoint-displacement terrain: the scenes' `terrain` feature,
+    /// measured by the measuring firmware's build of its own beside its baselines.
+    pub const fn is_terrain(&self) -> bool {
+        matches!(self, Self::Terrain { .. })
     }
 
     /// What the scene's [`Work`](crate::Work) counts, singular: `segment`, `point`,
@@ -971,8 +980,14 @@ pub const GENERAL_SCENES: [GeneralEntry; 4] = [
     oled_plant("tree-sway", "Fig2.8a", 5, 4),
 ];
 
-/// The lecture's IFS in the catalogue's notation.
-const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) -> Entry {
+/// The lecture's IFS in the catalogue's notation: in ink, or by density where `density`.
+const fn ifs(
+    name: &'static str,
+    system: &'static str,
+    points: u64,
+    density: bool,
+    size: Size,
+) -> Entry {
     Entry {
         name,
         scene: Scene::Ifs {
@@ -980,6 +995,7 @@ const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) 
             system,
             points,
             seed: 1,
+            density,
         },
         size,
         palette: "vga",
@@ -989,11 +1005,13 @@ const fn ifs(name: &'static str, system: &'static str, points: u64, size: Size) 
 /// The boards' scenes, in the order they are shown: drawn on the LM3S6965's OLED under
 /// QEMU, on the real boards' displays, and measured on Cortex-M0/M3/M4.
 #[rustfmt::skip]
-pub const SCENES: [Entry; 14] = [
+pub const SCENES: [Entry; 15] = [
     lsystem("plant", &FERN, 5, Orientation::Up, OLED),
     lsystem("koch-snowflake", &KOCH_SNOWFLAKE, 4, Orientation::Right, OLED),
     lsystem("stochastic-plant", &STOCHASTIC_PLANT, 4, Orientation::Up, OLED),
-    ifs("ifs-fern", "fern", 20_000, OLED),
+    ifs("ifs-fern", "fern", 20_000, false, OLED),
+    // The same game by density: each pixel by its hit count.
+    ifs("ifs-fern-density", "fern", 20_000, true, OLED),
     subdivision("sierpinski-carpet", Shape::Carpet, 3, OLED),
     subdivision("sierpinski-gasket", Shape::Gasket, 6, OLED),
     subdivision("menger-sponge", Shape::Cube(CubeVariant::Axes), 2, OLED),
@@ -1005,11 +1023,17 @@ pub const SCENES: [Entry; 14] = [
     escape("mandelbrot", None, MANDELBROT_CENTRE, "3.5", 64, OLED, "classic"),
     escape("julia", JULIA_K, ("0", "0"), "3.6", 100, OLED, "classic"),
     smooth(escape("mandelbrot-smooth", None, ("-0.6", "0"), "3.2", 64, OLED, ""), "smooth-classic"),
-    // Width 10^-7: needs the 60-bit tier with 128-bit products. The rule gives a view this
-    // deep with a cap over 256 to `Wide`; this one keeps every `Wide` dwell in `Deep`
-    // (tests/tiers.rs), the tier a board would pick by hand.
-    in_tier(Tier::Deep, escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire")),
+    DEEP_ZOOM,
 ];
+
+/// The boards' deep zoom, 10⁻⁷ wide: the 60-bit tier with 128-bit products. The rule gives
+/// a view this deep with a cap over 256 to `Wide`; this one keeps every `Wide` dwell in
+/// `Deep` (tests/tiers.rs), the tier a board would pick by hand. Drawn by perturbation
+/// too ([`DEEP_SCENES`]).
+const DEEP_ZOOM: Entry = in_tier(
+    Tier::Deep,
+    escape("deep-zoom", None, SPIRAL, "0.0000001", 1000, OLED, "fire"),
+);
 
 /// Perlin's textures and reaction–diffusion on the OLED, measured on every core.
 ///
@@ -1062,7 +1086,7 @@ pub const DYNAMICS_SCENES: [Entry; 4] = [
 pub const DEEP_SCENES: [Entry; 2] = [
     escape("perturbation-zoom", None, MINIBROT_78, "1e-20", 1000, OLED, "fire"),
     // The deep-zoom view by perturbation: its series and Q60 finish, against `Deep`.
-    perturbed("deep-zoom-perturbed", SCENES[13]),
+    perturbed("deep-zoom-perturbed", DEEP_ZOOM),
 ];
 
 /// A zoom drawn on every board and measured on every core.

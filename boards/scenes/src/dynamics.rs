@@ -8,15 +8,8 @@ use tinyfractal::error::DrawError;
 
 use crate::catalogue::Scene;
 use crate::look::{Look, Work};
-
-/// The most pixels a board's density picture counts: the OLED's 128×64, a byte each
-/// (8 KiB on the stack while it draws).
-pub const MAX_BOARD_DENSITY_PIXELS: usize = 128 * 64;
-
-/// The most pixels a full display's density picture counts: the real boards' 320×240 (and
-/// the gallery's), a byte each.
 #[cfg(feature = "dynamics")]
-const MAX_DISPLAY_DENSITY_PIXELS: usize = 320 * 240;
+use crate::look::{MAX_BOARD_DENSITY_PIXELS, MAX_DISPLAY_DENSITY_PIXELS};
 
 impl Scene {
     /// Draws a dynamics scene (a strange attractor) as [`Scene::draw`] does, without

@@ -14,6 +14,7 @@ mod look;
 pub mod measure;
 pub mod naive;
 mod shapes;
+mod terrain;
 mod wait;
 
 pub use catalogue::{
@@ -23,9 +24,9 @@ pub use catalogue::{
     PANEL_SCENES, PLANT, SCENES, SIERPINSKI_ARROWHEAD, SMOOTH_FIGURE, STOCHASTIC_PLANT,
     TEXTURE_SCENES, WIND, ZOOM_SCENES,
 };
-pub use dynamics::{design_placement, MAX_BOARD_DENSITY_PIXELS, MAX_BOARD_PARTICLES};
+pub use dynamics::{design_placement, MAX_BOARD_PARTICLES};
 pub use look::{
-    Look, Work, COLOUR, GREY, LSYSTEM_CELLS, MAX_BOARD_MAP_CELLS, MAX_BOARD_REACTION_CELLS,
-    MAX_BOARD_REFERENCE_POINTS,
+    Look, Work, COLOUR, GREY, LSYSTEM_CELLS, MAX_BOARD_DENSITY_PIXELS, MAX_BOARD_MAP_CELLS,
+    MAX_BOARD_REACTION_CELLS, MAX_BOARD_REFERENCE_POINTS,
 };
 pub use wait::{show_scenes, wait_for_press_or, FRAME_MS, SHOW_FOR_MS};

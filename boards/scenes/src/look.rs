@@ -3,6 +3,7 @@
 use embedded_graphics::{
     pixelcolor::{Gray4, GrayColor, Rgb565, Rgb888},
     prelude::*,
+    primitives::Rectangle,
 };
 use tinyfractal::error::FitError;
 use tinyfractal::{
@@ -12,10 +13,9 @@ use tinyfractal::{
     lsystem::{Cell, StoredMark, DEFAULT_DEPTH, DEFAULT_STACK},
     math::DeepCoord,
     noise::{Octaves, Texture},
-    render::{Colors, Gradient, Orientation, Shade},
-    terrain::Displacement,
+    render::{Colors, Gradient, Orientation, Palette, Shade, DENSITY_LEVELS},
     Coord, Error, EscapeTime, Fractal, Ifs, IfsFile, LSystem, LsysFile, ParametricGrammar,
-    ParametricLSystem, Real, Terrain, TerrainMap, View,
+    ParametricLSystem, Real, View,
 };
 
 use crate::catalogue::{GeneralEntry, Scene, System};
@@ -25,6 +25,14 @@ use crate::catalogue::{GeneralEntry, Scene, System};
 ///
 /// The OLED plant's 40 (its 22.5° keeps a quarter of its 16 headings) and the snowflake's 24.
 pub const LSYSTEM_CELLS: usize = 40;
+
+/// The most pixels a board's density picture counts: the OLED's 128×64, a byte each
+/// (8 KiB on the stack while it draws).
+pub const MAX_BOARD_DENSITY_PIXELS: usize = 128 * 64;
+
+/// The most pixels a full display's density picture counts: the real boards' 320×240 (and
+/// the gallery's), a byte each.
+pub(crate) const MAX_DISPLAY_DENSITY_PIXELS: usize = 320 * 240;
 
 /// Most heights of a landscape drawn on a board (33², 4.3 KiB on the stack while it draws).
 pub const MAX_BOARD_MAP_CELLS: usize = 33 * 33;
@@ -254,16 +262,23 @@ impl Scene {
                 system,
                 points,
                 seed,
+                density: false,
             } => {
                 target.clear(look.background).map_err(DrawError::Target)?;
                 draw_ifs(target, look, (source, system), points, seed)
             }
+            // Every pixel written: no clearing.
+            Scene::Ifs {
+                source,
+                system,
+                points,
+                seed,
+                density: true,
+            } => draw_ifs_density(target, look, (source, system), points, seed),
             Scene::Subdivision { .. } => self.draw_shape_frames(target, look, || {}),
-            Scene::Terrain {
-                displacement,
-                samples,
-                map,
-            } => draw_terrain(target, look, displacement, samples, map),
+            Scene::Terrain { .. } => self
+                .draw_terrain(target, look)
+                .unwrap_or(Ok(Work::Cells(0))),
             Scene::Walk { .. } => self.draw_shape_frames(target, look, || {}),
             Scene::Zoom { .. } => draw_zoom(target, look, self, || {}),
             Scene::Noise { .. }
@@ -295,76 +310,6 @@ impl Scene {
             }
         }
     }
-}
-
-/// Midpoint-displacement terrain over the whole target: a profile in `look.ink` under a
-/// `look.background` sky, or a landscape in its height bands.
-fn draw_terrain<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    displacement: Displacement,
-    samples: u32,
-    map: bool,
-) -> Result<Work, DrawError<D::Error>>
-where
-    D: DrawTarget,
-    D::Color: From<Rgb888>,
-{
-    let heights = if map {
-        draw_landscape(target, displacement, samples)?
-    } else {
-        draw_profile(target, look, displacement, samples)?
-    };
-    Ok(Work::Cells(heights))
-}
-
-/// A profile, out of line: its heights (at most [`MAX_BOARD_MAP_CELLS`], as many as a
-/// landscape's) are on the stack only while it draws, generated once into them. A profile
-/// of one sample a column of the OLED takes a buffer of its own size, as a sketch would
-/// (the whole buffer is zeroed first).
-#[inline(never)]
-fn draw_profile<D>(
-    target: &mut D,
-    look: &Look<'_, D::Color>,
-    displacement: Displacement,
-    samples: u32,
-) -> Result<u64, DrawError<D::Error>>
-where
-    D: DrawTarget,
-{
-    let terrain = Terrain::new(samples, displacement);
-    let mut draw = |heights: &mut [i32]| {
-        terrain
-            .fit_with_heights(target.bounding_box(), look.ink, look.background, heights)?
-            .draw(target)
-            .map_err(DrawError::Target)
-    };
-    if samples as usize <= OLED_PROFILE_SAMPLES {
-        draw(&mut [0; OLED_PROFILE_SAMPLES])
-    } else {
-        draw(&mut [0; MAX_BOARD_MAP_CELLS])
-    }
-}
-
-/// A profile of one sample a column of a 128-pixel display.
-const OLED_PROFILE_SAMPLES: usize = 129;
-
-/// A landscape, out of line: its heights (at most [`MAX_BOARD_MAP_CELLS`], 4.3 KiB) are on
-/// the stack only while it draws, not while a profile does.
-#[inline(never)]
-fn draw_landscape<D>(
-    target: &mut D,
-    displacement: Displacement,
-    samples: u32,
-) -> Result<u64, DrawError<D::Error>>
-where
-    D: DrawTarget,
-    D::Color: From<Rgb888>,
-{
-    let mut heights = [0i32; MAX_BOARD_MAP_CELLS];
-    let drawing =
-        TerrainMap::new(samples, displacement).fit(target.bounding_box(), &mut heights)?;
-    drawing.draw(target).map_err(DrawError::Target)
 }
 
 /// An L-system in `look.ink`, out of line: each family's frame is on the stack only while
@@ -496,8 +441,6 @@ impl<D: DrawTarget> DrawTarget for OneBit<'_, D> {
 
 #[cfg(feature = "panels")]
 use embedded_graphics::pixelcolor::BinaryColor;
-#[cfg(feature = "panels")]
-use embedded_graphics::primitives::Rectangle;
 #[cfg(feature = "panels")]
 use tinyfractal::render::{Dither, Dithered};
 
@@ -915,6 +858,97 @@ where
         .with_seed(seed)
         .fit(target.bounding_box(), &ink)?;
     Ok(Work::Points(drawing.try_draw(target)?))
+}
+
+/// An IFS by density, the hit counts' levels through the look's gradient, a byte a pixel.
+///
+/// On a display whose shorter side is at most 64 pixels (the OLED) the counts cover the
+/// largest square centred in it (4 KiB), either side the colour of a pixel never hit: the
+/// whole OLED's 8 KiB beside the IFS's 32 maps and its fit are more than the micro:bit's
+/// 16 KiB of RAM, and the fern, taller than wide, fits its height either way. On a larger
+/// display they cover all of it (up to 320×240; a larger one is refused as the fit
+/// refuses counts too few for its area).
+fn draw_ifs_density<D>(
+    target: &mut D,
+    look: &Look<'_, D::Color>,
+    (source, system): (&str, &str),
+    points: u64,
+    seed: u64,
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let area = target.bounding_box();
+    let side = area.size.width.min(area.size.height);
+    let (ifs, gradient) = ((source, system), look.gradient::<16>()?);
+    if (side as usize).pow(2) > MAX_BOARD_IFS_DENSITY_PIXELS {
+        return count_ifs::<D, { MAX_DISPLAY_DENSITY_PIXELS }>(
+            target,
+            (area, gradient),
+            ifs,
+            (points, seed),
+        );
+    }
+    let (spare_x, spare_y) = (area.size.width - side, area.size.height - side);
+    let square = Rectangle::new(
+        area.top_left + Point::new((spare_x / 2) as i32, (spare_y / 2) as i32),
+        Size::new(side, side),
+    );
+    // Either side of the square: left and right, or above and below.
+    let (before, after) = if spare_x > 0 {
+        let width = spare_x / 2;
+        (
+            Rectangle::new(area.top_left, Size::new(width, side)),
+            Rectangle::new(
+                area.top_left + Point::new((width + side) as i32, 0),
+                Size::new(spare_x - width, side),
+            ),
+        )
+    } else {
+        let height = spare_y / 2;
+        (
+            Rectangle::new(area.top_left, Size::new(side, height)),
+            Rectangle::new(
+                area.top_left + Point::new(0, (height + side) as i32),
+                Size::new(side, spare_y - height),
+            ),
+        )
+    };
+    // In the colour of a pixel never hit, so that the square does not show.
+    let unlit = gradient.color(0, DENSITY_LEVELS);
+    for strip in [before, after] {
+        target
+            .fill_solid(&strip, unlit)
+            .map_err(DrawError::Target)?;
+    }
+    count_ifs::<D, MAX_BOARD_IFS_DENSITY_PIXELS>(target, (square, gradient), ifs, (points, seed))
+}
+
+/// The most pixels a board's IFS density counts: the OLED's height squared, a byte each.
+const MAX_BOARD_IFS_DENSITY_PIXELS: usize = 64 * 64;
+
+/// [`draw_ifs_density`] with `N` counts at most, in `area` through `gradient`, out of
+/// line: its buffer is on the stack only while it draws.
+#[inline(never)]
+fn count_ifs<D, const N: usize>(
+    target: &mut D,
+    (area, gradient): (Rectangle, Gradient<D::Color, 16>),
+    (source, system): (&str, &str),
+    (points, seed): (u64, u64),
+) -> Result<Work, DrawError<D::Error>>
+where
+    D: DrawTarget,
+    D::Color: From<Rgb888>,
+{
+    let mut ifs = Ifs::new();
+    IfsFile::new(source).entry(system)?.ifs_into(&mut ifs)?;
+    let mut counts = [0u8; N];
+    let played = IfsPicture::new(&ifs, points)
+        .with_seed(seed)
+        .fit_density(area, gradient, &mut counts)?
+        .try_draw(target)?;
+    Ok(Work::Points(played))
 }
 
 /// Most colours of an entry's `colors:` line a board keeps.

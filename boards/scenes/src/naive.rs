@@ -22,11 +22,23 @@ use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use micromath::F32Ext;
 
 mod bounds;
+mod figure_fixed;
+mod lsystem_fixed;
+mod shared;
+mod sine;
+mod terrain_fixed;
 mod tree;
+mod tree_fixed;
 
 use bounds::Bounds;
+use shared::{c_rand, expand, mul_q16, q16, NAIVE_TURTLE_STACK};
 
+pub use figure_fixed::figure_fixed;
+pub use lsystem_fixed::{lsystem_fixed, turn_divisions, MAX_DIVISIONS};
+pub use shared::{NAIVE_LANDSCAPE_SIDE, NAIVE_PROFILE, NAIVE_STRING};
+pub use terrain_fixed::{landscape_fixed, terrain_fixed};
 pub use tree::{monopodial_tree_f32, NAIVE_TREE_STRING};
+pub use tree_fixed::monopodial_tree_fixed;
 
 /// A grey for a value in [0, 1].
 fn grey(value: f32) -> Gray4 {
@@ -635,13 +647,6 @@ pub fn fountain_fixed<D: DrawTarget<Color = Gray4>>(frames: u32, target: &mut D)
     steps
 }
 
-/// C's `rand()` step as Arduino and newlib sketches have it (a 32-bit LCG): its bits 16 and
-/// up, 0 to 32767.
-fn c_rand(seed: &mut u32) -> u32 {
-    *seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12_345);
-    (*seed >> 16) & 0x7FFF
-}
-
 /// The lecture's fern as a sketch writes it, in `f32`.
 ///
 /// The table's four maps, probabilities 1, 85, 7 and 7 in 100, a map chosen by
@@ -670,16 +675,6 @@ pub fn fern_f32<D: DrawTarget<Color = Gray4>>(points: u32, target: &mut D) -> u6
         }
     }
     u64::from(points)
-}
-
-/// A value in Q16.16, for the careful loop's constants.
-const fn q16(value: f32) -> i32 {
-    (value * 65536.0) as i32
-}
-
-/// The careful sketches' product in Q16 (or Q16.16): 32 × 32 → 64 bits, shifted back.
-fn mul_q16(a: i32, b: i32) -> i32 {
-    ((i64::from(a) * i64::from(b)) >> 16) as i32
 }
 
 /// The fern as a careful fixed-point sketch writes it.
@@ -1044,12 +1039,6 @@ pub fn turn_degrees(angle: tinyfractal::Angle) -> f32 {
     }
 }
 
-/// The longest string the naive L-system expands, in bytes: one buffer, expanded in place.
-pub const NAIVE_STRING: usize = 8 * 1024;
-
-/// Deepest `[` nesting the naive turtle keeps.
-const NAIVE_TURTLE_STACK: usize = 64;
-
 /// An L-system as a sketch draws it, in `f32`: the string expanded `order` times in a
 /// byte buffer, then read twice by a float turtle, once for its box and once to draw.
 ///
@@ -1070,45 +1059,9 @@ pub fn lsystem_f32<D: DrawTarget<Color = Gray4>>(
     use embedded_graphics::primitives::{Line, PrimitiveStyle};
     let _ = target.clear(Gray4::BLACK);
     let mut buffer = [0u8; NAIVE_STRING];
-    let Some(start) = buffer.get_mut(..axiom.len()) else {
+    let Some(length) = expand(&mut buffer, axiom, rules, order) else {
         return 0;
     };
-    start.copy_from_slice(axiom.as_bytes());
-    let mut length = axiom.len();
-    let body = |symbol: u8| {
-        rules
-            .iter()
-            .find(|(s, _)| *s as u32 == u32::from(symbol))
-            .map(|(_, body)| body.as_bytes())
-    };
-    for _ in 0..order {
-        let grown: usize = buffer[..length]
-            .iter()
-            .map(|&s| body(s).map_or(1, <[u8]>::len))
-            .sum();
-        if grown > NAIVE_STRING {
-            return 0;
-        }
-        // The string to the buffer's end, then its expansion from the start: the writer
-        // never passes the reader, each symbol becoming at least one.
-        buffer.copy_within(..length, NAIVE_STRING - length);
-        let (mut read, mut write) = (NAIVE_STRING - length, 0);
-        while read < NAIVE_STRING {
-            let symbol = buffer[read];
-            read += 1;
-            match body(symbol) {
-                Some(body) => {
-                    buffer[write..write + body.len()].copy_from_slice(body);
-                    write += body.len();
-                }
-                None => {
-                    buffer[write] = symbol;
-                    write += 1;
-                }
-            }
-        }
-        length = grown;
-    }
     let string = &buffer[..length];
     let draws = |s: u8| s == b'F' || draw_symbols.as_bytes().contains(&s);
     let turn = degrees.to_radians();
@@ -1283,9 +1236,6 @@ pub fn normal_f32(state: &mut u32) -> f32 {
     F32Ext::sqrt(-2.0 * F32Ext::ln(u1)) * F32Ext::cos(2.0 * core::f32::consts::PI * u2)
 }
 
-/// The most heights the naive profile holds.
-pub const NAIVE_PROFILE: usize = 1025;
-
 /// A mountain profile by 1D midpoint displacement as a sketch writes it, in `f32`.
 ///
 /// `samples` (2ᵏ + 1) heights in an array, the ends at 0, each midpoint the mean of its
@@ -1344,6 +1294,54 @@ fn fill_rect_in<D: DrawTarget<Color = Gray4>>(
         .draw(target);
 }
 
+/// The three faces a sponge sketch paints of the cube at `(x, y, z)` with side `s`: those
+/// at x + s, y + s and z + s, each in its grey, two filled triangles each (Adafruit's
+/// `fillTriangle`), the corners placed by `pixel`. Inlined into each sponge sketch, so
+/// the `f32` one's code is what it was when written out in it.
+#[inline(always)]
+fn cube_faces<T, D>(target: &mut D, (x, y, z): (T, T, T), s: T, pixel: impl Fn((T, T, T)) -> Point)
+where
+    T: Copy + Add<Output = T>,
+    D: DrawTarget<Color = Gray4>,
+{
+    use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
+    let faces = [
+        (
+            [
+                (x + s, y, z),
+                (x + s, y + s, z),
+                (x + s, y + s, z + s),
+                (x + s, y, z + s),
+            ],
+            9,
+        ),
+        (
+            [
+                (x, y + s, z),
+                (x + s, y + s, z),
+                (x + s, y + s, z + s),
+                (x, y + s, z + s),
+            ],
+            15,
+        ),
+        (
+            [
+                (x, y, z + s),
+                (x + s, y, z + s),
+                (x + s, y + s, z + s),
+                (x, y + s, z + s),
+            ],
+            12,
+        ),
+    ];
+    for (corners, grey) in faces {
+        let [a, b, c, d] = corners.map(&pixel);
+        let style = PrimitiveStyle::with_fill(Gray4::new(grey));
+        let _ = Triangle::new(a, b, c).into_styled(style).draw(target);
+        let _ = Triangle::new(a, c, d).into_styled(style).draw(target);
+    }
+}
+
 /// The Menger sponge as a sketch draws it, in `f32`; returns the cubes drawn.
 ///
 /// The cube split in 27 recursively, the 20 kept (all but the centre and the face
@@ -1354,7 +1352,6 @@ fn fill_rect_in<D: DrawTarget<Color = Gray4>>(
 /// margin, centred. Every face of a drawn cube is painted, hidden or not: a sketch does
 /// not cull.
 pub fn sponge_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
-    use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
     let _ = target.clear(Gray4::BLACK);
     let (azimuth, elevation) = (45f32.to_radians(), 35.264f32.to_radians());
     let (sa, ca) = (F32Ext::sin(azimuth), F32Ext::cos(azimuth));
@@ -1420,44 +1417,7 @@ pub fn sponge_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u
         }
         drawn
     }
-    let mut draw = |(x, y, z): (f32, f32, f32), s: f32| {
-        // The faces at x + s, y + s and z + s, each in its grey.
-        let faces = [
-            (
-                [
-                    (x + s, y, z),
-                    (x + s, y + s, z),
-                    (x + s, y + s, z + s),
-                    (x + s, y, z + s),
-                ],
-                9,
-            ),
-            (
-                [
-                    (x, y + s, z),
-                    (x + s, y + s, z),
-                    (x + s, y + s, z + s),
-                    (x, y + s, z + s),
-                ],
-                15,
-            ),
-            (
-                [
-                    (x, y, z + s),
-                    (x + s, y, z + s),
-                    (x + s, y + s, z + s),
-                    (x, y + s, z + s),
-                ],
-                12,
-            ),
-        ];
-        for (corners, grey) in faces {
-            let [a, b, c, d] = corners.map(pixel);
-            let style = PrimitiveStyle::with_fill(Gray4::new(grey));
-            let _ = Triangle::new(a, b, c).into_styled(style).draw(target);
-            let _ = Triangle::new(a, c, d).into_styled(style).draw(target);
-        }
-    };
+    let mut draw = |corner: (f32, f32, f32), s: f32| cube_faces(target, corner, s, pixel);
     visit((0.0, 0.0, 0.0), 1.0, order, &mut draw)
 }
 
@@ -1467,7 +1427,6 @@ pub fn sponge_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u
 /// (3^order units a side), the isometric axes as Q16 constants, and the fit a Q32 scale
 /// found once, so that a corner is three integer products an axis and one 64-bit one.
 pub fn sponge_fixed<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
-    use embedded_graphics::primitives::{PrimitiveStyle, Triangle};
     type Corner = (i32, i32, i32);
     let _ = target.clear(Gray4::BLACK);
     let n = 3i32.pow(order.min(6));
@@ -1523,48 +1482,9 @@ pub fn sponge_fixed<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) ->
         }
         drawn
     }
-    let mut draw = |(x, y, z): Corner, t: i32| {
-        let faces = [
-            (
-                [
-                    (x + t, y, z),
-                    (x + t, y + t, z),
-                    (x + t, y + t, z + t),
-                    (x + t, y, z + t),
-                ],
-                9,
-            ),
-            (
-                [
-                    (x, y + t, z),
-                    (x + t, y + t, z),
-                    (x + t, y + t, z + t),
-                    (x, y + t, z + t),
-                ],
-                15,
-            ),
-            (
-                [
-                    (x, y, z + t),
-                    (x + t, y, z + t),
-                    (x + t, y + t, z + t),
-                    (x, y + t, z + t),
-                ],
-                12,
-            ),
-        ];
-        for (corners, grey) in faces {
-            let [a, b, c, d] = corners.map(pixel);
-            let style = PrimitiveStyle::with_fill(Gray4::new(grey));
-            let _ = Triangle::new(a, b, c).into_styled(style).draw(target);
-            let _ = Triangle::new(a, c, d).into_styled(style).draw(target);
-        }
-    };
+    let mut draw = |corner: Corner, t: i32| cube_faces(target, corner, t, pixel);
     visit((0, 0, 0), n, order.min(6), &mut draw)
 }
-
-/// The most heights along a side of the naive landscape.
-pub const NAIVE_LANDSCAPE_SIDE: usize = 33;
 
 /// A landscape as a sketch draws it, in `f32`; returns the heights made.
 ///

@@ -83,3 +83,32 @@ fn the_newer_scenes_draw_at_every_display_size() {
         }
     }
 }
+
+/// The fern by density lights the pixels the fern in ink does: its counts' square holds
+/// the whole fern (which fits its height in either), a pixel is lit where a point hit, and
+/// either side of the square is the colour of a pixel never hit.
+#[test]
+fn the_fern_by_density_lights_the_ferns_pixels() {
+    let named = |name: &str| SCENES.iter().find(|entry| entry.name == name).unwrap();
+    for size in [Size::new(128, 64), Size::new(320, 240), Size::new(240, 320)] {
+        let lit = |name: &str| {
+            let mut frame = Frame::filled(size, GREY.background);
+            let work = named(name).scene.draw(&mut frame, &GREY).unwrap();
+            // A corner is never in the fern, nor in the square's middle.
+            let unlit = frame.pixels[0];
+            let lit: Vec<bool> = frame.pixels.iter().map(|&p| p != unlit).collect();
+            (work, lit)
+        };
+        let ((ink_work, ink), (density_work, density)) = (lit("ifs-fern"), lit("ifs-fern-density"));
+        assert_eq!(ink_work, density_work, "the same points played");
+        let both = ink.iter().zip(&density).filter(|(a, b)| **a && **b).count();
+        let count = |marks: &[bool]| marks.iter().filter(|&&m| m).count();
+        let (lit_ink, lit_density) = (count(&ink), count(&density));
+        // The fits may round a pixel apart at the fern's edges.
+        assert!(both * 100 >= lit_ink * 95, "{size:?}: {both} of {lit_ink}");
+        assert!(
+            both * 100 >= lit_density * 95,
+            "{size:?}: {both} of {lit_density}"
+        );
+    }
+}

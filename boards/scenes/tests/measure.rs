@@ -71,8 +71,8 @@ fn repository() -> PathBuf {
 
 /// Builds the measuring firmware for one core, from its own folder (see its Cargo.toml):
 /// the newer families' build (textures and dynamics: `Some("newer")`), the dithered
-/// panels' (`Some("panels")`), the shapes' (`Some("shapes")`), or the other scenes'
-/// (`None`).
+/// panels' (`Some("panels")`), the shapes' (`Some("shapes")`), the terrains'
+/// (`Some("terrain")`), or the other scenes' (`None`).
 fn build(core: &Core, features: Option<&str>) -> PathBuf {
     let folder = repository().join("boards/qemu-measure");
     tools::ensure_target(&folder, core.target);
@@ -254,13 +254,13 @@ fn every_core_draws_the_host_picture_and_fits() {
             work,
         )
     };
-    // In the order the firmware's four builds measure them: every scene but the newer
-    // families', the panels' and the shapes (then, beyond the M0, the general engine's and
-    // perturbation's), then the textures and the dynamics, then the panels, then the
-    // shapes.
+    // In the order the firmware's five builds measure them: every scene but the newer
+    // families', the panels', the shapes and the terrains (then, beyond the M0, the general
+    // engine's and perturbation's), then the textures and the dynamics, then the panels,
+    // then the shapes, then the terrains.
     let every_core_scenes = SCENES
         .iter()
-        .filter(|entry| !entry.scene.is_shape())
+        .filter(|entry| !entry.scene.is_shape() && !entry.scene.is_terrain())
         .chain(&DISPLAY_SCENES)
         .chain(&ZOOM_SCENES);
     let mut host: Vec<Expected> = every_core_scenes.map(expected).collect();
@@ -286,20 +286,32 @@ fn every_core_draws_the_host_picture_and_fits() {
         .filter(|entry| entry.scene.is_shape())
         .map(expected)
         .collect();
+    let terrains: Vec<Expected> = SCENES
+        .iter()
+        .filter(|entry| entry.scene.is_terrain())
+        .map(expected)
+        .collect();
 
     let mut json = String::from("[\n");
     let mut table = String::new();
     // (core, scene) → (stack, static RAM), for the perturbation RAM claims below.
     let mut stacks = BTreeMap::new();
     for core in &CORES {
-        for features in [None, Some("newer"), Some("panels"), Some("shapes")] {
+        for features in [
+            None,
+            Some("newer"),
+            Some("panels"),
+            Some("shapes"),
+            Some("terrain"),
+        ] {
             let elf = build(core, features);
             let (text, data, bss) = sizes(&elf);
             let records = run(core, &elf);
             let expected: &[Expected] = match (features, core.target.starts_with("thumbv6m")) {
                 (Some("newer"), _) => &newer,
                 (Some("panels"), _) => &panels,
-                (Some(_), _) => &shapes,
+                (Some("shapes"), _) => &shapes,
+                (Some(_), _) => &terrains,
                 (None, true) => &host[..every_core],
                 (None, false) => &host,
             };
@@ -358,8 +370,8 @@ fn every_core_draws_the_host_picture_and_fits() {
             );
             }
             // Budgets with room to spare: thirty-one thirty-seconds of flash (this firmware
-            // carries every engine but the newer families', the panels' and the shapes'
-            // (builds of their own), both baselines, the perturbation's series and finish, the
+            // carries every engine but the newer families', the panels', the shapes' and the
+            // terrains' (builds of their own), both baselines, the perturbation's series and finish, the
             // zoom and the expansion table, which no board's firmware does: it outgrew the
             // LM3S6965's 256 KiB, so Cortex-M3 runs it on the MPS2 image's 4 MiB; the OLED
             // board's own firmware takes about 210 KiB of the LM3S6965's), seven eighths
@@ -381,7 +393,8 @@ fn every_core_draws_the_host_picture_and_fits() {
                 match features {
                     Some("newer") => " (newer families)",
                     Some("panels") => " (panels)",
-                    Some(_) => " (shapes)",
+                    Some("shapes") => " (shapes)",
+                    Some(_) => " (terrains)",
                     None => "",
                 }
             );

@@ -5,7 +5,10 @@ use std::ops::Range;
 
 use embedded_graphics::{pixelcolor::Gray4, prelude::*};
 use tinyfractal::render::Orientation;
-use tinyfractal_scenes::naive::{lsystem_f32, monopodial_tree_f32, turn_degrees};
+use tinyfractal_scenes::naive::{
+    lsystem_f32, lsystem_fixed, monopodial_tree_f32, monopodial_tree_fixed, turn_degrees,
+    turn_divisions,
+};
 use tinyfractal_scenes::{Scene, System, Work, FERN, GENERAL_SCENES, GREY, KOCH_SNOWFLAKE};
 use tinyfractal_test_support::frame::Frame;
 
@@ -85,7 +88,54 @@ fn the_lsystem_sketch_draws_the_scenes_picture() {
             4,
             0.75..1.33,
         );
+        // The careful sketch: the same lines, and but for 2 % of its pixels the float sketch's
+        // picture (its directions from a Q16 sine table, its fit in Q16.16).
+        let divisions = turn_divisions(system.angle).unwrap();
+        let mut careful = Frame::filled(size, Gray4::BLACK);
+        let up = orientation == Orientation::Up;
+        assert_eq!(
+            lsystem_fixed(rules, divisions, order, up, &mut careful),
+            lines
+        );
+        assert!(
+            differing(&careful, &sketch) * 50 < lit(&sketch),
+            "{} of {}",
+            differing(&careful, &sketch),
+            lit(&sketch)
+        );
     }
+}
+
+/// Pixels that differ between two pictures of the same size.
+fn differing(a: &Frame<Gray4>, b: &Frame<Gray4>) -> usize {
+    a.pixels
+        .iter()
+        .zip(&b.pixels)
+        .filter(|(a, b)| a != b)
+        .count()
+}
+
+/// Pixels lit on black.
+fn lit(frame: &Frame<Gray4>) -> usize {
+    frame.pixels.iter().filter(|&&c| c != Gray4::BLACK).count()
+}
+
+/// A turn that divides the circle into more directions than the careful turtle keeps, or
+/// into none, draws nothing; whole divisions are found from degrees.
+#[test]
+fn the_careful_turtle_keeps_whole_divisions_only() {
+    use tinyfractal::{Angle, Real};
+    assert_eq!(turn_divisions(Angle::Divisions(6)), Some(6));
+    assert_eq!(turn_divisions(KOCH_SNOWFLAKE.angle), Some(6));
+    assert_eq!(turn_divisions(FERN.angle), Some(16));
+    assert_eq!(turn_divisions(Angle::Degrees(Real::from_int(25))), None);
+    assert_eq!(turn_divisions(Angle::Divisions(65)), None);
+    let mut sketch = Frame::filled(Size::new(32, 32), Gray4::BLACK);
+    let rules = (KOCH_SNOWFLAKE.axiom, KOCH_SNOWFLAKE.rules, "");
+    assert_eq!(lsystem_fixed(rules, 0, 2, false, &mut sketch), 0);
+    assert_eq!(lsystem_fixed(rules, 65, 2, false, &mut sketch), 0);
+    assert_eq!(lsystem_fixed(rules, 6, 7, false, &mut sketch), 0);
+    assert_eq!(lsystem_fixed(rules, 6, 2, false, &mut sketch), 48);
 }
 
 /// The parametric 3D tree's sketch draws the engine's tree: the same lines, in about the
@@ -112,6 +162,14 @@ fn the_tree_sketch_draws_the_scenes_tree() {
     );
     // One order more outgrows the sketch's buffer: nothing drawn.
     assert_eq!(monopodial_tree_f32(entry.order + 1, &mut sketch), 0);
+    // The careful sketch: the same lines, and the float sketch's tree within a pixel (Q16
+    // vectors turned by a Q16 sine table, unrenormalised, as the float ones).
+    let mut careful = Frame::filled(entry.size, Gray4::BLACK);
+    assert_eq!(monopodial_tree_fixed(entry.order, &mut careful), segments);
+    let mut float = Frame::filled(entry.size, Gray4::BLACK);
+    monopodial_tree_f32(entry.order, &mut float);
+    assert_eq!(apart(&careful, &float), 0);
+    assert_eq!(monopodial_tree_fixed(entry.order + 1, &mut careful), 0);
 }
 
 /// A string longer than the buffer draws nothing, and says so by drawing no line.
@@ -649,4 +707,185 @@ fn the_noise_sketches_draw_the_model() {
         let (most, same) = apart(&other);
         assert!(most > 1 && same < 0.5, "{most} {same}");
     }
+}
+
+/// C's `rand` as the sketches have it.
+fn c_rand(seed: &mut u32) -> u32 {
+    *seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+    (*seed >> 16) & 0x7FFF
+}
+
+/// Irwin and Hall's normal deviate from four `rand` values, in f64.
+fn irwin_hall(state: &mut u32) -> f64 {
+    let sum: f64 = (0..4).map(|_| f64::from(c_rand(state))).sum();
+    (sum - 65_534.0) * 3f64.sqrt() / 32_768.0
+}
+
+/// The careful profile sketch draws an f64 model's profile, each column's ground within a
+/// pixel of the model's: midpoint displacement with the same deviates.
+#[test]
+fn the_careful_terrain_sketch_draws_the_model_profile() {
+    use tinyfractal_scenes::naive::terrain_fixed;
+    let (size, samples) = (Size::new(128, 64), 129);
+    for (roughness, sigma, seed) in [(0.7, 40.0, 7), (0.5, 10.0, 1), (0.9, 100.0, 12345)] {
+        let mut heights = vec![0.0f64; samples];
+        let (mut state, mut step, mut scale) = (seed, samples - 1, f64::from(sigma));
+        while step > 1 {
+            let half = step / 2;
+            for left in (0..samples - step).step_by(step) {
+                heights[left + half] =
+                    (heights[left] + heights[left + step]) / 2.0 + irwin_hall(&mut state) * scale;
+            }
+            step = half;
+            scale *= f64::from(roughness);
+        }
+        let low = heights.iter().copied().fold(f64::MAX, f64::min);
+        let high = heights.iter().copied().fold(f64::MIN, f64::max);
+        let mut sketch = Frame::filled(size, Gray4::new(5));
+        assert_eq!(
+            terrain_fixed((roughness, sigma, seed), samples, &mut sketch),
+            129
+        );
+        for x in 0..128 {
+            let column: Vec<bool> = (0..64)
+                .map(|y| sketch.pixel(x, y) == Some(Gray4::WHITE))
+                .collect();
+            let ground = column.iter().filter(|&&g| g).count() as i32;
+            assert!(
+                column[64 - ground as usize..].iter().all(|&g| g),
+                "column {x}"
+            );
+            assert!((0..64).all(|y| sketch.pixel(x, y) != Some(Gray4::new(5))));
+            let sample = heights[x as usize * (samples - 1) / 127];
+            let model = ((sample - low) / (high - low) * 63.0).floor() as i32 + 1;
+            assert!(
+                (ground - model).abs() <= 1,
+                "column {x}: {ground} against {model}"
+            );
+        }
+    }
+    let mut sketch = Frame::filled(size, Gray4::BLACK);
+    assert_eq!(terrain_fixed((0.7, 40.0, 7), 2000, &mut sketch), 0);
+}
+
+/// The careful landscape sketch paints an f64 model's landscape: diamond-square with the
+/// same deviates, shaded as the float sketch shades; on all but 1 % of the pixels (where a
+/// band's edge falls between them) a grey within a level of the model's (rounding a
+/// product of Q16 constants can fall either side of a level's half).
+#[test]
+fn the_careful_landscape_sketch_paints_the_model_landscape() {
+    use tinyfractal_scenes::naive::landscape_fixed;
+    const BANDS: [(f64, f64); 6] = [
+        (0.0, 0.2),
+        (80.0 / 255.0, 0.4),
+        (100.0 / 255.0, 0.75),
+        (110.0 / 255.0, 0.5),
+        (180.0 / 255.0, 0.45),
+        (225.0 / 255.0, 0.95),
+    ];
+    let (size, side) = (Size::new(128, 64), 33usize);
+    for (roughness, sigma, seed) in [(0.6f32, 40.0f32, 3u32), (0.8, 20.0, 99)] {
+        let mut heights = vec![0.0f64; side * side];
+        let at = |x: usize, y: usize| y * side + x;
+        let (mut state, mut step, mut scale) = (seed, side - 1, f64::from(sigma));
+        while step > 1 {
+            let half = step / 2;
+            for y in (half..side).step_by(step) {
+                for x in (half..side).step_by(step) {
+                    let mean = (heights[at(x - half, y - half)]
+                        + heights[at(x + half, y - half)]
+                        + heights[at(x - half, y + half)]
+                        + heights[at(x + half, y + half)])
+                        / 4.0;
+                    heights[at(x, y)] = mean + irwin_hall(&mut state) * scale;
+                }
+            }
+            for y in (0..side).step_by(half) {
+                let first = if (y / half) % 2 == 0 { half } else { 0 };
+                for x in (first..side).step_by(step) {
+                    let neighbours: Vec<f64> = [(-1i32, 0i32), (1, 0), (0, -1), (0, 1)]
+                        .iter()
+                        .map(|(dx, dy)| (x as i32 + dx * half as i32, y as i32 + dy * half as i32))
+                        .filter(|(nx, ny)| {
+                            (0..side as i32).contains(nx) && (0..side as i32).contains(ny)
+                        })
+                        .map(|(nx, ny)| heights[at(nx as usize, ny as usize)])
+                        .collect();
+                    let mean = neighbours.iter().sum::<f64>() / neighbours.len() as f64;
+                    heights[at(x, y)] = mean + irwin_hall(&mut state) * scale;
+                }
+            }
+            step = half;
+            scale *= f64::from(roughness);
+        }
+        let low = heights.iter().copied().fold(f64::MAX, f64::min);
+        let high = heights.iter().copied().fold(f64::MIN, f64::max);
+        let last = (side - 1) as f64;
+        let height = |x: usize, y: usize| heights[y.min(side - 1) * side + x.min(side - 1)];
+        let mut sketch = Frame::filled(size, Gray4::new(5));
+        assert_eq!(
+            landscape_fixed((roughness, sigma, seed), side, &mut sketch),
+            33 * 33
+        );
+        let mut near = 0;
+        for py in 0..64 {
+            for px in 0..128 {
+                let (gx, gy) = (f64::from(px) * last / 127.0, f64::from(py) * last / 63.0);
+                let (x, y) = (gx as usize, gy as usize);
+                let (fx, fy) = (gx - x as f64, gy - y as f64);
+                let top = height(x, y) * (1.0 - fx) + height(x + 1, y) * fx;
+                let bottom = height(x, y + 1) * (1.0 - fx) + height(x + 1, y + 1) * fx;
+                let level = ((top * (1.0 - fy) + bottom * fy) - low) / (high - low);
+                let band = BANDS.iter().rev().find(|(start, _)| level >= *start);
+                let mut grey = band.map_or(0.0, |(_, grey)| *grey);
+                if level >= 100.0 / 255.0 {
+                    let slope = (height(x.saturating_sub(1), y.saturating_sub(1))
+                        - height(x + 1, y + 1))
+                        * last
+                        / (high - low);
+                    grey *= (1.0 - slope / 8.0).clamp(0.5, 1.4);
+                }
+                let model = (grey.clamp(0.0, 1.0) * 15.0 + 0.5) as u8;
+                let drawn = sketch.pixel(px, py).unwrap().luma();
+                near += usize::from(drawn.abs_diff(model) <= 1);
+            }
+        }
+        assert!(near * 100 >= 128 * 64 * 99, "{near} of {} alike", 128 * 64);
+    }
+    let mut sketch = Frame::filled(size, Gray4::BLACK);
+    assert_eq!(landscape_fixed((0.6, 40.0, 3), 30, &mut sketch), 0);
+}
+
+/// The careful figure sketch draws the float sketch's walk: the same parts each frame, and
+/// the same last pose within a pixel (its angles binary, its sines from a Q16 table, its
+/// points truncated from Q16.16 rather than from `f32`, so a point on a pixel's edge may
+/// fall either side).
+#[test]
+fn the_careful_figure_sketch_walks_as_the_float_one() {
+    use tinyfractal_scenes::naive::{figure_f32, figure_fixed};
+    for (size, frames) in [
+        (Size::new(128, 64), 16),
+        (Size::new(320, 240), 5),
+        (Size::new(64, 64), 1),
+    ] {
+        let mut float = Frame::filled(size, Gray4::new(5));
+        let mut fixed = Frame::filled(size, Gray4::new(5));
+        let parts = figure_f32(frames, &mut float);
+        assert_eq!(figure_fixed(frames, &mut fixed), parts);
+        assert_eq!(parts, u64::from(frames) * 22);
+        // Each lit pixel of either within a pixel of one lit in the other.
+        assert_eq!(apart(&fixed, &float), 0);
+    }
+}
+
+/// Lit pixels of either picture with none lit within a pixel of it in the other.
+fn apart(a: &Frame<Gray4>, b: &Frame<Gray4>) -> usize {
+    let (a, b) = (lit_pixels(a), lit_pixels(b));
+    let alone = |a: &std::collections::BTreeSet<(i32, i32)>,
+                 b: &std::collections::BTreeSet<(i32, i32)>| {
+        a.iter()
+            .filter(|&&(x, y)| !(-1..=1).any(|dy| (-1..=1).any(|dx| b.contains(&(x + dx, y + dy)))))
+            .count()
+    };
+    alone(&a, &b) + alone(&b, &a)
 }

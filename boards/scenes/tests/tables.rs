@@ -286,16 +286,25 @@ fn general_table(records: &[Value], results: &Value) -> String {
             thousands(instructions),
         ));
     }
-    // The sketch beside it: the string expanded in a byte buffer, a float 3D turtle.
+    // The sketches beside it: the string expanded in a byte buffer, a float 3D turtle or
+    // a careful Q16.16 one.
     for record in records.iter().filter(|r| r["scene"] == "monopodial-tree") {
         let core = record["core"].as_str().unwrap_or("?");
         let work = record["work"].as_u64().unwrap_or(1).max(1);
-        if let Some(cost) = record["baseline_f32"].as_u64() {
-            table.push_str(&format!(
-                "| {core} | the naive f32 sketch (its string expanded) | {} instructions | {} instructions |\n",
-                thousands(cost),
-                thousands(cost / work),
-            ));
+        for (key, sketch) in [
+            ("baseline_f32", "the naive f32 sketch (its string expanded)"),
+            (
+                "baseline_fixed20",
+                "a careful Q16.16 sketch (its string expanded)",
+            ),
+        ] {
+            if let Some(cost) = record[key].as_u64() {
+                table.push_str(&format!(
+                    "| {core} | {sketch} | {} instructions | {} instructions |\n",
+                    thousands(cost),
+                    thousands(cost / work),
+                ));
+            }
         }
     }
     table
@@ -319,6 +328,12 @@ fn ifs_table(records: &[Value], results: &Value) -> String {
     for (core, instructions, per_unit) in cortex_m_rows(records, "ifs-fern") {
         table.push_str(&format!(
             "| {core} | read, fit (a sample) and draw | {} instructions | {per_unit} instructions |\n",
+            thousands(instructions),
+        ));
+    }
+    for (core, instructions, per_unit) in cortex_m_rows(records, "ifs-fern-density") {
+        table.push_str(&format!(
+            "| {core} | read, fit (a sample), count and draw by density | {} instructions | {per_unit} instructions |\n",
             thousands(instructions),
         ));
     }
@@ -414,18 +429,22 @@ fn figure_table(records: &[Value]) -> String {
         .unwrap_or(1)
         .max(1);
     let mut table = format!(
-        "| core | {frames} frames (fit once, erase and draw each) | per frame | per line drawn | a float matrix stack's frame (naive.rs) |\n|---|---|---|---|---|\n",
+        "| core | {frames} frames (fit once, erase and draw each) | per frame | per line drawn | a float matrix stack's frame (naive.rs) | a Q16.16 matrix stack's frame |\n|---|---|---|---|---|---|\n",
     );
     for (core, instructions, per_line) in cortex_m_rows(records, "walking-figure") {
-        let sketch = records
-            .iter()
-            .find(|r| r["scene"] == "walking-figure" && r["core"] == core)
-            .and_then(|r| r["baseline_f32"].as_u64())
-            .map_or("-".to_string(), |cost| thousands(cost / frames));
+        let sketch = |key: &str| {
+            records
+                .iter()
+                .find(|r| r["scene"] == "walking-figure" && r["core"] == core)
+                .and_then(|r| r[key].as_u64())
+                .map_or("-".to_string(), |cost| thousands(cost / frames))
+        };
         table.push_str(&format!(
-            "| {core} | {} instructions | {} | {per_line} | {sketch} |\n",
+            "| {core} | {} instructions | {} | {per_line} | {} | {} |\n",
             thousands(instructions),
             thousands(instructions / frames),
+            sketch("baseline_f32"),
+            sketch("baseline_fixed20"),
         ));
     }
     table

@@ -42,3 +42,49 @@ impl Bounds {
         (scale, pixel)
     }
 }
+
+/// The box of a fixed-point turtle's points in Q16.16, as a careful sketch measures it.
+pub(super) struct FixedBounds {
+    low: (i32, i32),
+    high: (i32, i32),
+}
+
+impl FixedBounds {
+    pub(super) fn new() -> Self {
+        Self {
+            low: (i32::MAX, i32::MAX),
+            high: (i32::MIN, i32::MIN),
+        }
+    }
+
+    /// The box grown to hold `points`.
+    pub(super) fn add(&mut self, points: [(i32, i32); 2]) {
+        for (x, y) in points {
+            self.low = (self.low.0.min(x), self.low.1.min(y));
+            self.high = (self.high.0.max(x), self.high.1.max(y));
+        }
+    }
+
+    /// The box fitted as [`Bounds::fitted`] fits it, in Q16.16: the scale in pixels a
+    /// unit (Q16), and the pixel of a point; one 64-bit division an axis, once.
+    pub(super) fn fitted(&self, size: Size) -> (i64, impl Fn((i32, i32)) -> Point) {
+        let (low, high) = (self.low, self.high);
+        let (w, h) = (
+            (i64::from(size.width) - 4) << 16,
+            (i64::from(size.height) - 4) << 16,
+        );
+        let span = (
+            (i64::from(high.0) - i64::from(low.0)).max(1),
+            (i64::from(high.1) - i64::from(low.1)).max(1),
+        );
+        let scale = ((w << 16) / span.0).min((h << 16) / span.1);
+        let left = (2 << 16) + (w - ((span.0 * scale) >> 16)) / 2;
+        let bottom = (2 << 16) + h - (h - ((span.1 * scale) >> 16)) / 2;
+        let pixel = move |(x, y): (i32, i32)| {
+            let x = left + (((i64::from(x) - i64::from(low.0)) * scale) >> 16);
+            let y = bottom - (((i64::from(y) - i64::from(low.1)) * scale) >> 16);
+            Point::new(((x + 0x8000) >> 16) as i32, ((y + 0x8000) >> 16) as i32)
+        };
+        (scale, pixel)
+    }
+}

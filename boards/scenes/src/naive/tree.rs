@@ -34,7 +34,7 @@ const WR: f32 = 0.707;
 const TREE_STACK: usize = 16;
 
 /// Parameters a module of `symbol` carries.
-fn arity(symbol: u8) -> usize {
+pub(super) fn arity(symbol: u8) -> usize {
     match symbol {
         b'A' | b'B' | b'C' => 2,
         b'F' | b'!' | b'+' | b'-' | b'&' | b'^' | b'/' | b'\\' => 1,
@@ -49,6 +49,49 @@ fn grown(symbol: u8) -> usize {
         b'B' | b'C' => 36,
         other => 1 + 4 * arity(other),
     }
+}
+
+/// Expands the string of `length` bytes at the buffer's start `order` times, in place, as
+/// both tree sketches do; its new length, or `None` if it outgrows [`NAIVE_TREE_STRING`].
+///
+/// The string moves to the buffer's end and its expansion is written from the start: no
+/// module shrinks, so the writer never passes the reader. `grow(buffer, read, write)`
+/// writes the production of the `A`, `B` or `C` at `read` from `write` and returns where
+/// the next module goes. Inlined into each sketch, so the `f32` one's code is what it was
+/// when written out in it.
+#[inline(always)]
+pub(super) fn expand(
+    buffer: &mut [u8; NAIVE_TREE_STRING],
+    mut length: usize,
+    order: u32,
+    grow: impl Fn(&mut [u8], usize, usize) -> usize,
+) -> Option<usize> {
+    for _ in 0..order {
+        let mut grown_length = 0;
+        let mut at = 0;
+        while at < length {
+            grown_length += grown(buffer[at]);
+            at += 1 + 4 * arity(buffer[at]);
+        }
+        if grown_length > NAIVE_TREE_STRING {
+            return None;
+        }
+        buffer.copy_within(..length, NAIVE_TREE_STRING - length);
+        let (mut read, mut write) = (NAIVE_TREE_STRING - length, 0);
+        while read < NAIVE_TREE_STRING {
+            let symbol = buffer[read];
+            let size = 1 + 4 * arity(symbol);
+            if matches!(symbol, b'A' | b'B' | b'C') {
+                write = grow(buffer, read, write);
+            } else {
+                buffer.copy_within(read..read + size, write);
+                write += size;
+            }
+            read += size;
+        }
+        length = grown_length;
+    }
+    Some(length)
 }
 
 /// Writes a module at `at`; returns where the next one goes.
@@ -200,36 +243,13 @@ fn walk(string: &[u8], line: &mut dyn FnMut((f32, f32), (f32, f32), f32)) {
 pub fn monopodial_tree_f32<D: DrawTarget<Color = Gray4>>(order: u32, target: &mut D) -> u64 {
     let _ = target.clear(Gray4::BLACK);
     let mut buffer = [0u8; NAIVE_TREE_STRING];
-    let mut length = put(&mut buffer, 0, b'A', &[1.0, 0.1]);
-    for _ in 0..order {
-        let mut grown_length = 0;
-        let mut at = 0;
-        while at < length {
-            grown_length += grown(buffer[at]);
-            at += 1 + 4 * arity(buffer[at]);
-        }
-        if grown_length > NAIVE_TREE_STRING {
-            return 0;
-        }
-        // The string to the buffer's end, then its expansion from the start: no module
-        // shrinks, so the writer never passes the reader.
-        buffer.copy_within(..length, NAIVE_TREE_STRING - length);
-        let (mut read, mut write) = (NAIVE_TREE_STRING - length, 0);
-        while read < NAIVE_TREE_STRING {
-            let symbol = buffer[read];
-            let size = 1 + 4 * arity(symbol);
-            if matches!(symbol, b'A' | b'B' | b'C') {
-                let (l, w) = (get(&buffer, read + 1), get(&buffer, read + 5));
-                read += size;
-                write = produce(&mut buffer, write, symbol, l, w);
-            } else {
-                buffer.copy_within(read..read + size, write);
-                read += size;
-                write += size;
-            }
-        }
-        length = grown_length;
-    }
+    let length = put(&mut buffer, 0, b'A', &[1.0, 0.1]);
+    let Some(length) = expand(&mut buffer, length, order, |buffer, read, write| {
+        let (l, w) = (get(buffer, read + 1), get(buffer, read + 5));
+        produce(buffer, write, buffer[read], l, w)
+    }) else {
+        return 0;
+    };
     let string = &buffer[..length];
     let mut bounds = Bounds::new();
     walk(string, &mut |a, b, _| bounds.add([a, b]));
