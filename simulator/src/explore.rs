@@ -202,6 +202,7 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
             system,
             points,
             seed,
+            density,
         } => Scene::Ifs {
             source,
             system,
@@ -211,6 +212,7 @@ fn adjusted(entry: Entry, up: bool) -> Entry {
                 (points / 2).max(1_000)
             },
             seed,
+            density,
         },
         Scene::Attractor { kind, points } => Scene::Attractor {
             kind,

@@ -155,11 +155,13 @@ impl Job {
             Self::Scene(entry) => picture(entry),
             Self::General(entry) => general_picture(entry),
             Self::Ifs(entry) => {
-                crate::ifs_scene::render_entry(entry.source, entry.system, entry.points, entry.size)
-                    .map(|(display, plotted, elapsed)| {
+                let (source, system) = (entry.source, entry.system);
+                crate::ifs_scene::render_entry(source, system, entry.points, false, entry.size).map(
+                    |(display, plotted, elapsed)| {
                         let work = format!("{plotted} points");
                         (display, "chaos game".to_string(), work, elapsed)
-                    })
+                    },
+                )
             }
         }
     }
@@ -221,12 +223,18 @@ pub fn picture(entry: &Entry) -> Result<(Picture, String, String, Duration), Str
             source,
             system,
             points,
+            density,
             ..
-        } => crate::ifs_scene::render_entry(source, system, points, size).map(
+        } => crate::ifs_scene::render_entry(source, system, points, density, size).map(
             |(display, plotted, elapsed)| {
+                let detail = if density {
+                    "chaos game, by density"
+                } else {
+                    "chaos game"
+                };
                 (
                     display,
-                    "chaos game".to_string(),
+                    detail.to_string(),
                     format!("{plotted} points"),
                     elapsed,
                 )

@@ -153,13 +153,7 @@ pub fn render_ifs(options: &IfsOptions) -> Result<(), String> {
     let started = Instant::now();
     let spinner = measuring(options.points_count);
     let drawn = if options.density {
-        let keys = [
-            Rgb888::new(0x00, 0x10, 0x00),
-            Rgb888::new(0x20, 0xA0, 0x20),
-            Rgb888::new(0xF0, 0xFF, 0xC0),
-        ];
-        let palette = tinyfractal::render::Gradient::<Rgb888, 16>::new(&keys, Rgb888::BLACK)
-            .ok_or("the density palette is empty")?;
+        let palette = density_palette()?;
         let pixels = options.common.width() as usize * options.common.height() as usize;
         let mut counts = vec![0u16; pixels];
         // Counted in memory, then written a row at a time: the spinner runs throughout.
@@ -215,6 +209,7 @@ pub fn render_entry(
     source: &str,
     name: &str,
     points: u64,
+    density: bool,
     size: Size,
 ) -> Result<(SimulatorDisplay<Rgb888>, u64, std::time::Duration), String> {
     let failed = |e: tinyfractal::Error| e.to_string();
@@ -224,14 +219,33 @@ pub fn render_entry(
         .map_err(failed)?;
     let mut target = SimulatorDisplay::new(size);
     let started = Instant::now();
-    let drawing = IfsPicture::new(&ifs, points)
-        .fit(Rectangle::new(Point::zero(), size), &GREENS)
-        .map_err(failed)?;
-    let plotted = drawing
-        .try_draw(&mut target)
-        .map_err(crate::scene::engine_error)
-        .map_err(failed)?;
+    let picture = IfsPicture::new(&ifs, points);
+    let area = Rectangle::new(Point::zero(), size);
+    let drawn = if density {
+        let mut counts = vec![0u16; size.width as usize * size.height as usize];
+        picture
+            .fit_density(area, density_palette()?, &mut counts)
+            .map_err(failed)?
+            .try_draw(&mut target)
+    } else {
+        picture
+            .fit(area, &GREENS)
+            .map_err(failed)?
+            .try_draw(&mut target)
+    };
+    let plotted = drawn.map_err(crate::scene::engine_error).map_err(failed)?;
     Ok((target, plotted, started.elapsed()))
+}
+
+/// The density pictures' greens, from dark to pale.
+fn density_palette() -> Result<tinyfractal::render::Gradient<Rgb888, 16>, String> {
+    let keys = [
+        Rgb888::new(0x00, 0x10, 0x00),
+        Rgb888::new(0x20, 0xA0, 0x20),
+        Rgb888::new(0xF0, 0xFF, 0xC0),
+    ];
+    tinyfractal::render::Gradient::new(&keys, Rgb888::BLACK)
+        .ok_or_else(|| "the density palette is empty".to_string())
 }
 
 /// `render gingerbread`.

@@ -172,7 +172,7 @@ struct Rows<'r, 'a, C> {
     py: u32,
     /// Grid row above and the weight of the one below (Q8), for row `py`.
     y: usize,
-    fy: i64,
+    fy: i32,
     /// The grid column of pixel `px`, its fraction (Q8) and the remainder of the division
     /// that gives them.
     x: usize,
@@ -306,7 +306,7 @@ impl<'r, 'a, C: From<Rgb888>> Rows<'r, 'a, C> {
     fn start_row(&mut self) {
         let hm = i64::from(self.size.1.max(2) - 1);
         let gy = i64::from(self.py) * self.last * 256 / hm;
-        (self.y, self.fy) = ((gy >> 8) as usize, gy & 255);
+        (self.y, self.fy) = ((gy >> 8) as usize, (gy & 255) as i32);
         (self.x, self.fx, self.remainder) = (0, 0, 0);
         self.column = usize::MAX;
     }
@@ -315,7 +315,7 @@ impl<'r, 'a, C: From<Rgb888>> Rows<'r, 'a, C> {
     #[inline(never)]
     fn enter_cell(&mut self, x: usize) {
         let relief = self.relief;
-        let (y, fy) = (self.y, self.fy);
+        let (y, fy) = (self.y, i64::from(self.fy));
         // The column on the left is the last cell's right one where the pixels moved on
         // by one cell.
         let left = if self.column != usize::MAX && self.column + 1 == x {
@@ -364,7 +364,7 @@ where
 {
     type Item = C;
 
-    #[inline]
+    #[inline(always)]
     fn next(&mut self) -> Option<C> {
         if self.py >= self.size.1 || self.size.0 == 0 {
             return None;
