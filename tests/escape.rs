@@ -9,6 +9,7 @@ use proptest::prelude::*;
 use tinyfractal::error::{FitError, ViewError};
 use tinyfractal::{
     escape::{Algorithm, Render, Tier},
+    math::Generator,
     render::{DwellBuffer, DwellSink, TwoColor},
     Coord, Error, EscapeTime, Fractal, View,
 };
@@ -669,12 +670,15 @@ proptest! {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
-    /// A fast render (a Mandelbrot view's tiles traced, a Julia set's subdivided) leaves
-    /// few pixels that differ from the exact render, in random views from the whole
-    /// picture down to 10⁻⁵ wide: at most 2 % of a 64×48 view (specks that a channel
-    /// narrower than a pixel joins to the rest; a view of dust escaping just below the
-    /// cap, the saved case at 0.3645 + 0.3045i, misses 31 of 3,072, and the average over
-    /// many views is far lower: docs/escape-time.md).
+    /// A fast render (a Mandelbrot view's tiles traced, a Julia set's subdivided) misses
+    /// few of the pixels that escape early, in random views from the whole picture down to
+    /// 10⁻⁵ wide: at most 1 % of a 64×48 view among the pixels escaping in the first half
+    /// of the iterations. What it misses are specks that a channel narrower than a pixel
+    /// joins to the rest, nearly all of them dust escaping just before the cap; in a view
+    /// made of such dust it can miss more of those (the saved case at −0.3808 − 0.5923i
+    /// missed 62 of 3,072 before tiles were sampled for dust, every one escaping after 270
+    /// or more of its 448 iterations), so their share is bounded over many views instead
+    /// (`fast_renders_miss_few_pixels_over_many_views`, `fast_renders_find_most_dust`).
     #[test]
     fn fast_views_differ_from_exact_in_few_pixels(
         re in -2.0f64..0.5, im in -1.2f64..1.2, width_exp in -5.0f64..0.6, max in 20u32..700,
@@ -685,11 +689,93 @@ proptest! {
         if let Ok(view) = View::new(fractal, (c(re), c(im)), c(10f64.powf(width_exp)), Size::new(64, 48), max) {
             let (exact, exact_stats) = render(view, Algorithm::Exact);
             let (fast, fast_stats) = render(view, Algorithm::Fast);
-            let differ = fast.values.iter().zip(&exact.values).filter(|(f, e)| f != e).count();
-            prop_assert!(differ <= 64 * 48 / 50, "{differ} pixels differ");
+            let early = fast.values.iter().zip(&exact.values)
+                .filter(|&(f, &e)| *f != e && u32::from(e) < max / 2).count();
+            prop_assert!(early <= 64 * 48 / 100, "{early} pixels escaping early differ");
             prop_assert!(fast_stats.pixels <= exact_stats.pixels);
         }
     }
+}
+
+/// Over 500 random views drawn as the property test above draws them (a fixed seed), a
+/// fast render misses at most one pixel in 50,000 of the exact render's, dust included.
+#[test]
+fn fast_renders_miss_few_pixels_over_many_views() {
+    let mut random = Generator::new(20_261_205);
+    // A uniform number in [0, 1).
+    let mut uniform = move || f64::from(random.next_u32()) / 2f64.powi(32);
+    let c = |v: f64| Coord::from_f64(v).unwrap();
+    let (mut pixels, mut missed) = (0, 0);
+    for _ in 0..500 {
+        let (re, im) = (-2.0 + 2.5 * uniform(), -1.2 + 2.4 * uniform());
+        let width = 10f64.powf(-5.0 + 5.6 * uniform());
+        let max = 20 + (680.0 * uniform()) as u32;
+        let fractal = if uniform() < 0.5 {
+            Fractal::Mandelbrot
+        } else {
+            let (kr, ki) = (-0.75 + uniform(), -0.5 + uniform());
+            Fractal::Julia {
+                re: c(kr),
+                im: c(ki),
+            }
+        };
+        let size = Size::new(64, 48);
+        if let Ok(view) = View::new(fractal, (c(re), c(im)), c(width), size, max) {
+            let (exact, _) = render(view, Algorithm::Exact);
+            let (fast, _) = render(view, Algorithm::Fast);
+            pixels += exact.values.len();
+            missed += fast
+                .values
+                .iter()
+                .zip(&exact.values)
+                .filter(|(f, e)| f != e)
+                .count();
+        }
+    }
+    assert!(
+        pixels > 400 * 64 * 48,
+        "most views are valid ({pixels} pixels)"
+    );
+    assert!(
+        missed * 50_000 <= pixels,
+        "{missed} of {pixels} pixels missed"
+    );
+}
+
+/// A view of dust escaping just before the cap, near the set's edge, where outlines cannot
+/// see the specks a channel narrower than a pixel cuts off: the fast render samples the
+/// tiles whose outlines escape late and computes whole those where dust shows, so it
+/// misses under 0.8 % of the pixels the exact render draws (tracing alone missed 1.1 %).
+#[test]
+fn fast_renders_find_most_dust() {
+    let c = |v: &str| Coord::parse(v).unwrap();
+    let view = View::new(
+        Fractal::Mandelbrot,
+        (c("-0.3808"), c("-0.5923")),
+        c("0.00065"),
+        Size::new(320, 240),
+        500,
+    )
+    .unwrap();
+    let (exact, _) = render(view, Algorithm::Exact);
+    let (fast, stats) = render(view, Algorithm::Fast);
+    let escaping = exact.values.iter().filter(|&&e| e < 500).count();
+    let missed = fast
+        .values
+        .iter()
+        .zip(&exact.values)
+        .filter(|(f, e)| f != e)
+        .count();
+    assert!(escaping > 5_000, "a view of dust: {escaping} pixels escape");
+    assert!(
+        missed * 1000 < exact.values.len() * 8,
+        "{missed} pixels missed"
+    );
+    assert!(
+        (stats.pixels as usize) < exact.values.len() / 2,
+        "{} computed",
+        stats.pixels
+    );
 }
 
 /// The whole Mandelbrot set, 3.5 wide about −0.75.

@@ -46,6 +46,16 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
         self.fills(b, first).then_some(first)
     }
 
+    /// Computes every cell of block `b` not yet computed.
+    #[inline(always)]
+    pub(super) fn compute_block<C: Cells>(&mut self, cells: &C, b: Block) {
+        for ty in b.y0..b.y1 + 1 {
+            for tx in b.x0..b.x1 + 1 {
+                self.known(cells, tx, ty);
+            }
+        }
+    }
+
     /// Whether block `b`, its border all `value`, fills with it. With distance estimation
     /// a block whose border escapes may hide a strand drawn as the set: it fills only if
     /// every cell of its border (all computed) proves the set so far that no pixel inside
@@ -104,11 +114,7 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
                 }
             } else if bw < WHOLE_BELOW || bh < WHOLE_BELOW {
                 // The whole block: its border's scan may have stopped early.
-                for ty in b.y0..b.y1 + 1 {
-                    for tx in b.x0..b.x1 + 1 {
-                        self.known(cells, tx, ty);
-                    }
-                }
+                self.compute_block(cells, b);
             } else {
                 let (xm, ym) = (b.x0 + bw / 2, b.y0 + bh / 2);
                 for block in [

@@ -12,6 +12,15 @@ pub(super) const DOWN: u32 = 1;
 pub(super) const LEFT: u32 = 2;
 pub(super) const UP: u32 = 3;
 
+/// The sampling of a traced tile for dust (`Render::dusty`): every `DUST_SPACING`-th row
+/// and column.
+pub(super) const DUST_SPACING: u32 = 8;
+
+/// Cells escaping in the last half of the iterations, on a tile's sampled rows, that make
+/// it worth sampling for dust: few tiles of the full view or seahorse valley have as
+/// many, a view of dust's most (docs/escape-time.md).
+pub(super) const DUST_CELLS: usize = 24;
+
 // A row of a tile is a word of `Outlines`.
 const _: () = assert!(TILE <= u32::BITS);
 
@@ -103,7 +112,9 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
     /// A region inside another without touching the tile's edge would be missed; in a
     /// Mandelbrot view the sets of points with dwell above k are connected, so there is
     /// none except where a pixel grid breaks a connection narrower than a pixel (see
-    /// `Kernel::traceable`).
+    /// `Kernel::traceable`). Where those come in crowds (dust escaping just before the
+    /// cap), [`dusty`](Self::dusty) finds most tiles that hold them, and they are computed
+    /// whole.
     pub(super) fn trace<C: Cells>(&mut self, cells: &C, w: u32, h: u32) -> TileDwells {
         let mut outlines = Outlines {
             followed: [0; TILE_ROWS],
@@ -157,8 +168,83 @@ impl<'r, const CELLS: usize> Render<'r, CELLS> {
                 }
             }
         }
+        if self.dusty(cells, w, h, &outlines) {
+            return self.compute_all(cells, w, h);
+        }
         // Cells not computed take the dwell before them as the tile is sent.
         TileDwells::Gaps(outlines.quiet_rows(&self.tile, self.width, h))
+    }
+
+    /// Whether a traced tile's regions at the cap hide dust, as far as a sparse sample
+    /// shows: on every [`DUST_SPACING`]-th row (from the middle of the first such band),
+    /// if at least [`DUST_CELLS`] of the computed cells escape in the last half of the
+    /// iterations, computes the cells not yet computed at every [`DUST_SPACING`]-th
+    /// column that the tile would fill with the cap, and tells whether one escapes.
+    ///
+    /// Outlines find every region that touches another one or the tile's edge; what they
+    /// cannot see is a region enclosed in a single other one, in a Mandelbrot view a speck
+    /// cut off by a channel narrower than a pixel. Nearly all such specks are dust escaping
+    /// just before the cap, which comes in crowds: a tile of it has many computed cells
+    /// escaping late, and a sample of one cell in 64 of its cap regions finds most such
+    /// tiles. Views without dust seldom pass the first test, so they pay only its scan.
+    fn dusty<C: Cells>(&mut self, cells: &C, w: u32, h: u32, outlines: &Outlines) -> bool {
+        if self.late_cells(h, outlines) < DUST_CELLS {
+            return false;
+        }
+        let inside = self.view.inside_value();
+        let half = DUST_SPACING / 2;
+        for ty in (half..h.saturating_sub(1)).step_by(DUST_SPACING as usize) {
+            // The first cell of a row, on the tile's edge, is computed; a cell not computed
+            // takes the dwell before it.
+            let mut before = self.known(cells, 0, ty);
+            for tx in 1..w.saturating_sub(1) {
+                let value = self.tile.get(self.cell_index(tx, ty)).copied().unwrap_or(0);
+                if value != 0 {
+                    before = value;
+                } else if tx % DUST_SPACING == half
+                    && before == inside
+                    && self.known(cells, tx, ty) != inside
+                {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
+    /// The cells on [`dusty`](Self::dusty)'s rows of a traced tile `h` rows high computed
+    /// by its `outlines` (those on or across one) that escape in the last half of the
+    /// iterations. Apart from the tier, so that the firmware has one copy.
+    #[inline(never)]
+    fn late_cells(&self, h: u32, outlines: &Outlines) -> usize {
+        let inside = self.view.inside_value();
+        let rows = (DUST_SPACING / 2..h.saturating_sub(1)).step_by(DUST_SPACING as usize);
+        let mut late = 0;
+        for ty in rows {
+            let row = ty as usize & (TILE_ROWS - 1);
+            let followed = outlines.followed.get(row).copied().unwrap_or(0);
+            let mut marked = followed | outlines.across.get(row).copied().unwrap_or(0);
+            while marked != 0 {
+                let tx = marked.trailing_zeros();
+                marked &= marked - 1;
+                let value = self.tile.get(self.cell_index(tx, ty)).copied().unwrap_or(0);
+                late += usize::from(value > inside / 2 && value < inside);
+            }
+        }
+        late
+    }
+
+    /// Computes every cell of the tile not yet computed: a dusty tile is sent cell by cell.
+    #[inline(never)]
+    fn compute_all<C: Cells>(&mut self, cells: &C, w: u32, h: u32) -> TileDwells {
+        let whole = Block {
+            x0: 0,
+            y0: 0,
+            x1: w - 1,
+            y1: h - 1,
+        };
+        self.compute_block(cells, whole);
+        TileDwells::Cells
     }
 
     /// Follows the outline of the region of the cell in `start` (a cell and a direction
