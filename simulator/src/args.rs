@@ -201,8 +201,9 @@ fn completions(shell: clap_complete::Shell) -> Result<(), String> {
     crate::console::print(&String::from_utf8_lossy(&script))
 }
 
-/// Clap reads a negative number after an option that takes a count as an unknown
-/// option (`unexpected argument '-1'`): said as what it is, naming the option.
+/// Clap reads a negative number after an option that takes none as an unknown option,
+/// and names only its first character or two (`unexpected argument '-0'` for `-0.5`):
+/// said as what it is, naming the option and the whole value.
 fn negative_count(error: clap::Error, args: &[OsString]) -> clap::Error {
     let negative =
         |text: &str| text.len() > 1 && text.starts_with('-') && text[1..].parse::<f64>().is_ok();
@@ -210,18 +211,19 @@ fn negative_count(error: clap::Error, args: &[OsString]) -> clap::Error {
         Some(clap::error::ContextValue::String(invalid)) => invalid.clone(),
         _ => return error,
     };
-    if error.kind() != ErrorKind::UnknownArgument || !negative(&invalid) {
+    if error.kind() != ErrorKind::UnknownArgument {
         return error;
     }
     let option = args.windows(2).find_map(|pair| {
         let (option, value) = (pair[0].to_str()?, pair[1].to_str()?);
-        (option.starts_with("--") && value == invalid).then(|| option.to_string())
+        (option.starts_with("--") && value.starts_with(invalid.as_str()) && negative(value))
+            .then(|| (option.to_string(), value.to_string()))
     });
     match option {
-        Some(option) => usage(
+        Some((option, value)) => usage(
             ErrorKind::ValueValidation,
             &format!(
-                "{option} {invalid}: {option} takes a count of 0 or more, not a negative number"
+                "{option} {value}: {option} takes a number of 0 or more, not a negative number"
             ),
         ),
         None => error,

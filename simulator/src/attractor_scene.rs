@@ -16,8 +16,8 @@ use crate::common::Common;
 use crate::console::Failure;
 use crate::noise_scene::parse_real;
 
-/// Most points `--points-count` takes: a bound on a run's time (a few seconds a hundred
-/// million on a host).
+/// Most points `--points-count` takes, and most steps `--skip` takes: a bound on a run's
+/// time (a few seconds a hundred million on a host).
 pub const MAX_POINTS: u64 = 1_000_000_000;
 
 /// The colour of a point (points mode).
@@ -55,8 +55,10 @@ pub struct AttractorOptions {
     #[arg(long = "points-count", value_name = "N", default_value_t = 100_000,
           value_parser = clap::value_parser!(u64).range(0..=MAX_POINTS))]
     points_count: u64,
-    /// Steps from the start before the first plotted point (0: the start is plotted)
-    #[arg(long, value_name = "N", default_value_t = tinyfractal::attractor::DEFAULT_SKIP)]
+    /// Steps from the start before the first plotted point (0: the start is plotted), at
+    /// most 1000000000
+    #[arg(long, value_name = "N", default_value_t = tinyfractal::attractor::DEFAULT_SKIP,
+          value_parser = clap::value_parser!(u64).range(0..=MAX_POINTS))]
     skip: u64,
     /// Colour each pixel by how many points hit it (log scale)
     #[arg(long)]

@@ -105,6 +105,31 @@ fn limits_and_causes_are_the_options_own() {
         &["animate", "zoom", "--frames", "-1"],
         &["--frames -1", "not a negative number"],
     );
+    usage_error(
+        &[
+            "render",
+            "attractor",
+            "--skip",
+            "99999999999",
+            "--size",
+            "8x8",
+        ],
+        &["--skip", "0..=1000000000"],
+    );
+    // Clap names only the first characters of a negative decimal (`'-0'`): the whole value
+    // and its option are named.
+    usage_error(
+        &["render", "reaction", "--feed", "-0.1", "--size", "8x8"],
+        &["--feed -0.1", "not a negative number"],
+    );
+    usage_error(
+        &["render", "attractor", "--dt", "-0.01", "--size", "8x8"],
+        &["--dt -0.01", "not a negative number"],
+    );
+    usage_error(
+        &["render", "lsystem", "--axiom", "F", "--angle", "-30"],
+        &["--angle -30", "not a negative number"],
+    );
     // An unknown option before a negative number is still the unknown option.
     usage_error(
         &["animate", "zoom", "--frobnicate", "-1"],
