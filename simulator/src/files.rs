@@ -32,7 +32,8 @@ pub fn read_text(path: &Path) -> Result<String, String> {
 pub fn decode(path: &Path, bytes: &[u8]) -> Result<String, String> {
     if bytes.len() as u64 > MAX_INPUT_BYTES {
         return Err(format!(
-            "{} is larger than {} MiB, the largest input read: is it a .l file?",
+            "{} is larger than {} MiB, the largest input read: give a text file (.l, .lsys, \
+             .ifs or .map; such files are a few KiB)",
             path.display(),
             MAX_INPUT_BYTES >> 20
         ));
@@ -45,8 +46,8 @@ pub fn decode(path: &Path, bytes: &[u8]) -> Result<String, String> {
     }
     if bytes.contains(&0) {
         return Err(format!(
-            "{} is a binary file, not text (it holds zero bytes): give a .l, .lsys or .ifs \
-             text file",
+            "{} is a binary file, not text (it holds zero bytes): give a .l, .lsys, .ifs \
+             or .map text file",
             path.display()
         ));
     }

@@ -223,6 +223,27 @@ fn files_are_known_by_content_and_extension() {
         "{}",
         stderr(&output)
     );
+    // Too large a file is named as such, without guessing what it was meant to be: here a
+    // palette (a sparse file, so nothing is written to the disk).
+    let huge = dir.join("huge.map");
+    std::fs::File::create(&huge)
+        .unwrap()
+        .set_len(17 << 20)
+        .unwrap();
+    let output = run(&[
+        "render",
+        "mandelbrot",
+        "--palette-file",
+        huge.to_str().unwrap(),
+        "--size",
+        "8x8",
+    ]);
+    let err = stderr(&output);
+    assert_eq!(output.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("larger than 16 MiB") && err.contains(".map") && !err.contains("is it a"),
+        "{err}"
+    );
     // An IFS file given to the L-system reader, under any extension.
     let disguised = dir.join("fern.l");
     std::fs::copy(shipped("lecture.ifs"), &disguised).unwrap();
