@@ -70,7 +70,16 @@ pub fn dimension_line(
 fn dimension(path: &Path, background: u32) -> Result<(), String> {
     use embedded_graphics::prelude::*;
     let picture = image::open(path)
-        .map_err(|e| format!("dimension {}: {e}", path.display()))?
+        .map_err(|e| match e {
+            // The reader's default limit (512 MiB decoded) keeps a small file that claims a
+            // huge picture from taking the machine's memory.
+            image::ImageError::Limits(_) => format!(
+                "dimension {}: the picture is too large to read (more than 512 MiB decoded): \
+                 give a smaller PNG",
+                path.display()
+            ),
+            e => format!("dimension {}: {e}", path.display()),
+        })?
         .to_rgb8();
     let (width, height) = picture.dimensions();
     let mut display = SimulatorDisplay::new(Size::new(width, height));

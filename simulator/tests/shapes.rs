@@ -240,4 +240,49 @@ fn bad_input_is_refused_with_what_to_do_and_no_file() {
     let missing = run(&["dimension", dir.join("none.png").to_str().unwrap()]);
     assert_eq!(missing.status.code(), Some(1));
     assert!(stderr(&missing).contains("none.png"));
+    // A small file whose header claims 30000×30000 pixels is refused as too large, before
+    // any memory is taken for it.
+    let huge = dir.join("huge.png");
+    std::fs::write(&huge, png_claiming(30_000, 30_000)).unwrap();
+    let output = run(&["dimension", huge.to_str().unwrap()]);
+    let err = stderr(&output);
+    assert_eq!(output.status.code(), Some(1), "{err}");
+    assert!(err.contains("too large to read"), "{err}");
+}
+
+/// The bytes of a PNG whose header says `width`×`height` grey pixels, with one empty
+/// stored zlib block as its data: a reader learns the size before it reads the data.
+fn png_claiming(width: u32, height: u32) -> Vec<u8> {
+    fn crc32(bytes: &[u8]) -> u32 {
+        let mut crc = !0u32;
+        for &byte in bytes {
+            crc ^= u32::from(byte);
+            for _ in 0..8 {
+                crc = if crc & 1 == 1 {
+                    (crc >> 1) ^ 0xedb8_8320
+                } else {
+                    crc >> 1
+                };
+            }
+        }
+        !crc
+    }
+    let mut file = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        file.extend((data.len() as u32).to_be_bytes());
+        let body = [kind, data].concat();
+        file.extend(&body);
+        file.extend(crc32(&body).to_be_bytes());
+    };
+    let mut header = [width.to_be_bytes(), height.to_be_bytes()].concat();
+    header.extend([8, 0, 0, 0, 0]);
+    chunk(b"IHDR", &header);
+    chunk(
+        b"IDAT",
+        &[
+            0x78, 0x01, 0x01, 0x00, 0x00, 0xff, 0xff, 0x00, 0x00, 0x00, 0x01,
+        ],
+    );
+    chunk(b"IEND", &[]);
+    file
 }
