@@ -138,7 +138,7 @@ where
     let args: Vec<OsString> = std::iter::once(OsString::from("tinyfractal"))
         .chain(args.into_iter().map(Into::into))
         .collect();
-    Cli::try_parse_from(&args).map_err(|error| negative_count(error, &args))
+    Cli::try_parse_from(&args).map_err(|error| negative_number(error, &args))
 }
 
 impl Cli {
@@ -204,7 +204,7 @@ fn completions(shell: clap_complete::Shell) -> Result<(), String> {
 /// Clap reads a negative number after an option that takes none as an unknown option,
 /// and names only its first character or two (`unexpected argument '-0'` for `-0.5`):
 /// said as what it is, naming the option and the whole value.
-fn negative_count(error: clap::Error, args: &[OsString]) -> clap::Error {
+fn negative_number(error: clap::Error, args: &[OsString]) -> clap::Error {
     let negative =
         |text: &str| text.len() > 1 && text.starts_with('-') && text[1..].parse::<f64>().is_ok();
     let invalid = match error.get(clap::error::ContextKind::InvalidArg) {

@@ -77,7 +77,7 @@ mod tests {
     /// The rule in 64-bit arithmetic, as the documentation states it: the leading bit's
     /// place, and the bits below it as a Q32 fraction placed between two table entries.
     fn log2_in_64_bits(value: u64, frac_bits: u32) -> Option<i32> {
-        let top = 63 - value.checked_ilog2().map(|bit| 63 - bit)?;
+        let top = value.checked_ilog2()?;
         let below = value ^ (1 << top);
         let fraction = if top >= 32 {
             below >> (top - 32)
