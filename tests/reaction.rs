@@ -408,3 +408,58 @@ fn presets_are_the_published_pairs() {
     unique.dedup();
     assert_eq!(names.len(), unique.len());
 }
+
+/// A palette that shows a level as that grey, so a drawn pixel names its cell's level.
+struct Levels;
+
+impl tinyfractal::render::Palette for Levels {
+    type Color = embedded_graphics::pixelcolor::Gray8;
+
+    fn color(&self, level: u16, _max: u16) -> Self::Color {
+        embedded_graphics::pixelcolor::Gray8::new(level as u8)
+    }
+}
+
+/// Every pixel of a drawing shows the cell its documented rule names: column
+/// ⌊x·W/width⌋ and row ⌊y·H/height⌋ of the grid, for grids stretched and shrunk.
+#[test]
+fn drawings_show_the_nearest_cell() {
+    use embedded_graphics::mock_display::MockDisplay;
+    use embedded_graphics::pixelcolor::GrayColor;
+    use embedded_graphics::prelude::*;
+    use embedded_graphics::primitives::Rectangle;
+    use tinyfractal::reaction::level_of;
+    for (w, h) in [(3, 3), (5, 7), (24, 24), (64, 40)] {
+        let mut grid = Grid::new(w, h);
+        let mut reaction = grid.reaction(&Preset::Mitosis.model());
+        // Each cell a level of its own (up to 256 of them), B = level/255 rounded.
+        let cells = reaction.cells_mut();
+        for (index, cell) in cells.iter_mut().enumerate() {
+            let level = (index * 97 % 256) as u32;
+            cell.b = ((level * u32::from(ONE) + 127) / 255) as u16;
+        }
+        let levels: Vec<u8> = reaction.cells().iter().map(|c| level_of(c.b)).collect();
+        for (width, height) in [(1, 1), (7, 5), (63, 64), (13, 50), (20, 3), (62, 41)] {
+            let area = Rectangle::new(Point::new(1, 0), Size::new(width, height));
+            let mut display = MockDisplay::<embedded_graphics::pixelcolor::Gray8>::new();
+            reaction
+                .fit(area, Levels)
+                .unwrap()
+                .draw(&mut display)
+                .unwrap();
+            for y in 0..height {
+                for x in 0..width {
+                    let column = (f64::from(x) * f64::from(w) / f64::from(width)).floor();
+                    let row = (f64::from(y) * f64::from(h) / f64::from(height)).floor();
+                    let expected = levels[row as usize * w as usize + column as usize];
+                    let pixel = display.get_pixel(Point::new(x as i32 + 1, y as i32));
+                    assert_eq!(
+                        pixel.map(|p| p.luma()),
+                        Some(expected),
+                        "grid {w}x{h}, area {width}x{height}, pixel ({x}, {y})"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -85,13 +85,26 @@ impl<P: Palette> Drawable for ReactionDrawing<'_, P> {
         D: DrawTarget<Color = Self::Color>,
     {
         let (w, h) = (self.area.size.width, self.area.size.height);
+        let (columns, wide) = (self.grid.0, u64::from(w));
         let colors = (0..h).flat_map(|y| {
-            let start = self.row(y) * self.grid.0 as usize;
+            let start = self.row(y) * columns as usize;
             let row = self.cells.get(start..).unwrap_or_default();
-            (0..w).map(move |x| {
-                let b = row.get(self.column(x)).map_or(0, |cell| cell.b);
-                self.palette.color(u16::from(level_of(b)), u16::MAX)
-            })
+            // Column ⌊x·W/width⌋ stepped along the row, no division a pixel: `column·width
+            // + over = x·W` with `over` below the width.
+            (0..w)
+                .scan((0, 0), move |(column, over): &mut (usize, u64), _| {
+                    let here = *column;
+                    *over += u64::from(columns);
+                    while *over >= wide {
+                        *over -= wide;
+                        *column += 1;
+                    }
+                    Some(here)
+                })
+                .map(move |column| {
+                    let b = row.get(column).map_or(0, |cell| cell.b);
+                    self.palette.color(u16::from(level_of(b)), u16::MAX)
+                })
         });
         target.fill_contiguous(&self.area, colors)
     }
