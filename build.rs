@@ -4,7 +4,10 @@
 //! has no `target_feature` cfg for this, so the target name decides.) The products are exact
 //! either way: results are bit-identical on every target. Likewise
 //! `tinyfractal_rounding_multiply` marks ARMv7E-M, whose `smmulr` rounds a product's high
-//! word in one instruction; elsewhere the same bits come from the low word's top bit.
+//! word in one instruction; elsewhere the same bits come from the low word's top bit. And
+//! `tinyfractal_few_registers` marks ARMv6-M and ARMv8-M Baseline, whose data-processing
+//! instructions reach only eight registers: a loop that holds many values is laid out
+//! differently there, with the same results.
 
 //!
 //! It also finds Fractint's corpus for the tests that read it (`TINYFRACTAL_CORPUS`, or
@@ -20,6 +23,7 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_hardware_divide)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_corpus)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_rounding_multiply)");
+    println!("cargo::rustc-check-cfg=cfg(tinyfractal_few_registers)");
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-env-changed=TINYFRACTAL_CORPUS");
     println!("cargo:rerun-if-env-changed=CI");
@@ -47,6 +51,7 @@ fn main() {
     let target = env::var("TARGET").unwrap_or_default();
     if target.starts_with("thumbv6m") || target.starts_with("thumbv8m.base") {
         println!("cargo:rustc-cfg=tinyfractal_no_long_multiply");
+        println!("cargo:rustc-cfg=tinyfractal_few_registers");
     }
     // ARMv6-M divides in library calls even for 32 bits: there a 64-bit division is one
     // call where the 32-bit way is several.

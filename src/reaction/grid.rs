@@ -268,7 +268,17 @@ fn update_row(
     carry: &mut Carry,
 ) {
     // Δt = 1, every preset's: a product fewer a cell, and a rate fewer to hold.
-    if coefficients.dt == i32::from(ONE) {
+    let unit_dt = coefficients.dt == i32::from(ONE);
+    // A chemical at a time where the core has registers for it; on ARMv6-M's eight the
+    // one-pass loop spills less than two passes do.
+    #[cfg(not(tinyfractal_few_registers))]
+    if unit_dt {
+        update_row_by_chemical::<true>(above, row, below, kept, coefficients, carry);
+    } else {
+        update_row_by_chemical::<false>(above, row, below, kept, coefficients, carry);
+    }
+    #[cfg(tinyfractal_few_registers)]
+    if unit_dt {
         update_row_with::<true>(above, row, below, kept, coefficients, carry);
     } else {
         update_row_with::<false>(above, row, below, kept, coefficients, carry);
@@ -280,6 +290,7 @@ fn update_row(
 /// A cell is written once its right neighbour's old value has been read (and kept), so
 /// the row needs no copy of its own; the first column, the last cell's right neighbour, is
 /// taken before anything is written.
+#[cfg_attr(not(tinyfractal_few_registers), allow(dead_code))]
 #[inline(never)]
 fn update_row_with<const UNIT_DT: bool>(
     above: &[Cell],
@@ -349,11 +360,109 @@ fn update_row_with<const UNIT_DT: bool>(
     };
 }
 
+/// [`update_row_with`] in two passes over the row, one for each chemical, so that a
+/// cell's loop holds half as many values: the row's old values are copied to `kept`
+/// first, and each pass reads only old values. The same cells and carries, since the two
+/// chemicals' remainders are carried apart anyway.
+#[cfg_attr(tinyfractal_few_registers, allow(dead_code))]
+#[inline(never)]
+fn update_row_by_chemical<const UNIT_DT: bool>(
+    above: &[Cell],
+    row: &mut [Cell],
+    below: &[Cell],
+    kept: &mut [Cell],
+    coefficients: &Coefficients,
+    carry: &mut Carry,
+) {
+    let width = row.len();
+    let (Some(kept), Some(above), Some(below)) = (
+        kept.get_mut(..width),
+        above.get(..width),
+        below.get(..width),
+    ) else {
+        return;
+    };
+    kept.copy_from_slice(row);
+    let c = *coefficients;
+    carry.a = chemical_pass::<UNIT_DT, false>([above, kept, below], row, &c, carry.a);
+    carry.b = chemical_pass::<UNIT_DT, true>([above, kept, below], row, &c, carry.b);
+}
+
+/// One chemical's pass of [`update_row_by_chemical`] (B's where `B`): each cell's value
+/// in `row` from the old rows `above`, `kept` (the row's own) and `below`; returns the
+/// carry.
+#[inline(always)]
+fn chemical_pass<const UNIT_DT: bool, const B: bool>(
+    [above, kept, below]: [&[Cell]; 3],
+    row: &mut [Cell],
+    c: &Coefficients,
+    mut carry: i32,
+) -> i32 {
+    let of = |cell: &Cell| i32::from(if B { cell.b } else { cell.a });
+    let old = |cell: Cell| (i32::from(cell.a), i32::from(cell.b));
+    let sum_at = |x: usize| {
+        let cell = |row: &[Cell]| row.get(x).map_or(0, of);
+        cell(above) + 4 * cell(kept) + cell(below)
+    };
+    let first = sum_at(0);
+    let mut left = sum_at(row.len().wrapping_sub(1));
+    let mut here = first;
+    let mut centre = kept.first().copied().unwrap_or(Cell::REST);
+    let set = |out: &mut Cell, value: u16| {
+        if B {
+            out.b = value;
+        } else {
+            out.a = value;
+        }
+    };
+    let columns = above.iter().zip(kept).zip(below).skip(1);
+    for (out, ((up, middle), down)) in row.iter_mut().zip(columns) {
+        let right = of(up) + 4 * of(middle) + of(down);
+        set(
+            out,
+            next_chemical::<UNIT_DT, B>(left, here, right, old(centre), c, &mut carry),
+        );
+        (left, here, centre) = (here, right, *middle);
+    }
+    // The last cell's right neighbour is the first column.
+    if let Some(out) = row.last_mut() {
+        set(
+            out,
+            next_chemical::<UNIT_DT, B>(left, here, first, old(centre), c, &mut carry),
+        );
+    }
+    carry
+}
+
+/// One chemical's next value (B's where `B`) at a cell whose old values are `(a, b)`,
+/// from its column's weighted sum and its neighbours' (see [`Column`]): what
+/// [`next_cell`] gives that chemical.
+#[inline(always)]
+fn next_chemical<const UNIT_DT: bool, const B: bool>(
+    left: i32,
+    here: i32,
+    right: i32,
+    (a, b): (i32, i32),
+    c: &Coefficients,
+    carry: &mut i32,
+) -> u16 {
+    let laplacian = left + right + 4 * here - 36 * if B { b } else { a };
+    let reaction = reaction::<UNIT_DT>(a, b, c);
+    if B {
+        settle(b, c.diffusion_b * laplacian + reaction - c.decay * b, carry)
+    } else {
+        let feed = c.feed * (i32::from(ONE) - a);
+        settle(a, c.diffusion_a * laplacian - reaction + feed, carry)
+    }
+}
+
 /// One cell's next state from its column and the columns left and right of it.
 ///
 /// Every product fits 32 bits: a cell is at most 2¹⁵ (1.0), each rate at most 2¹⁵ (D·Δt/20
 /// at most 1638), 20·∇² within ±20·2¹⁵; so each term is within ±2³⁰, and the sums for A
 /// and for B, with the carry, within ±2³¹ (the checks in [`GrayScott`] keep them there).
+/// Both chemicals in one expression: built from [`next_chemical`] twice, ARMv6-M's loop,
+/// the one that takes this, is scheduled worse.
 #[inline(always)]
 fn next_cell<const UNIT_DT: bool>(
     left: Column,
@@ -365,23 +474,28 @@ fn next_cell<const UNIT_DT: bool>(
     // 20·∇² exactly: 4 × (the four edges) + (the four corners) − 20 × the centre.
     let laplacian_a = left.sum_a + right.sum_a + 4 * here.sum_a - 36 * here.a;
     let laplacian_b = left.sum_b + right.sum_b + 4 * here.sum_b - 36 * here.b;
-    let half = 1 << (CELL_BITS - 1);
-    // AB²·Δt in Q30: A·B rounded to Q15, times Δt rounded to Q15 (exact when Δt is 1),
-    // times B.
-    let ab = (here.a * here.b + half) >> CELL_BITS;
-    // With Δt = 1 (2¹⁵) the rounding of ab·Δt leaves ab as it was.
-    let ab_dt = if UNIT_DT {
-        ab
-    } else {
-        (ab * c.dt + half) >> COEFFICIENT_BITS
-    };
-    let reaction = ab_dt * here.b;
+    let reaction = reaction::<UNIT_DT>(here.a, here.b, c);
     let change_a = c.diffusion_a * laplacian_a - reaction + c.feed * (i32::from(ONE) - here.a);
     let change_b = c.diffusion_b * laplacian_b + reaction - c.decay * here.b;
     Cell {
         a: settle(here.a, change_a, carry_a),
         b: settle(here.b, change_b, carry_b),
     }
+}
+
+/// The reaction AB²·Δt in Q30 at a cell of old values `a` and `b`: A·B rounded to Q15,
+/// times Δt rounded to Q15 (exact when Δt is 1, `UNIT_DT`), times B.
+#[inline(always)]
+fn reaction<const UNIT_DT: bool>(a: i32, b: i32, c: &Coefficients) -> i32 {
+    let half = 1 << (CELL_BITS - 1);
+    let ab = (a * b + half) >> CELL_BITS;
+    // With Δt = 1 (2¹⁵) the rounding of ab·Δt leaves ab as it was.
+    let ab_dt = if UNIT_DT {
+        ab
+    } else {
+        (ab * c.dt + half) >> COEFFICIENT_BITS
+    };
+    ab_dt * b
 }
 
 /// `value` plus `change` (in units of 2⁻³⁰), rounded down to 2⁻¹⁵ with the remainder
@@ -407,55 +521,93 @@ mod tests {
     use std::vec;
     use std::vec::Vec;
 
-    /// The row step that knows Δt = 1 writes the cells and carries the remainders the
-    /// general one does with Δt = 1, for every preset, on random rows of random widths
-    /// (each width modulo 3, as the step takes three cells a turn); both keep the row's
-    /// old values whole.
-    #[test]
-    fn unit_time_step_is_the_general_step_at_one() {
-        let mut random = Generator::new(11);
+    /// A row step's signature, to compare two of them.
+    type RowStep = fn(&[Cell], &mut [Cell], &[Cell], &mut [Cell], &Coefficients, &mut Carry);
+
+    /// Steps the middle one of three random rows of every width in `widths` by `first` and
+    /// by `second` and asserts that both write the same cells, carry the same remainders
+    /// and keep the row's old values whole; and that the row changed.
+    fn assert_same_rows(
+        (first, second): (RowStep, RowStep),
+        coefficients: &Coefficients,
+        widths: &[usize],
+        random: &mut Generator,
+    ) {
         let mut cell = || Cell {
             a: (random.next_u32() % (u32::from(ONE) + 1)) as u16,
             b: (random.next_u32() % (u32::from(ONE) + 1)) as u16,
         };
+        for &width in widths {
+            let rows: [Vec<Cell>; 3] =
+                core::array::from_fn(|_| (0..width).map(|_| cell()).collect());
+            let [above, centre, below] = &rows;
+            let start = Carry {
+                a: 4_567,
+                b: 30_001,
+            };
+            let (mut rows, mut kept, mut carries) = (
+                [centre.clone(), centre.clone()],
+                [vec![Cell::REST; width], vec![Cell::REST; width]],
+                [start, start],
+            );
+            for (step, ((row, kept), carry)) in [first, second]
+                .into_iter()
+                .zip(rows.iter_mut().zip(&mut kept).zip(&mut carries))
+            {
+                step(above, row, below, kept, coefficients, carry);
+            }
+            let case = (coefficients, width);
+            assert_ne!(&rows[0], centre, "{case:?}");
+            assert_eq!(rows[0], rows[1], "{case:?}");
+            let [one, two] = carries.map(|carry| (carry.a, carry.b));
+            assert_eq!(one, two, "{case:?}");
+            assert_eq!(&kept[0], centre, "{case:?}");
+            assert_eq!(&kept[1], centre, "{case:?}");
+        }
+    }
+
+    /// The row step that knows Δt = 1 writes the cells and carries the remainders the
+    /// general one does with Δt = 1, for every preset, on random rows of random widths
+    /// (each width modulo 3, as the one-pass step takes three cells a turn), in both
+    /// loops.
+    #[test]
+    fn unit_time_step_is_the_general_step_at_one() {
+        let mut random = Generator::new(11);
         for preset in Preset::ALL {
             let coefficients = preset.model().coefficients().unwrap();
             assert_eq!(coefficients.dt, i32::from(ONE));
-            for width in [3, 4, 5, 7, 24, 33] {
-                let rows: [Vec<Cell>; 3] =
-                    core::array::from_fn(|_| (0..width).map(|_| cell()).collect());
-                let [above, centre, below] = &rows;
-                let start = Carry { a: 123, b: 32_000 };
-                let (mut general, mut unit) = (centre.clone(), centre.clone());
-                let (mut general_kept, mut unit_kept) =
-                    (vec![Cell::REST; width], vec![Cell::REST; width]);
-                let (mut general_carry, mut unit_carry) = (start, start);
-                update_row_with::<false>(
-                    above,
-                    &mut general,
-                    below,
-                    &mut general_kept,
-                    &coefficients,
-                    &mut general_carry,
-                );
-                update_row_with::<true>(
-                    above,
-                    &mut unit,
-                    below,
-                    &mut unit_kept,
-                    &coefficients,
-                    &mut unit_carry,
-                );
-                assert_eq!(general, unit, "{} {width}", preset.name());
-                assert_eq!(
-                    (general_carry.a, general_carry.b),
-                    (unit_carry.a, unit_carry.b),
-                    "{} {width}",
-                    preset.name()
-                );
-                assert_eq!(&general_kept, centre, "{} {width}", preset.name());
-                assert_eq!(&unit_kept, centre, "{} {width}", preset.name());
-            }
+            let widths = [3, 4, 5, 7, 24, 33];
+            let one_pass: (RowStep, RowStep) = (update_row_with::<false>, update_row_with::<true>);
+            assert_same_rows(one_pass, &coefficients, &widths, &mut random);
+            let by_chemical: (RowStep, RowStep) = (
+                update_row_by_chemical::<false>,
+                update_row_by_chemical::<true>,
+            );
+            assert_same_rows(by_chemical, &coefficients, &widths, &mut random);
+        }
+    }
+
+    /// A chemical at a time, as most cores step, writes the cells, carries and kept
+    /// values of the one-pass loop ARMv6-M takes, for every preset and a time step below
+    /// 1, on random rows of random widths.
+    #[test]
+    fn both_row_loops_give_the_same_cells() {
+        let mut random = Generator::new(29);
+        let mut slow = Preset::Mitosis.model();
+        slow.dt = crate::math::Real::from_ratio(73, 100).unwrap();
+        let models = Preset::ALL
+            .iter()
+            .map(|preset| preset.model())
+            .chain([slow]);
+        for model in models {
+            let coefficients = model.coefficients().unwrap();
+            let loops: (RowStep, RowStep) = if coefficients.dt == i32::from(ONE) {
+                (update_row_with::<true>, update_row_by_chemical::<true>)
+            } else {
+                (update_row_with::<false>, update_row_by_chemical::<false>)
+            };
+            let widths = [3, 4, 5, 6, 7, 8, 24, 33, 64];
+            assert_same_rows(loops, &coefficients, &widths, &mut random);
         }
     }
 }
