@@ -3,7 +3,7 @@
 //! an orbit that leaves its range stops with an error instead of wrapping.
 
 use crate::math::trig::{binary_angle_of_radians, cos_of_binary, sin_of_binary};
-use crate::math::wide::mul_i32_wide;
+use crate::math::wide::{mul_i32_wide, mul_u32_wide};
 use crate::math::Real;
 
 /// `a·b` with `F` fraction bits, rounded down, in 64 bits (never overflows).
@@ -45,6 +45,19 @@ pub(super) fn mul_narrow<const F: u32>(a: i32, b: i32) -> Option<i32> {
 #[inline(always)]
 pub(super) fn narrow(value: i64) -> Option<i32> {
     i32::try_from(value).ok()
+}
+
+/// `value / 6`, rounded half away from zero.
+#[inline(always)]
+pub(super) fn sixth(value: i32) -> i32 {
+    // |value| + 3 fits a u32; n / 6 = ⌊n·⌈2³⁴/6⌉ / 2³⁴⌋ for every u32 n (no division,
+    // which ARMv6-M does not have).
+    let magnitude = (mul_u32_wide(value.unsigned_abs() + 3, 0xAAAA_AAAB) >> 34) as i32;
+    if value < 0 {
+        -magnitude
+    } else {
+        magnitude
+    }
 }
 
 /// A Q30 sine or cosine in `F` fraction bits, rounded down.
@@ -94,4 +107,41 @@ pub(super) fn to_fixed(value: Real, bits: u32) -> Option<i32> {
 /// A fixed-point value as a [`Real`] (exact).
 pub(super) fn to_real(value: i32, bits: u32) -> Real {
     Real::from_bits(i64::from(value) << (Real::FRAC_BITS - bits))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::TestRunner;
+
+    /// A sixth rounded half away from zero, against exact rationals in i64.
+    #[test]
+    fn sixth_rounds_half_away_from_zero() {
+        let exact = |v: i32| -> i32 {
+            let v = i64::from(v);
+            let rounded = (2 * v.abs() + 6) / 12;
+            (if v < 0 { -rounded } else { rounded }) as i32
+        };
+        for v in [
+            i32::MIN,
+            i32::MIN + 1,
+            i32::MAX,
+            i32::MAX - 2,
+            -3,
+            -2,
+            2,
+            3,
+            0,
+        ] {
+            assert_eq!(sixth(v), exact(v), "{v}");
+        }
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(&any::<i32>(), |v| {
+                prop_assert_eq!(sixth(v), exact(v));
+                Ok(())
+            })
+            .unwrap();
+    }
 }

@@ -39,6 +39,7 @@ mod kind;
 mod orbit;
 mod place;
 mod step;
+mod value;
 
 pub use drawing::{
     AttractorDensity, AttractorDrawing, AttractorPicture, AttractorStats, DEFAULT_SKIP, FIT_POINTS,

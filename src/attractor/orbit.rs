@@ -316,6 +316,7 @@ pub(super) fn plane<const THREE: bool>([x, y, z]: State) -> [i32; 2] {
 
 impl<V: FnMut([i32; 2], State)> WithStep for Run<'_, V> {
     type Output = Result<(), Error>;
+    const MANY_STEPS: bool = true;
 
     #[inline(always)]
     fn with<const THREE: bool>(

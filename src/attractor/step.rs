@@ -7,9 +7,9 @@ use super::fixed::{
     to_fixed,
 };
 use super::kind::{Kind, Method};
+use super::value::{Checked, Ranges, SafeBox, Unchecked, Value, Word};
 use crate::error::{Error, ParameterError};
 use crate::math::trig::{binary_angle_of_radians, binary_angle_of_tangent, sin_of_binary};
-use crate::math::wide::mul_u32_wide;
 use crate::math::Real;
 
 /// A state: x, y, z in the kind's fixed point (z is 0 for the 2D maps).
@@ -160,6 +160,7 @@ struct Once(State);
 
 impl WithStep for Once {
     type Output = Option<State>;
+    const MANY_STEPS: bool = false;
 
     #[inline(always)]
     fn with<const THREE: bool>(self, step: impl Fn(State) -> Option<State>) -> Option<State> {
@@ -173,6 +174,8 @@ impl WithStep for Once {
 pub(crate) trait WithStep {
     /// What the run gives back.
     type Output;
+    /// Whether the run takes many steps, so that a set-up which makes each cheaper pays.
+    const MANY_STEPS: bool;
     /// Runs with `step`, the kind's step; `THREE` for a kind of three dimensions.
     fn with<const THREE: bool>(self, step: impl Fn(State) -> Option<State>) -> Self::Output;
 }
@@ -205,7 +208,13 @@ impl Stepper {
             } => run.with::<false>(move |s| gumowski_mira([a, b, c, twice_one_less_c], s)),
             Self::Popcorn { h } => run.with::<false>(move |s| popcorn(h, s)),
             Self::Lorenz { flow, method } => match flow.small_rates() {
-                Some(small) => run.with::<true>(move |s| integrate(&small, method, s)),
+                // A loop of many steps finds the box it may step in unchecked, once.
+                Some(small) => match W::MANY_STEPS.then(|| small.safe_box(flow.dt, method)) {
+                    Some(Some(safe)) => {
+                        run.with::<true>(move |s| small.integrate_within(safe, method, s))
+                    }
+                    _ => run.with::<true>(move |s| integrate(&small, method, s)),
+                },
                 None => run.with::<true>(move |s| integrate_called(&flow, method, s)),
             },
             Self::Rossler { flow, method } => {
@@ -380,6 +389,32 @@ trait Flow: Copy {
     fn delta(&self, s: State) -> Option<State>;
 }
 
+/// A flow's Δt·f in the values `V`, as the integrators take it.
+trait Delta<V: Value> {
+    /// Δt·f(s), or `None` where a value may leave 32 bits.
+    fn delta_of(&self, s: [V; 3]) -> Option<[V; 3]>;
+}
+
+impl<F: Flow> Delta<Checked> for F {
+    #[inline(always)]
+    fn delta_of(&self, s: [Checked; 3]) -> Option<[Checked; 3]> {
+        Some(self.delta(s.map(|v| v.0))?.map(Word::<true>))
+    }
+}
+
+impl Delta<Unchecked> for SmallRateLorenz {
+    #[inline(always)]
+    fn delta_of(&self, s: [Unchecked; 3]) -> Option<[Unchecked; 3]> {
+        self.delta_in(s)
+    }
+}
+
+impl Delta<Ranges> for SmallRateLorenz {
+    fn delta_of(&self, s: [Ranges; 3]) -> Option<[Ranges; 3]> {
+        self.delta_in(s)
+    }
+}
+
 impl Flow for Lorenz {
     /// Δt·(σ(y − x), x(ρ − z) − y, x·y − β·z).
     #[inline(always)]
@@ -422,13 +457,62 @@ impl Flow for SmallRateLorenz {
     /// [`Lorenz::delta`]'s values and checks, its rate products each one multiply's high
     /// word (what that saves: docs/performance.md, The attractors against the sketches).
     #[inline(always)]
-    fn delta(&self, [x, y, z]: State) -> Option<State> {
-        let dx = high_word(self.sigma_dt, y.checked_sub(x)?);
-        let y_dt = high_word(self.dt, y);
-        let z_dt = high_word(self.dt, z);
-        let dy = mul_narrow::<FLOW>(x, self.rho_dt.checked_sub(z_dt)?)?.checked_sub(y_dt)?;
-        let dz = mul_narrow::<FLOW>(x, y_dt)?.checked_sub(high_word(self.beta_dt, z))?;
+    fn delta(&self, s: State) -> Option<State> {
+        Some(self.delta_in(s.map(Word::<true>))?.map(|v| v.0))
+    }
+}
+
+impl SmallRateLorenz {
+    /// [`delta`](Flow::delta) in any [`Value`]: Δt·(σ(y − x), x(ρ − z) − y, x·y − β·z).
+    #[inline(always)]
+    fn delta_in<V: Value>(&self, [x, y, z]: [V; 3]) -> Option<[V; 3]> {
+        let dx = y.sub(x)?.rate(self.sigma_dt);
+        let y_dt = y.rate(self.dt);
+        let z_dt = z.rate(self.dt);
+        let dy = x.times::<FLOW>(V::of(self.rho_dt).sub(z_dt)?)?.sub(y_dt)?;
+        let dz = x.times::<FLOW>(y_dt)?.sub(z.rate(self.beta_dt))?;
         Some([dx, dy, dz])
+    }
+
+    /// A box of states around the attractor from which a step by `method` is proven to
+    /// stay in 32 bits (`dt`, Δt in [`FLOW`] fraction bits, finds ρ), or `None`.
+    ///
+    /// The box is centred on the equilibria's height z = ρ − 1 (at least 0), with
+    /// half-widths t·u, 4t·u/3 and 6t·u/5 for x, y and z, u = ρ − 1 (at least 1): about
+    /// the attractor's proportions for σ = 10 and β = 8/3. The largest t of 5/4, 1, 3/4,
+    /// 1/2 and 1/4 whose box [`Ranges`] prove safe is taken.
+    fn safe_box(&self, dt: i32, method: Method) -> Option<SafeBox> {
+        let one = 1i64 << FLOW;
+        let rho = (i64::from(self.rho_dt) << FLOW).checked_div(i64::from(dt).max(1))?;
+        let (centre, unit) = ((rho - one).max(0), (rho - one).max(one));
+        [5, 4, 3, 2, 1].into_iter().find_map(|quarters| {
+            let reach = |numerator: i64, denominator: i64| {
+                Some(unit.checked_mul(quarters * numerator)? / (4 * denominator))
+            };
+            let range = |middle: i64, half: Option<i64>| {
+                let half = half?;
+                let end = |v: i64| i32::try_from(v).ok();
+                Some(Ranges::new(end(middle - half)?, end(middle + half)?))
+            };
+            let ranges = [
+                range(0, reach(1, 1))?,
+                range(0, reach(4, 3))?,
+                range(centre, reach(6, 5))?,
+            ];
+            SafeBox::proven(ranges, |r| integrate_in(self, method, r))
+        })
+    }
+
+    /// One step by `method`: unchecked from a state in `safe`, checked elsewhere; the
+    /// same values either way.
+    #[inline(always)]
+    fn integrate_within(&self, safe: SafeBox, method: Method, s: State) -> Option<State> {
+        if safe.contains(s) {
+            let step = integrate_in(self, method, s.map(Word::<false>))?;
+            Some(step.map(|v| v.0))
+        } else {
+            integrate(self, method, s)
+        }
     }
 }
 
@@ -447,47 +531,28 @@ impl Flow for Rossler {
 
 /// `s + k`, each coordinate checked.
 #[inline(always)]
-fn ahead([x, y, z]: State, [dx, dy, dz]: State) -> Option<State> {
-    Some([x.checked_add(dx)?, y.checked_add(dy)?, z.checked_add(dz)?])
+fn ahead<V: Value>([x, y, z]: [V; 3], [dx, dy, dz]: [V; 3]) -> Option<[V; 3]> {
+    Some([x.add(dx)?, y.add(dy)?, z.add(dz)?])
 }
 
 /// `s + k/2`, the halves rounded down.
 #[inline(always)]
-fn half_ahead(s: State, [dx, dy, dz]: State) -> Option<State> {
-    ahead(s, [dx >> 1, dy >> 1, dz >> 1])
+fn half_ahead<V: Value>(s: [V; 3], [dx, dy, dz]: [V; 3]) -> Option<[V; 3]> {
+    ahead(s, [dx.half(), dy.half(), dz.half()])
 }
 
 /// One coordinate of RK4's step: s + (k₁ + 2k₂ + 2k₃ + k₄)/6, each sum checked.
 #[inline(always)]
-fn combined(s: i32, k1: i32, k2: i32, k3: i32, k4: i32) -> Option<i32> {
-    let middle = k2.checked_add(k3)?;
-    let sum = k1
-        .checked_add(k4)?
-        .checked_add(middle)?
-        .checked_add(middle)?;
-    s.checked_add(sixth(sum))
+fn combined<V: Value>(s: V, k1: V, k2: V, k3: V, k4: V) -> Option<V> {
+    let middle = k2.add(k3)?;
+    let sum = k1.add(k4)?.add(middle)?.add(middle)?;
+    s.add(sum.sixth())
 }
 
-/// `value / 6`, rounded half away from zero.
-#[inline(always)]
-fn sixth(value: i32) -> i32 {
-    // |value| + 3 fits a u32; n / 6 = ⌊n·⌈2³⁴/6⌉ / 2³⁴⌋ for every u32 n (no division,
-    // which ARMv6-M does not have).
-    let magnitude = (mul_u32_wide(value.unsigned_abs() + 3, 0xAAAA_AAAB) >> 34) as i32;
-    if value < 0 {
-        -magnitude
-    } else {
-        magnitude
-    }
-}
-
-/// One step of `flow` by `method`.
+/// One step of `flow` by `method`, checked.
 #[inline(always)]
 fn integrate(flow: &impl Flow, method: Method, s: State) -> Option<State> {
-    match method {
-        Method::Euler => euler(flow, s),
-        Method::Rk4 => runge_kutta4(flow, s),
-    }
+    Some(integrate_in(flow, method, s.map(Word::<true>))?.map(|v| v.0))
 }
 
 /// [`integrate`] as a call of its own, for the flows a loop does not inline.
@@ -496,18 +561,27 @@ fn integrate_called(flow: &impl Flow, method: Method, s: State) -> Option<State>
     integrate(flow, method, s)
 }
 
-/// `flow`'s derivative at `s`, as the integrators take it: inlined where there is a long
-/// multiply; a call on ARMv6-M, whose products are built from 16-bit halves (an RK4 step
-/// inlining that four times would not fit the micro:bit's flash).
+/// One step of `flow` by `method`, in any [`Value`].
+#[inline(always)]
+fn integrate_in<V: Value>(flow: &impl Delta<V>, method: Method, s: [V; 3]) -> Option<[V; 3]> {
+    match method {
+        Method::Euler => euler(flow, s),
+        Method::Rk4 => runge_kutta4(flow, s),
+    }
+}
+
+/// `flow`'s Δt·f at `s`, as the integrators take it: inlined where there is a long multiply; a
+/// call on ARMv6-M, whose products are built from 16-bit halves (an RK4 step inlining
+/// that four times would not fit the micro:bit's flash).
 #[cfg_attr(not(tinyfractal_no_long_multiply), inline(always))]
 #[cfg_attr(tinyfractal_no_long_multiply, inline(never))]
-fn derivative(flow: &impl Flow, s: State) -> Option<State> {
-    flow.delta(s)
+fn derivative<V: Value>(flow: &impl Delta<V>, s: [V; 3]) -> Option<[V; 3]> {
+    flow.delta_of(s)
 }
 
 /// Euler's step of a flow: s + k₁, k₁ = Δt·f(s).
 #[inline(always)]
-fn euler(flow: &impl Flow, s: State) -> Option<State> {
+fn euler<V: Value>(flow: &impl Delta<V>, s: [V; 3]) -> Option<[V; 3]> {
     ahead(s, derivative(flow, s)?)
 }
 
@@ -515,15 +589,16 @@ fn euler(flow: &impl Flow, s: State) -> Option<State> {
 /// k₁ = Δt·f(s), k₂ = Δt·f(s + k₁/2), k₃ = Δt·f(s + k₂/2), k₄ = Δt·f(s + k₃) (halves
 /// rounded down).
 #[inline(always)]
-fn runge_kutta4(flow: &impl Flow, s: State) -> Option<State> {
+fn runge_kutta4<V: Value>(flow: &impl Delta<V>, s: [V; 3]) -> Option<[V; 3]> {
     let k1 = derivative(flow, s)?;
     let k2 = derivative(flow, half_ahead(s, k1)?)?;
     let k3 = derivative(flow, half_ahead(s, k2)?)?;
     let k4 = derivative(flow, ahead(s, k3)?)?;
+    let [s0, s1, s2] = s;
     Some([
-        combined(s[0], k1[0], k2[0], k3[0], k4[0])?,
-        combined(s[1], k1[1], k2[1], k3[1], k4[1])?,
-        combined(s[2], k1[2], k2[2], k3[2], k4[2])?,
+        combined(s0, k1[0], k2[0], k3[0], k4[0])?,
+        combined(s1, k1[1], k2[1], k3[1], k4[1])?,
+        combined(s2, k1[2], k2[2], k3[2], k4[2])?,
     ])
 }
 
@@ -660,33 +735,90 @@ mod tests {
             .unwrap();
     }
 
-    /// A sixth rounded half away from zero, against exact rationals in i64.
+    /// The default Lorenz flow's step, by RK4 or Euler: its box holds nearly every state
+    /// of a long orbit, and from each the step with the box gives the checked step's state.
     #[test]
-    fn sixth_rounds_half_away_from_zero() {
-        let exact = |v: i32| -> i32 {
-            let v = i64::from(v);
-            let rounded = (2 * v.abs() + 6) / 12;
-            (if v < 0 { -rounded } else { rounded }) as i32
-        };
-        for v in [
-            i32::MIN,
-            i32::MIN + 1,
-            i32::MAX,
-            i32::MAX - 2,
-            -3,
-            -2,
-            2,
-            3,
-            0,
-        ] {
-            assert_eq!(sixth(v), exact(v), "{v}");
+    fn lorenz_safe_box_holds_the_attractor_and_changes_nothing() {
+        let kind = Kind::Lorenz;
+        let dt = kind.default_time_step().unwrap();
+        for method in [Method::Rk4, Method::Euler] {
+            let stepper = Stepper::new(kind, kind.default_parameters(), dt, method).unwrap();
+            let Stepper::Lorenz { flow, .. } = stepper else {
+                panic!("not a Lorenz flow");
+            };
+            let small = flow.small_rates().unwrap();
+            let safe = small.safe_box(flow.dt, method).expect("a safe box");
+            let mut state = kind.default_start().map(|v| to_fixed(v, FLOW).unwrap());
+            let (mut inside, steps) = (0, 50_000);
+            for _ in 0..steps {
+                inside += usize::from(safe.contains(state));
+                let next = integrate(&small, method, state).unwrap();
+                assert_eq!(small.integrate_within(safe, method, state), Some(next));
+                assert_eq!(stepper.step(state), Some(next));
+                state = next;
+            }
+            assert!(
+                inside * 100 >= steps * 99,
+                "{method:?}: {inside} of {steps} inside"
+            );
         }
+    }
+
+    /// For random Lorenz flows, every state of a box the ranges prove safe steps without a
+    /// refusal, and unchecked gives the checked state.
+    #[test]
+    fn lorenz_safe_boxes_are_safe() {
         let mut runner = TestRunner::deterministic();
+        let rate = |low: i32, high: i32| (low << (FLOW - 8))..(high << (FLOW - 8));
+        let (cases, boxed) = (core::cell::Cell::new(0), core::cell::Cell::new(0));
         runner
-            .run(&any::<i32>(), |v| {
-                prop_assert_eq!(sixth(v), exact(v));
-                Ok(())
-            })
+            .run(
+                &(
+                    (rate(1, 8), rate(1, 64), rate(1, 255), rate(1, 32)),
+                    any::<bool>(),
+                    proptest::collection::vec(any::<[u32; 3]>(), 64),
+                ),
+                |((dt, sigma_dt, rho_dt, beta_dt), euler, picks)| {
+                    let flow = Lorenz {
+                        dt,
+                        sigma_dt,
+                        rho_dt,
+                        beta_dt,
+                    };
+                    let method = if euler { Method::Euler } else { Method::Rk4 };
+                    let small = flow.small_rates().expect("rates below ½");
+                    cases.set(cases.get() + 1);
+                    let Some(safe) = small.safe_box(dt, method) else {
+                        return Ok(());
+                    };
+                    boxed.set(boxed.get() + 1);
+                    // States across the box, its corners included.
+                    for pick in picks {
+                        let state: State = core::array::from_fn(|i| {
+                            let (low, span) = (safe.low[i], safe.span[i]);
+                            let offset = match pick[i] % 3 {
+                                0 => 0,
+                                1 => span,
+                                _ => pick[i] % span.max(1),
+                            };
+                            low.wrapping_add(offset as i32)
+                        });
+                        prop_assert!(safe.contains(state));
+                        let checked = integrate(&small, method, state);
+                        prop_assert!(checked.is_some(), "{state:?} refused in {safe:?}");
+                        let fast = integrate_in(&small, method, state.map(Word::<false>));
+                        prop_assert_eq!(fast.map(|s| s.map(|v| v.0)), checked);
+                    }
+                    Ok(())
+                },
+            )
             .unwrap();
+        // Most flows of these rates have a box: the test is not empty.
+        assert!(
+            boxed.get() * 2 > cases.get(),
+            "{} of {}",
+            boxed.get(),
+            cases.get()
+        );
     }
 }
