@@ -268,22 +268,19 @@ fn update_row(
     carry: &mut Carry,
 ) {
     // Δt = 1, every preset's: a product fewer a cell, and a rate fewer to hold.
-    let unit_dt = coefficients.dt == i32::from(ONE);
-    // A chemical at a time where the core has registers for it; on ARMv6-M's eight the
-    // one-pass loop spills less than two passes do.
-    #[cfg(not(tinyfractal_few_registers))]
-    if unit_dt {
-        update_row_by_chemical::<true>(above, row, below, kept, coefficients, carry);
+    if coefficients.dt == i32::from(ONE) {
+        row_loop::<true>(above, row, below, kept, coefficients, carry);
     } else {
-        update_row_by_chemical::<false>(above, row, below, kept, coefficients, carry);
-    }
-    #[cfg(tinyfractal_few_registers)]
-    if unit_dt {
-        update_row_with::<true>(above, row, below, kept, coefficients, carry);
-    } else {
-        update_row_with::<false>(above, row, below, kept, coefficients, carry);
+        row_loop::<false>(above, row, below, kept, coefficients, carry);
     }
 }
+
+// The row loop this core takes: a chemical at a time where the core has registers for it;
+// on ARMv6-M's eight the one-pass loop spills less than two passes do. The same cells.
+#[cfg(not(tinyfractal_few_registers))]
+use self::update_row_by_chemical as row_loop;
+#[cfg(tinyfractal_few_registers)]
+use self::update_row_with as row_loop;
 
 /// [`update_row`], with Δt = 1 known where `UNIT_DT`.
 ///
