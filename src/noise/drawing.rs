@@ -235,6 +235,7 @@ impl<P: Palette> NoiseDrawing<'_, P> {
                 layers,
                 columns,
                 rows: [RowPart::default(); MAX_OCTAVES as usize],
+                sums: [0; BLOCK_COLUMNS],
                 levels: [0; BLOCK_COLUMNS],
                 row: 0,
                 column: columns.len(),
@@ -261,6 +262,9 @@ struct BlockColors<'d, 'a, P> {
     columns: &'d [Real],
     /// The current row's part of each octave.
     rows: [RowPart; MAX_OCTAVES as usize],
+    /// The current row's sums of octaves, a column each (kept here: a row's sums are
+    /// written in place, not built and moved).
+    sums: [i64; BLOCK_COLUMNS],
     /// The current row's levels, a column each.
     levels: [u8; BLOCK_COLUMNS],
     /// The next row.
@@ -300,12 +304,12 @@ impl<P> BlockColors<'_, '_, P> {
         }
         let (noise, turbulence) = (texture.noise, self.turbulence);
         let (block, ladder, rows) = (self.block, self.ladder, &self.rows);
-        let mut sums = [0; BLOCK_COLUMNS];
+        let sums = &mut self.sums;
         match self.layers {
-            Some(layers) => block.sums_in_layer(noise, ladder, rows, layers, turbulence, &mut sums),
-            None => block.sums(noise, ladder, rows, turbulence, &mut sums),
+            Some(layers) => block.sums_in_layer(noise, ladder, rows, layers, turbulence, sums),
+            None => block.sums(noise, ladder, rows, turbulence, sums),
         }
-        for ((level, sum), &x) in self.levels.iter_mut().zip(sums).zip(self.columns) {
+        for ((level, &sum), &x) in self.levels.iter_mut().zip(&*sums).zip(self.columns) {
             let value = texture
                 .texture
                 .finish(Real::from_bits(sum), x, drawing.normaliser)

@@ -100,6 +100,7 @@ impl Octaves {
             octaves: self.octaves,
             lacunarity: self.lacunarity,
             amplitudes,
+            weights: amplitudes.map(Weight::of),
         })
     }
 }
@@ -110,6 +111,8 @@ pub(crate) struct Ladder {
     octaves: u32,
     lacunarity: Real,
     amplitudes: [Real; MAX_OCTAVES as usize],
+    /// The amplitudes as [`Weight`]s, once.
+    weights: [Weight; MAX_OCTAVES as usize],
 }
 
 impl Ladder {
@@ -127,10 +130,10 @@ impl Ladder {
     }
 
     /// Each octave's amplitude as a [`Weight`], first to last.
-    pub(super) fn weights(&self) -> impl Iterator<Item = Weight> + '_ {
-        self.amplitudes()
-            .iter()
-            .map(|&amplitude| Weight::of(amplitude))
+    pub(super) fn weights(&self) -> &[Weight] {
+        self.weights
+            .get(..self.octaves as usize)
+            .unwrap_or(&self.weights)
     }
 
     /// `reach` (a coordinate's magnitude) at the finest octave: times the lacunarity once

@@ -1,7 +1,7 @@
 //! Ken Perlin's improved noise (2002) in fixed point: his permutation, fade and gradients.
 
 use crate::math::random::Generator;
-use crate::math::wide::mul_i32_wide;
+use crate::math::wide::{mul_high, mul_i32_wide};
 use crate::math::Real;
 
 /// Fraction bits of a noise value ([`Sample`]): values lie in about ±1.04, and 29 bits keep
@@ -165,8 +165,12 @@ impl Perlin {
     pub fn noise3(&self, x: Real, y: Real, z: Real) -> Sample {
         let column = ColumnPart::of(x);
         let (row, layer) = (RowPart::of(y), RowPart::of(z));
-        self.cube_corners(column.cell(), row, layer)
-            .sample(column, row, layer)
+        self.cube_corners(column.cell(), row, layer).sample(
+            column.place(),
+            column.fade(),
+            row,
+            layer,
+        )
     }
 
     /// The noise at (`x`, `y`): Perlin's noise at z = 0, where the far layer of the cell has
@@ -180,20 +184,19 @@ impl Perlin {
     #[inline]
     pub(super) fn noise2_in_row(&self, x: Real, row: RowPart) -> Sample {
         let column = ColumnPart::of(x);
-        self.corners(column.cell(), row).sample(column, row)
+        self.corners(column.cell(), row)
+            .sample(column.place(), column.fade())
     }
 
-    /// The four corners of lattice cell `cell` of `row` (2D, z = 0): what every point of
-    /// the cell in that row shares.
+    /// The four corners of lattice cell `cell` of `row` (2D, z = 0), as the cell's left
+    /// and right edges: what every point of the cell in that row shares.
     #[inline]
     pub(super) fn corners(&self, cell: i32, row: RowPart) -> CellCorners {
-        let left = self.hash(cell) + row.cell;
-        let one = 1 << CELL_FRAC_BITS;
-        // z = 0: a corner's (x, y, z) hash is the permutation of its (x, y) hash plus 0,
-        // and its gradient's z part meets an offset of 0.
-        let near = self.line(self.hash(left), 0, row.place, 0);
-        let far = self.line(self.hash(left + 1), 0, row.place - one, 0);
-        self.right_corners(cell, near, far, row)
+        CellCorners {
+            cell: cell & 255,
+            left: self.edge(cell, row),
+            right: self.edge(cell + 1, row),
+        }
     }
 
     /// The eight corners of lattice cell `cell` of `row` in `layer` (3D; a layer is z's
@@ -208,7 +211,6 @@ impl Perlin {
         let (near_y, far_y) = (row.place, row.place - one);
         let (near_z, far_z) = (layer.place, layer.place - one);
         CubeCorners {
-            cell: cell & 255,
             near: [
                 self.line(aa, 0, near_y, near_z),
                 self.line(ba, -one, near_y, near_z),
@@ -225,32 +227,28 @@ impl Perlin {
     }
 
     /// The corners of the cell after `corners`' one (the next column, modulo 256) in
-    /// `row`: its left corners are the last cell's right ones, so only two are new.
+    /// `row`: its left edge is the last cell's right one, so only one is new.
     #[inline]
     pub(super) fn next_corners(&self, corners: &CellCorners, row: RowPart) -> CellCorners {
-        // The last cell's right corners' lines, seen from the left: the offset from the
-        // corner no longer subtracts one cell.
-        let from_left = |right: Line| Line {
-            slope: right.slope,
-            offset: right.offset + (right.slope << CELL_FRAC_BITS),
-        };
-        let near = from_left(corners.near_right);
-        let far = from_left(corners.far_right);
-        self.right_corners(corners.cell + 1, near, far, row)
-    }
-
-    /// The corners of cell `cell` of `row` whose left corners' lines are `near` and `far`.
-    #[inline(always)]
-    fn right_corners(&self, cell: i32, near: Line, far: Line, row: RowPart) -> CellCorners {
-        let right = self.hash(cell + 1) + row.cell;
-        let one = 1 << CELL_FRAC_BITS;
+        let cell = corners.cell + 1;
         CellCorners {
             cell: cell & 255,
-            near_left: near,
-            near_right: self.line(self.hash(right), -one, row.place, 0),
-            far_left: far,
-            far_right: self.line(self.hash(right + 1), -one, row.place - one, 0),
+            left: corners.right,
+            right: self.edge(cell + 1, row),
         }
+    }
+
+    /// The lattice's edge at column `column` in `row`: its near and far corners (rows y
+    /// and y + 1) joined by the row's fade.
+    #[inline(always)]
+    fn edge(&self, column: i32, row: RowPart) -> Edge {
+        let hash = self.hash(column) + row.cell;
+        let one = 1 << CELL_FRAC_BITS;
+        // z = 0: a corner's (x, y, z) hash is the permutation of its (x, y) hash plus 0,
+        // and its gradient's z part meets an offset of 0.
+        let near = self.line(self.hash(hash), 0, row.place, 0);
+        let far = self.line(self.hash(hash + 1), 0, row.place - one, 0);
+        Edge::between(near, far, row.fade)
     }
 
     /// The line of the corner whose (x, y, z) hash is `hash`, `dx` from the corner to the
@@ -288,26 +286,66 @@ impl Line {
     }
 }
 
-/// The four corners of a lattice cell in a row of 2D noise: a row's points in one cell
-/// need only their x place and fade to be sampled.
+/// An edge of the lattice in a row of 2D noise: the corners at one lattice column in the
+/// row's two lattice rows, their lines joined by the row's fade `v` into one line in x
+/// measured from the column, `slope · dx + offset`. Its slope, (1 − v)·g_near + v·g_far
+/// (the corners' x gradients), is exact in 2⁻³⁰; its offset, the corners' dots at the
+/// column joined the same way, is rounded to nearest in 2⁻²⁹. A cell's points then take
+/// one interpolation each, across the cell between its left and right edges, not three;
+/// and the cell after it shares its right edge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+struct Edge {
+    /// In 2⁻³⁰ per unit of x, within ±1.
+    slope: i32,
+    /// In 2⁻²⁹.
+    offset: i32,
+}
+
+impl Edge {
+    const ZERO: Self = Self {
+        slope: 0,
+        offset: 0,
+    };
+
+    /// The edge `lerp(v, near, far)` of the lines of its near and far corners.
+    #[inline(always)]
+    fn between(near: Line, far: Line, v: i32) -> Self {
+        // A corner line's slope is its x gradient in 2⁻²⁹ per 2⁻²⁴: g·2⁵.
+        let to_edge = FADE_FRAC_BITS - (SAMPLE_FRAC_BITS - CELL_FRAC_BITS);
+        let step = (far.slope - near.slope) >> (SAMPLE_FRAC_BITS - CELL_FRAC_BITS);
+        Self {
+            // g_near·2³⁰ + v·(g_far − g_near): within ±2³⁰, exactly.
+            slope: (near.slope << to_edge) + v * step,
+            // The dots are within ±1, so at most 2 apart.
+            offset: lerp_close(v, near.offset, far.offset),
+        }
+    }
+
+    /// The edge's value at `dx` from its column (2⁻³¹, −1 to 1), in 2⁻²⁹: the slope's
+    /// product taken down to 2⁻²⁹ (the high word of one 32 × 32-bit product) plus the
+    /// offset.
+    #[inline(always)]
+    fn at(self, dx: i32) -> i32 {
+        self.offset + mul_high(self.slope, dx)
+    }
+}
+
+/// The corners of a lattice cell in a row of 2D noise, as its left and right edges
+/// ([`Edge`]): a row's points in one cell need only their x place and fade to be sampled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(super) struct CellCorners {
     /// The cell, 0 to 255.
     cell: i32,
-    near_left: Line,
-    near_right: Line,
-    far_left: Line,
-    far_right: Line,
+    left: Edge,
+    right: Edge,
 }
 
 impl CellCorners {
     /// No cell's corners: those of cell 256, which no point is in.
     pub(super) const NONE: Self = Self {
         cell: 256,
-        near_left: Line::ZERO,
-        near_right: Line::ZERO,
-        far_left: Line::ZERO,
-        far_right: Line::ZERO,
+        left: Edge::ZERO,
+        right: Edge::ZERO,
     };
 
     /// The cell, 0 to 255.
@@ -316,13 +354,18 @@ impl CellCorners {
         self.cell
     }
 
-    /// The noise at the point of the cell whose x part is `column`, in `row`.
+    /// The noise at the point of the cell whose place in it is `place` (2⁻³¹, 0 to 1, as
+    /// [`ColumnPart::place`]) and whose fade is `fade`: the left and right edges' values
+    /// there (`place` from the left one, `place` − 1 from the right), joined by the fade.
     #[inline(always)]
-    pub(super) fn sample(&self, column: ColumnPart, row: RowPart) -> Sample {
-        let (place, u) = (column.place(), column.fade);
-        let near = lerp_close(u, self.near_left.at(place), self.near_right.at(place));
-        let far = lerp_close(u, self.far_left.at(place), self.far_right.at(place));
-        Sample(lerp_close(row.fade, near, far))
+    pub(super) fn sample(&self, place: i32, fade: i32) -> Sample {
+        // place − 2³¹, for a place below 2³¹.
+        let from_right = place ^ i32::MIN;
+        Sample(lerp_close(
+            fade,
+            self.left.at(place),
+            self.right.at(from_right),
+        ))
     }
 }
 
@@ -331,32 +374,23 @@ impl CellCorners {
 /// then the far row's): a row's points in one cell need only their x place and fade.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(super) struct CubeCorners {
-    /// The cell, 0 to 255.
-    cell: i32,
     near: [Line; 4],
     far: [Line; 4],
 }
 
 impl CubeCorners {
-    /// No cell's corners: those of cell 256, which no point is in.
+    /// No cell's corners (a block's first column takes its own).
     pub(super) const NONE: Self = Self {
-        cell: 256,
         near: [Line::ZERO; 4],
         far: [Line::ZERO; 4],
     };
 
-    /// The cell, 0 to 255.
-    #[inline(always)]
-    pub(super) fn cell(&self) -> i32 {
-        self.cell
-    }
-
-    /// The noise at the point of the cell whose x part is `column`, in `row` and
-    /// `layer`: Perlin's seven interpolations, each in 64 bits (in 3D the values joined
+    /// The noise at the point of the cell whose place in it is `place` (2⁻³¹) and whose
+    /// fade is `u`, in `row` and `layer`: Perlin's seven interpolations, each in 64 bits (in 3D the values joined
     /// may be 2³¹ apart).
     #[inline(always)]
-    pub(super) fn sample(&self, column: ColumnPart, row: RowPart, layer: RowPart) -> Sample {
-        let (place, u) = (column.place(), column.fade);
+    pub(super) fn sample(&self, place: i32, u: i32, row: RowPart, layer: RowPart) -> Sample {
+        let place = place >> PLACE_SHIFT;
         let square = |[near_left, near_right, far_left, far_right]: [Line; 4]| {
             lerp(
                 row.fade,
@@ -368,27 +402,23 @@ impl CubeCorners {
     }
 }
 
-/// What 2D noise takes from a point's x: its lattice column (modulo 256) and place in
-/// it, packed in one word as `column · 2²⁴ + place`, and the place's fade in 2⁻³⁰.
+/// What noise takes from a point's x: its lattice column (modulo 256), its place in the
+/// column in 2⁻³¹ (a multiple of 2⁻²⁴: see [`cell`]) and the place's fade in 2⁻³⁰.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(super) struct ColumnPart {
-    cell_place: u32,
+    cell: i32,
+    place: i32,
     fade: i32,
 }
 
 impl ColumnPart {
-    /// Column 0, place 0.
-    pub(super) const ZERO: Self = Self {
-        cell_place: 0,
-        fade: 0,
-    };
-
     /// The part of `x`.
     #[inline(always)]
     pub(super) fn of(x: Real) -> Self {
         let (cell, place) = cell(x);
         Self {
-            cell_place: ((cell as u32) << CELL_FRAC_BITS) | place as u32,
+            cell,
+            place: place << PLACE_SHIFT,
             fade: fade(place),
         }
     }
@@ -396,15 +426,24 @@ impl ColumnPart {
     /// The lattice column, 0 to 255.
     #[inline(always)]
     pub(super) fn cell(self) -> i32 {
-        (self.cell_place >> CELL_FRAC_BITS) as i32
+        self.cell
     }
 
-    /// The place in the column, in 2⁻²⁴.
+    /// The place in the column, in 2⁻³¹.
     #[inline(always)]
-    fn place(self) -> i32 {
-        (self.cell_place & ((1 << CELL_FRAC_BITS) - 1)) as i32
+    pub(super) fn place(self) -> i32 {
+        self.place
+    }
+
+    /// The fade of the place, in 2⁻³⁰.
+    #[inline(always)]
+    pub(super) fn fade(self) -> i32 {
+        self.fade
     }
 }
+
+/// What a place in 2⁻²⁴ is shifted by to be in 2⁻³¹, the unit [`RowLine::at`] takes.
+const PLACE_SHIFT: u32 = 31 - CELL_FRAC_BITS;
 
 /// What 2D noise takes from a point's y: its lattice row (modulo 256), its place in the
 /// row in 2⁻²⁴, and the fade of that place in 2⁻³⁰.
@@ -514,9 +553,11 @@ fn lerp(t: i32, a: i32, b: i32) -> i32 {
 ///
 /// In 2D every pair interpolated is that close. A corner's dot is gx·dx + gy·dy with
 /// |dx|, |dy| ≤ 1, and below 2 in magnitude except at the far-right corner, where it is 2
-/// only at place 0, whose fade is 0. So the near and far rows' values are each below 2
-/// (2³⁰ in 2⁻²⁹), and so is their difference's half. Along a row, the x parts of two
-/// corners' dots differ by gx′(xf − 1) − gx·xf, at most 1, and the y parts by at most 2.
+/// only at place 0, whose fade is 0 (there the step is 0 whatever the difference). An
+/// [`Edge`] joins a near and a far corner whose dots at its column, gy·dy and
+/// gy′(dy − 1), are within ±1. Each edge's value at a point lies between its corners'
+/// dots, so a cell's left and right edges' values are below 2 in magnitude, and their
+/// difference below 4 (2³¹ in 2⁻²⁹).
 #[inline(always)]
 fn lerp_close(t: i32, a: i32, b: i32) -> i32 {
     a + fade_step(t, b.wrapping_sub(a))

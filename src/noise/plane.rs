@@ -7,21 +7,60 @@ use super::fractal::{times, Ladder, Weight, MAX_OCTAVES};
 use super::perlin::{CellCorners, ColumnPart, CubeCorners, Perlin, RowPart, Sample};
 use crate::math::Real;
 
-/// Columns in a block: the x parts of 16 octaves for 32 columns are 4 KiB of stack (a
+/// Columns in a block: the x parts of 16 octaves for 32 columns are 4.5 KiB of stack (a
 /// wider block shares each row's set-up among more columns).
 pub(super) const BLOCK_COLUMNS: usize = 32;
+
+/// A column's x part at one octave as a block keeps it: its place (2⁻³¹, a multiple of
+/// 2⁻²⁴, so its low [`RUN_BITS`] bits are free) and fade (2⁻³⁰). The first column of a
+/// run of columns in one cell keeps the run's length in those bits, so that a row's loop
+/// takes each cell's corners once and then runs over its columns with no test of their
+/// cell; the run's cell is kept apart ([`ColumnBlock`]'s `cells`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(super) struct BlockColumn {
+    place_and_run: i32,
+    fade: i32,
+}
+
+/// The low bits of a [`BlockColumn`]'s place that hold a run's length (1 to
+/// [`BLOCK_COLUMNS`]).
+const RUN_BITS: u32 = 7;
+
+const _: () = assert!(BLOCK_COLUMNS < 1 << RUN_BITS);
+
+impl BlockColumn {
+    const ZERO: Self = Self {
+        place_and_run: 0,
+        fade: 0,
+    };
+
+    /// The place, in 2⁻³¹.
+    #[inline(always)]
+    fn place(self) -> i32 {
+        self.place_and_run & !((1 << RUN_BITS) - 1)
+    }
+
+    /// How many columns from this one share its cell, where it is the first of them; 0
+    /// for the others.
+    #[inline(always)]
+    fn run(self) -> usize {
+        (self.place_and_run & ((1 << RUN_BITS) - 1)) as usize
+    }
+}
 
 /// The x parts of up to [`BLOCK_COLUMNS`] columns, octave by octave, for sums whose
 /// octaves double (lacunarity 2), in the plane or at one depth of 3D noise.
 pub(super) struct ColumnBlock {
-    parts: [[ColumnPart; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+    parts: [[BlockColumn; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+    cells: [[u8; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
     columns: usize,
 }
 
 impl ColumnBlock {
     /// A block of no columns yet.
     pub(super) const EMPTY: Self = Self {
-        parts: [[ColumnPart::ZERO; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+        parts: [[BlockColumn::ZERO; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+        cells: [[0; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
         columns: 0,
     };
 
@@ -30,16 +69,29 @@ impl ColumnBlock {
     /// `Real`'s range, as a texture's fit checks.
     pub(super) fn fill(&mut self, ladder: &Ladder, xs: &[Real]) {
         let columns = xs.len().min(BLOCK_COLUMNS);
-        for (column, x) in xs.iter().take(columns).enumerate() {
-            let mut x = x.to_bits();
-            let octaves = self.parts.iter_mut().take(ladder.amplitudes().len());
-            for (octave, slots) in octaves.enumerate() {
-                if octave > 0 {
-                    // In range: see above.
-                    x = x.wrapping_mul(2);
+        let octaves = ladder.amplitudes().len();
+        let rows = self.parts.iter_mut().zip(&mut self.cells).take(octaves);
+        for (octave, (parts, cells)) in rows.enumerate() {
+            let slots = parts.iter_mut().zip(cells.iter_mut());
+            for ((slot, cell), x) in slots.zip(xs).take(columns) {
+                // Doubled once an octave; in range: see above.
+                let x = Real::from_bits(x.to_bits().wrapping_shl(octave as u32));
+                let part = ColumnPart::of(x);
+                *slot = BlockColumn {
+                    place_and_run: part.place(),
+                    fade: part.fade(),
+                };
+                // A cell is 0 to 255.
+                *cell = part.cell() as u8;
+            }
+            // Each run's first column counts it (at most BLOCK_COLUMNS: within RUN_BITS).
+            let (mut first, mut last) = (0, None);
+            for (column, &cell) in cells.iter().enumerate().take(columns) {
+                if last != Some(cell) {
+                    (first, last) = (column, Some(cell));
                 }
-                if let Some(slot) = slots.get_mut(column) {
-                    *slot = ColumnPart::of(Real::from_bits(x));
+                if let Some(slot) = parts.get_mut(first) {
+                    slot.place_and_run += 1;
                 }
             }
         }
@@ -81,15 +133,15 @@ impl ColumnBlock {
         block.fill(0);
         // All ones to take |noise|: x ^ −1 − (−1) = −x for a negative sample.
         let absolute = -i32::from(turbulence);
-        let octaves = self.parts.iter().zip(rows).zip(layers);
-        for (((parts, &row), &layer), &amplitude) in octaves.zip(ladder.amplitudes()) {
+        let octaves = self.parts.iter().zip(&self.cells).zip(rows).zip(layers);
+        for ((((parts, cells), &row), &layer), &amplitude) in octaves.zip(ladder.amplitudes()) {
             // The first column takes its cell's corners.
             let mut corners = CubeCorners::NONE;
-            for (total, &column) in block.iter_mut().zip(parts) {
-                if column.cell() != corners.cell() {
-                    corners = noise.cube_corners(column.cell(), row, layer);
+            for ((total, &column), &cell) in block.iter_mut().zip(parts).zip(cells) {
+                if column.run() > 0 {
+                    corners = noise.cube_corners(i32::from(cell), row, layer);
                 }
-                let value = corners.sample(column, row, layer).0;
+                let value = corners.sample(column.place(), column.fade, row, layer).0;
                 let flip = (value >> 31) & absolute;
                 // Each term within ±1.04, 16 of them: no overflow.
                 *total += times(Sample((value ^ flip) - flip), amplitude).to_bits();
@@ -107,52 +159,69 @@ impl ColumnBlock {
     ) {
         let block = totals.get_mut(..self.columns).unwrap_or(&mut []);
         block.fill(0);
-        let octaves = self.parts.iter().zip(rows).zip(ladder.weights());
-        for ((parts, &row), weight) in octaves {
+        let mut samples = [0; BLOCK_COLUMNS];
+        let samples = samples.get_mut(..block.len()).unwrap_or(&mut []);
+        let octaves = self.parts.iter().zip(&self.cells).zip(rows);
+        for (((parts, cells), &row), &weight) in octaves.zip(ladder.weights()) {
+            sample_octave(noise, (parts, cells), row, samples);
             // One loop for each kind of weight: the kind is chosen once an octave.
+            let samples = &*samples;
             match weight {
-                Weight::Eighths(m) => add_octave::<ABSOLUTE>(noise, parts, row, block, |value| {
-                    Weight::Eighths(m).term(value)
-                }),
-                Weight::Halving(k) => add_octave::<ABSOLUTE>(noise, parts, row, block, |value| {
-                    Weight::Halving(k).term(value)
-                }),
-                Weight::Any(a) => add_octave::<ABSOLUTE>(noise, parts, row, block, |value| {
-                    Weight::Any(a).term(value)
-                }),
+                Weight::Eighths(m) => {
+                    add_terms::<ABSOLUTE>(samples, block, |value| Weight::Eighths(m).term(value))
+                }
+                Weight::Halving(k) => {
+                    add_terms::<ABSOLUTE>(samples, block, |value| Weight::Halving(k).term(value))
+                }
+                Weight::Any(a) => {
+                    add_terms::<ABSOLUTE>(samples, block, |value| Weight::Any(a).term(value))
+                }
             }
         }
     }
 }
 
-/// Adds one octave's terms (`term` of each sample, of |sample| where `ABSOLUTE`) at the
-/// row whose part is `row` to the columns' `totals`, `parts` the columns' parts at this
-/// octave.
+/// Adds one octave's terms (`term` of each of its `samples`, of |sample| where
+/// `ABSOLUTE`) to the columns' `totals`.
 #[inline(always)]
-fn add_octave<const ABSOLUTE: bool>(
-    noise: &Perlin,
-    parts: &[ColumnPart; BLOCK_COLUMNS],
-    row: RowPart,
+fn add_terms<const ABSOLUTE: bool>(
+    samples: &[i32],
     totals: &mut [i64],
     term: impl Fn(Sample) -> i64,
 ) {
-    // The first column takes its cell's corners.
-    let mut corners = CellCorners::NONE;
-    for (total, &column) in totals.iter_mut().zip(parts) {
-        if column.cell() != corners.cell() {
-            // The next column's corners share two with the last one's.
-            corners = if corners.cell() == (column.cell() + 255) & 255 {
-                noise.next_corners(&corners, row)
-            } else {
-                noise.corners(column.cell(), row)
-            };
-        }
-        let mut value = corners.sample(column, row);
-        if ABSOLUTE {
-            value = Sample(value.0.abs());
-        }
+    for (total, &value) in totals.iter_mut().zip(samples) {
+        let value = if ABSOLUTE { value.abs() } else { value };
         // Each term within ±1.04, 16 of them: no overflow.
-        *total += term(value);
+        *total += term(Sample(value));
+    }
+}
+
+/// The noise at each of the block's columns in the row whose part is `row` (`parts` and
+/// `cells` the columns' x parts and cells at one octave), written to `samples`: cell by
+/// cell, the first column of each run taking its cell's corners for the run.
+#[inline(always)]
+fn sample_octave(
+    noise: &Perlin,
+    (parts, cells): (&[BlockColumn; BLOCK_COLUMNS], &[u8; BLOCK_COLUMNS]),
+    row: RowPart,
+    samples: &mut [i32],
+) {
+    let mut corners = CellCorners::NONE;
+    let mut columns = parts.iter().zip(cells).zip(samples);
+    while let Some(((head, &cell), value)) = columns.next() {
+        let cell = i32::from(cell);
+        // The next column's corners share two with the last one's.
+        corners = if corners.cell() == (cell + 255) & 255 {
+            noise.next_corners(&corners, row)
+        } else {
+            noise.corners(cell, row)
+        };
+        *value = corners.sample(head.place(), head.fade).0;
+        // The rest of the run: their places' low bits are clear.
+        let rest = head.run().saturating_sub(1);
+        for ((part, _), value) in columns.by_ref().take(rest) {
+            *value = corners.sample(part.place_and_run, part.fade).0;
+        }
     }
 }
 
@@ -160,11 +229,11 @@ fn add_octave<const ABSOLUTE: bool>(
 mod tests {
     use super::*;
 
-    /// The block is the 4 KiB its documentation and the drawing's state.
+    /// The block is the 4.5 KiB its documentation and the drawing's state.
     #[test]
-    fn a_block_is_four_kib() {
-        let parts = MAX_OCTAVES as usize * BLOCK_COLUMNS * 8;
-        assert_eq!(parts, 4096);
+    fn a_block_is_four_and_a_half_kib() {
+        let parts = MAX_OCTAVES as usize * BLOCK_COLUMNS * (8 + 1);
+        assert_eq!(parts, 4608);
         assert_eq!(size_of::<ColumnBlock>(), parts + size_of::<usize>());
     }
 }
