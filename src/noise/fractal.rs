@@ -101,6 +101,7 @@ impl Octaves {
             lacunarity: self.lacunarity,
             amplitudes,
             weights: amplitudes.map(Weight::of),
+            narrow_from: narrow_from(amplitudes.get(..self.octaves as usize).unwrap_or(&[])),
         })
     }
 }
@@ -113,6 +114,24 @@ pub(crate) struct Ladder {
     amplitudes: [Real; MAX_OCTAVES as usize],
     /// The amplitudes as [`Weight`]s, once.
     weights: [Weight; MAX_OCTAVES as usize],
+    /// The first octave of the finer ones whose terms sum in 32 bits.
+    narrow_from: usize,
+}
+
+/// The first octave from which on the terms of 2D samples (each below 2 in magnitude) at
+/// these `amplitudes` sum within ±2³¹ in 2⁻³²: a term is at most 2a·2³² + ½ (rounded), so
+/// their bounds are summed from the last octave back while they stay below 2³¹.
+fn narrow_from(amplitudes: &[Real]) -> usize {
+    let mut bound: i64 = 0;
+    let mut first = amplitudes.len();
+    for (octave, amplitude) in amplitudes.iter().enumerate().rev() {
+        bound += 2 * amplitude.to_bits() + 1;
+        if bound >= 1 << 31 {
+            break;
+        }
+        first = octave;
+    }
+    first
 }
 
 impl Ladder {
@@ -127,6 +146,12 @@ impl Ladder {
         self.amplitudes
             .get(..self.octaves as usize)
             .unwrap_or(&self.amplitudes)
+    }
+
+    /// The first octave whose 2D terms a block sums in 32 bits: the terms of it and the
+    /// octaves after it stay within ±2³¹ together.
+    pub(super) fn narrow_from(&self) -> usize {
+        self.narrow_from
     }
 
     /// Each octave's amplitude as a [`Weight`], first to last.
@@ -331,6 +356,35 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
     use proptest::test_runner::TestRunner;
+
+    /// The octaves summed in 32 bits are the last ones whose terms' bounds stay below
+    /// 2³¹ together: fBm's from ⅛ on (⅛ + ¹⁄₁₆ + ¹⁄₃₂ < ¼), none at persistence 1.
+    #[test]
+    fn narrow_octaves_are_the_fine_ones_that_fit() {
+        let ladder = |octaves, persistence| {
+            Octaves {
+                octaves,
+                persistence,
+                lacunarity: Real::from_int(2),
+            }
+            .ladder()
+            .unwrap()
+        };
+        let half = Real::from_ratio(1, 2).unwrap();
+        assert_eq!(ladder(6, half).narrow_from(), 3);
+        assert_eq!(ladder(16, half).narrow_from(), 3);
+        assert_eq!(ladder(2, half).narrow_from(), 2);
+        assert_eq!(ladder(4, Real::ONE).narrow_from(), 4);
+        assert_eq!(ladder(3, Real::ZERO).narrow_from(), 1);
+        // The bound itself: 2·Σaᵢ·2³² plus a half for each term stays below 2³¹.
+        for (octaves, persistence) in [(6, half), (16, half), (9, Real::from_ratio(1, 3).unwrap())]
+        {
+            let ladder = ladder(octaves, persistence);
+            let narrow = &ladder.amplitudes()[ladder.narrow_from()..];
+            let bound: i64 = narrow.iter().map(|a| 2 * a.to_bits() + 1).sum();
+            assert!(bound < 1 << 31, "{octaves} {persistence:?}");
+        }
+    }
 
     /// Every kind of weight gives the term `times` gives, at amplitudes of each kind.
     #[test]

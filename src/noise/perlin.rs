@@ -184,18 +184,23 @@ impl Perlin {
     #[inline]
     pub(super) fn noise2_in_row(&self, x: Real, row: RowPart) -> Sample {
         let column = ColumnPart::of(x);
-        self.corners(column.cell(), row)
+        self.corners(column.cell(), row, self)
             .sample(column.place(), column.fade())
     }
 
     /// The four corners of lattice cell `cell` of `row` (2D, z = 0), as the cell's left
     /// and right edges: what every point of the cell in that row shares.
     #[inline]
-    pub(super) fn corners(&self, cell: i32, row: RowPart) -> CellCorners {
+    pub(super) fn corners(
+        &self,
+        cell: i32,
+        row: RowPart,
+        gradients: &impl PlaneGradients,
+    ) -> CellCorners {
         CellCorners {
             cell: cell & 255,
-            left: self.edge(cell, row),
-            right: self.edge(cell + 1, row),
+            left: self.edge(cell, row, gradients),
+            right: self.edge(cell + 1, row, gradients),
         }
     }
 
@@ -229,26 +234,28 @@ impl Perlin {
     /// The corners of the cell after `corners`' one (the next column, modulo 256) in
     /// `row`: its left edge is the last cell's right one, so only one is new.
     #[inline]
-    pub(super) fn next_corners(&self, corners: &CellCorners, row: RowPart) -> CellCorners {
+    pub(super) fn next_corners(
+        &self,
+        corners: &CellCorners,
+        row: RowPart,
+        gradients: &impl PlaneGradients,
+    ) -> CellCorners {
         let cell = corners.cell + 1;
         CellCorners {
             cell: cell & 255,
             left: corners.right,
-            right: self.edge(cell + 1, row),
+            right: self.edge(cell + 1, row, gradients),
         }
     }
 
     /// The lattice's edge at column `column` in `row`: its near and far corners (rows y
-    /// and y + 1) joined by the row's fade.
+    /// and y + 1) joined by the row's fade, their gradients from `gradients`.
     #[inline(always)]
-    fn edge(&self, column: i32, row: RowPart) -> Edge {
+    fn edge(&self, column: i32, row: RowPart, gradients: &impl PlaneGradients) -> Edge {
         let hash = self.hash(column) + row.cell;
-        let one = 1 << CELL_FRAC_BITS;
-        // z = 0: a corner's (x, y, z) hash is the permutation of its (x, y) hash plus 0,
-        // and its gradient's z part meets an offset of 0.
-        let near = self.line(self.hash(hash), 0, row.place, 0);
-        let far = self.line(self.hash(hash + 1), 0, row.place - one, 0);
-        Edge::between(near, far, row.fade)
+        let near = gradients.of(self.hash(hash));
+        let far = gradients.of(self.hash(hash + 1));
+        Edge::between(near, far, row)
     }
 
     /// The line of the corner whose (x, y, z) hash is `hash`, `dx` from the corner to the
@@ -262,6 +269,57 @@ impl Perlin {
             slope: gx << shift,
             offset: (gx * dx + gy * dy + gz * dz) << shift,
         }
+    }
+}
+
+/// Where 2D noise finds a corner's gradient's x and y parts from its (x, y) hash `a`:
+/// the gradient `perm[a] & 15` picks (z = 0). [`Perlin`] looks it up through its
+/// permutation and Perlin's table; [`GradientTable`] keeps the answers for every hash.
+pub(super) trait PlaneGradients {
+    /// The (gx, gy) of the corner whose (x, y) hash is `a` (0 to 255).
+    fn of(&self, a: i32) -> (i32, i32);
+}
+
+impl PlaneGradients for Perlin {
+    #[inline(always)]
+    fn of(&self, a: i32) -> (i32, i32) {
+        let (gx, gy, _) = gradient_of(self.hash(a));
+        (i32::from(gx), i32::from(gy))
+    }
+}
+
+/// Each (x, y) hash's corner gradient in 2D, x and y parts apart: one load each where the
+/// permutation and Perlin's table take four steps. 512 bytes, made once a drawing.
+#[derive(Debug, Clone)]
+pub(super) struct GradientTable {
+    x: [i8; 256],
+    y: [i8; 256],
+}
+
+impl GradientTable {
+    /// The table of `noise`'s gradients.
+    pub(super) fn of(noise: &Perlin) -> Self {
+        let mut table = Self {
+            x: [0; 256],
+            y: [0; 256],
+        };
+        for (a, (x, y)) in table.x.iter_mut().zip(&mut table.y).enumerate() {
+            let (gx, gy) = PlaneGradients::of(noise, a as i32);
+            // Within −1 to 1.
+            (*x, *y) = (gx as i8, gy as i8);
+        }
+        table
+    }
+}
+
+impl PlaneGradients for GradientTable {
+    #[inline(always)]
+    fn of(&self, a: i32) -> (i32, i32) {
+        // Masked to the tables' length.
+        let index = (a & 255) as usize;
+        let x = self.x.get(index).copied().unwrap_or(0);
+        let y = self.y.get(index).copied().unwrap_or(0);
+        (i32::from(x), i32::from(y))
     }
 }
 
@@ -307,17 +365,23 @@ impl Edge {
         offset: 0,
     };
 
-    /// The edge `lerp(v, near, far)` of the lines of its near and far corners.
+    /// The edge in `row` whose near and far corners' gradients are `near` and `far`
+    /// (`(gx, gy)`): each corner's line in x is gx·dx + gy·dy (dy from the corner to the
+    /// row, q and q − 1), and the edge is their `lerp` by the row's fade v.
     #[inline(always)]
-    fn between(near: Line, far: Line, v: i32) -> Self {
-        // A corner line's slope is its x gradient in 2⁻²⁹ per 2⁻²⁴: g·2⁵.
-        let to_edge = FADE_FRAC_BITS - (SAMPLE_FRAC_BITS - CELL_FRAC_BITS);
-        let step = (far.slope - near.slope) >> (SAMPLE_FRAC_BITS - CELL_FRAC_BITS);
+    fn between((near_x, near_y): (i32, i32), (far_x, far_y): (i32, i32), row: RowPart) -> Self {
+        let one = 1 << CELL_FRAC_BITS;
+        // The dots at the column, gy·dy, in 2⁻²⁹ (dy in 2⁻²⁴): within ±1.
+        let shift = SAMPLE_FRAC_BITS - CELL_FRAC_BITS;
+        let (near_dot, far_dot) = (
+            (near_y * row.place) << shift,
+            (far_y * (row.place - one)) << shift,
+        );
         Self {
             // g_near·2³⁰ + v·(g_far − g_near): within ±2³⁰, exactly.
-            slope: (near.slope << to_edge) + v * step,
-            // The dots are within ±1, so at most 2 apart.
-            offset: lerp_close(v, near.offset, far.offset),
+            slope: (near_x << FADE_FRAC_BITS) + row.fade * (far_x - near_x),
+            // The dots at most 2 apart.
+            offset: lerp_close(row.fade, near_dot, far_dot),
         }
     }
 

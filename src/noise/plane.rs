@@ -4,11 +4,12 @@
 //! a pixel.
 
 use super::fractal::{times, Ladder, Weight, MAX_OCTAVES};
-use super::perlin::{CellCorners, ColumnPart, CubeCorners, Perlin, RowPart, Sample};
+use super::perlin::{CellCorners, ColumnPart, CubeCorners, GradientTable, Perlin, RowPart, Sample};
 use crate::math::Real;
 
-/// Columns in a block: the x parts of 16 octaves for 32 columns are 4.5 KiB of stack (a
-/// wider block shares each row's set-up among more columns).
+/// Columns in a block: the x parts of 16 octaves for 32 columns are 4.5 KiB of stack, and
+/// the block keeps a 512-byte gradient table beside them (a wider block shares each row's
+/// set-up among more columns).
 pub(super) const BLOCK_COLUMNS: usize = 32;
 
 /// A column's x part at one octave as a block keeps it: its place (2⁻³¹, a multiple of
@@ -54,15 +55,20 @@ pub(super) struct ColumnBlock {
     parts: [[BlockColumn; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
     cells: [[u8; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
     columns: usize,
+    /// The noise's corner gradients in 2D, looked up once a cell edge.
+    gradients: GradientTable,
 }
 
 impl ColumnBlock {
-    /// A block of no columns yet.
-    pub(super) const EMPTY: Self = Self {
-        parts: [[BlockColumn::ZERO; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
-        cells: [[0; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
-        columns: 0,
-    };
+    /// A block of no columns yet, for sums of `noise`.
+    pub(super) fn new(noise: &Perlin) -> Self {
+        Self {
+            parts: [[BlockColumn::ZERO; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+            cells: [[0; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+            columns: 0,
+            gradients: GradientTable::of(noise),
+        }
+    }
 
     /// Takes the columns at `xs` (the first [`BLOCK_COLUMNS`] of them). Each octave
     /// doubles the last one's coordinate: `xs` must be points whose finest octave stays in
@@ -161,22 +167,38 @@ impl ColumnBlock {
         block.fill(0);
         let mut samples = [0; BLOCK_COLUMNS];
         let samples = samples.get_mut(..block.len()).unwrap_or(&mut []);
+        // The finer octaves' terms, summed in 32 bits (see `Ladder::narrow_from`).
+        let mut narrow = [0; BLOCK_COLUMNS];
+        let narrow = narrow.get_mut(..block.len()).unwrap_or(&mut []);
         let octaves = self.parts.iter().zip(&self.cells).zip(rows);
-        for (((parts, cells), &row), &weight) in octaves.zip(ladder.weights()) {
-            sample_octave(noise, (parts, cells), row, samples);
-            // One loop for each kind of weight: the kind is chosen once an octave.
+        for (octave, (((parts, cells), &row), &weight)) in octaves.zip(ladder.weights()).enumerate()
+        {
+            sample_octave((noise, &self.gradients), (parts, cells), row, samples);
+            // One loop for each kind of weight and width: chosen once an octave.
             let samples = &*samples;
-            match weight {
-                Weight::Eighths(m) => {
+            match (weight, octave < ladder.narrow_from()) {
+                (Weight::Eighths(m), true) => {
                     add_terms::<ABSOLUTE>(samples, block, |value| Weight::Eighths(m).term(value))
                 }
-                Weight::Halving(k) => {
+                (Weight::Halving(k), true) => {
                     add_terms::<ABSOLUTE>(samples, block, |value| Weight::Halving(k).term(value))
                 }
-                Weight::Any(a) => {
+                (Weight::Any(a), true) => {
                     add_terms::<ABSOLUTE>(samples, block, |value| Weight::Any(a).term(value))
                 }
+                (Weight::Eighths(m), false) => {
+                    add_narrow_terms::<ABSOLUTE>(samples, narrow, |v| Weight::Eighths(m).term(v))
+                }
+                (Weight::Halving(k), false) => {
+                    add_narrow_terms::<ABSOLUTE>(samples, narrow, |v| Weight::Halving(k).term(v))
+                }
+                (Weight::Any(a), false) => {
+                    add_narrow_terms::<ABSOLUTE>(samples, narrow, |v| Weight::Any(a).term(v))
+                }
             }
+        }
+        for (total, &part) in block.iter_mut().zip(&*narrow) {
+            *total += i64::from(part);
         }
     }
 }
@@ -191,8 +213,23 @@ fn add_terms<const ABSOLUTE: bool>(
 ) {
     for (total, &value) in totals.iter_mut().zip(samples) {
         let value = if ABSOLUTE { value.abs() } else { value };
-        // Each term within ±1.04, 16 of them: no overflow.
+        // Each term within ±2, 16 of them: no overflow.
         *total += term(Sample(value));
+    }
+}
+
+/// [`add_terms`] into 32-bit sums, for the octaves from [`Ladder::narrow_from`] on,
+/// whose terms' magnitudes together stay below 2³¹: the same sums, in one word.
+#[inline(always)]
+fn add_narrow_terms<const ABSOLUTE: bool>(
+    samples: &[i32],
+    sums: &mut [i32],
+    term: impl Fn(Sample) -> i64,
+) {
+    for (sum, &value) in sums.iter_mut().zip(samples) {
+        let value = if ABSOLUTE { value.abs() } else { value };
+        // Within ±2³¹ (see above): the low word is the term.
+        *sum += term(Sample(value)) as i32;
     }
 }
 
@@ -201,7 +238,7 @@ fn add_terms<const ABSOLUTE: bool>(
 /// cell, the first column of each run taking its cell's corners for the run.
 #[inline(always)]
 fn sample_octave(
-    noise: &Perlin,
+    (noise, gradients): (&Perlin, &GradientTable),
     (parts, cells): (&[BlockColumn; BLOCK_COLUMNS], &[u8; BLOCK_COLUMNS]),
     row: RowPart,
     samples: &mut [i32],
@@ -212,9 +249,9 @@ fn sample_octave(
         let cell = i32::from(cell);
         // The next column's corners share two with the last one's.
         corners = if corners.cell() == (cell + 255) & 255 {
-            noise.next_corners(&corners, row)
+            noise.next_corners(&corners, row, gradients)
         } else {
-            noise.corners(cell, row)
+            noise.corners(cell, row, gradients)
         };
         *value = corners.sample(head.place(), head.fade).0;
         // The rest of the run: their places' low bits are clear.
@@ -229,11 +266,13 @@ fn sample_octave(
 mod tests {
     use super::*;
 
-    /// The block is the 4.5 KiB its documentation and the drawing's state.
+    /// The block is the 5 KiB its documentation and the drawing's state: 4.5 KiB of
+    /// columns' parts and cells, and the 512-byte gradient table.
     #[test]
-    fn a_block_is_four_and_a_half_kib() {
+    fn a_block_is_five_kib() {
         let parts = MAX_OCTAVES as usize * BLOCK_COLUMNS * (8 + 1);
         assert_eq!(parts, 4608);
-        assert_eq!(size_of::<ColumnBlock>(), parts + size_of::<usize>());
+        assert_eq!(size_of::<GradientTable>(), 512);
+        assert_eq!(size_of::<ColumnBlock>(), parts + 512 + size_of::<usize>());
     }
 }

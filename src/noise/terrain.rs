@@ -117,7 +117,7 @@ impl<'a> NoiseTerrain<'a> {
         at: impl Fn(i64) -> Result<Real, Error>,
     ) -> Result<(), Error> {
         let samples = self.samples as usize;
-        let mut block = ColumnBlock::EMPTY;
+        let mut block = ColumnBlock::new(self.noise);
         let mut rows = [RowPart::default(); MAX_OCTAVES as usize];
         let mut sums = [0; BLOCK_COLUMNS];
         for first in (0..samples).step_by(BLOCK_COLUMNS) {
@@ -131,7 +131,7 @@ impl<'a> NoiseTerrain<'a> {
                 ladder.rows_into(at(j)?, &mut rows).ok_or(OUT_OF_RANGE)?;
                 block.sums(self.noise, ladder, &rows, false, &mut sums);
                 let cells = row.get_mut(first..first + count).unwrap_or(&mut []);
-                for (height, sum) in cells.iter_mut().zip(sums) {
+                for (height, sum) in cells.iter_mut().zip(&sums) {
                     *height = (sum >> 16) as i32;
                 }
             }

@@ -156,6 +156,28 @@ pub(super) fn lattice_point(scale: Real, index: u32, across: u32) -> Option<Real
     Some(Real::from_bits(bits))
 }
 
+/// The level of a sum's texture (fBm's, `centred`, or turbulence's and the ridged
+/// multifractal's) from the sum of octaves `sum` (2⁻³²) and a normaliser below 1 (in
+/// 2⁻³², so two or more octaves): [`level_of`] the value [`Texture::finish`] gives, the
+/// same steps (normalise, centre, clamp, scale) in 32-bit parts and no checks, for a
+/// drawing's every pixel. `sum` must be within ±2⁶² (a sum of 16 octaves is within ±17).
+#[inline(always)]
+pub(super) fn sum_level(sum: i64, normaliser: u32, centred: bool) -> u8 {
+    let magnitude = sum.unsigned_abs();
+    let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
+    // As `normalise`: h·n + (l·n + 2³¹)/2³², below 2⁶².
+    let rounded_low = (mul_u32_wide(low, normaliser) + (1 << 31)) >> 32;
+    let rounded = (mul_u32_wide(high, normaliser) + rounded_low) as i64;
+    let normalised = if sum < 0 { -rounded } else { rounded };
+    let unit = if centred {
+        // (value + 1) / 2, rounded half away from zero, as `finish` centres.
+        shift_round_i64(normalised + (1 << Real::FRAC_BITS), 1)
+    } else {
+        normalised
+    };
+    level_of(Real::from_bits(unit))
+}
+
 /// A value in [0, 1] as a level 0 to 255, rounded to nearest (clamped first): the
 /// value's 2⁻³² units times 255, in one 32×32 → 64-bit product below 1.
 #[inline]
@@ -232,6 +254,34 @@ impl<'a> NoiseTexture<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A sum's level by [`sum_level`] is the level of the value `finish` gives, for the
+    /// textures that take it, over sums and normalisers of every size a texture has.
+    #[test]
+    fn sum_levels_are_the_finished_values_levels() {
+        use proptest::prelude::*;
+        use proptest::test_runner::TestRunner;
+        let sums = prop_oneof![
+            -(17_i64 << 32)..(17_i64 << 32),
+            -(3_i64 << 31)..(3_i64 << 31),
+            -4..4_i64,
+            Just(1_i64 << 32),
+            Just(-(1_i64 << 32)),
+        ];
+        let normalisers = prop_oneof![1..(1_i64 << 32), Just((1_i64 << 32) - 1), Just(1)];
+        TestRunner::deterministic()
+            .run(&(sums, normalisers), |(sum, normaliser)| {
+                let n = Real::from_bits(normaliser);
+                let x = Real::ZERO;
+                for (texture, centred) in [(Texture::Fbm, true), (Texture::Turbulence, false)] {
+                    let finished = texture.finish(Real::from_bits(sum), x, n).unwrap();
+                    let fast = sum_level(sum, normaliser as u32, centred);
+                    prop_assert_eq!(fast, level_of(finished), "{:?}", texture);
+                }
+                Ok(())
+            })
+            .unwrap();
+    }
 
     /// Normalising a sum by halves gives `Real`'s product, over sums and normalisers of
     /// every size a texture has and past them.
