@@ -198,7 +198,6 @@ impl Perlin {
         gradients: &impl PlaneGradients,
     ) -> CellCorners {
         CellCorners {
-            cell: cell & 255,
             left: self.edge(cell, row, gradients),
             right: self.edge(cell + 1, row, gradients),
         }
@@ -231,18 +230,17 @@ impl Perlin {
         }
     }
 
-    /// The corners of the cell after `corners`' one (the next column, modulo 256) in
-    /// `row`: its left edge is the last cell's right one, so only one is new.
+    /// The corners of cell `cell` of `row`, the one after `corners`' (modulo 256): its
+    /// left edge is the last cell's right one, so only one is new.
     #[inline]
     pub(super) fn next_corners(
         &self,
         corners: &CellCorners,
+        cell: i32,
         row: RowPart,
         gradients: &impl PlaneGradients,
     ) -> CellCorners {
-        let cell = corners.cell + 1;
         CellCorners {
-            cell: cell & 255,
             left: corners.right,
             right: self.edge(cell + 1, row, gradients),
         }
@@ -398,25 +396,16 @@ impl Edge {
 /// ([`Edge`]): a row's points in one cell need only their x place and fade to be sampled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(super) struct CellCorners {
-    /// The cell, 0 to 255.
-    cell: i32,
     left: Edge,
     right: Edge,
 }
 
 impl CellCorners {
-    /// No cell's corners: those of cell 256, which no point is in.
+    /// No cell's corners (a block's first column takes its own).
     pub(super) const NONE: Self = Self {
-        cell: 256,
         left: Edge::ZERO,
         right: Edge::ZERO,
     };
-
-    /// The cell, 0 to 255.
-    #[inline(always)]
-    pub(super) fn cell(&self) -> i32 {
-        self.cell
-    }
 
     /// The noise at the point of the cell whose place in it is `place` (2⁻³¹, 0 to 1, as
     /// [`ColumnPart::place`]) and whose fade is `fade`: the left and right edges' values

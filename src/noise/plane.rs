@@ -14,20 +14,24 @@ pub(super) const BLOCK_COLUMNS: usize = 32;
 
 /// A column's x part at one octave as a block keeps it: its place (2⁻³¹, a multiple of
 /// 2⁻²⁴, so its low [`RUN_BITS`] bits are free) and fade (2⁻³⁰). The first column of a
-/// run of columns in one cell keeps the run's length in those bits, so that a row's loop
-/// takes each cell's corners once and then runs over its columns with no test of their
-/// cell; the run's cell is kept apart ([`ColumnBlock`]'s `cells`).
+/// run of columns in one cell keeps the run's length in those bits, and whether the run's
+/// cell is the one after the last run's ([`FOLLOWS`]), so that a row's loop takes each
+/// cell's corners once (sharing an edge with the last cell where it follows it) and then
+/// runs over its columns with no test of their cell; the run's cell is kept apart
+/// ([`ColumnBlock`]'s `cells`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub(super) struct BlockColumn {
     place_and_run: i32,
     fade: i32,
 }
 
-/// The low bits of a [`BlockColumn`]'s place that hold a run's length (1 to
-/// [`BLOCK_COLUMNS`]).
+/// The low bits of a [`BlockColumn`]'s place that hold a run's length and [`FOLLOWS`].
 const RUN_BITS: u32 = 7;
 
-const _: () = assert!(BLOCK_COLUMNS < 1 << RUN_BITS);
+/// The bit of a run's first column that says its cell follows the last run's.
+const FOLLOWS: i32 = 1 << (RUN_BITS - 1);
+
+const _: () = assert!(BLOCK_COLUMNS < FOLLOWS as usize);
 
 impl BlockColumn {
     const ZERO: Self = Self {
@@ -45,7 +49,13 @@ impl BlockColumn {
     /// for the others.
     #[inline(always)]
     fn run(self) -> usize {
-        (self.place_and_run & ((1 << RUN_BITS) - 1)) as usize
+        (self.place_and_run & (FOLLOWS - 1)) as usize
+    }
+
+    /// Whether this run's cell is the one after the last run's (modulo 256).
+    #[inline(always)]
+    fn follows(self) -> bool {
+        self.place_and_run & FOLLOWS != 0
     }
 }
 
@@ -90,10 +100,15 @@ impl ColumnBlock {
                 // A cell is 0 to 255.
                 *cell = part.cell() as u8;
             }
-            // Each run's first column counts it (at most BLOCK_COLUMNS: within RUN_BITS).
-            let (mut first, mut last) = (0, None);
+            // Each run's first column counts it (at most BLOCK_COLUMNS: below FOLLOWS) and
+            // says whether its cell follows the last run's.
+            let (mut first, mut last) = (0, None::<u8>);
             for (column, &cell) in cells.iter().enumerate().take(columns) {
                 if last != Some(cell) {
+                    let follows = last.is_some_and(|last| last.wrapping_add(1) == cell);
+                    if let Some(slot) = parts.get_mut(column) {
+                        slot.place_and_run |= if follows { FOLLOWS } else { 0 };
+                    }
                     (first, last) = (column, Some(cell));
                 }
                 if let Some(slot) = parts.get_mut(first) {
@@ -247,9 +262,9 @@ fn sample_octave(
     let mut columns = parts.iter().zip(cells).zip(samples);
     while let Some(((head, &cell), value)) = columns.next() {
         let cell = i32::from(cell);
-        // The next column's corners share two with the last one's.
-        corners = if corners.cell() == (cell + 255) & 255 {
-            noise.next_corners(&corners, row, gradients)
+        // A cell after the last one shares its left edge with the last one's right.
+        corners = if head.follows() {
+            noise.next_corners(&corners, cell, row, gradients)
         } else {
             noise.corners(cell, row, gradients)
         };
