@@ -216,7 +216,8 @@ impl<P: Palette> NoiseDrawing<'_, P> {
             None => None,
         };
         let mut xs = self.row_points(0).map(|(x, _, _)| x);
-        let mut block = ColumnBlock::new(self.texture.noise);
+        let mut block = ColumnBlock::EMPTY;
+        block.set_noise(self.texture.noise);
         let mut left = 0;
         while left < width {
             let mut columns = [Real::ZERO; BLOCK_COLUMNS];

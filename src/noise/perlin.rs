@@ -295,18 +295,19 @@ pub(super) struct GradientTable {
 }
 
 impl GradientTable {
-    /// The table of `noise`'s gradients.
-    pub(super) fn of(noise: &Perlin) -> Self {
-        let mut table = Self {
-            x: [0; 256],
-            y: [0; 256],
-        };
-        for (a, (x, y)) in table.x.iter_mut().zip(&mut table.y).enumerate() {
+    /// An empty table (every gradient 0), to be [`fill`](Self::fill)ed in place.
+    pub(super) const EMPTY: Self = Self {
+        x: [0; 256],
+        y: [0; 256],
+    };
+
+    /// Makes this the table of `noise`'s gradients.
+    pub(super) fn fill(&mut self, noise: &Perlin) {
+        for (a, (x, y)) in self.x.iter_mut().zip(&mut self.y).enumerate() {
             let (gx, gy) = PlaneGradients::of(noise, a as i32);
             // Within −1 to 1.
             (*x, *y) = (gx as i8, gy as i8);
         }
-        table
     }
 }
 

@@ -70,14 +70,17 @@ pub(super) struct ColumnBlock {
 }
 
 impl ColumnBlock {
-    /// A block of no columns yet, for sums of `noise`.
-    pub(super) fn new(noise: &Perlin) -> Self {
-        Self {
-            parts: [[BlockColumn::ZERO; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
-            cells: [[0; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
-            columns: 0,
-            gradients: GradientTable::of(noise),
-        }
+    /// A block of no columns yet, for sums of any noise: [`set_noise`](Self::set_noise) names one.
+    pub(super) const EMPTY: Self = Self {
+        parts: [[BlockColumn::ZERO; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+        cells: [[0; BLOCK_COLUMNS]; MAX_OCTAVES as usize],
+        columns: 0,
+        gradients: GradientTable::EMPTY,
+    };
+
+    /// Makes the block's sums those of `noise` (its gradient table, in place).
+    pub(super) fn set_noise(&mut self, noise: &Perlin) {
+        self.gradients.fill(noise);
     }
 
     /// Takes the columns at `xs` (the first [`BLOCK_COLUMNS`] of them). Each octave

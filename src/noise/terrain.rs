@@ -117,7 +117,8 @@ impl<'a> NoiseTerrain<'a> {
         at: impl Fn(i64) -> Result<Real, Error>,
     ) -> Result<(), Error> {
         let samples = self.samples as usize;
-        let mut block = ColumnBlock::new(self.noise);
+        let mut block = ColumnBlock::EMPTY;
+        block.set_noise(self.noise);
         let mut rows = [RowPart::default(); MAX_OCTAVES as usize];
         let mut sums = [0; BLOCK_COLUMNS];
         for first in (0..samples).step_by(BLOCK_COLUMNS) {
