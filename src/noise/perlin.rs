@@ -97,7 +97,10 @@ impl Sample {
 ///
 /// The value is his, computed in fixed point: inputs are taken to 2⁻²⁴, each fade weight
 /// carries 30 fraction bits and each interpolated value 29, with every product taken in 64
-/// bits. Where 29 fraction bits hold his value, the samples are the f64 reference's values
+/// bits. 3D takes his seven interpolations; 2D his three in another order, the same sum:
+/// the lattice's edges each side of the point joined by the y fade first, then one
+/// interpolation between them by the x fade, each step rounded to 2⁻²⁹. Where 29 fraction
+/// bits hold his value, the samples are the f64 reference's values
 /// exactly: at multiples of ¼ in 2D and of ½ in 3D (noise(0.5, 0.5, 0.5) = −0.25); elsewhere
 /// they are within 2⁻²⁰ of the reference (`tests/noise.rs` checks both against an f64 model
 /// written there).
@@ -440,8 +443,8 @@ impl CubeCorners {
     };
 
     /// The noise at the point of the cell whose place in it is `place` (2⁻³¹) and whose
-    /// fade is `u`, in `row` and `layer`: Perlin's seven interpolations, each in 64 bits (in 3D the values joined
-    /// may be 2³¹ apart).
+    /// fade is `u`, in `row` and `layer`: Perlin's seven interpolations, each in 64 bits
+    /// (in 3D the values joined may be 2³¹ apart).
     #[inline(always)]
     pub(super) fn sample(&self, place: i32, u: i32, row: RowPart, layer: RowPart) -> Sample {
         let place = place >> PLACE_SHIFT;

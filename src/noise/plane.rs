@@ -6,6 +6,7 @@
 use super::fractal::{times, Ladder, Weight, MAX_OCTAVES};
 use super::perlin::{CellCorners, ColumnPart, CubeCorners, GradientTable, Perlin, RowPart, Sample};
 use crate::math::Real;
+use core::ops::AddAssign;
 
 /// Columns in a block: the x parts of 16 octaves for 32 columns are 4.5 KiB of stack, and
 /// the block keeps a 512-byte gradient table beside them (a wider block shares each row's
@@ -194,24 +195,16 @@ impl ColumnBlock {
             sample_octave((noise, &self.gradients), (parts, cells), row, samples);
             // One loop for each kind of weight and width: chosen once an octave.
             let samples = &*samples;
-            match (weight, octave < ladder.narrow_from()) {
-                (Weight::Eighths(m), true) => {
-                    add_terms::<ABSOLUTE>(samples, block, |value| Weight::Eighths(m).term(value))
+            let sums = (&mut *block, &mut *narrow, octave < ladder.narrow_from());
+            match weight {
+                Weight::Eighths(m) => {
+                    add_octave::<ABSOLUTE>(samples, sums, |value| Weight::Eighths(m).term(value))
                 }
-                (Weight::Halving(k), true) => {
-                    add_terms::<ABSOLUTE>(samples, block, |value| Weight::Halving(k).term(value))
+                Weight::Halving(k) => {
+                    add_octave::<ABSOLUTE>(samples, sums, |value| Weight::Halving(k).term(value))
                 }
-                (Weight::Any(a), true) => {
-                    add_terms::<ABSOLUTE>(samples, block, |value| Weight::Any(a).term(value))
-                }
-                (Weight::Eighths(m), false) => {
-                    add_narrow_terms::<ABSOLUTE>(samples, narrow, |v| Weight::Eighths(m).term(v))
-                }
-                (Weight::Halving(k), false) => {
-                    add_narrow_terms::<ABSOLUTE>(samples, narrow, |v| Weight::Halving(k).term(v))
-                }
-                (Weight::Any(a), false) => {
-                    add_narrow_terms::<ABSOLUTE>(samples, narrow, |v| Weight::Any(a).term(v))
+                Weight::Any(a) => {
+                    add_octave::<ABSOLUTE>(samples, sums, |value| Weight::Any(a).term(value))
                 }
             }
         }
@@ -222,32 +215,34 @@ impl ColumnBlock {
 }
 
 /// Adds one octave's terms (`term` of each of its `samples`, of |sample| where
-/// `ABSOLUTE`) to the columns' `totals`.
+/// `ABSOLUTE`) to the columns' 64-bit `totals` where `wide`, otherwise to their 32-bit
+/// `narrow` sums (the octaves from [`Ladder::narrow_from`] on, whose terms' magnitudes
+/// together stay below 2³¹: the same sums, in one word).
 #[inline(always)]
-fn add_terms<const ABSOLUTE: bool>(
+fn add_octave<const ABSOLUTE: bool>(
     samples: &[i32],
-    totals: &mut [i64],
+    (totals, narrow, wide): (&mut [i64], &mut [i32], bool),
     term: impl Fn(Sample) -> i64,
 ) {
-    for (total, &value) in totals.iter_mut().zip(samples) {
-        let value = if ABSOLUTE { value.abs() } else { value };
-        // Each term within ±2, 16 of them: no overflow.
-        *total += term(Sample(value));
+    if wide {
+        add_terms::<ABSOLUTE, _>(samples, totals, term);
+    } else {
+        // Within ±2³¹ (see above): the low word is the term.
+        add_terms::<ABSOLUTE, _>(samples, narrow, |value| term(value) as i32);
     }
 }
 
-/// [`add_terms`] into 32-bit sums, for the octaves from [`Ladder::narrow_from`] on,
-/// whose terms' magnitudes together stay below 2³¹: the same sums, in one word.
+/// Adds `term` of each of `samples` (of |sample| where `ABSOLUTE`) to `sums`: each term
+/// within ±2, 16 of them, so no sum overflows.
 #[inline(always)]
-fn add_narrow_terms<const ABSOLUTE: bool>(
+fn add_terms<const ABSOLUTE: bool, T: AddAssign>(
     samples: &[i32],
-    sums: &mut [i32],
-    term: impl Fn(Sample) -> i64,
+    sums: &mut [T],
+    term: impl Fn(Sample) -> T,
 ) {
     for (sum, &value) in sums.iter_mut().zip(samples) {
         let value = if ABSOLUTE { value.abs() } else { value };
-        // Within ±2³¹ (see above): the low word is the term.
-        *sum += term(Sample(value)) as i32;
+        *sum += term(Sample(value));
     }
 }
 
