@@ -55,8 +55,9 @@ impl<'a> NoiseTexture<'a> {
 /// Where its octaves double (fBm, clouds, turbulence and marble at lacunarity 2, and
 /// Perlin's and wood's single sample), in the plane or at a depth, it is drawn a block of
 /// 32 columns at a time, one `fill_contiguous` a block: each column's x half of every
-/// octave is computed once for the block's height, which takes 4 KiB of stack while
-/// drawing (16 octaves × 32 columns × 8 bytes). Otherwise (ridged, other lacunarities) it
+/// octave is computed once for the block's height, which takes 5 KiB of stack while
+/// drawing (16 octaves × 32 columns × 9 bytes, and a 512-byte table of the noise's
+/// gradients). Otherwise (ridged, other lacunarities) it
 /// is drawn a row at a time. Both give every pixel the value [`value_at`](Self::value_at)
 /// gives.
 #[derive(Debug, Clone)]

@@ -21,7 +21,7 @@
 //! ```
 //!
 //! Memory: a [`Perlin`] is its 256-byte permutation; sampling takes a few words of stack,
-//! and drawing a texture 4 KiB more ([`NoiseDrawing`]).
+//! and drawing a texture about 6 KiB more ([`NoiseDrawing`]).
 
 mod drawing;
 mod fractal;

@@ -8,9 +8,9 @@ use super::perlin::{CellCorners, ColumnPart, CubeCorners, GradientTable, Perlin,
 use crate::math::Real;
 use core::ops::AddAssign;
 
-/// Columns in a block: the x parts of 16 octaves for 32 columns are 4.5 KiB of stack, and
-/// the block keeps a 512-byte gradient table beside them (a wider block shares each row's
-/// set-up among more columns).
+/// Columns in a block: the x parts and cells of 16 octaves for 32 columns are 4.5 KiB of
+/// stack, and the block keeps a 512-byte gradient table beside them (a wider block shares
+/// each row's set-up among more columns).
 pub(super) const BLOCK_COLUMNS: usize = 32;
 
 /// A column's x part at one octave as a block keeps it: its place (2⁻³¹, a multiple of

@@ -62,7 +62,7 @@ impl<'a> NoiseTerrain<'a> {
     /// positive, a buffer too small, and a finest octave past `Real`'s range
     /// ([`NoiseOutOfRange`](crate::error::ParameterError::NoiseOutOfRange)). Where the
     /// octaves double (lacunarity 2), the heights are summed a block of 32 columns at a
-    /// time, as a texture is drawn: 4 KiB of stack beside the caller's buffer.
+    /// time, as a texture is drawn: 5 KiB of stack beside the caller's buffer.
     pub fn generate(&self, heights: &mut [i32]) -> Result<(), Error> {
         let ladder = self.octaves.ladder()?;
         if self.scale <= Real::ZERO {
