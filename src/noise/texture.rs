@@ -168,14 +168,29 @@ pub(super) fn sum_level(sum: i64, normaliser: u32, centred: bool) -> u8 {
     // As `normalise`: h·n + (l·n + 2³¹)/2³², below 2⁶².
     let rounded_low = (mul_u32_wide(low, normaliser) + (1 << 31)) >> 32;
     let rounded = (mul_u32_wide(high, normaliser) + rounded_low) as i64;
-    let normalised = if sum < 0 { -rounded } else { rounded };
+    let one = 1_i64 << Real::FRAC_BITS;
     let unit = if centred {
-        // (value + 1) / 2, rounded half away from zero, as `finish` centres.
-        shift_round_i64(normalised + (1 << Real::FRAC_BITS), 1)
+        // (value + 1) / 2, rounded half away from zero, as `finish` centres: a value
+        // below −1 halves to at most 0, level 0.
+        let shifted = if sum < 0 {
+            one - rounded
+        } else {
+            one + rounded
+        };
+        if shifted < 0 {
+            return 0;
+        }
+        (shifted + 1) >> 1
+    } else if sum < 0 {
+        return 0;
     } else {
-        normalised
+        rounded
     };
-    level_of(Real::from_bits(unit))
+    // As `level_of`: 1 and above is the last level.
+    match u32::try_from(unit) {
+        Ok(unit) => ((mul_u32_wide(unit, u32::from(LEVELS - 1)) + (1 << 31)) >> 32) as u8,
+        Err(_) => (LEVELS - 1) as u8,
+    }
 }
 
 /// A value in [0, 1] as a level 0 to 255, rounded to nearest (clamped first): the
