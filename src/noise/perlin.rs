@@ -254,8 +254,8 @@ impl Perlin {
     #[inline(always)]
     fn edge(&self, column: i32, row: RowPart, gradients: &impl PlaneGradients) -> Edge {
         let hash = self.hash(column) + row.cell;
-        let near = gradients.of(self.hash(hash));
-        let far = gradients.of(self.hash(hash + 1));
+        let near = gradients.of(hash);
+        let far = gradients.of(hash + 1);
         Edge::between(near, far, row)
     }
 
@@ -273,24 +273,26 @@ impl Perlin {
     }
 }
 
-/// Where 2D noise finds a corner's gradient's x and y parts from its (x, y) hash `a`:
-/// the gradient `perm[a] & 15` picks (z = 0). [`Perlin`] looks it up through its
-/// permutation and Perlin's table; [`GradientTable`] keeps the answers for every hash.
+/// Where 2D noise finds a corner's gradient's x and y parts from `h`, its x hash plus its
+/// lattice row (`perm[x] + y`): the gradient `perm[perm[h]] & 15` picks (z = 0). [`Perlin`]
+/// looks it up through its permutation and Perlin's table; [`GradientTable`] keeps the
+/// answers for every `h`.
 pub(super) trait PlaneGradients {
-    /// The (gx, gy) of the corner whose (x, y) hash is `a` (0 to 255).
-    fn of(&self, a: i32) -> (i32, i32);
+    /// The (gx, gy) of the corner whose x hash plus lattice row is `h` (taken modulo 256).
+    fn of(&self, h: i32) -> (i32, i32);
 }
 
 impl PlaneGradients for Perlin {
     #[inline(always)]
-    fn of(&self, a: i32) -> (i32, i32) {
-        let (gx, gy, _) = gradient_of(self.hash(a));
+    fn of(&self, h: i32) -> (i32, i32) {
+        let (gx, gy, _) = gradient_of(self.hash(self.hash(h)));
         (i32::from(gx), i32::from(gy))
     }
 }
 
-/// Each (x, y) hash's corner gradient in 2D, x and y parts apart: one load each where the
-/// permutation and Perlin's table take four steps. 512 bytes, made once a drawing.
+/// Each corner's gradient in 2D by its x hash plus lattice row, x and y parts apart: one
+/// load each where the permutation and Perlin's table take six steps. 512 bytes, made
+/// once a drawing.
 #[derive(Debug, Clone)]
 pub(super) struct GradientTable {
     x: [i8; 256],
@@ -306,8 +308,8 @@ impl GradientTable {
 
     /// Makes this the table of `noise`'s gradients.
     pub(super) fn fill(&mut self, noise: &Perlin) {
-        for (a, (x, y)) in self.x.iter_mut().zip(&mut self.y).enumerate() {
-            let (gx, gy) = PlaneGradients::of(noise, a as i32);
+        for (h, (x, y)) in self.x.iter_mut().zip(&mut self.y).enumerate() {
+            let (gx, gy) = PlaneGradients::of(noise, h as i32);
             // Within −1 to 1.
             (*x, *y) = (gx as i8, gy as i8);
         }
@@ -316,9 +318,9 @@ impl GradientTable {
 
 impl PlaneGradients for GradientTable {
     #[inline(always)]
-    fn of(&self, a: i32) -> (i32, i32) {
+    fn of(&self, h: i32) -> (i32, i32) {
         // Masked to the tables' length.
-        let index = (a & 255) as usize;
+        let index = (h & 255) as usize;
         let x = self.x.get(index).copied().unwrap_or(0);
         let y = self.y.get(index).copied().unwrap_or(0);
         (i32::from(x), i32::from(y))
