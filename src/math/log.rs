@@ -1,8 +1,9 @@
 //! Base-2 logarithms of fixed-point numbers from a table: what smooth escape-time colouring
 //! needs per pixel, without floats.
 
-/// log₂(1 + k/64) in Q16, k = 0..=64.
-const LOG2_TABLE: [u32; 65] = [
+/// log₂(1 + k/64) in Q16, k = 0..=64. A `static`, not a `const`: a constant array is
+/// copied into every codegen unit that reads it, and the smallest boards' flash holds one.
+static LOG2_TABLE: [u32; 65] = [
     0, 1466, 2909, 4331, 5732, 7112, 8473, 9814, 11136, 12440, 13727, 14996, 16248, 17484, 18704,
     19909, 21098, 22272, 23433, 24579, 25711, 26830, 27936, 29029, 30109, 31178, 32234, 33279,
     34312, 35334, 36346, 37346, 38336, 39316, 40286, 41246, 42196, 43137, 44068, 44990, 45904,
