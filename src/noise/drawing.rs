@@ -8,7 +8,7 @@ use super::fractal::OUT_OF_RANGE;
 use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES};
 use super::perlin::RowPart;
 use super::plane::{ColumnBlock, BLOCK_COLUMNS};
-use super::texture::{level_of, normaliser, sum_level, NoiseTexture, Texture};
+use super::texture::{level_of, normaliser, sum_level, NoiseTexture};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::Real;
 use crate::render::palette::Palette;
@@ -312,30 +312,24 @@ impl<P> BlockColors<'_, '_, P> {
             None => block.sums(noise, ladder, rows, turbulence, sums),
         }
         let (levels, columns, normaliser) = (&mut self.levels, self.columns, drawing.normaliser);
-        let each = |texture: Texture, levels: &mut [u8; BLOCK_COLUMNS]| {
-            for ((level, &sum), &x) in levels.iter_mut().zip(&*sums).zip(columns) {
-                let value = texture
-                    .finish(Real::from_bits(sum), x, normaliser)
-                    .unwrap_or(Real::ZERO);
-                *level = level_of(value);
-            }
-        };
-        // The texture chosen once a row, so that each loop is its own texture's; a sum's
-        // normalised, centred and scaled in 32-bit parts where the normaliser is below 1.
+        // A sum's level in 32-bit parts where the texture is its sum's value alone and the
+        // normaliser is below 1; otherwise through the texture's checked steps.
         let below_one = u32::try_from(normaliser.to_bits()).ok();
-        let centred = match texture.texture {
-            // Clouds are fBm's values (for a sky palette).
-            Texture::Fbm | Texture::Clouds => Some(true),
-            Texture::Turbulence | Texture::Ridged => Some(false),
-            _ => None,
-        };
-        match (centred, below_one) {
+        match (texture.texture.sum_centring(), below_one) {
             (Some(centred), Some(normaliser)) => {
                 for (level, &sum) in levels.iter_mut().zip(&*sums) {
                     *level = sum_level(sum, normaliser, centred);
                 }
             }
-            _ => each(texture.texture, levels),
+            _ => {
+                for ((level, &sum), &x) in levels.iter_mut().zip(&*sums).zip(columns) {
+                    let value = texture
+                        .texture
+                        .finish(Real::from_bits(sum), x, normaliser)
+                        .unwrap_or(Real::ZERO);
+                    *level = level_of(value);
+                }
+            }
         }
         self.row += 1;
         self.column = 0;

@@ -501,7 +501,7 @@ impl ColumnPart {
     }
 }
 
-/// What a place in 2⁻²⁴ is shifted by to be in 2⁻³¹, the unit [`RowLine::at`] takes.
+/// What a place in 2⁻²⁴ is shifted by to be in 2⁻³¹, the unit [`Edge::at`] takes.
 const PLACE_SHIFT: u32 = 31 - CELL_FRAC_BITS;
 
 /// What 2D noise takes from a point's y: its lattice row (modulo 256), its place in the

@@ -69,6 +69,18 @@ impl Texture {
         self.finish(source, point.0, normaliser)
     }
 
+    /// How [`finish`](Self::finish) turns a sum of octaves into the value, where that is
+    /// all it does: `Some(true)` normalised and centred (fBm, clouds), `Some(false)`
+    /// normalised (turbulence, ridged); `None` for the textures that do more (or take one
+    /// sample). [`sum_level`] takes the same steps.
+    pub(super) fn sum_centring(self) -> Option<bool> {
+        match self {
+            Self::Fbm | Self::Clouds => Some(true),
+            Self::Turbulence | Self::Ridged => Some(false),
+            Self::Perlin | Self::Marble | Self::Wood => None,
+        }
+    }
+
     /// The value at a point whose x is `x` from its [`source`](Self::source): the sum of
     /// the octaves (not yet normalised) or the sample.
     #[inline(always)]
@@ -128,10 +140,9 @@ fn normalise(sum: Real, normaliser: Real) -> Option<Real> {
     let magnitude = sum.to_bits().unsigned_abs();
     let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
     match u32::try_from(normaliser.to_bits()) {
-        // h < 2³¹, so h·n + (l·n + 2³¹)/2³² < 2⁶³: no overflow, and the product fits.
+        // h < 2³¹: see `normalised_magnitude`.
         Ok(n) if high >> 31 == 0 => {
-            let rounded_low = (mul_u32_wide(low, n) + (1 << 31)) >> 32;
-            let rounded = (mul_u32_wide(high, n) + rounded_low) as i64;
+            let rounded = normalised_magnitude((high, low), n);
             Some(Real::from_bits(if sum < Real::ZERO {
                 -rounded
             } else {
@@ -140,6 +151,15 @@ fn normalise(sum: Real, normaliser: Real) -> Option<Real> {
         }
         _ => sum.checked_mul(normaliser),
     }
+}
+
+/// |sum|·n in 2⁻³², rounded, from the magnitude's halves (h, l) and a normaliser n below
+/// 1: h·n + (l·n + 2³¹)/2³², where only the second part rounds. h < 2³¹, so it is below
+/// 2⁶³: no overflow.
+#[inline(always)]
+fn normalised_magnitude((high, low): (u32, u32), normaliser: u32) -> i64 {
+    let rounded_low = (mul_u32_wide(low, normaliser) + (1 << 31)) >> 32;
+    (mul_u32_wide(high, normaliser) + rounded_low) as i64
 }
 
 /// The coordinate ⌊scale·index/across⌋ (in 2⁻³²) of a grid of `across` points a
@@ -164,10 +184,7 @@ pub(super) fn lattice_point(scale: Real, index: u32, across: u32) -> Option<Real
 #[inline(always)]
 pub(super) fn sum_level(sum: i64, normaliser: u32, centred: bool) -> u8 {
     let magnitude = sum.unsigned_abs();
-    let (high, low) = ((magnitude >> 32) as u32, magnitude as u32);
-    // As `normalise`: h·n + (l·n + 2³¹)/2³², below 2⁶².
-    let rounded_low = (mul_u32_wide(low, normaliser) + (1 << 31)) >> 32;
-    let rounded = (mul_u32_wide(high, normaliser) + rounded_low) as i64;
+    let rounded = normalised_magnitude(((magnitude >> 32) as u32, magnitude as u32), normaliser);
     let one = 1_i64 << Real::FRAC_BITS;
     let unit = if centred {
         // (value + 1) / 2, rounded half away from zero, as `finish` centres: a value
@@ -186,7 +203,8 @@ pub(super) fn sum_level(sum: i64, normaliser: u32, centred: bool) -> u8 {
     } else {
         rounded
     };
-    // As `level_of`: 1 and above is the last level.
+    // As `level_of`, whose clamp below is spent here already (every path above is at
+    // least 0): 1 and above is the last level.
     match u32::try_from(unit) {
         Ok(unit) => ((mul_u32_wide(unit, u32::from(LEVELS - 1)) + (1 << 31)) >> 32) as u8,
         Err(_) => (LEVELS - 1) as u8,
@@ -288,7 +306,19 @@ mod tests {
             .run(&(sums, normalisers), |(sum, normaliser)| {
                 let n = Real::from_bits(normaliser);
                 let x = Real::ZERO;
-                for (texture, centred) in [(Texture::Fbm, true), (Texture::Turbulence, false)] {
+                let textures = [
+                    Texture::Perlin,
+                    Texture::Fbm,
+                    Texture::Turbulence,
+                    Texture::Ridged,
+                    Texture::Clouds,
+                    Texture::Marble,
+                    Texture::Wood,
+                ];
+                for texture in textures {
+                    let Some(centred) = texture.sum_centring() else {
+                        continue;
+                    };
                     let finished = texture.finish(Real::from_bits(sum), x, n).unwrap();
                     let fast = sum_level(sum, normaliser as u32, centred);
                     prop_assert_eq!(fast, level_of(finished), "{:?}", texture);
