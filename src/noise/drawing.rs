@@ -7,8 +7,8 @@ use embedded_graphics::primitives::Rectangle;
 use super::fractal::OUT_OF_RANGE;
 use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES};
 use super::perlin::RowPart;
-use super::plane::{ColumnBlock, BLOCK_COLUMNS};
-use super::texture::{level_of, normaliser, sum_level, NoiseTexture};
+use super::plane::{ColumnBlock, RowSums, BLOCK_COLUMNS};
+use super::texture::{level_of, normaliser, LatticeSteps, NoiseTexture, SumLevels};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::Real;
 use crate::render::palette::Palette;
@@ -131,22 +131,10 @@ impl<'a, P> NoiseDrawing<'a, P> {
     /// [`NoiseTexture::point`] gives, ⌊scale·x/width⌋ in 2⁻³², stepped by quotient and
     /// remainder instead of dividing at every pixel.
     fn row_points(&self, y: u32) -> impl Iterator<Item = (Real, Real, Option<Real>)> + '_ {
-        let width = self.area.size.width.max(1);
+        let width = self.area.size.width;
         let (_, row, z) = self.texture.point((0, y), width);
-        // `fit` refused a scale that is not positive.
-        let scale = self.texture.scale.to_bits().max(0);
-        let (quotient, remainder) = (scale / i64::from(width), scale % i64::from(width));
-        let (mut x, mut carried) = (0_i64, 0_i64);
-        (0..self.area.size.width).map(move |_| {
-            let point = (Real::from_bits(x), row, z);
-            x += quotient;
-            carried += remainder;
-            if carried >= i64::from(width) {
-                carried -= i64::from(width);
-                x += 1;
-            }
-            point
-        })
+        let xs = LatticeSteps::new(self.texture.scale, width).take(width as usize);
+        xs.map(move |x| (x, row, z))
     }
 }
 
@@ -237,9 +225,10 @@ impl<P: Palette> NoiseDrawing<'_, P> {
                 layers,
                 columns,
                 rows: [RowPart::default(); MAX_OCTAVES as usize],
-                sums: [0; BLOCK_COLUMNS],
-                levels: [0; BLOCK_COLUMNS],
+                sums: RowSums::ZERO,
+                colors: [self.palette.color(0, u16::MAX); BLOCK_COLUMNS],
                 row: 0,
+                ys: LatticeSteps::new(self.texture.scale, width),
                 column: columns.len(),
             };
             let top_left = self.area.top_left + Point::new(left as i32, 0);
@@ -253,7 +242,7 @@ impl<P: Palette> NoiseDrawing<'_, P> {
 
 /// The colours of a block of columns' pixels, row by row: each row's sums at once (the
 /// block's sums), then its pixels' colours one at a time.
-struct BlockColors<'d, 'a, P> {
+struct BlockColors<'d, 'a, P: Palette> {
     drawing: &'d NoiseDrawing<'a, P>,
     block: &'d ColumnBlock,
     ladder: &'d Ladder,
@@ -266,11 +255,13 @@ struct BlockColors<'d, 'a, P> {
     rows: [RowPart; MAX_OCTAVES as usize],
     /// The current row's sums of octaves, a column each (kept here: a row's sums are
     /// written in place, not built and moved).
-    sums: [i64; BLOCK_COLUMNS],
-    /// The current row's levels, a column each.
-    levels: [u8; BLOCK_COLUMNS],
+    sums: RowSums,
+    /// The current row's colours, a column each.
+    colors: [P::Color; BLOCK_COLUMNS],
     /// The next row.
     row: u32,
+    /// The rows' y, from the next row's on.
+    ys: LatticeSteps,
     /// The next column of the current row.
     column: usize,
 }
@@ -283,14 +274,15 @@ impl<P: Palette> Iterator for BlockColors<'_, '_, P> {
         if self.column >= self.columns.len() && !self.next_row() {
             return None;
         }
-        let level = self.levels.get(self.column).copied().unwrap_or(0);
+        // Below BLOCK_COLUMNS (the columns are at most that many): no bound to check.
+        let color = self.colors.get(self.column % BLOCK_COLUMNS).copied();
         self.column += 1;
-        Some(self.drawing.palette.color(u16::from(level), u16::MAX))
+        color
     }
 }
 
-impl<P> BlockColors<'_, '_, P> {
-    /// Sums the next row's columns and takes their levels; `false` past the last row.
+impl<P: Palette> BlockColors<'_, '_, P> {
+    /// Sums the next row's columns and takes their colours; `false` past the last row.
     /// Once a row of the block, so out of line from the pixels' path.
     #[inline(never)]
     fn next_row(&mut self) -> bool {
@@ -299,8 +291,8 @@ impl<P> BlockColors<'_, '_, P> {
         if self.row >= drawing.area.size.height || self.columns.is_empty() {
             return false;
         }
-        let (_, y, _) = texture.point((0, self.row), drawing.area.size.width);
         // `fit` checked every point's range: the rows cannot leave it.
+        let y = self.ys.next().unwrap_or(Real::ZERO);
         if self.ladder.rows_into(y, &mut self.rows).is_none() {
             return false;
         }
@@ -311,23 +303,25 @@ impl<P> BlockColors<'_, '_, P> {
             Some(layers) => block.sums_in_layer(noise, ladder, rows, layers, turbulence, sums),
             None => block.sums(noise, ladder, rows, turbulence, sums),
         }
-        let (levels, columns, normaliser) = (&mut self.levels, self.columns, drawing.normaliser);
-        // A sum's level in 32-bit parts where the texture is its sum's value alone and the
+        let (colors, columns, normaliser) = (&mut self.colors, self.columns, drawing.normaliser);
+        let color = |level: u8| drawing.palette.color(u16::from(level), u16::MAX);
+        // A sum's level by one product where the texture is its sum's value alone and the
         // normaliser is below 1; otherwise through the texture's checked steps.
         let below_one = u32::try_from(normaliser.to_bits()).ok();
         match (texture.texture.sum_centring(), below_one) {
             (Some(centred), Some(normaliser)) => {
-                for (level, &sum) in levels.iter_mut().zip(&*sums) {
-                    *level = sum_level(sum, normaliser, centred);
+                let by_sum = SumLevels::new(normaliser, centred);
+                for (slot, sum) in colors.iter_mut().zip(sums.iter()) {
+                    *slot = color(by_sum.level(sum));
                 }
             }
             _ => {
-                for ((level, &sum), &x) in levels.iter_mut().zip(&*sums).zip(columns) {
+                for ((slot, sum), &x) in colors.iter_mut().zip(sums.iter()).zip(columns) {
                     let value = texture
                         .texture
                         .finish(Real::from_bits(sum), x, normaliser)
                         .unwrap_or(Real::ZERO);
-                    *level = level_of(value);
+                    *slot = color(level_of(value));
                 }
             }
         }

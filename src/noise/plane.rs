@@ -60,6 +60,32 @@ impl BlockColumn {
     }
 }
 
+/// A row's sums of octaves across a block, a column each, in 2⁻³²: the coarse octaves'
+/// terms in 64 bits, the fine ones' in 32 (from [`Ladder::narrow_from`] on), read
+/// together so that no pass adds the two; with the buffer of an octave's samples, kept
+/// from row to row so that no row clears it.
+pub(super) struct RowSums {
+    wide: [i64; BLOCK_COLUMNS],
+    narrow: [i32; BLOCK_COLUMNS],
+    samples: [i32; BLOCK_COLUMNS],
+}
+
+impl RowSums {
+    /// No sums yet.
+    pub(super) const ZERO: Self = Self {
+        wide: [0; BLOCK_COLUMNS],
+        narrow: [0; BLOCK_COLUMNS],
+        samples: [0; BLOCK_COLUMNS],
+    };
+
+    /// Each column's sum, the block's columns first (past them, what a last row left).
+    #[inline(always)]
+    pub(super) fn iter(&self) -> impl Iterator<Item = i64> + '_ {
+        let parts = self.wide.iter().zip(&self.narrow);
+        parts.map(|(&wide, &narrow)| wide + i64::from(narrow))
+    }
+}
+
 /// The x parts of up to [`BLOCK_COLUMNS`] columns, octave by octave, for sums whose
 /// octaves double (lacunarity 2), in the plane or at one depth of 3D noise.
 pub(super) struct ColumnBlock {
@@ -124,7 +150,7 @@ impl ColumnBlock {
     }
 
     /// Each column's sum of the octaves of `noise` (of |noise| for `turbulence`) at the
-    /// row whose y parts are `rows`, in 2⁻³², written to `totals`: the same values as the
+    /// row whose y parts are `rows`, in 2⁻³², written to `sums`: the same values as the
     /// ladder's sum at each point, octave by octave along the block, a cell's corners
     /// taken once for the columns that share it.
     pub(super) fn sums(
@@ -133,12 +159,12 @@ impl ColumnBlock {
         ladder: &Ladder,
         rows: &[RowPart; MAX_OCTAVES as usize],
         turbulence: bool,
-        totals: &mut [i64; BLOCK_COLUMNS],
+        sums: &mut RowSums,
     ) {
         if turbulence {
-            self.sums_of::<true>(noise, ladder, rows, totals);
+            self.sums_of::<true>(noise, ladder, rows, sums);
         } else {
-            self.sums_of::<false>(noise, ladder, rows, totals);
+            self.sums_of::<false>(noise, ladder, rows, sums);
         }
     }
 
@@ -152,10 +178,11 @@ impl ColumnBlock {
         rows: &[RowPart; MAX_OCTAVES as usize],
         layers: &[RowPart; MAX_OCTAVES as usize],
         turbulence: bool,
-        totals: &mut [i64; BLOCK_COLUMNS],
+        sums: &mut RowSums,
     ) {
-        let block = totals.get_mut(..self.columns).unwrap_or(&mut []);
+        let block = sums.wide.get_mut(..self.columns).unwrap_or(&mut []);
         block.fill(0);
+        sums.narrow.fill(0);
         // All ones to take |noise|: x ^ −1 − (−1) = −x for a negative sample.
         let absolute = -i32::from(turbulence);
         let octaves = self.parts.iter().zip(&self.cells).zip(rows).zip(layers);
@@ -180,15 +207,15 @@ impl ColumnBlock {
         noise: &Perlin,
         ladder: &Ladder,
         rows: &[RowPart; MAX_OCTAVES as usize],
-        totals: &mut [i64; BLOCK_COLUMNS],
+        sums: &mut RowSums,
     ) {
-        let block = totals.get_mut(..self.columns).unwrap_or(&mut []);
+        let columns = self.columns;
+        let block = sums.wide.get_mut(..columns).unwrap_or(&mut []);
         block.fill(0);
-        let mut samples = [0; BLOCK_COLUMNS];
-        let samples = samples.get_mut(..block.len()).unwrap_or(&mut []);
         // The finer octaves' terms, summed in 32 bits (see `Ladder::narrow_from`).
-        let mut narrow = [0; BLOCK_COLUMNS];
-        let narrow = narrow.get_mut(..block.len()).unwrap_or(&mut []);
+        let narrow = sums.narrow.get_mut(..columns).unwrap_or(&mut []);
+        narrow.fill(0);
+        let samples = sums.samples.get_mut(..columns).unwrap_or(&mut []);
         let octaves = self.parts.iter().zip(&self.cells).zip(rows);
         for (octave, (((parts, cells), &row), &weight)) in octaves.zip(ladder.weights()).enumerate()
         {
@@ -207,9 +234,6 @@ impl ColumnBlock {
                     add_octave::<ABSOLUTE>(samples, sums, |value| Weight::Any(a).term(value))
                 }
             }
-        }
-        for (total, &part) in block.iter_mut().zip(&*narrow) {
-            *total += i64::from(part);
         }
     }
 }

@@ -6,7 +6,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES, OUT_OF_RANGE};
 use super::perlin::{Perlin, RowPart};
-use super::plane::{ColumnBlock, BLOCK_COLUMNS};
+use super::plane::{ColumnBlock, RowSums, BLOCK_COLUMNS};
 use super::texture::lattice_point;
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::Real;
@@ -120,7 +120,7 @@ impl<'a> NoiseTerrain<'a> {
         let mut block = ColumnBlock::EMPTY;
         block.set_noise(self.noise);
         let mut rows = [RowPart::default(); MAX_OCTAVES as usize];
-        let mut sums = [0; BLOCK_COLUMNS];
+        let mut sums = RowSums::ZERO;
         for first in (0..samples).step_by(BLOCK_COLUMNS) {
             let count = BLOCK_COLUMNS.min(samples - first);
             let mut xs = [Real::ZERO; BLOCK_COLUMNS];
@@ -132,7 +132,7 @@ impl<'a> NoiseTerrain<'a> {
                 ladder.rows_into(at(j)?, &mut rows).ok_or(OUT_OF_RANGE)?;
                 block.sums(self.noise, ladder, &rows, false, &mut sums);
                 let cells = row.get_mut(first..first + count).unwrap_or(&mut []);
-                for (height, sum) in cells.iter_mut().zip(&sums) {
+                for (height, sum) in cells.iter_mut().zip(sums.iter()) {
                     *height = (sum >> 16) as i32;
                 }
             }
