@@ -6,9 +6,11 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::fractal::OUT_OF_RANGE;
 use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES};
+use super::lattice::LatticeSteps;
+use super::level::{level_of, SumLevels};
 use super::perlin::RowPart;
 use super::plane::{ColumnBlock, RowSums, BLOCK_COLUMNS};
-use super::texture::{level_of, normaliser, LatticeSteps, NoiseTexture, SumLevels};
+use super::texture::{normaliser, NoiseTexture};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::Real;
 use crate::render::palette::Palette;

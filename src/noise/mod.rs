@@ -25,6 +25,8 @@
 
 mod drawing;
 mod fractal;
+mod lattice;
+mod level;
 mod perlin;
 mod plane;
 mod terrain;
@@ -32,6 +34,7 @@ mod texture;
 
 pub use drawing::NoiseDrawing;
 pub use fractal::{Octaves, Sum, MAX_OCTAVES};
+pub use level::LEVELS;
 pub use perlin::{Perlin, Sample, SAMPLE_FRAC_BITS};
 pub use terrain::NoiseTerrain;
-pub use texture::{NoiseTexture, Texture, LEVELS};
+pub use texture::{NoiseTexture, Texture};

@@ -5,9 +5,9 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
 use super::fractal::{Ladder, Octaves, Sum, MAX_OCTAVES, OUT_OF_RANGE};
+use super::lattice::lattice_point;
 use super::perlin::{Perlin, RowPart};
 use super::plane::{ColumnBlock, RowSums, BLOCK_COLUMNS};
-use super::texture::lattice_point;
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::Real;
 use crate::render::Relief;
