@@ -44,11 +44,8 @@ pub(super) fn sum_level(sum: i64, normaliser: u32, centred: bool) -> u8 {
         rounded
     };
     // As `level_of`, whose clamp below is spent here already (every path above is at
-    // least 0): 1 and above is the last level.
-    match u32::try_from(unit) {
-        Ok(unit) => ((mul_u32_wide(unit, u32::from(LEVELS - 1)) + (1 << 31)) >> 32) as u8,
-        Err(_) => (LEVELS - 1) as u8,
-    }
+    // least 0).
+    unit_level(unit)
 }
 
 /// A row of sums' levels by one product each: [`sum_level`]'s levels, for a drawing's
@@ -124,10 +121,15 @@ impl SumLevels {
 /// value's 2⁻³² units times 255, in one 32×32 → 64-bit product below 1.
 #[inline]
 pub(super) fn level_of(value: Real) -> u8 {
-    let unit = value.clamp(Real::ZERO, Real::ONE).to_bits();
+    unit_level(value.clamp(Real::ZERO, Real::ONE).to_bits())
+}
+
+/// A value of at least 0 in 2⁻³² as a level: times 255, rounded to nearest; 1 and above
+/// the last level. What [`level_of`] and [`sum_level`] end with.
+#[inline(always)]
+fn unit_level(unit: i64) -> u8 {
     match u32::try_from(unit) {
         Ok(unit) => ((mul_u32_wide(unit, u32::from(LEVELS - 1)) + (1 << 31)) >> 32) as u8,
-        // 1 itself.
         Err(_) => (LEVELS - 1) as u8,
     }
 }

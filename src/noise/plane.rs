@@ -182,7 +182,11 @@ impl ColumnBlock {
     ) {
         let block = sums.wide.get_mut(..self.columns).unwrap_or(&mut []);
         block.fill(0);
-        sums.narrow.fill(0);
+        // No narrow octaves in 3D: the sums are the wide ones.
+        sums.narrow
+            .get_mut(..self.columns)
+            .unwrap_or(&mut [])
+            .fill(0);
         // All ones to take |noise|: x ^ −1 − (−1) = −x for a negative sample.
         let absolute = -i32::from(turbulence);
         let octaves = self.parts.iter().zip(&self.cells).zip(rows).zip(layers);
