@@ -161,12 +161,57 @@ impl<const DOWN: bool> Axis<DOWN> {
     fn unchecked(&self, v: i32) -> u32 {
         // Columns: v + 2³¹, unsigned. Rows: −v − 1 + 2³¹, the complement's.
         let flipped = if DOWN { !v } else { v } as u32 ^ (1 << 31);
+        // Without a long multiply the exact sum is four 16-bit products: most points are
+        // placed by one.
+        #[cfg(tinyfractal_no_long_multiply)]
+        {
+            self.quick(flipped)
+                .unwrap_or_else(|| self.exact_out_of_line(flipped))
+        }
+        #[cfg(not(tinyfractal_no_long_multiply))]
+        self.exact(flipped)
+    }
+
+    /// [`exact`](Self::exact) in a call of its own, so that the quick path keeps nothing
+    /// for it.
+    #[cfg(tinyfractal_no_long_multiply)]
+    #[cold]
+    #[inline(never)]
+    fn exact_out_of_line(&self, flipped: u32) -> u32 {
+        self.exact(flipped)
+    }
+
+    /// [`unchecked`](Self::unchecked)'s column of the flipped coordinate: the high word of
+    /// the base plus the flipped coordinate times the step, shifted.
+    #[inline(always)]
+    fn exact(&self, flipped: u32) -> u32 {
         let sum = self
             .base
             .wrapping_add(crate::math::wide::mul_u32_wide(flipped, self.step));
         self.shift.apply((sum >> 32) as u32)
     }
+
+    /// [`exact`](Self::exact)'s column from the product of the two factors' high halves
+    /// alone, where that settles it; `None` where it does not.
+    ///
+    /// With a = base_hi + (f >> 16)·(step >> 16), the exact high word is a + δ (modulo
+    /// 2³²) for the other three 16-bit products and the low words' carry,
+    /// 0 ≤ δ < [`QUICK_REACH`]; where a and a + `QUICK_REACH` fall in one column (and so
+    /// do not wrap past 2³²), that is the column. Unused where there is a long multiply
+    /// (the exact sum is one instruction there), but tested everywhere.
+    #[cfg_attr(not(tinyfractal_no_long_multiply), allow(dead_code))]
+    #[inline(always)]
+    fn quick(&self, flipped: u32) -> Option<u32> {
+        let top = ((self.base >> 32) as u32).wrapping_add((flipped >> 16) * (self.step >> 16));
+        let column = self.shift.apply(top);
+        (self.shift.apply(top.wrapping_add(QUICK_REACH)) == column).then_some(column)
+    }
 }
+
+/// More than the part of a sum's high word that [`Axis::quick`] leaves out: the three
+/// 16-bit products below the high halves' and the low words' carry add less than
+/// 2·(2¹⁶ − 1)²/2¹⁶ + 2 < 2¹⁷ to it.
+const QUICK_REACH: u32 = 1 << 17;
 
 /// A front view's placement of points in the orbit's fixed point: each picture coordinate
 /// to a column and row of the area.
@@ -330,6 +375,66 @@ mod tests {
         // Most boxes are placeable: the test is not of refusals alone.
         assert!(placed.get() > 128, "{} placed", placed.get());
         assert!(axes.get() > 128, "{} axes", axes.get());
+    }
+
+    /// The quick column, where it gives one, is the exact one: for random axes and
+    /// coordinates, and for coordinates whose exact sums fall a few units either side of
+    /// a column's edge; and it gives one for most random coordinates where the shift is
+    /// 20 or more.
+    #[test]
+    fn quick_columns_are_exact_columns() {
+        let (quick, tried) = (core::cell::Cell::new(0u32), core::cell::Cell::new(0u32));
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(
+                    (any::<u64>(), 1u32.., 1u32..32),
+                    (any::<[u32; 8]>(), 0u32..64),
+                ),
+                |((base, step, shift), (others, nudge))| {
+                    let axis = Axis::<false> {
+                        base,
+                        step,
+                        shift: RightShift::new(shift).unwrap(),
+                        size: 128,
+                    };
+                    let sum = |f: u32| base.wrapping_add(u64::from(f) * u64::from(step));
+                    // Coordinates whose exact sum is the next column's first, give or take
+                    // 32 units: the sum grows by the step a unit.
+                    let near_edges = others.map(|f| {
+                        let high = (sum(f) >> 32) as u32;
+                        let edge = (high >> shift).wrapping_add(1).wrapping_shl(shift);
+                        let units = (u64::from(edge) << 32).wrapping_sub(sum(f)) / u64::from(step);
+                        ((u64::from(f) + units) as u32)
+                            .wrapping_add(nudge)
+                            .wrapping_sub(32)
+                    });
+                    for f in others {
+                        let column = axis.quick(f);
+                        if shift >= 20 {
+                            tried.set(tried.get() + 1);
+                            quick.set(quick.get() + u32::from(column.is_some()));
+                        }
+                        if let Some(column) = column {
+                            prop_assert_eq!(column, axis.exact(f), "{:#x}", f);
+                        }
+                    }
+                    for f in near_edges {
+                        if let Some(column) = axis.quick(f) {
+                            prop_assert_eq!(column, axis.exact(f), "{:#x}", f);
+                        }
+                    }
+                    Ok(())
+                },
+            )
+            .unwrap();
+        // Undecided at most 2¹⁷/2²⁰ of the time at shifts of 20 or more.
+        assert!(
+            quick.get() > tried.get() / 2,
+            "{} of {}",
+            quick.get(),
+            tried.get()
+        );
     }
 
     /// A point's cell is its row × width + column where it is inside the area, and at or

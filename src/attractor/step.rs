@@ -189,9 +189,12 @@ impl Stepper {
             // The usual parameters inlined; others through a call (a loop of each costs
             // flash the micro:bit does not have).
             Self::Henon { a, b } => match (scaled_rate::<HENON>(b), quartered(a)) {
-                (Some(b_scaled), Some(a4)) => {
-                    run.with::<false>(move |s| henon_quick(a, a4, b_scaled, s))
-                }
+                // Inlined at both of a loop's steps (the transient's and the points'),
+                // where ARMv6-M would otherwise call it.
+                (Some(b_scaled), Some(a4)) => run.with::<false>(
+                    #[inline(always)]
+                    move |s| henon_quick(a, a4, b_scaled, s),
+                ),
                 (Some(b_scaled), None) => run.with::<false>(move |s| henon_small_b(a, b_scaled, s)),
                 (None, _) => run.with::<false>(move |s| henon_called(a, b, s)),
             },
