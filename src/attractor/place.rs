@@ -120,6 +120,22 @@ struct Axis<const DOWN: bool> {
     shift: RightShift,
     /// The area's length along the axis, in pixels.
     size: u32,
+    /// The base and step of [`Axis::quick`].
+    #[cfg(any(test, tinyfractal_no_long_multiply))]
+    quick: Quick,
+}
+
+/// An axis's sum from the high halves alone ([`Axis::quick`]), taking the coordinate
+/// as it is: the base's high word plus the coordinate's high half times the step's.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Quick {
+    /// The base's high word plus 2¹⁵·(step >> 16) for columns, (2¹⁵ − 1)·(step >> 16)
+    /// for rows, modulo 2³²: the flip of the coordinate's sign bit (for rows, of its
+    /// complement's) folded in.
+    base: u32,
+    /// step >> 16 for columns, its negation for rows, modulo 2³².
+    step: u32,
 }
 
 /// `DOWN` for rows: the distance is taken from the high edge down.
@@ -140,12 +156,37 @@ impl<const DOWN: bool> Axis<DOWN> {
         if lowest <= area - (1 << 64) || highest >= 1 << 64 {
             return None;
         }
-        Some(Self {
-            base: base as u64,
-            step: rule.step,
-            shift: RightShift::new(rule.shift)?,
+        Some(Self::from_parts(
+            base as u64,
+            rule.step,
+            RightShift::new(rule.shift)?,
             size,
-        })
+        ))
+    }
+
+    /// The axis of these parts, with its quick sum's where that is used.
+    fn from_parts(base: u64, step: u32, shift: RightShift, size: u32) -> Self {
+        Self {
+            base,
+            step,
+            shift,
+            size,
+            #[cfg(any(test, tinyfractal_no_long_multiply))]
+            quick: {
+                // (v >> 16) + 2¹⁵ is the high half of v with its sign bit flipped, and
+                // !(v >> 16) + 2¹⁵ = 2¹⁵ − 1 − (v >> 16) that of its complement's.
+                let high = step >> 16;
+                let (flip, factor) = if DOWN {
+                    ((1 << 15) - 1, high.wrapping_neg())
+                } else {
+                    (1 << 15, high)
+                };
+                Quick {
+                    base: ((base >> 32) as u32).wrapping_add(flip * high),
+                    step: factor,
+                }
+            },
+        }
     }
 
     /// The column (row) of `v`, or `None` where it is beyond the area.
@@ -159,17 +200,22 @@ impl<const DOWN: bool> Axis<DOWN> {
     /// at or beyond the area's size, below 2^(32 − shift).
     #[inline(always)]
     fn unchecked(&self, v: i32) -> u32 {
-        // Columns: v + 2³¹, unsigned. Rows: −v − 1 + 2³¹, the complement's.
-        let flipped = if DOWN { !v } else { v } as u32 ^ (1 << 31);
         // Without a long multiply the exact sum is four 16-bit products: most points are
         // placed by one.
         #[cfg(tinyfractal_no_long_multiply)]
         {
-            self.quick(flipped)
-                .unwrap_or_else(|| self.exact_out_of_line(flipped))
+            self.quick(v)
+                .unwrap_or_else(|| self.exact_out_of_line(Self::flipped(v)))
         }
         #[cfg(not(tinyfractal_no_long_multiply))]
-        self.exact(flipped)
+        self.exact(Self::flipped(v))
+    }
+
+    /// The coordinate as the sum takes it: columns v + 2³¹, unsigned; rows −v − 1 + 2³¹,
+    /// the complement's.
+    #[inline(always)]
+    fn flipped(v: i32) -> u32 {
+        (if DOWN { !v } else { v }) as u32 ^ (1 << 31)
     }
 
     /// [`exact`](Self::exact) in a call of its own, so that the quick path keeps nothing
@@ -191,18 +237,23 @@ impl<const DOWN: bool> Axis<DOWN> {
         self.shift.apply((sum >> 32) as u32)
     }
 
-    /// [`exact`](Self::exact)'s column from the product of the two factors' high halves
-    /// alone, where that settles it; `None` where it does not.
+    /// [`unchecked`](Self::unchecked)'s column of `v` from the product of the two
+    /// factors' high halves alone, where that settles it; `None` where it does not.
     ///
-    /// With a = base_hi + (f >> 16)·(step >> 16), the exact high word is a + δ (modulo
-    /// 2³²) for the other three 16-bit products and the low words' carry,
-    /// 0 ≤ δ < [`QUICK_REACH`]; where a and a + `QUICK_REACH` fall in one column (and so
-    /// do not wrap past 2³²), that is the column. Unused where there is a long multiply
-    /// (the exact sum is one instruction there), but tested everywhere.
-    #[cfg_attr(not(tinyfractal_no_long_multiply), allow(dead_code))]
+    /// With f the flipped coordinate and a = base_hi + (f >> 16)·(step >> 16) (which
+    /// [`Quick`] takes from `v` itself), the exact high word is a + δ (modulo 2³²) for
+    /// the other three 16-bit products and the low words' carry, 0 ≤ δ <
+    /// [`QUICK_REACH`]; where a and a + `QUICK_REACH` fall in one column (and so do not
+    /// wrap past 2³²), that is the column. Used where there is no long multiply (with
+    /// one, the exact sum is an instruction), tested everywhere.
+    #[cfg(any(test, tinyfractal_no_long_multiply))]
     #[inline(always)]
-    fn quick(&self, flipped: u32) -> Option<u32> {
-        let top = ((self.base >> 32) as u32).wrapping_add((flipped >> 16) * (self.step >> 16));
+    fn quick(&self, v: i32) -> Option<u32> {
+        let high = (v >> 16) as u32;
+        let top = self
+            .quick
+            .base
+            .wrapping_add(high.wrapping_mul(self.quick.step));
         let column = self.shift.apply(top);
         (self.shift.apply(top.wrapping_add(QUICK_REACH)) == column).then_some(column)
     }
@@ -211,6 +262,7 @@ impl<const DOWN: bool> Axis<DOWN> {
 /// More than the part of a sum's high word that [`Axis::quick`] leaves out: the three
 /// 16-bit products below the high halves' and the low words' carry add less than
 /// 2·(2¹⁶ − 1)²/2¹⁶ + 2 < 2¹⁷ to it.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
 const QUICK_REACH: u32 = 1 << 17;
 
 /// A front view's placement of points in the orbit's fixed point: each picture coordinate
@@ -377,13 +429,35 @@ mod tests {
         assert!(axes.get() > 128, "{} axes", axes.get());
     }
 
-    /// The quick column, where it gives one, is the exact one: for random axes and
-    /// coordinates, and for coordinates whose exact sums fall a few units either side of
-    /// a column's edge; and it gives one for most random coordinates where the shift is
-    /// 20 or more.
+    /// Checks [`Axis::quick`] against [`Axis::exact`] for the flipped coordinates
+    /// `flipped` of an axis of these parts, counting in `decided` how many it places.
+    fn quick_as_exact<const DOWN: bool>(
+        (base, step, shift): (u64, u32, u32),
+        flipped: impl Iterator<Item = u32>,
+        decided: &core::cell::Cell<u32>,
+    ) -> Result<(), TestCaseError> {
+        let axis = Axis::<DOWN>::from_parts(base, step, RightShift::new(shift).unwrap(), 128);
+        for f in flipped {
+            // The coordinate whose flip is f.
+            let v = (f ^ (1 << 31)) as i32;
+            let v = if DOWN { !v } else { v };
+            prop_assert_eq!(Axis::<DOWN>::flipped(v), f);
+            if let Some(column) = axis.quick(v) {
+                decided.set(decided.get() + 1);
+                prop_assert_eq!(column, axis.exact(f), "{:#x}", f);
+            }
+        }
+        Ok(())
+    }
+
+    /// The quick column, where it gives one, is the exact one, for columns and rows: for
+    /// random axes and coordinates, and for coordinates whose exact sums fall a few units
+    /// either side of a column's edge; and it gives one for most random coordinates where
+    /// the shift is 20 or more.
     #[test]
     fn quick_columns_are_exact_columns() {
-        let (quick, tried) = (core::cell::Cell::new(0u32), core::cell::Cell::new(0u32));
+        let (decided, tried) = (core::cell::Cell::new(0u32), core::cell::Cell::new(0u32));
+        let ignored = core::cell::Cell::new(0u32);
         let mut runner = TestRunner::deterministic();
         runner
             .run(
@@ -392,12 +466,6 @@ mod tests {
                     (any::<[u32; 8]>(), 0u32..64),
                 ),
                 |((base, step, shift), (others, nudge))| {
-                    let axis = Axis::<false> {
-                        base,
-                        step,
-                        shift: RightShift::new(shift).unwrap(),
-                        size: 128,
-                    };
                     let sum = |f: u32| base.wrapping_add(u64::from(f) * u64::from(step));
                     // Coordinates whose exact sum is the next column's first, give or take
                     // 32 units: the sum grows by the step a unit.
@@ -409,32 +477,19 @@ mod tests {
                             .wrapping_add(nudge)
                             .wrapping_sub(32)
                     });
-                    for f in others {
-                        let column = axis.quick(f);
-                        if shift >= 20 {
-                            tried.set(tried.get() + 1);
-                            quick.set(quick.get() + u32::from(column.is_some()));
-                        }
-                        if let Some(column) = column {
-                            prop_assert_eq!(column, axis.exact(f), "{:#x}", f);
-                        }
-                    }
-                    for f in near_edges {
-                        if let Some(column) = axis.quick(f) {
-                            prop_assert_eq!(column, axis.exact(f), "{:#x}", f);
-                        }
-                    }
-                    Ok(())
+                    let parts = (base, step, shift);
+                    let counted = if shift >= 20 { &decided } else { &ignored };
+                    tried.set(tried.get() + 2 * u32::from(shift >= 20) * others.len() as u32);
+                    quick_as_exact::<false>(parts, others.into_iter(), counted)?;
+                    quick_as_exact::<true>(parts, others.into_iter(), counted)?;
+                    quick_as_exact::<false>(parts, near_edges.into_iter(), &ignored)?;
+                    quick_as_exact::<true>(parts, near_edges.into_iter(), &ignored)
                 },
             )
             .unwrap();
         // Undecided at most 2¹⁷/2²⁰ of the time at shifts of 20 or more.
-        assert!(
-            quick.get() > tried.get() / 2,
-            "{} of {}",
-            quick.get(),
-            tried.get()
-        );
+        let (decided, tried) = (decided.get(), tried.get());
+        assert!(decided > tried / 2, "{decided} of {tried}");
     }
 
     /// A point's cell is its row × width + column where it is inside the area, and at or
