@@ -240,7 +240,8 @@ impl RightShift {
     pub(crate) fn apply(self, v: u32) -> u32 {
         #[cfg(tinyfractal_no_long_multiply)]
         {
-            v >> self.0
+            // The same for a shift below 32, and with no mask of the shift before it.
+            v.unbounded_shr(self.0)
         }
         #[cfg(not(tinyfractal_no_long_multiply))]
         {
