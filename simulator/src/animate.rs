@@ -505,6 +505,9 @@ fn animation(kind: AnimationKind) -> Result<AnimationPlan, Failure> {
                 )));
             }
             options.attractor.attractor()?;
+            if let Some(still) = options.attractor.standing_still()? {
+                crate::console::warn(&still);
+            }
             (
                 Animation::Attractor {
                     attractor: options.attractor,

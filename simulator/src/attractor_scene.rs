@@ -160,6 +160,42 @@ impl AttractorOptions {
         Ok(picture)
     }
 
+    /// A warning where the orbit stands still (its first two plotted points are one, so
+    /// every later point is too, and the picture is a single point), naming why it may.
+    pub fn standing_still(&self) -> Result<Option<String>, Failure> {
+        if self.points_count < 2 {
+            return Ok(None);
+        }
+        let mut orbit = self.attractor()?.orbit(self.skip, 2);
+        let (Some(Ok(first)), Some(Ok(second))) = (orbit.next(), orbit.next()) else {
+            return Ok(None);
+        };
+        if first != second {
+            return Ok(None);
+        }
+        let dimensions = self.kind.dimensions();
+        let at: Vec<String> = first
+            .iter()
+            .take(dimensions)
+            .map(|&v| coordinate(v))
+            .collect();
+        let why = if self.kind.is_flow() {
+            format!(
+                "an equilibrium of the flow, or a time step too small to move it in the \
+                 fixed point's 2^-{} (raise --dt, or give another --start)",
+                self.kind.fraction_bits()
+            )
+        } else {
+            "a fixed point of the map (give another --start)".to_string()
+        };
+        Ok(Some(format!(
+            "{}: the orbit stands still at ({}): each step leaves the point where it is, so \
+             the picture is one point: {why}",
+            self.name(),
+            at.join(", ")
+        )))
+    }
+
     /// Whether the attractor is 3D.
     pub fn is_3d(&self) -> bool {
         self.kind.dimensions() == 3
@@ -219,6 +255,9 @@ impl RenderAttractorOptions {
         let mut target = common.display();
         let started = Instant::now();
         let stats = options.draw(&picture, &mut target)?;
+        if let Some(still) = options.standing_still()? {
+            crate::console::warn(&still);
+        }
         if stats.outside > 0 {
             crate::console::warn(&format!(
                 "{}: {} of {} points fell outside the picture (it is fitted to the first {} \

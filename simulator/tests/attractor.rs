@@ -182,6 +182,59 @@ fn a_diverging_orbit_is_reported_not_drawn() {
     assert!(!png.exists());
 }
 
+/// An orbit that stands still is drawn (one point, exactly) with a warning saying so and
+/// why it may: a flow whose time step is too small to move its state in 2⁻²⁴ (Lorenz from
+/// (1, 1, 1) moves by about 2.6·10⁻⁸ a step at Δt = 10⁻⁹, below 2⁻²⁴ ≈ 6·10⁻⁸), a flow
+/// at its equilibrium, a map at its fixed point; an orbit that moves, or a lone point, has
+/// no warning.
+#[test]
+fn an_orbit_that_stands_still_is_named() {
+    let dir = scratch("attractor-still");
+    let png = dir.join("still.png");
+    let render = |extra: &[&str]| {
+        let mut args = vec!["render", "attractor", "--size", "32x24"];
+        if !extra.contains(&"--points-count") {
+            args.extend_from_slice(&["--points-count", "50"]);
+        }
+        args.extend_from_slice(extra);
+        args.extend_from_slice(&["--out", png.to_str().unwrap()]);
+        let output = run(&args);
+        assert!(output.status.success(), "{extra:?}: {}", stderr(&output));
+        stderr(&output)
+    };
+    let tiny = render(&["--kind", "lorenz", "--dt", "0.000000001", "--skip", "0"]);
+    assert!(
+        tiny.contains("lorenz: the orbit stands still at (1, 1, 1)") && tiny.contains("--dt"),
+        "{tiny}"
+    );
+    let equilibrium = render(&["--kind", "lorenz", "--start", "0,0,0"]);
+    assert!(
+        equilibrium.contains("stands still at (0, 0, 0)"),
+        "{equilibrium}"
+    );
+    let fixed = render(&["--kind", "henon", "--params", "0,0", "--start", "1,0"]);
+    assert!(
+        fixed.contains("henon: the orbit stands still at (1, 0)"),
+        "{fixed}"
+    );
+    assert!(fixed.contains("a fixed point of the map"), "{fixed}");
+    for moving in [&["--kind", "lorenz"][..], &["--kind", "henon"]] {
+        let said = render(moving);
+        assert!(!said.contains("stands still"), "{moving:?}: {said}");
+    }
+    let lone = render(&[
+        "--kind",
+        "henon",
+        "--start",
+        "1,0",
+        "--params",
+        "0,0",
+        "--points-count",
+        "1",
+    ]);
+    assert!(!lone.contains("stands still"), "{lone}");
+}
+
 /// `animate attractor` turns a 3D attractor a full turn over its frames; its first frame is
 /// the unturned render.
 #[test]
