@@ -233,6 +233,24 @@ impl AttractorOptions {
     }
 }
 
+/// Whether the picture is one colour but for at most one pixel (what an orbit that stands
+/// still draws, by points or by density).
+fn one_pixel_at_most(target: &SimulatorDisplay<Rgb888>) -> bool {
+    let colors = || {
+        let points = target.bounding_box().points();
+        points.map(|p| target.get_pixel(p))
+    };
+    // The background: the first pixel's colour where the second has it too, else the
+    // third's (one of the first two is then the odd one).
+    let mut start = colors();
+    let background = match (start.next(), start.next(), start.next()) {
+        (Some(first), Some(second), _) if first == second => first,
+        (_, _, Some(third)) => third,
+        _ => return true,
+    };
+    colors().filter(|&c| c != background).nth(1).is_none()
+}
+
 /// A point as the `--points` file writes it: every digit of its fixed-point value.
 fn coordinate(value: Real) -> String {
     format!("{}", value.to_f64())
@@ -255,8 +273,11 @@ impl RenderAttractorOptions {
         let mut target = common.display();
         let started = Instant::now();
         let stats = options.draw(&picture, &mut target)?;
-        if let Some(still) = options.standing_still()? {
-            crate::console::warn(&still);
+        // A still orbit lights one pixel; only then is its start stepped again to see.
+        if one_pixel_at_most(&target) {
+            if let Some(still) = options.standing_still()? {
+                crate::console::warn(&still);
+            }
         }
         if stats.outside > 0 {
             crate::console::warn(&format!(
@@ -348,4 +369,37 @@ pub fn render_entry(
     let started = Instant::now();
     let stats = options.draw(&picture, &mut target)?;
     Ok((target, stats.points, started.elapsed()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// One odd pixel anywhere, the first two included, is at most one; two are not; a
+    /// uniform picture and one of a single pixel are.
+    #[test]
+    fn one_odd_pixel_is_at_most_one() {
+        let (odd, background) = (Rgb888::WHITE, Rgb888::new(0, 0, 16));
+        let picture = |size: Size, lit: &[Point]| {
+            let mut target = SimulatorDisplay::new(size);
+            target.clear(background).unwrap();
+            for &p in lit {
+                Pixel(p, odd).draw(&mut target).unwrap();
+            }
+            target
+        };
+        let size = Size::new(5, 4);
+        assert!(one_pixel_at_most(&picture(size, &[])));
+        for p in Rectangle::new(Point::zero(), size).points() {
+            assert!(one_pixel_at_most(&picture(size, &[p])), "{p:?}");
+        }
+        for pair in [[0, 1], [1, 2], [0, 2], [0, 19], [7, 13]] {
+            let lit = pair.map(|i| Point::new(i % 5, i / 5));
+            assert!(!one_pixel_at_most(&picture(size, &lit)), "{lit:?}");
+        }
+        assert!(one_pixel_at_most(&picture(
+            Size::new(1, 1),
+            &[Point::zero()]
+        )));
+    }
 }

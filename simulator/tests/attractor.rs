@@ -207,6 +207,8 @@ fn an_orbit_that_stands_still_is_named() {
         tiny.contains("lorenz: the orbit stands still at (1, 1, 1)") && tiny.contains("--dt"),
         "{tiny}"
     );
+    let by_density = render(&["--kind", "lorenz", "--dt", "0.000000001", "--density"]);
+    assert!(by_density.contains("stands still"), "{by_density}");
     let equilibrium = render(&["--kind", "lorenz", "--start", "0,0,0"]);
     assert!(
         equilibrium.contains("stands still at (0, 0, 0)"),
@@ -218,7 +220,12 @@ fn an_orbit_that_stands_still_is_named() {
         "{fixed}"
     );
     assert!(fixed.contains("a fixed point of the map"), "{fixed}");
-    for moving in [&["--kind", "lorenz"][..], &["--kind", "henon"]] {
+    let moving: [&[&str]; 3] = [
+        &["--kind", "lorenz"],
+        &["--kind", "henon"],
+        &["--kind", "henon", "--density"],
+    ];
+    for moving in moving {
         let said = render(moving);
         assert!(!said.contains("stands still"), "{moving:?}: {said}");
     }
