@@ -84,28 +84,91 @@ impl<P: Palette> Drawable for ReactionDrawing<'_, P> {
     where
         D: DrawTarget<Color = Self::Color>,
     {
-        let (w, h) = (self.area.size.width, self.area.size.height);
-        let (columns, wide) = (self.grid.0, u64::from(w));
-        let colors = (0..h).flat_map(|y| {
-            let start = self.row(y) * columns as usize;
-            let row = self.cells.get(start..).unwrap_or_default();
-            // Column ⌊x·W/width⌋ stepped along the row, no division a pixel: `column·width
-            // + over = x·W` with `over` below the width.
-            (0..w)
-                .scan((0, 0), move |(column, over): &mut (usize, u64), _| {
-                    let here = *column;
-                    *over += u64::from(columns);
-                    while *over >= wide {
-                        *over -= wide;
-                        *column += 1;
-                    }
-                    Some(here)
-                })
-                .map(move |column| {
-                    let b = row.get(column).map_or(0, |cell| cell.b);
-                    self.palette.color(u16::from(level_of(b)), u16::MAX)
-                })
-        });
+        let colors = Pixels::new(self);
         target.fill_contiguous(&self.area, colors)
+    }
+}
+
+/// A drawing's colours in the order `fill_contiguous` takes them, a row of the area after
+/// another: the grid row taken once a row, and the grid column stepped along it with no
+/// division a pixel (`column·width + over = x·W`, `over` below the width, in 32 bits).
+struct Pixels<'d, 'r, P: Palette> {
+    drawing: &'d ReactionDrawing<'r, P>,
+    /// The grid row under the area's row `y`.
+    row: &'r [Cell],
+    /// The area's row being sent, and the next pixel's column in it.
+    y: u32,
+    x: u32,
+    /// The grid column under the next pixel, and what is over: x·W − column·width.
+    column: usize,
+    over: u32,
+    /// W = whole·width + part: a pixel's step is `whole` columns and `part` over.
+    whole: usize,
+    part: u32,
+    /// The last column coloured in this row, and its colour: the pixels a cell is
+    /// stretched over take it once.
+    last: Option<(usize, P::Color)>,
+}
+
+impl<'d, 'r, P: Palette> Pixels<'d, 'r, P> {
+    fn new(drawing: &'d ReactionDrawing<'r, P>) -> Self {
+        let (columns, width) = (drawing.grid.0, drawing.area.size.width);
+        let mut pixels = Self {
+            drawing,
+            row: &[],
+            y: 0,
+            x: 0,
+            column: 0,
+            over: 0,
+            whole: (columns / width) as usize,
+            part: columns % width,
+            last: None,
+        };
+        pixels.start_row();
+        pixels
+    }
+
+    /// The area's row `y` from its first pixel.
+    fn start_row(&mut self) {
+        let start = self.drawing.row(self.y) * self.drawing.grid.0 as usize;
+        self.row = self.drawing.cells.get(start..).unwrap_or_default();
+        (self.x, self.column, self.over, self.last) = (0, 0, 0, None);
+    }
+}
+
+impl<P: Palette> Iterator for Pixels<'_, '_, P> {
+    type Item = P::Color;
+
+    #[inline]
+    fn next(&mut self) -> Option<P::Color> {
+        let size = self.drawing.area.size;
+        if self.x == size.width {
+            self.y += 1;
+            if self.y >= size.height {
+                return None;
+            }
+            self.start_row();
+        }
+        let color = match self.last {
+            Some((column, color)) if column == self.column => color,
+            _ => {
+                let b = self.row.get(self.column).map_or(0, |cell| cell.b);
+                let color = self.drawing.palette.color(u16::from(level_of(b)), u16::MAX);
+                self.last = Some((self.column, color));
+                color
+            }
+        };
+        self.x += 1;
+        // over + part, less the width where it reaches it (with part below the width,
+        // neither wraps).
+        let left = size.width - self.part;
+        if self.over >= left {
+            self.over -= left;
+            self.column += self.whole + 1;
+        } else {
+            self.over += self.part;
+            self.column += self.whole;
+        }
+        Some(color)
     }
 }

@@ -186,36 +186,50 @@ impl<'a> Reaction<'a> {
     }
 
     fn one_step(&mut self) {
+        // Δt = 1, every preset's: a product fewer a cell, and a rate fewer to hold.
+        if self.coefficients.dt == i32::from(ONE) {
+            self.one_step_with::<true>();
+        } else {
+            self.one_step_with::<false>();
+        }
+        self.steps += 1;
+    }
+
+    /// [`one_step`](Self::one_step) with Δt = 1 known where `UNIT_DT`: every row in one
+    /// call, so that the rates are taken once a step rather than once a row.
+    #[inline(never)]
+    fn one_step_with<const UNIT_DT: bool>(&mut self) {
         let w = self.width as usize;
         let h = self.height as usize;
-        let mut ring = self.ring.chunks_exact_mut(w);
-        let (Some(first), Some(mut above), Some(mut centre)) =
-            (ring.next(), ring.next(), ring.next())
+        let c = &self.coefficients;
+        // Split, not `chunks_exact_mut`, whose division is a library call on cores
+        // without a divide.
+        let (first, ring) = self.ring.split_at_mut(w.min(self.ring.len()));
+        let (kept, spare) = ring.split_at_mut(w.min(ring.len()));
+        let (Some(mut kept), Some(mut spare)) = (kept.get_mut(..w), spare.get_mut(..w)) else {
+            return;
+        };
+        let mut carry = Carry::default();
+        // Each row is updated in place, its old values kept in the ring as the update
+        // passes them: the next row's row above. The first row's are kept apart, as the
+        // last row's row below; above the first row is the last, which changes last.
+        let (top, rest) = self.cells.split_at_mut(w);
+        let (Some(below), Some(bottom)) = (rest.get(..w), rest.get(rest.len().wrapping_sub(w)..))
         else {
             return;
         };
-        // The rows the first and last rows see across the edge, before they change.
-        let (Some(top), Some(bottom)) = (self.cells.get(..w), self.cells.get((h - 1) * w..)) else {
-            return;
-        };
-        first.copy_from_slice(top);
-        above.copy_from_slice(bottom);
-        let mut carry = Carry::default();
-        // Each row is updated in place, its old values kept in the ring's `centre` as the
-        // update passes them: the next row's `above`.
-        for y in 0..h {
+        first_row::<UNIT_DT>(bottom, top, below, first, c, &mut carry);
+        let first: &[Cell] = first;
+        for y in 1..h {
             let (head, tail) = self.cells.split_at_mut((y + 1) * w);
-            let (Some(row), Some(below)) = (head.get_mut(y * w..), tail.get(..w)) else {
-                // The last row: the first row below it, as it was.
-                if let Some(row) = head.get_mut(y * w..) {
-                    update_row(above, row, first, centre, &self.coefficients, &mut carry);
-                }
+            let Some(row) = head.get_mut(y * w..) else {
                 break;
             };
-            update_row(above, row, below, centre, &self.coefficients, &mut carry);
-            core::mem::swap(&mut above, &mut centre);
+            let below = tail.get(..w).unwrap_or(first);
+            let above: &[Cell] = if y == 1 { first } else { spare };
+            row_loop::<UNIT_DT>(above, row, below, kept, c, &mut carry);
+            core::mem::swap(&mut kept, &mut spare);
         }
-        self.steps += 1;
     }
 }
 
@@ -256,10 +270,10 @@ impl Column {
     }
 }
 
-/// Updates `row` to its next state from the old rows `above` and `below` and its own old
-/// values (all one width long, wrapping at the row's ends), keeping those old values in
-/// `kept` as it goes.
-fn update_row(
+/// The row loop for the first row, out of line: inlined twice, the loop of the other
+/// rows was scheduled worse.
+#[inline(never)]
+fn first_row<const UNIT_DT: bool>(
     above: &[Cell],
     row: &mut [Cell],
     below: &[Cell],
@@ -267,12 +281,7 @@ fn update_row(
     coefficients: &Coefficients,
     carry: &mut Carry,
 ) {
-    // Δt = 1, every preset's: a product fewer a cell, and a rate fewer to hold.
-    if coefficients.dt == i32::from(ONE) {
-        row_loop::<true>(above, row, below, kept, coefficients, carry);
-    } else {
-        row_loop::<false>(above, row, below, kept, coefficients, carry);
-    }
+    row_loop::<UNIT_DT>(above, row, below, kept, coefficients, carry);
 }
 
 // The row loop this core takes: a chemical at a time where the core has registers for it;
@@ -282,13 +291,15 @@ use self::update_row_by_chemical as row_loop;
 #[cfg(tinyfractal_few_registers)]
 use self::update_row_with as row_loop;
 
-/// [`update_row`], with Δt = 1 known where `UNIT_DT`.
+/// A row's next state from the old rows `above` and `below` and its own old values (all
+/// one width long, wrapping at the row's ends), keeping those old values in `kept` as it
+/// goes; Δt = 1 known where `UNIT_DT`.
 ///
 /// A cell is written once its right neighbour's old value has been read (and kept), so
 /// the row needs no copy of its own; the first column, the last cell's right neighbour, is
 /// taken before anything is written.
 #[cfg_attr(not(tinyfractal_few_registers), allow(dead_code))]
-#[inline(never)]
+#[cfg_attr(tinyfractal_few_registers, inline(always))]
 fn update_row_with<const UNIT_DT: bool>(
     above: &[Cell],
     row: &mut [Cell],
@@ -297,16 +308,26 @@ fn update_row_with<const UNIT_DT: bool>(
     coefficients: &Coefficients,
     carry: &mut Carry,
 ) {
-    let column_at = |x: usize| {
-        let cell = |row: &[Cell]| row.get(x).copied().unwrap_or(Cell::REST);
-        Column::of(cell(above), cell(row), cell(below))
-    };
+    // The rows as long as the row, so that their bounds are checked once.
     let width = row.len();
-    let first = column_at(0);
-    let mut left = column_at(width.wrapping_sub(1));
+    let (Some(above), Some(below), Some(kept), Some(&old_first), Some(&old_last)) = (
+        above.get(..width),
+        below.get(..width),
+        kept.get_mut(..width),
+        row.first(),
+        row.last(),
+    ) else {
+        return;
+    };
+    let column_at = |x: usize, old: Cell| {
+        let cell = |row: &[Cell]| row.get(x).copied().unwrap_or(Cell::REST);
+        Column::of(cell(above), old, cell(below))
+    };
+    let first = column_at(0, old_first);
+    let mut left = column_at(width - 1, old_last);
     let mut here = first;
-    if let (Some(kept), Some(&old)) = (kept.first_mut(), row.first()) {
-        *kept = old;
+    if let Some(kept) = kept.first_mut() {
+        *kept = old_first;
     }
     // In locals, so that they live in registers through the row.
     let c = *coefficients;
@@ -331,6 +352,23 @@ fn update_row_with<const UNIT_DT: bool>(
         *o2 = next_cell::<UNIT_DT>(r1, r2, r3, &c, (&mut carry_a, &mut carry_b));
         left = r2;
         here = r3;
+        x += 3;
+    }
+    // A width of a multiple of three ends in a whole turn too, the last cell's right
+    // neighbour the first column.
+    if let (Some([o0, o1, o2]), Some([k1, k2]), Some([u1, u2]), Some([d1, d2])) = (
+        row.get_mut(x..),
+        kept.get_mut(x + 1..),
+        above.get(x + 1..),
+        below.get(x + 1..),
+    ) {
+        let (m1, m2) = (*o1, *o2);
+        (*k1, *k2) = (m1, m2);
+        let r1 = Column::of(*u1, m1, *d1);
+        *o0 = next_cell::<UNIT_DT>(left, here, r1, &c, (&mut carry_a, &mut carry_b));
+        let r2 = Column::of(*u2, m2, *d2);
+        *o1 = next_cell::<UNIT_DT>(here, r1, r2, &c, (&mut carry_a, &mut carry_b));
+        *o2 = next_cell::<UNIT_DT>(r1, r2, first, &c, (&mut carry_a, &mut carry_b));
         x += 3;
     }
     while let (Some([o0, o1]), Some(k1), Some(&u1), Some(&d1)) = (
@@ -443,13 +481,30 @@ fn next_chemical<const UNIT_DT: bool, const B: bool>(
     c: &Coefficients,
     carry: &mut i32,
 ) -> u16 {
-    let laplacian = left + right + 4 * here - 36 * if B { b } else { a };
+    let own = if B { b } else { a };
     let reaction = reaction::<UNIT_DT>(a, b, c);
+    let sum = left + right + 4 * here;
+    settle(own, change::<B>(sum, own, reaction, c), carry)
+}
+
+/// A chemical's change in units of 2⁻³⁰ (B's where `B`), from the weighted sum of its
+/// cell's neighbourhood (`sum`: the three columns' sums weighted [1 4 1], 20·∇² before
+/// the centre's −36), the cell's own value and the reaction AB²·Δt: D·sum − own·value −
+/// AB²·Δt + f·1 for A, D·sum − own·value + AB²·Δt for B, with [`Coefficients`]' folded
+/// rates. That is D·20∇² − AB²·Δt + f·(1 − A) and D·20∇² + AB²·Δt − (k + f)·B exactly:
+/// the change is within ±2³¹ (see [`next_cell`]), so the wrapping sum of its terms is
+/// exact although own·value alone may pass 2³¹.
+#[inline(always)]
+fn change<const B: bool>(sum: i32, own: i32, reaction: i32, c: &Coefficients) -> i32 {
     if B {
-        settle(b, c.diffusion_b * laplacian + reaction - c.decay * b, carry)
+        (c.diffusion_b * sum)
+            .wrapping_sub(c.own_b.wrapping_mul(own))
+            .wrapping_add(reaction)
     } else {
-        let feed = c.feed * (i32::from(ONE) - a);
-        settle(a, c.diffusion_a * laplacian - reaction + feed, carry)
+        (c.diffusion_a * sum)
+            .wrapping_sub(c.own_a.wrapping_mul(own))
+            .wrapping_sub(reaction)
+            .wrapping_add(c.feed_one)
     }
 }
 
@@ -468,12 +523,13 @@ fn next_cell<const UNIT_DT: bool>(
     c: &Coefficients,
     (carry_a, carry_b): (&mut i32, &mut i32),
 ) -> Cell {
-    // 20·∇² exactly: 4 × (the four edges) + (the four corners) − 20 × the centre.
-    let laplacian_a = left.sum_a + right.sum_a + 4 * here.sum_a - 36 * here.a;
-    let laplacian_b = left.sum_b + right.sum_b + 4 * here.sum_b - 36 * here.b;
+    // 20·∇² (4 × the four edges + the four corners − 20 × the centre) is each sum less
+    // 36 × the centre, which `change` takes with the rates.
+    let sum_a = left.sum_a + right.sum_a + 4 * here.sum_a;
+    let sum_b = left.sum_b + right.sum_b + 4 * here.sum_b;
     let reaction = reaction::<UNIT_DT>(here.a, here.b, c);
-    let change_a = c.diffusion_a * laplacian_a - reaction + c.feed * (i32::from(ONE) - here.a);
-    let change_b = c.diffusion_b * laplacian_b + reaction - c.decay * here.b;
+    let change_a = change::<false>(sum_a, here.a, reaction, c);
+    let change_b = change::<true>(sum_b, here.b, reaction, c);
     Cell {
         a: settle(here.a, change_a, carry_a),
         b: settle(here.b, change_b, carry_b),
@@ -560,6 +616,95 @@ mod tests {
             assert_eq!(one, two, "{case:?}");
             assert_eq!(&kept[0], centre, "{case:?}");
             assert_eq!(&kept[1], centre, "{case:?}");
+        }
+    }
+
+    /// A cell's next state from the rates folded as [`Coefficients`] folds them is the
+    /// one the model's equations give, computed here in 64 bits from the nine cells with
+    /// the kernel's weights (edges 4, corners 1, centre −20) and the unfolded rates: for
+    /// random neighbourhoods, carries and rates across the accepted ranges (D·Δt/20 up to
+    /// 1,638, f·Δt and (k + f)·Δt up to 2¹⁵), their extremes included, at Δt = 1 and below.
+    #[test]
+    fn folded_rates_give_the_equations_cells() {
+        let mut random = Generator::new(41);
+        let one = i64::from(ONE);
+        let mut pick = |extremes: &[i32], high: u32| {
+            let r = random.next_u32();
+            match extremes.get((r % 8) as usize) {
+                Some(&extreme) => extreme,
+                None => (random.next_u32() % (high + 1)) as i32,
+            }
+        };
+        for case in 0..200_000 {
+            let diffusion = [pick(&[0, 1638], 1638), pick(&[1638, 819], 1638)];
+            let feed = pick(&[0, 1 << 15], 1 << 15);
+            let decay = pick(&[feed, 1 << 15], 1 << 15).max(feed);
+            let dt = if case % 2 == 0 {
+                1 << 15
+            } else {
+                pick(&[1], 1 << 15).max(1)
+            };
+            let c = Coefficients::of_rates(diffusion, [feed, decay], dt);
+            let mut cell = || Cell {
+                a: pick(&[0, 1 << 15], 1 << 15) as u16,
+                b: pick(&[0, 1 << 15], 1 << 15) as u16,
+            };
+            let cells: [[Cell; 3]; 3] = core::array::from_fn(|_| core::array::from_fn(|_| cell()));
+            let carries = [
+                pick(&[0, (1 << 15) - 1], (1 << 15) - 1),
+                pick(&[0], (1 << 15) - 1),
+            ];
+            let columns: [Column; 3] =
+                core::array::from_fn(|x| Column::of(cells[0][x], cells[1][x], cells[2][x]));
+            let (mut carry_a, mut carry_b) = (carries[0], carries[1]);
+            let next = if dt == 1 << 15 {
+                next_cell::<true>(
+                    columns[0],
+                    columns[1],
+                    columns[2],
+                    &c,
+                    (&mut carry_a, &mut carry_b),
+                )
+            } else {
+                next_cell::<false>(
+                    columns[0],
+                    columns[1],
+                    columns[2],
+                    &c,
+                    (&mut carry_a, &mut carry_b),
+                )
+            };
+            // The equations in 64 bits.
+            let laplacian = |of: fn(Cell) -> i64| {
+                let weight = |x: usize, y: usize| match (x, y) {
+                    (1, 1) => -20,
+                    (1, _) | (_, 1) => 4,
+                    _ => 1,
+                };
+                (0..3)
+                    .flat_map(|y| (0..3).map(move |x| (x, y)))
+                    .map(|(x, y)| weight(x, y) * of(cells[y][x]))
+                    .sum::<i64>()
+            };
+            let (a, b) = (i64::from(cells[1][1].a), i64::from(cells[1][1].b));
+            let half = 1 << 14;
+            let ab = (a * b + half) >> 15;
+            let ab_dt = (ab * i64::from(dt) + half) >> 15;
+            let reaction = ab_dt * b;
+            let change_a = i64::from(diffusion[0]) * laplacian(|cell| i64::from(cell.a)) - reaction
+                + i64::from(feed) * (one - a);
+            let change_b = i64::from(diffusion[1]) * laplacian(|cell| i64::from(cell.b)) + reaction
+                - i64::from(decay) * b;
+            let settle = |value: i64, change: i64, carry: i32| {
+                let total = change + i64::from(carry);
+                let next = (value + total.div_euclid(1 << 15)).clamp(0, one);
+                (next as u16, total.rem_euclid(1 << 15) as i32)
+            };
+            let (want_a, want_carry_a) = settle(a, change_a, carries[0]);
+            let (want_b, want_carry_b) = settle(b, change_b, carries[1]);
+            let case = (diffusion, feed, decay, dt, cells, carries);
+            assert_eq!((next.a, carry_a), (want_a, want_carry_a), "{case:?}");
+            assert_eq!((next.b, carry_b), (want_b, want_carry_b), "{case:?}");
         }
     }
 

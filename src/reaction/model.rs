@@ -106,29 +106,59 @@ impl GrayScott {
             let bits = rate.to_bits() / divisor;
             ((bits + (1 << (shift - 1))) >> shift) as i32
         };
-        Ok(Coefficients {
-            diffusion_a: q15(diffusion_a, 20),
-            diffusion_b: q15(diffusion_b, 20),
-            feed: q15(times_dt(self.feed), 1),
-            decay: q15(decay, 1),
-            dt: q15(self.dt, 1),
-        })
+        Ok(Coefficients::of_rates(
+            [q15(diffusion_a, 20), q15(diffusion_b, 20)],
+            [q15(times_dt(self.feed), 1), q15(decay, 1)],
+            q15(self.dt, 1),
+        ))
     }
 }
 
+/// The separable kernel's weight of a cell's own value: 20·∇² is the column sums'
+/// [1 4 1] less 36 times the centre (see the grid's `Column`).
+pub(super) const KERNEL_CENTRE: i32 = 36;
+
 /// What a step multiplies by, each rounded once from the model's exact values.
+///
+/// The terms a cell's own value is multiplied by are folded into one rate a chemical
+/// (`own_a`, `own_b`), so a change is two products, the reaction and for A a constant:
+/// A's change D_A·(Σ − 36·A) − AB² + f·(1 − A) is the same integer as D_A·Σ − (36·D_A +
+/// f)·A − AB² + f·1, and B's D_B·(Σ − 36·B) + AB² − (k + f)·B as D_B·Σ − (36·D_B + k +
+/// f)·B + AB².
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Coefficients {
     /// `D_A·Δt/20` in Q15: the kernel's weights are 4/20 and 1/20.
     pub diffusion_a: i32,
     /// `D_B·Δt/20` in Q15.
     pub diffusion_b: i32,
-    /// `f·Δt` in Q15.
-    pub feed: i32,
-    /// `(k + f)·Δt` in Q15.
-    pub decay: i32,
+    /// `36·diffusion_a + f·Δt` in Q15: what A's change takes a unit of the cell's A (the
+    /// kernel's centre and the feed's −f·A), at most 36·1,638 + 2¹⁵.
+    pub own_a: i32,
+    /// `36·diffusion_b + (k + f)·Δt` in Q15: what B's change takes a unit of the cell's B.
+    pub own_b: i32,
+    /// `f·Δt·1` in Q30: the feed's f·1, at most 2³⁰.
+    pub feed_one: i32,
     /// `Δt` in Q15, for the reaction AB²·Δt (exact when Δt is 1).
     pub dt: i32,
+}
+
+impl Coefficients {
+    /// The coefficients of the rates in Q15: `D_A·Δt/20` and `D_B·Δt/20` (each at most
+    /// 1,638), `f·Δt` and `(k + f)·Δt` (each at most 2¹⁵), and `Δt`.
+    pub(super) const fn of_rates(
+        [diffusion_a, diffusion_b]: [i32; 2],
+        [feed, decay]: [i32; 2],
+        dt: i32,
+    ) -> Self {
+        Self {
+            diffusion_a,
+            diffusion_b,
+            own_a: KERNEL_CENTRE * diffusion_a + feed,
+            own_b: KERNEL_CENTRE * diffusion_b + decay,
+            feed_one: feed * ONE as i32,
+            dt,
+        }
+    }
 }
 
 /// Named (f, k) pairs: the patterns every Gray–Scott demo names, and Pearson's classes.
