@@ -313,6 +313,35 @@ fn the_skip_starts_the_orbit_later() {
     assert_eq!(orbit(&henon, 10, 40), all[10..]);
 }
 
+/// The drawings' loop names the step an orbit leaves its range at, as the orbit's own
+/// iterator does: from the start, and past a transient that ends before the escape.
+#[test]
+fn a_drawing_names_the_step_the_orbit_escapes_at() {
+    let diverging = Attractor::new(Kind::Henon)
+        .with_parameters(&[real(2.5), real(0.3)])
+        .unwrap();
+    let area = Rectangle::new(Point::zero(), Size::new(64, 32));
+    let escaped_at = |skip: u64| {
+        let from_iterator = diverging.orbit(skip, 1000).find_map(Result::err);
+        let from_drawing = AttractorPicture::new(diverging, 1000)
+            .with_skip(skip)
+            .fit(area, BinaryColor::On)
+            .err();
+        (from_iterator, from_drawing)
+    };
+    for skip in [0, 2] {
+        let (from_iterator, from_drawing) = escaped_at(skip);
+        let Some(Error::Walk(WalkError::OrbitEscaped { step, .. })) = from_iterator else {
+            panic!("the orbit escapes: {from_iterator:?}");
+        };
+        assert!(
+            step > skip,
+            "escapes in the loop, not the transient: {step}"
+        );
+        assert_eq!(from_drawing, from_iterator, "skip {skip}");
+    }
+}
+
 #[test]
 fn a_diverging_orbit_is_an_error_not_a_wrap() {
     let diverging = Attractor::new(Kind::Henon)

@@ -349,8 +349,9 @@ impl<V: FnMut([i32; 2], State)> WithStep for Run<'_, V> {
                     Some(next) => state = next,
                     None => {
                         orbit.left = 0;
-                        let done = u64::from(block - left);
-                        return Err(orbit.fail(pending + visited + done));
+                        // The steps taken, from what was left: the loop keeps `left` alone.
+                        let end = pending + visited + u64::from(block);
+                        return Err(orbit.fail(end - u64::from(left)));
                     }
                 }
                 (self.visit)(plane::<THREE>(state), state);

@@ -217,7 +217,10 @@ pub(crate) fn mul_high_halves(a: i32, b: i32) -> i32 {
 /// `umull`, where a shift by a register takes a mask before it (Rust masks a variable
 /// shift's count). Elsewhere (ARMv6-M, where a long multiply is four) the count.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) struct RightShift(u32);
+pub(crate) struct RightShift(
+    #[cfg(tinyfractal_no_long_multiply)] ShiftCount,
+    #[cfg(not(tinyfractal_no_long_multiply))] u32,
+);
 
 impl RightShift {
     /// A shift by `bits`, or `None` beyond 1 to 31.
@@ -227,7 +230,10 @@ impl RightShift {
         }
         #[cfg(tinyfractal_no_long_multiply)]
         {
-            Some(Self(bits))
+            match ShiftCount::new(bits) {
+                Some(count) => Some(Self(count)),
+                None => None,
+            }
         }
         #[cfg(not(tinyfractal_no_long_multiply))]
         {
@@ -240,13 +246,85 @@ impl RightShift {
     pub(crate) fn apply(self, v: u32) -> u32 {
         #[cfg(tinyfractal_no_long_multiply)]
         {
-            // The same for a shift below 32, and with no mask of the shift before it.
-            v.unbounded_shr(self.0)
+            self.0.shift(v)
         }
         #[cfg(not(tinyfractal_no_long_multiply))]
         {
             (mul_u32_wide(v, self.0) >> 32) as u32
         }
+    }
+}
+
+/// Defines [`ShiftCount`], a variant a count, and the counts in order.
+macro_rules! shift_counts {
+    ($($name:ident = $count:literal),+ $(,)?) => {
+        /// A shift's count from 1 to 31 as a type whose every value the compiler knows is
+        /// below 32, so that `v >> count` needs neither the mask Rust puts before a
+        /// variable shift nor the test `unbounded_shr` puts there: one `lsrs` on ARMv6-M.
+        #[cfg(any(test, tinyfractal_no_long_multiply))]
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        // A word, not a byte: ARMv6-M loads a word from the stack in one instruction.
+        #[repr(u32)]
+        pub(crate) enum ShiftCount {
+            $(
+                #[doc = concat!("A shift by ", stringify!($count), ".")]
+                $name = $count,
+            )+
+        }
+
+        #[cfg(any(test, tinyfractal_no_long_multiply))]
+        impl ShiftCount {
+            /// The count `bits`, or `None` beyond 1 to 31.
+            pub(crate) const fn new(bits: u32) -> Option<Self> {
+                match bits {
+                    $($count => Some(Self::$name),)+
+                    _ => None,
+                }
+            }
+        }
+    };
+}
+
+shift_counts!(
+    By1 = 1,
+    By2 = 2,
+    By3 = 3,
+    By4 = 4,
+    By5 = 5,
+    By6 = 6,
+    By7 = 7,
+    By8 = 8,
+    By9 = 9,
+    By10 = 10,
+    By11 = 11,
+    By12 = 12,
+    By13 = 13,
+    By14 = 14,
+    By15 = 15,
+    By16 = 16,
+    By17 = 17,
+    By18 = 18,
+    By19 = 19,
+    By20 = 20,
+    By21 = 21,
+    By22 = 22,
+    By23 = 23,
+    By24 = 24,
+    By25 = 25,
+    By26 = 26,
+    By27 = 27,
+    By28 = 28,
+    By29 = 29,
+    By30 = 30,
+    By31 = 31,
+);
+
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+impl ShiftCount {
+    /// `v >> count`.
+    #[inline(always)]
+    pub(crate) fn shift(self, v: u32) -> u32 {
+        v >> (self as u32)
     }
 }
 
@@ -462,6 +540,23 @@ mod tests {
         }
         assert_eq!(RightShift::new(0), None);
         assert_eq!(RightShift::new(32), None);
+    }
+
+    /// ARMv6-M's shift count is the count it was made from, shifts as `>>`, and refuses
+    /// 0 and counts from 32.
+    #[test]
+    fn shift_counts_are_their_counts() {
+        let values = [0, 1, 0x8000_0000, u32::MAX, 0x1234_5678, 0xFFFF];
+        for bits in 1..32 {
+            let count = ShiftCount::new(bits).expect("1 to 31");
+            assert_eq!(count as u32, bits);
+            for v in values {
+                assert_eq!(count.shift(v), v >> bits, "{v} {bits}");
+            }
+        }
+        for bits in [0, 32, 33, 255, u32::MAX] {
+            assert_eq!(ShiftCount::new(bits), None);
+        }
     }
 
     /// The narrow division is `/` on i64, for values of every size (either side of 32
