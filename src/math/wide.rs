@@ -215,7 +215,8 @@ pub(crate) fn mul_high_halves(a: i32, b: i32) -> i32 {
 /// A right shift by 1 to 31 bits, kept as what applies it cheapest. Where there is a long
 /// multiply, the factor 2^(32 − s): the high word of the product is the shift, one
 /// `umull`, where a shift by a register takes a mask before it (Rust masks a variable
-/// shift's count). Elsewhere (ARMv6-M, where a long multiply is four) the count.
+/// shift's count). Elsewhere (ARMv6-M, where a long multiply is four) the count, as a
+/// `ShiftCount`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct RightShift(
     #[cfg(tinyfractal_no_long_multiply)] ShiftCount,
@@ -255,7 +256,8 @@ impl RightShift {
     }
 }
 
-/// Defines [`ShiftCount`], a variant a count, and the counts in order.
+/// Defines `ShiftCount` with a variant for each count, and `ShiftCount::new`, which
+/// turns a count into its variant.
 macro_rules! shift_counts {
     ($($name:ident = $count:literal),+ $(,)?) => {
         /// A shift's count from 1 to 31 as a type whose every value the compiler knows is
