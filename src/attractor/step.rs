@@ -293,11 +293,63 @@ fn henon_quick(a: i32, a4: i32, b_scaled: i32, s: State) -> Option<State> {
         let [x_next, y_next] = henon_small_b_called(a, b_scaled, x, y)?;
         return Some([x_next, y_next, 0]);
     }
-    // x² < 2, so its four times fits; |a·x²| < 2^30, so 1 − a·x² fits too.
-    let square = high_word(x << 2, x << 2);
-    let one_less = (1 << HENON) - high_word(a4, square << 2);
-    let x_next = y.checked_add(one_less)?;
-    Some([x_next, high_word(b_scaled, x), 0])
+    let (a_x_squared, b_x) = henon_quick_products(a4, b_scaled, x);
+    // |a·x²| < 2^30, so 1 − a·x² fits.
+    let x_next = y.checked_add((1 << HENON) - a_x_squared)?;
+    Some([x_next, b_x, 0])
+}
+
+/// [`henon_quick`]'s two products of x within its limit: a·x² (x² < 2, so its four times
+/// fits) and b·x, each one product's high word where there is a long multiply.
+#[inline(always)]
+fn henon_quick_products(a4: i32, b_scaled: i32, x: i32) -> (i32, i32) {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        henon_quick_halves(a4, b_scaled, x)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        let square = high_word(x << 2, x << 2);
+        (high_word(a4, square << 2), high_word(b_scaled, x))
+    }
+}
+
+/// [`henon_quick_products`] from 16-bit halves, in 32-bit sums the bounds on x keep from
+/// overflowing: the square's, b·x's and a·x²'s middle products are summed whole, not
+/// split again as a product of any two values must be.
+///
+/// With X = 4x = Xₕ·2¹⁶ + Xₗ (Xₗ unsigned, |Xₕ| < 0.71·2¹⁵), x² = Xₕ² + ⌊(Xₕ·Xₗ +
+/// ⌊Xₗ²/2¹⁷⌋) / 2¹⁵⌋; b·x is b4·X for b4 = b/4 (|b4| < 2²⁹), its halves' middle products
+/// below 2³¹ together; a·x² is a4·S for S = 4x² < 2³¹ split with signed low halves, as a4
+/// is, so that every middle product is within 2³⁰.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+fn henon_quick_halves(a4: i32, b_scaled: i32, x: i32) -> (i32, i32) {
+    let wide = x << 2;
+    let (high, low) = (wide >> 16, wide & 0xFFFF);
+    let b4 = b_scaled >> 2;
+    let (b_high, b_low) = (b4 >> 16, b4 & 0xFFFF);
+    let below = ((b_low as u32) * (low as u32)) >> 16;
+    let b_x = b_high * high + ((b_high * low + b_low * high + below as i32) >> 16);
+    let low_square = ((low as u32) * (low as u32)) >> 17;
+    let square = high * high + ((high * low + low_square as i32) >> 15);
+    let a_x_squared = signed_halves_high_word(a4, square << 2);
+    (a_x_squared, b_x)
+}
+
+/// ⌊a·s / 2³²⌋ from halves with signed low parts, v = h·2¹⁶ + l for l in [−2¹⁵, 2¹⁵):
+/// every product within 2³⁰, for any a and 0 ≤ s < 2³¹ whose high half is below
+/// 2¹⁵ · 0.99 (as [`henon_quick_halves`]'s 4x² is), so that their sum fits.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+fn signed_halves_high_word(a: i32, s: i32) -> i32 {
+    // a's high half may be 2¹⁵ (a − l past 32 bits); s's is below, so s − l fits.
+    let a_low = i32::from(a as i16);
+    let a_high = ((i64::from(a) - i64::from(a_low)) >> 16) as i32;
+    let s_low = i32::from(s as i16);
+    let s_high = (s - s_low) >> 16;
+    let middle = a_high * s_low + a_low * s_high + ((a_low * s_low) >> 16);
+    a_high * s_high + (middle >> 16)
 }
 
 /// [`henon_small_b`] as a call of its own: [`henon_quick`]'s step beyond its limit.
@@ -736,6 +788,71 @@ mod tests {
                 },
             )
             .unwrap();
+    }
+
+    /// The quick step's products from 16-bit halves (ARMv6-M's) against the exact products
+    /// in 64 bits, over the quick step's whole domain: every x within its limit, a below 2
+    /// and b below ½, their ends included.
+    #[test]
+    fn henon_quick_halves_are_the_exact_products() {
+        let exact = |a4: i32, b_scaled: i32, x: i32| {
+            let high = |p: i64, q: i64| ((p * q) >> 32) as i32;
+            let wide = i64::from(x) << 2;
+            let square = i64::from(high(wide, wide));
+            (
+                high(i64::from(a4), square << 2),
+                high(i64::from(b_scaled), i64::from(x)),
+            )
+        };
+        let limit = HENON_QUICK_LIMIT as i32;
+        let below_half = -(1 << (HENON - 1)) + 1..(1 << (HENON - 1));
+        let ends_of_x = [
+            limit,
+            limit - 1,
+            -limit,
+            -limit - 1,
+            0,
+            1,
+            -1,
+            0xFFFF,
+            -0x10000,
+        ];
+        let ends_of_a4 = [i32::MIN, i32::MAX & !3, 4, -4, 0, 0x7FFF_8000, -0x8000];
+        let ends_of_b = [below_half.start, below_half.end - 1, 0, 1, -1];
+        for x in ends_of_x {
+            for a4 in ends_of_a4 {
+                for b in ends_of_b {
+                    let b_scaled = scaled_rate::<HENON>(b).expect("b below ½");
+                    let products = henon_quick_halves(a4, b_scaled, x);
+                    assert_eq!(products, exact(a4, b_scaled, x), "{a4} {b} {x}");
+                }
+            }
+        }
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(-limit - 1..=limit, any::<i32>(), below_half),
+                |(x, a, b)| {
+                    let (a4, b_scaled) = (a & !3, scaled_rate::<HENON>(b).expect("b below ½"));
+                    prop_assert_eq!(henon_quick_halves(a4, b_scaled, x), exact(a4, b_scaled, x));
+                    Ok(())
+                },
+            )
+            .unwrap();
+        // Every x the quick step takes, for the default a and b and their negations.
+        let [a, b, ..] = Kind::Henon
+            .default_parameters()
+            .map(|p| to_fixed(p, HENON).unwrap());
+        let (a4, b_scaled) = (a << 2, scaled_rate::<HENON>(b).unwrap());
+        for x in (-limit - 1..=limit).step_by(997) {
+            for (a4, b_scaled) in [(a4, b_scaled), (-a4, -b_scaled)] {
+                assert_eq!(
+                    henon_quick_halves(a4, b_scaled, x),
+                    exact(a4, b_scaled, x),
+                    "{x}"
+                );
+            }
+        }
     }
 
     /// The default Lorenz flow's step, by RK4 or Euler: its box holds nearly every state
