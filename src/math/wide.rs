@@ -352,6 +352,30 @@ pub(crate) fn mul_i32_wide(a: i32, b: i32) -> i64 {
     }
 }
 
+/// The exact product of an i32 and a factor within ±2¹⁵ (`smull`, or two 16-bit products
+/// where there is no long multiply: `a`'s halves each times `small`, every part within 32
+/// bits, with no signs to take off and put back as [`mul_i32_wide`] must).
+#[inline(always)]
+pub(crate) fn mul_i32_by_small(a: i32, small: i32) -> i64 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        mul_i32_by_small_halves(a, small)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        i64::from(a) * i64::from(small)
+    }
+}
+
+/// [`mul_i32_by_small`] from `a`'s halves: (aₕ·m)·2¹⁶ + aₗ·m, with |aₕ·m| ≤ 2³⁰ and
+/// |aₗ·m| < 2³¹ for |m| ≤ 2¹⁵.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn mul_i32_by_small_halves(a: i32, small: i32) -> i64 {
+    let (high, low) = (a >> 16, a & 0xFFFF);
+    (i64::from(high * small) << 16) + i64::from(low * small)
+}
+
 /// The exact product of two i32 from 16-bit halves of their magnitudes.
 #[cfg(any(test, tinyfractal_no_long_multiply))]
 #[inline(always)]
@@ -703,6 +727,12 @@ mod tests {
                 assert_eq!(mul_u32_halves(a, b), u64::from(a) * u64::from(b), "{a} {b}");
                 let (a, b) = (a as i32, b as i32);
                 assert_eq!(mul_i32_halves(a, b), i64::from(a) * i64::from(b), "{a} {b}");
+                // The small factor at its ends, ±2¹⁵, and within them.
+                for small in [b >> 16, b >> 17, 1 << 15, -(1 << 15), 0, 1, -1] {
+                    let exact = i64::from(a) * i64::from(small);
+                    assert_eq!(mul_i32_by_small_halves(a, small), exact, "{a} {small}");
+                    assert_eq!(mul_i32_by_small(a, small), exact, "{a} {small}");
+                }
                 // The sum must fit in an i32: halve both.
                 let (a, b) = (a / 2, b / 2);
                 let (a2, b2) = (i64::from(a) * i64::from(a), i64::from(b) * i64::from(b));

@@ -3,7 +3,7 @@
 
 use super::perlin::{Perlin, RowPart, Sample, SAMPLE_FRAC_BITS};
 use crate::error::{Error, ParameterError};
-use crate::math::wide::mul_i32_wide;
+use crate::math::wide::mul_i32_by_small;
 use crate::math::Real;
 
 /// The error of noise coordinates (or a sum of samples) past the fixed-point range.
@@ -338,7 +338,7 @@ impl Weight {
     #[inline(always)]
     pub(super) fn term(self, sample: Sample) -> i64 {
         match self {
-            Self::Eighths(m) => mul_i32_wide(sample.0, m),
+            Self::Eighths(m) => mul_i32_by_small(sample.0, m),
             Self::Halving(shift) => {
                 // |sample| < 2³⁰·¹ and the half at most 2²⁸: no overflow. A negative
                 // sample's half away from zero is ⌊(s + half − 1) / 2ᵏ⌋, as in `times`.

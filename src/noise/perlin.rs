@@ -1,7 +1,7 @@
 //! Ken Perlin's improved noise (2002) in fixed point: his permutation, fade and gradients.
 
 use crate::math::random::Generator;
-use crate::math::wide::{mul_high, mul_i32_wide};
+use crate::math::wide::mul_i32_wide;
 use crate::math::Real;
 
 /// Fraction bits of a noise value ([`Sample`]): values lie in about ±1.04, and 29 bits keep
@@ -391,10 +391,12 @@ impl Edge {
 
     /// The edge's value at `dx` from its column (2⁻³¹, −1 to 1), in 2⁻²⁹: the slope's
     /// product taken down to 2⁻²⁹ (the high word of one 32 × 32-bit product) plus the
-    /// offset.
+    /// offset. (ARMv6-M takes a cell's two edges together instead:
+    /// [`CellCorners::edges_at`].)
+    #[cfg(any(test, not(tinyfractal_no_long_multiply)))]
     #[inline(always)]
     fn at(self, dx: i32) -> i32 {
-        self.offset + mul_high(self.slope, dx)
+        self.offset + crate::math::wide::mul_high(self.slope, dx)
     }
 }
 
@@ -418,13 +420,62 @@ impl CellCorners {
     /// there (`place` from the left one, `place` − 1 from the right), joined by the fade.
     #[inline(always)]
     pub(super) fn sample(&self, place: i32, fade: i32) -> Sample {
-        // place − 2³¹, for a place below 2³¹.
-        let from_right = place ^ i32::MIN;
-        Sample(lerp_close(
-            fade,
-            self.left.at(place),
-            self.right.at(from_right),
-        ))
+        let (left, right) = self.edges_at(place);
+        Sample(lerp_close(fade, left, right))
+    }
+
+    /// The left edge's value at `place` and the right edge's at `place` − 1 (2⁻²⁹): one
+    /// high word each where there is a long multiply, and on cores without one
+    /// ([`edges_at_in_halves`](Self::edges_at_in_halves)) 16-bit halves.
+    #[inline(always)]
+    fn edges_at(&self, place: i32) -> (i32, i32) {
+        #[cfg(tinyfractal_no_long_multiply)]
+        {
+            self.edges_at_in_halves(place)
+        }
+        #[cfg(not(tinyfractal_no_long_multiply))]
+        {
+            // place − 2³¹, for a place below 2³¹.
+            (self.left.at(place), self.right.at(place ^ i32::MIN))
+        }
+    }
+
+    /// [`edges_at`](Self::edges_at) from 16-bit halves whose middle products are summed
+    /// whole, not split again as a product of any two values must be.
+    ///
+    /// A slope (within ±2³⁰) is lifted by 2³⁰ to an unsigned s′ of at most 2³¹, and the
+    /// place p (0 to 2³¹, a multiple of 2⁷ as every [`ColumnPart`]'s is) taken as it is
+    /// from the left and less 2³¹ from the right: slope·p / 2³² is s′·p / 2³² − p/4
+    /// exactly, a quarter of p being whole. With s′ = sₕ·2¹⁶ + sₗ and p = pₕ·2¹⁶ + pₗ
+    /// (pₗ at most 2¹⁶ − 2⁷), sₕpₗ + sₗpₕ + ⌊sₗpₗ/2¹⁶⌋ is below 2³² from the left (pₕ
+    /// unsigned) and within ±2³¹ from the right (pₕ from −2¹⁵ to 0): one word either way.
+    #[cfg(any(test, tinyfractal_no_long_multiply))]
+    #[inline(always)]
+    fn edges_at_in_halves(&self, place: i32) -> (i32, i32) {
+        let (high, low) = ((place >> 16) as u32, (place & 0xFFFF) as u32);
+        let quarter = place >> 2;
+        let lifted = |slope: i32| {
+            let lifted = slope.wrapping_add(1 << 30) as u32;
+            (lifted >> 16, lifted & 0xFFFF)
+        };
+        let (left_high, left_low) = lifted(self.left.slope);
+        let sum = left_high * low + left_low * high + ((left_low * low) >> 16);
+        let left = (left_high * high + (sum >> 16)) as i32;
+        let (right_high, right_low) = lifted(self.right.slope);
+        // From the right the place's high half is less 2¹⁵, and the products signed.
+        let (high, right_high, right_low) =
+            (high as i32 - (1 << 15), right_high as i32, right_low as i32);
+        let sum =
+            right_high * low as i32 + right_low * high + ((right_low as u32 * low) >> 16) as i32;
+        let right = right_high * high + (sum >> 16);
+        (
+            self.left.offset.wrapping_add(left).wrapping_sub(quarter),
+            self.right
+                .offset
+                .wrapping_add(right)
+                .wrapping_sub(quarter)
+                .wrapping_add(1 << 29),
+        )
     }
 }
 
@@ -624,8 +675,8 @@ fn lerp_close(t: i32, a: i32, b: i32) -> i32 {
 
 /// t·d in 2⁻³⁰ rounded to nearest (half up), for a fade `t` from 0 to 2³⁰ and any `d`:
 /// one `smull` and a shift where there is a long multiply; on cores without one (ARMv6-M)
-/// four 16-bit products whose parts are summed apart ([`fade_step_in_halves`]), where a
-/// signed 64-bit product from halves would take its signs off and put them back.
+/// four 16-bit products summed in one word ([`fade_step_in_halves`]), where a signed
+/// 64-bit product from halves would take its signs off and put them back.
 #[inline(always)]
 fn fade_step(t: i32, d: i32) -> i32 {
     #[cfg(tinyfractal_no_long_multiply)]
@@ -638,21 +689,23 @@ fn fade_step(t: i32, d: i32) -> i32 {
     }
 }
 
-/// [`fade_step`] from 16-bit parts: t = tₕ·2¹⁶ + tₗ (tₕ at most 2¹⁴), d = dₕ·2¹⁶ + dₗ (dₕ
-/// signed, dₗ in [0, 2¹⁶)), so t·d = P·2³² + (M₁ + M₂)·2¹⁶ + L with P = tₕdₕ, M₁ = tₕdₗ
-/// (below 2³⁰), M₂ = tₗdₕ and L = tₗdₗ (unsigned). Split M₁ and M₂ at 2¹⁴ and L at 2³⁰:
-/// (t·d + 2²⁹) / 2³⁰ is 4P + ⌊M₁/2¹⁴⌋ + ⌊M₂/2¹⁴⌋ + ⌊L/2³⁰⌋ plus the floor of what is left,
-/// ((M₁ mod 2¹⁴ + M₂ mod 2¹⁴)·2¹⁶ + L mod 2³⁰ + 2²⁹) / 2³⁰, whose numerator fits 32 bits.
+/// [`fade_step`] from 16-bit parts: t = tₕ·2¹⁶ + tₗ with tₗ signed, in [−2¹⁵, 2¹⁵) (so
+/// tₕ is 0 to 2¹⁴), and d = dₕ·2¹⁶ + dₗ with dₗ in [0, 2¹⁶): t·d = P·2³² + M·2¹⁶ + L with
+/// P = tₕdₕ, M = tₕdₗ + tₗdₕ and L = tₗdₗ, and (t·d + 2²⁹) / 2³⁰ rounded down is 4P +
+/// ⌊(M + ⌊L/2¹⁶⌋ + 2¹³) / 2¹⁴⌋. The sum is tₕdₗ + tₗ·d/2¹⁶ at most, below 2³⁰ + 2³⁰, so it
+/// fits 32 bits with no part split again (4P may wrap: the result fits).
 #[cfg(any(test, tinyfractal_no_long_multiply))]
 #[inline(always)]
 fn fade_step_in_halves(t: i32, d: i32) -> i32 {
-    let (th, tl) = (t >> 16, t & 0xFFFF);
+    let tl = i32::from(t as i16);
+    // t is at most 2³⁰: t − tₗ fits.
+    let th = (t - tl) >> 16;
     let (dh, dl) = (d >> 16, d & 0xFFFF);
-    let (m1, m2) = (th * dl, tl * dh);
-    let low = (tl as u32) * (dl as u32);
-    let rest = (((m1 & 0x3FFF) + (m2 & 0x3FFF)) as u32) << 16;
-    let below = (rest + (low & 0x3FFF_FFFF) + (1 << 29)) >> 30;
-    4 * th * dh + (m1 >> 14) + (m2 >> 14) + (low >> 30) as i32 + below as i32
+    let sum = (th * dl)
+        .wrapping_add(tl * dh)
+        .wrapping_add((tl * dl) >> 16)
+        .wrapping_add(1 << 13);
+    (th * dh).wrapping_mul(4).wrapping_add(sum >> 14)
 }
 
 #[cfg(test)]
@@ -669,6 +722,66 @@ mod tests {
         );
         assert_eq!(fade(0), 0);
         assert_eq!(fade(1 << (CELL_FRAC_BITS - 1)), 1 << (FADE_FRAC_BITS - 1));
+    }
+
+    /// A cell's edges' values from 16-bit halves (ARMv6-M's) are the high words' for every
+    /// slope and offset within their ranges and every place (a multiple of 2⁷), their ends
+    /// included.
+    #[test]
+    fn edges_from_halves_are_the_high_words() {
+        use proptest::prelude::*;
+        let corners =
+            |[left_slope, left_offset, right_slope, right_offset]: [i32; 4]| CellCorners {
+                left: Edge {
+                    slope: left_slope,
+                    offset: left_offset,
+                },
+                right: Edge {
+                    slope: right_slope,
+                    offset: right_offset,
+                },
+            };
+        let exact = |corners: &CellCorners, place: i32| {
+            (corners.left.at(place), corners.right.at(place ^ i32::MIN))
+        };
+        let slope = -(1i32 << 30)..=(1 << 30);
+        let offset = -(1i32 << 30)..(1 << 30);
+        let place = (0..1i32 << 24).prop_map(|p| p << 7);
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        runner
+            .run(
+                &(slope.clone(), offset.clone(), slope, offset, place),
+                |(left_slope, left_offset, right_slope, right_offset, place)| {
+                    let cell = corners([left_slope, left_offset, right_slope, right_offset]);
+                    prop_assert_eq!(cell.edges_at_in_halves(place), exact(&cell, place));
+                    prop_assert_eq!(cell.edges_at(place), exact(&cell, place));
+                    Ok(())
+                },
+            )
+            .unwrap();
+        let slopes = [
+            -(1 << 30),
+            (1 << 30),
+            0,
+            1,
+            -1,
+            0xFFFF,
+            -0x1_0000,
+            (1 << 30) - 1,
+        ];
+        let places = [0, 1 << 7, i32::MAX - 127, 0xFF80, 0x1_0000, 1 << 30];
+        for left in slopes {
+            for right in slopes {
+                for place in places {
+                    let cell = corners([left, -(1 << 30), right, (1 << 30) - 1]);
+                    assert_eq!(
+                        cell.edges_at_in_halves(place),
+                        exact(&cell, place),
+                        "{left} {right} {place}"
+                    );
+                }
+            }
+        }
     }
 
     /// The fade's step from 16-bit parts is the 64-bit product's, rounded, for every fade
