@@ -215,10 +215,16 @@ impl ColumnBlock {
     ) {
         let columns = self.columns;
         let block = sums.wide.get_mut(..columns).unwrap_or(&mut []);
-        block.fill(0);
         // The finer octaves' terms, summed in 32 bits (see `Ladder::narrow_from`).
         let narrow = sums.narrow.get_mut(..columns).unwrap_or(&mut []);
-        narrow.fill(0);
+        // Each sum starts as its first octave's terms; one no octave adds to is 0.
+        let narrow_from = ladder.narrow_from();
+        if narrow_from == 0 {
+            block.fill(0);
+        }
+        if narrow_from >= ladder.weights().len() {
+            narrow.fill(0);
+        }
         let samples = sums.samples.get_mut(..columns).unwrap_or(&mut []);
         let octaves = self.parts.iter().zip(&self.cells).zip(rows);
         for (octave, (((parts, cells), &row), &weight)) in octaves.zip(ladder.weights()).enumerate()
@@ -226,7 +232,8 @@ impl ColumnBlock {
             sample_octave((noise, &self.gradients), (parts, cells), row, samples);
             // One loop for each kind of weight and width: chosen once an octave.
             let samples = &*samples;
-            let sums = (&mut *block, &mut *narrow, octave < ladder.narrow_from());
+            let first = octave == 0 || octave == narrow_from;
+            let sums = (&mut *block, &mut *narrow, octave < narrow_from, first);
             match weight {
                 Weight::Eighths(m) => {
                     add_octave::<ABSOLUTE>(samples, sums, |value| Weight::Eighths(m).term(value))
@@ -245,32 +252,43 @@ impl ColumnBlock {
 /// Adds one octave's terms (`term` of each of its `samples`, of |sample| where
 /// `ABSOLUTE`) to the columns' 64-bit `totals` where `wide`, otherwise to their 32-bit
 /// `narrow` sums (the octaves from [`Ladder::narrow_from`] on, whose terms' magnitudes
-/// together stay below 2³¹: the same sums, in one word).
+/// together stay below 2³¹: the same sums, in one word); or, for the `first` octave of
+/// either, writes them.
 #[inline(always)]
 fn add_octave<const ABSOLUTE: bool>(
     samples: &[i32],
-    (totals, narrow, wide): (&mut [i64], &mut [i32], bool),
+    (totals, narrow, wide, first): (&mut [i64], &mut [i32], bool, bool),
     term: impl Fn(Sample) -> i64,
 ) {
     if wide {
-        add_terms::<ABSOLUTE, _>(samples, totals, term);
+        add_terms::<ABSOLUTE, _>(samples, totals, first, term);
     } else {
         // Within ±2³¹ (see above): the low word is the term.
-        add_terms::<ABSOLUTE, _>(samples, narrow, |value| term(value) as i32);
+        add_terms::<ABSOLUTE, _>(samples, narrow, first, |value| term(value) as i32);
     }
 }
 
-/// Adds `term` of each of `samples` (of |sample| where `ABSOLUTE`) to `sums`: each term
-/// within ±2, 16 of them, so no sum overflows.
+/// Adds `term` of each of `samples` (of |sample| where `ABSOLUTE`) to `sums`, or writes
+/// it where `first`: each term within ±2, 16 of them, so no sum overflows.
 #[inline(always)]
 fn add_terms<const ABSOLUTE: bool, T: AddAssign>(
     samples: &[i32],
     sums: &mut [T],
+    first: bool,
     term: impl Fn(Sample) -> T,
 ) {
-    for (sum, &value) in sums.iter_mut().zip(samples) {
+    let terms = samples.iter().map(|&value| {
         let value = if ABSOLUTE { value.abs() } else { value };
-        *sum += term(Sample(value));
+        term(Sample(value))
+    });
+    if first {
+        for (sum, term) in sums.iter_mut().zip(terms) {
+            *sum = term;
+        }
+    } else {
+        for (sum, term) in sums.iter_mut().zip(terms) {
+            *sum += term;
+        }
     }
 }
 
