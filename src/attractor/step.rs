@@ -320,8 +320,8 @@ fn henon_quick_products(a4: i32, b_scaled: i32, x: i32) -> (i32, i32) {
 ///
 /// With X = 4x = Xₕ·2¹⁶ + Xₗ (Xₗ unsigned, |Xₕ| < 0.71·2¹⁵), x² = Xₕ² + ⌊(Xₕ·Xₗ +
 /// ⌊Xₗ²/2¹⁷⌋) / 2¹⁵⌋; b·x is b4·X for b4 = b/4 (|b4| < 2²⁹), its halves' middle products
-/// below 2³¹ together; a·x² is a4·S for S = 4x² < 2³¹ split with signed low halves, as a4
-/// is, so that every middle product is within 2³⁰.
+/// below 2³¹ together; a·x² is a4·S for S = 4x² < 2³¹·0.99, which
+/// [`mul_high_near`](crate::math::wide::mul_high_near) takes.
 #[cfg(any(test, tinyfractal_no_long_multiply))]
 #[inline(always)]
 fn henon_quick_halves(a4: i32, b_scaled: i32, x: i32) -> (i32, i32) {
@@ -333,23 +333,8 @@ fn henon_quick_halves(a4: i32, b_scaled: i32, x: i32) -> (i32, i32) {
     let b_x = b_high * high + ((b_high * low + b_low * high + below as i32) >> 16);
     let low_square = ((low as u32) * (low as u32)) >> 17;
     let square = high * high + ((high * low + low_square as i32) >> 15);
-    let a_x_squared = signed_halves_high_word(a4, square << 2);
+    let a_x_squared = crate::math::wide::mul_high_near(a4, square << 2);
     (a_x_squared, b_x)
-}
-
-/// ⌊a·s / 2³²⌋ from halves with signed low parts, v = h·2¹⁶ + l for l in [−2¹⁵, 2¹⁵):
-/// every product within 2³⁰, for any a and 0 ≤ s < 2³¹ whose high half is below
-/// 2¹⁵ · 0.99 (as [`henon_quick_halves`]'s 4x² is), so that their sum fits.
-#[cfg(any(test, tinyfractal_no_long_multiply))]
-#[inline(always)]
-fn signed_halves_high_word(a: i32, s: i32) -> i32 {
-    // a's high half may be 2¹⁵ (a − l past 32 bits); s's is below, so s − l fits.
-    let a_low = i32::from(a as i16);
-    let a_high = ((i64::from(a) - i64::from(a_low)) >> 16) as i32;
-    let s_low = i32::from(s as i16);
-    let s_high = (s - s_low) >> 16;
-    let middle = a_high * s_low + a_low * s_high + ((a_low * s_low) >> 16);
-    a_high * s_high + (middle >> 16)
 }
 
 /// [`henon_small_b`] as a call of its own: [`henon_quick`]'s step beyond its limit.

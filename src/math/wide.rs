@@ -197,6 +197,23 @@ pub(crate) fn mul_high(a: i32, b: i32) -> i32 {
     }
 }
 
+/// ⌊a·s / 2³²⌋ for any `a` and an `s` within ±0.99·2³¹ (its high half within ±0.99·2¹⁵),
+/// from 16-bit halves with signed low parts, v = h·2¹⁶ + l for l in [−2¹⁵, 2¹⁵): every
+/// product is then within 2³⁰ and the middle ones' sum fits one word, where a product of
+/// any two values must split it again ([`mul_high_halves`]). For cores without a long
+/// multiply; `a`'s split is the loop-invariant one (it may take 64 bits).
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn mul_high_near(a: i32, s: i32) -> i32 {
+    // a's high half may be 2¹⁵ (a − l past 32 bits); s's is below, so s − l fits.
+    let a_low = i32::from(a as i16);
+    let a_high = ((i64::from(a) - i64::from(a_low)) >> 16) as i32;
+    let s_low = i32::from(s as i16);
+    let s_high = (s - s_low) >> 16;
+    let middle = a_high * s_low + a_low * s_high + ((a_low * s_low) >> 16);
+    a_high * s_high + (middle >> 16)
+}
+
 /// [`mul_high`] from 16-bit halves, v = h·2¹⁶ + l with h signed and l in [0, 2¹⁶): a·b =
 /// H·2³² + (M₁ + M₂)·2¹⁶ + L, so its high word is H + ⌊M₁/2¹⁶⌋ + ⌊M₂/2¹⁶⌋ +
 /// ⌊(M₁ mod 2¹⁶ + M₂ mod 2¹⁶ + ⌊L/2¹⁶⌋) / 2¹⁶⌋, every part small.
@@ -727,6 +744,17 @@ mod tests {
                 assert_eq!(mul_u32_halves(a, b), u64::from(a) * u64::from(b), "{a} {b}");
                 let (a, b) = (a as i32, b as i32);
                 assert_eq!(mul_i32_halves(a, b), i64::from(a) * i64::from(b), "{a} {b}");
+                // A factor within ±0.99·2³¹ (its ends too) beside any other.
+                let near = (b as i64 * 99 / 100) as i32;
+                for s in [
+                    near,
+                    -near,
+                    (0.99 * 2f64.powi(31)) as i32,
+                    -(0.99 * 2f64.powi(31)) as i32,
+                ] {
+                    let exact = ((i64::from(a) * i64::from(s)) >> 32) as i32;
+                    assert_eq!(mul_high_near(a, s), exact, "{a} {s}");
+                }
                 // The small factor at its ends, ±2¹⁵, and within them.
                 for small in [b >> 16, b >> 17, 1 << 15, -(1 << 15), 0, 1, -1] {
                     let exact = i64::from(a) * i64::from(small);

@@ -98,15 +98,41 @@ impl SumLevels {
     /// The level of `sum` (in 2⁻³², within ±17): the same as [`sum_level`]'s.
     #[inline(always)]
     pub(super) fn level(&self, sum: i64) -> u8 {
-        // The sum in 2⁻²⁴ (within ±17·2²⁴, so it fits), plus 2³¹.
-        let coarse = (sum >> 8) as u32 ^ (1 << 31);
-        let fine = (mul_u32_wide(coarse, self.slope) >> 32) as i32 + self.start;
+        let fine = self.product(sum) + self.start;
         let edge =
             (fine.wrapping_add(Self::MARGIN) & ((1 << Self::FRACTION_BITS) - 1)) < 2 * Self::MARGIN;
         if edge {
             return self.exact(sum);
         }
         (fine >> Self::FRACTION_BITS).clamp(0, i32::from(LEVELS - 1)) as u8
+    }
+
+    /// The slope times the sum in 2⁻²⁴ (rounded down; within ±17·2²⁴, so it fits a word)
+    /// plus 2³¹, the product's high word: one `umull` of unsigned factors where there is a
+    /// long multiply, and 16-bit halves where there is not
+    /// ([`product_in_halves`](Self::product_in_halves)).
+    #[inline(always)]
+    fn product(&self, sum: i64) -> i32 {
+        #[cfg(tinyfractal_no_long_multiply)]
+        {
+            self.product_in_halves(sum)
+        }
+        #[cfg(not(tinyfractal_no_long_multiply))]
+        {
+            (mul_u32_wide((sum >> 8) as u32 ^ (1 << 31), self.slope) >> 32) as i32
+        }
+    }
+
+    /// [`product`](Self::product) from the sum in 2⁻²⁴ as it is, below 2²⁹ in magnitude:
+    /// its product's high word plus half the slope (the slope is even, so the half is
+    /// whole), in 16-bit halves whose middle products fit one word
+    /// ([`mul_high_near`](crate::math::wide::mul_high_near)).
+    #[cfg(any(test, tinyfractal_no_long_multiply))]
+    #[inline(always)]
+    fn product_in_halves(&self, sum: i64) -> i32 {
+        // The slope is below 255·2²³ < 2³¹.
+        let slope = self.slope as i32;
+        crate::math::wide::mul_high_near(slope, (sum >> 8) as i32) + (slope >> 1)
     }
 
     /// [`sum_level`], for the sums whose product lands near a level's edge.
@@ -152,6 +178,12 @@ mod tests {
                 let normaliser = normaliser as u32;
                 let levels = SumLevels::new(normaliser, centred);
                 prop_assert_eq!(levels.level(sum), sum_level(sum, normaliser, centred));
+                // ARMv6-M's product from halves, here and at the sums' ends.
+                for sum in [sum, -bound, bound - 1] {
+                    let unsigned = (sum >> 8) as u32 ^ (1 << 31);
+                    let product = (u64::from(unsigned) * u64::from(levels.slope)) >> 32;
+                    prop_assert_eq!(levels.product_in_halves(sum), product as i32);
+                }
                 // Every edge: F = L at s = (L − 128)/(127.5·n) centred, (L − ½)/(255·n) not.
                 let n = f64::from(normaliser) / 2f64.powi(32);
                 for edge in 0..=256 {
