@@ -319,8 +319,8 @@ fn henon_quick_products(a4: i32, b_scaled: i32, x: i32) -> (i32, i32) {
 /// split again as a product of any two values must be.
 ///
 /// With X = 4x = Xₕ·2¹⁶ + Xₗ (Xₗ unsigned, |Xₕ| < 0.71·2¹⁵), x² = Xₕ² + ⌊(Xₕ·Xₗ +
-/// ⌊Xₗ²/2¹⁷⌋) / 2¹⁵⌋; b·x is b4·X for b4 = b/4 (|b4| < 2²⁹), its halves' middle products
-/// below 2³¹ together; a·x² is a4·S for S = 4x² < 2³¹·0.99, which
+/// ⌊Xₗ²/2¹⁷⌋) / 2¹⁵⌋; b·x is b4·X for b4 a quarter of the scaled b (|b4| < 2²⁹), its
+/// halves' middle products below 2³¹ together; a·x² is a4·S for S = 4x² < 2³¹·0.99, which
 /// [`mul_high_near`](crate::math::wide::mul_high_near) takes.
 #[cfg(any(test, tinyfractal_no_long_multiply))]
 #[inline(always)]
