@@ -206,6 +206,14 @@ impl<P: Palette> NoiseDrawing<'_, P> {
             Some(z) => ladder.rows_into(z, &mut layers).map(|()| &layers),
             None => None,
         };
+        // A sum's level by one product where the texture is its sum's value alone and the
+        // normaliser is below 1 (otherwise through the texture's checked steps): its
+        // factors once for the picture.
+        let below_one = u32::try_from(self.normaliser.to_bits()).ok();
+        let by_sum = match (self.texture.texture.sum_centring(), below_one) {
+            (Some(centred), Some(normaliser)) => Some(SumLevels::new(normaliser, centred)),
+            _ => None,
+        };
         let mut xs = self.row_points(0).map(|(x, _, _)| x);
         let mut block = ColumnBlock::EMPTY;
         block.set_noise(self.texture.noise);
@@ -224,6 +232,7 @@ impl<P: Palette> NoiseDrawing<'_, P> {
                 block: &block,
                 ladder,
                 turbulence,
+                by_sum,
                 layers,
                 columns,
                 rows: [RowPart::default(); MAX_OCTAVES as usize],
@@ -249,6 +258,8 @@ struct BlockColors<'d, 'a, P: Palette> {
     block: &'d ColumnBlock,
     ladder: &'d Ladder,
     turbulence: bool,
+    /// The levels by one product of each sum, where they are taken so.
+    by_sum: Option<SumLevels>,
     /// Each octave's part of the depth, in 3D.
     layers: Option<&'d [RowPart; MAX_OCTAVES as usize]>,
     /// The block's columns' x.
@@ -307,17 +318,13 @@ impl<P: Palette> BlockColors<'_, '_, P> {
         }
         let (colors, columns, normaliser) = (&mut self.colors, self.columns, drawing.normaliser);
         let color = |level: u8| drawing.palette.color(u16::from(level), u16::MAX);
-        // A sum's level by one product where the texture is its sum's value alone and the
-        // normaliser is below 1; otherwise through the texture's checked steps.
-        let below_one = u32::try_from(normaliser.to_bits()).ok();
-        match (texture.texture.sum_centring(), below_one) {
-            (Some(centred), Some(normaliser)) => {
-                let by_sum = SumLevels::new(normaliser, centred);
+        match self.by_sum {
+            Some(by_sum) => {
                 for (slot, sum) in colors.iter_mut().zip(sums.iter()) {
                     *slot = color(by_sum.level(sum));
                 }
             }
-            _ => {
+            None => {
                 for ((slot, sum), &x) in colors.iter_mut().zip(sums.iter()).zip(columns) {
                     let value = texture
                         .texture

@@ -79,7 +79,9 @@ impl SumLevels {
     pub(super) fn new(normaliser: u32, centred: bool) -> Self {
         // 255·n·2²² (or half of it), rounded, doubled: below 255·2²³ < 2³².
         let shift = if centred { 11 } else { 10 };
-        let half = (u64::from(normaliser) * u64::from(LEVELS - 1) + (1 << (shift - 1))) >> shift;
+        // A 32 × 32-bit product: no 64-bit multiply (a library call on ARMv6-M) a row.
+        let times_last = mul_u32_wide(normaliser, u32::from(LEVELS - 1));
+        let half = (times_last + (1 << (shift - 1))) >> shift;
         let slope = (half as u32) << 1;
         // 128, or ½.
         let offset: i32 = if centred {
