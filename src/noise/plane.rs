@@ -286,8 +286,9 @@ fn add_octave<const ABSOLUTE: bool>(
 }
 
 /// Whether a block sums coarse octaves of eighths in halves ([`add_eighths_in_halves`]):
-/// where there is no long multiply (ARMv6-M), on which a 64-bit term and its 64-bit sum
-/// take about three times the instructions of two 32-bit ones.
+/// where there is no long multiply (ARMv6-M), since there a 64-bit term and its 64-bit
+/// sum cost several 32-bit ones (measured in docs/performance.md, The textures against
+/// the loops a user writes).
 const EIGHTHS_IN_HALVES: bool = cfg!(tinyfractal_no_long_multiply);
 
 /// Adds an octave of weight m/8 (of |sample| where `ABSOLUTE`) to the coarse `totals` in
