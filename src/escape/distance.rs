@@ -6,7 +6,8 @@
 //! product) for `Deep` and `Wide`, one copy of the code each, with the derivative dz
 //! (dz ← 2·z·dz + 1 for the Mandelbrot set, from
 //! dz₁ = 1; dz ← 2·z·dz for a Julia set, from dz₀ = 1) carried beside it as a mantissa pair
-//! and a shared exponent, since it grows as fast as the orbit runs. A perturbed pixel
+//! and a shared exponent, since it grows as fast as the orbit runs (`derivative`'s
+//! `LooseDerivative`, renormalised only when it leaves a window). A perturbed pixel
 //! carries its derivative beside its differences instead (`perturbation`), from the
 //! series' own derivative at the skip, each step from the full point Zₘ + δ in a mantissa
 //! and exponent of its own: at a deep zoom z passes far closer to 0 than any fixed point
@@ -14,9 +15,9 @@
 //! holds, and d is compared through the log table: no floats.
 
 use super::arithmetic::{Arithmetic, HighWords};
+use super::derivative::LooseDerivative;
 use super::estimate::Estimate;
 use super::kernel::{Kernel, Orbit};
-use super::scaled::Scaled;
 use super::view::Tier;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 use crate::math::wide::{mul_i32_wide, square_i32_wide};
@@ -29,141 +30,6 @@ const STEPS_PAST_ESCAPE: u32 = 32;
 
 /// The escape radius of the estimate, in Q20.
 const RADIUS_Q20: i64 = 256 << 20;
-
-/// A derivative as a mantissa pair in Q30 and a shared exponent: (x + iy)·2^e, the larger
-/// mantissa kept in [2²⁹, 2³¹) while e > −30, so each fits 32 bits and a step's products
-/// are 32×32 → 64 (one instruction on Cortex-M3 and M4).
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Derivative {
-    x: i32,
-    y: i32,
-    e: i32,
-}
-
-impl Derivative {
-    const ONE: Self = Self {
-        x: 1 << 30,
-        y: 0,
-        e: 0,
-    };
-
-    /// dz₀ = 0: the derivative of the Mandelbrot set's z₀ = 0.
-    pub(super) const ZERO: Self = Self { x: 0, y: 0, e: -30 };
-
-    /// 1 in the mantissa's units at exponent `e`: 2^(30 − e), or 0 where it is below the
-    /// mantissa's last bit (past e = 30) or not added (`plus_one` false).
-    #[inline(always)]
-    fn one_at(e: i32, plus_one: bool) -> i64 {
-        if plus_one && (-30..=30).contains(&e) {
-            1 << (30 - e)
-        } else {
-            0
-        }
-    }
-
-    /// dz ← 2·z·dz, plus 1 if `plus_one`, z with `bits` fraction bits and |re|, |im| < 2³⁰
-    /// in them (every product below 2⁶¹).
-    #[inline(always)]
-    fn step(&mut self, (zx, zy): (i32, i32), bits: u32, plus_one: bool) {
-        let one = Self::one_at(self.e, plus_one);
-        self.step_adding(zx, zy, bits, one);
-    }
-
-    /// [`step`](Self::step) with 1 already in the mantissa's units (the exponent's
-    /// [`one_at`](Self::one_at)): the orbits' loops carry it from step to step and make it
-    /// again only when the exponent moves. The four products are in one block, where the
-    /// compiler sees their factors as 32-bit ones (across blocks it multiplies them
-    /// 64 × 64).
-    #[inline(always)]
-    fn step_adding(&mut self, zx: i32, zy: i32, bits: u32, one: i64) {
-        let shift = bits - 1;
-        let x = (mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> shift;
-        let y = (mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> shift;
-        self.normalise(x + one, y);
-    }
-
-    /// dz ← 2·z·dz (+ 1 for the Mandelbrot set) in the orbits' loops, z in Q28, with 1 in
-    /// the mantissa's units carried in `one`.
-    #[inline(always)]
-    fn step_carrying(&mut self, (zx, zy): (i32, i32), one: &mut i64, plus_one: bool) {
-        let e = self.e;
-        self.step_adding(zx, zy, 28, *one);
-        if self.e != e {
-            *one = Self::one_at(self.e, plus_one);
-        }
-    }
-
-    /// dz ← 2·z·dz + 1, z = (x + iy)·2^−`s` with mantissas below 2⁶² (a perturbed pixel's
-    /// point, of any size): its top 31 bits are taken, so the product keeps as many bits
-    /// as [`step`](Self::step)'s.
-    pub(super) fn step_scaled(&mut self, z: Scaled) {
-        let (zx, zy) = ((z.x >> 31) as i32, (z.y >> 31) as i32);
-        // z = (zx + i·zy)·2^(31 − s) and dz = (x + iy)·2^(e − 30): 2·z·dz is the
-        // product p·2^(2 − s + e); taken down 30 bits, a mantissa in Q30 at exponent
-        // e + 62 − s.
-        let mut x = (mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> 30;
-        let mut y = (mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> 30;
-        let mut e = i64::from(self.e) + 62 - i64::from(z.s);
-        if e < -30 {
-            // Far below 1: kept at 1's exponent, where 1 has the mantissa's top bits.
-            let down = (-30 - e).min(63);
-            (x, y) = (x >> down, y >> down);
-            e = -30;
-        }
-        self.e = e.min(i64::from(i32::MAX / 2)) as i32;
-        if self.e <= 30 {
-            x += 1 << (30 - self.e);
-        }
-        self.normalise(x, y);
-    }
-
-    /// The derivative (x + iy)·2^−`s` (mantissas below 2⁶², as [`Scaled`] keeps them).
-    pub(super) fn of_scaled(value: Scaled) -> Self {
-        let mut dz = Self {
-            x: 0,
-            y: 0,
-            e: 62 - value.s,
-        };
-        dz.normalise(value.x >> 32, value.y >> 32);
-        dz
-    }
-
-    /// The mantissas `x`, `y` (at the current exponent) brought back to [2²⁹, 2³¹).
-    #[inline(always)]
-    fn normalise(&mut self, x: i64, y: i64) {
-        // Most steps leave both in 32 bits with the larger in [2²⁹, 2³¹): nothing to do.
-        let (x32, y32) = (x as i32, y as i32);
-        let larger = x32.unsigned_abs() | y32.unsigned_abs();
-        if i64::from(x32) == x
-            && i64::from(y32) == y
-            && larger.wrapping_sub(1 << 29) < (1 << 31) - (1 << 29)
-        {
-            (self.x, self.y) = (x32, y32);
-            return;
-        }
-        let top = 63 - (x.unsigned_abs() | y.unsigned_abs() | 1).leading_zeros() as i32;
-        let (x, y) = if top > 30 {
-            let down = top - 30;
-            self.e += down;
-            (x >> down, y >> down)
-        } else if top < 29 && self.e > -30 {
-            let up = (29 - top).min(self.e + 30);
-            self.e -= up;
-            (x << up, y << up)
-        } else {
-            (x, y)
-        };
-        // Below 2³¹ in magnitude either way.
-        (self.x, self.y) = (x as i32, y as i32);
-    }
-
-    /// log₂|dz| in Q16.
-    fn log2_magnitude(&self) -> Option<i64> {
-        let square = (mul_i32_wide(self.x, self.x) + mul_i32_wide(self.y, self.y)).unsigned_abs();
-        let log = i64::from(log2(square, 60)?);
-        Some(log / 2 + (i64::from(self.e) << LOG2_FRAC_BITS))
-    }
-}
 
 impl Kernel {
     /// The estimated distance of the orbit from `first` (z₁ = c for the Mandelbrot set,
@@ -178,15 +44,14 @@ impl Kernel {
         let start = (u32::from(mandelbrot), self.max);
         // z in Q60 (`WIDE`: products' high words) or Q28 (32-bit values, 64-bit products).
         let (escaped, k) = if WIDE {
-            q60_orbit(first, c, start, Derivative::ONE, mandelbrot)
+            q60_orbit(first, c, start, LooseDerivative::one(mandelbrot))
         } else {
             let q28 = |v: i64| (v >> 32) as i32;
             let (escaped, k) = q28_orbit(
                 (q28(first.0), q28(first.1)),
                 (q28(c.0), q28(c.1)),
                 start,
-                Derivative::ONE,
-                mandelbrot,
+                LooseDerivative::one(mandelbrot),
             );
             let q60 = |v: i32| i64::from(v) << 32;
             (escaped.map(|((x, y), dz)| ((q60(x), q60(y)), dz)), k)
@@ -194,8 +59,7 @@ impl Kernel {
         let Some((z, dz)) = escaped else {
             return (None, k);
         };
-        let (estimate, steps) =
-            log2_pixels_past_escape((z, k), c, dz, mandelbrot, self.spacing_log2);
+        let (estimate, steps) = log2_pixels_past_escape((z, k), c, dz, self.spacing_log2);
         (estimate, k + steps)
     }
 
@@ -228,7 +92,7 @@ impl Kernel {
 
 /// An orbit's point where it escaped and its derivative there (`None` at the cap), and
 /// the steps counted.
-type Escaped<T> = (Option<((T, T), Derivative)>, u32);
+type Escaped<T> = (Option<((T, T), LooseDerivative)>, u32);
 
 /// The orbit from `z` (Q60, products' high words) with the derivative `d` carried
 /// beside it, counting steps from `k` up to `max`: the point where it escapes and its
@@ -242,10 +106,8 @@ fn q60_orbit(
     mut z: (i64, i64),
     c: (i64, i64),
     (mut k, max): (u32, u32),
-    mut d: Derivative,
-    mandelbrot: bool,
+    mut d: LooseDerivative,
 ) -> Escaped<i64> {
-    let mut one = Derivative::one_at(d.e, mandelbrot);
     loop {
         let (x2, y2) = (HighWords::square(z.0), HighWords::square(z.1));
         let xy = HighWords::twice_xy(z.0, z.1, x2, y2);
@@ -256,7 +118,7 @@ fn q60_orbit(
             return (None, k);
         }
         let high = |v: i64| (v >> 32) as i32;
-        d.step_carrying((high(z.0), high(z.1)), &mut one, mandelbrot);
+        d.step_q28(high(z.0), high(z.1));
         z = (HighWords::to_value(x2 - y2) + c.0, xy + c.1);
         k += 1;
     }
@@ -270,10 +132,8 @@ fn q28_orbit(
     (mut x, mut y): (i32, i32),
     (cr, ci): (i32, i32),
     (mut k, max): (u32, u32),
-    mut d: Derivative,
-    mandelbrot: bool,
+    mut d: LooseDerivative,
 ) -> Escaped<i32> {
-    let mut one = Derivative::one_at(d.e, mandelbrot);
     loop {
         let (x2, y2) = (square_i32_wide(x) >> 28, square_i32_wide(y) >> 28);
         if x2 + y2 > 4 << 28 {
@@ -282,7 +142,7 @@ fn q28_orbit(
         if k >= max {
             return (None, k);
         }
-        d.step_carrying((x, y), &mut one, mandelbrot);
+        d.step_q28(x, y);
         // |z| ≤ 2 and |c| < 3.5: both parts stay below 8 (2³¹ in Q28).
         let xy = (mul_i32_wide(x, y) >> 27) as i32;
         (x, y) = ((x2 - y2) as i32 + cr, xy + ci);
@@ -327,26 +187,37 @@ pub(super) struct Distance {
 pub(super) fn log2_pixels_past_escape(
     ((x, y), n): ((i64, i64), u32),
     c: (i64, i64),
-    mut dz: Derivative,
-    plus_one: bool,
+    mut dz: LooseDerivative,
     spacing_log2: i32,
 ) -> (Option<Distance>, u32) {
     let q20 = |v: i64| v >> 40;
     let (cr, ci) = (q20(c.0), q20(c.1));
-    let (mut x, mut y) = (q20(x), q20(y));
-    let mut steps = 0;
-    while steps < STEPS_PAST_ESCAPE && x.abs() < RADIUS_Q20 && y.abs() < RADIUS_Q20 {
-        // Below 2²⁸ here: 32-bit factors, the squares from the magnitudes.
-        let (xs, ys) = (x as i32, y as i32);
-        let (x2, y2) = (square_i32_wide(xs), square_i32_wide(ys));
-        if x2 + y2 >= RADIUS_Q20 * RADIUS_Q20 {
-            break;
+    let (x, y) = (q20(x), q20(y));
+    // Parts within 2²⁸ (|v| < 256 in Q20) are stepped as 32-bit values, the next point
+    // in 64 bits; the first with a part beyond it, or |z| ≥ 256, ends the walk.
+    let narrow = |v: i64| (v + RADIUS_Q20 - 1) as u64 <= 2 * RADIUS_Q20 as u64 - 2;
+    let mut walk = || {
+        if !(narrow(x) && narrow(y)) {
+            return ((x, y), 0);
         }
-        let xy = mul_i32_wide(xs, ys);
-        dz.step((xs, ys), 20, plus_one);
-        (x, y) = (((x2 - y2) >> 20) + cr, (xy >> 19) + ci);
-        steps += 1;
-    }
+        let (mut xs, mut ys) = (x as i32, y as i32);
+        let mut steps = 0;
+        loop {
+            let (x2, y2) = (square_i32_wide(xs), square_i32_wide(ys));
+            if steps >= STEPS_PAST_ESCAPE || x2 + y2 >= RADIUS_Q20 * RADIUS_Q20 {
+                return ((i64::from(xs), i64::from(ys)), steps);
+            }
+            let xy = mul_i32_wide(xs, ys);
+            dz.step_q20(xs, ys);
+            let next = (((x2 - y2) >> 20) + cr, (xy >> 19) + ci);
+            steps += 1;
+            if !(narrow(next.0) && narrow(next.1)) {
+                return (next, steps);
+            }
+            (xs, ys) = (next.0 as i32, next.1 as i32);
+        }
+    };
+    let ((x, y), steps) = walk();
     // |z|² in Q16 from Q8 parts (|z| < 2¹⁷ after the last step).
     let (x, y) = (x >> 12, y >> 12);
     let estimate = (|| {
@@ -393,37 +264,6 @@ fn proven_far(log2_pixels: i64, log2_green: i64) -> u8 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use proptest::prelude::*;
-    use proptest::test_runner::TestRunner;
-
-    /// Normalising keeps the derivative's value, (x + iy)·2^(e − 30), to the mantissas'
-    /// last bit, and leaves the larger mantissa in [2²⁹, 2³¹), or smaller only at the
-    /// lowest exponent, over mantissas of every size from 0 to 2⁴⁰ and exponents from
-    /// the lowest up: the fast path for mantissas already in range, and the shifts.
-    #[test]
-    fn normalising_keeps_the_value_with_the_mantissa_in_range() {
-        let mut runner = TestRunner::deterministic();
-        let mantissa = (-(1i64 << 40)..=1 << 40, 0u32..41).prop_map(|(v, s)| v >> s);
-        runner
-            .run(&(mantissa.clone(), mantissa, -30i32..60), |(x, y, e)| {
-                let mut d = Derivative { x: 0, y: 0, e };
-                d.normalise(x, y);
-                let larger = d.x.unsigned_abs().max(d.y.unsigned_abs());
-                prop_assert!(larger < 1 << 31);
-                prop_assert!(larger >= 1 << 29 || d.e == -30 || (x, y) == (0, 0));
-                // The value at the new exponent: the old one shifted, floored.
-                let at = |v: i64| {
-                    let moved = i128::from(v) << 64 >> (64 + d.e - e);
-                    i64::try_from(moved).unwrap()
-                };
-                prop_assert!(d.e >= e || (at(x), at(y)) == (i64::from(d.x), i64::from(d.y)));
-                prop_assert!(
-                    d.e < e || (x >> (d.e - e), y >> (d.e - e)) == (i64::from(d.x), i64::from(d.y))
-                );
-                Ok(())
-            })
-            .unwrap();
-    }
 
     /// The distance proven is below the lower bound Koebe's theorem gives, d·(1 −
     /// e^(−2G))/(4G), in f64, over G from 2⁻²⁰ to 1.9 and estimates from 2⁻⁴ to 2⁴⁰
@@ -457,35 +297,5 @@ mod tests {
         }
         assert!(checked > 20_000);
         assert_eq!(proven_far(q16(30.0), q16(1.95f64.log2())), 0);
-    }
-
-    /// The loops' step, with 1 carried from step to step, is the plain step with 1 made
-    /// from the exponent each time, for the Mandelbrot set and Julia sets, over orbits
-    /// of random points within radius 2 (Q28) from derivatives of every exponent.
-    #[test]
-    fn carrying_one_steps_as_making_it_each_time() {
-        let mut runner = TestRunner::deterministic();
-        let two = 2i32 << 28;
-        let point = (-two..=two, -two..=two);
-        let points = proptest::collection::vec(point, 1..40);
-        runner
-            .run(
-                &(points, -30i32..40, any::<bool>(), 1i32 << 29..1 << 30),
-                |(points, e, mandelbrot, x)| {
-                    let mut plain = Derivative { x, y: -x / 3, e };
-                    let mut carried = plain;
-                    let mut one = Derivative::one_at(carried.e, mandelbrot);
-                    for z in points {
-                        plain.step(z, 28, mandelbrot);
-                        carried.step_carrying(z, &mut one, mandelbrot);
-                        prop_assert_eq!(
-                            (plain.x, plain.y, plain.e),
-                            (carried.x, carried.y, carried.e)
-                        );
-                    }
-                    Ok(())
-                },
-            )
-            .unwrap();
     }
 }

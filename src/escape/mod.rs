@@ -31,6 +31,7 @@
 
 pub(crate) mod arithmetic;
 pub(crate) mod autopilot;
+pub(crate) mod derivative;
 pub(crate) mod distance;
 pub(crate) mod drawing;
 pub(crate) mod emit;

@@ -28,7 +28,8 @@
 //! so its interior pixels run to the cap. A pixel that never rebases is never tested. The
 //! cardioid and bulb test is made at the reference's precision.
 
-use super::distance::{estimated, log2_pixels_past_escape, Derivative};
+use super::derivative::{Derivative, LooseDerivative};
+use super::distance::{estimated, log2_pixels_past_escape};
 use super::estimate::Estimate;
 use super::kernel::MAX_FAST_TOLERANCE;
 use super::kernel::{Kernel, Orbit, Periodicity};
@@ -427,8 +428,7 @@ impl<'r> Perturbation<'r> {
         let (distance, steps) = log2_pixels_past_escape(
             (q60(z), orbit.iterations),
             q60(point),
-            dz,
-            true,
+            LooseDerivative::of(dz, true),
             self.spacing_log2,
         );
         estimated(estimate, orbit, distance, steps, self.inside)
