@@ -221,7 +221,7 @@ pub(super) fn log2_pixels_past_escape(
     // |z|² in Q16 from Q8 parts (|z| < 2¹⁷ after the last step).
     let (x, y) = (x >> 12, y >> 12);
     let estimate = (|| {
-        let log_square = i64::from(log2((x * x + y * y).unsigned_abs(), 16)?);
+        let log_square = i64::from(log2(square_of_modulus(x, y), 16)?);
         let log_log = i64::from(log2(u64::try_from(log_square).ok()?, LOG2_FRAC_BITS)?);
         let log_ln = log_log + LOG2_HALF_LN2;
         let log2_pixels = log_square / 2 + log_ln - dz.log2_magnitude()? - i64::from(spacing_log2);
@@ -233,6 +233,22 @@ pub(super) fn log2_pixels_past_escape(
         })
     })();
     (estimate, steps)
+}
+
+/// |z|² = x² + y² of parts below 2²⁵ (|z| < 2¹⁷ in Q8): 64-bit products where there is a
+/// long multiply, 32-bit factors' products from 16-bit halves elsewhere (ARMv6-M, where a
+/// 64-bit product is a library call).
+#[inline(always)]
+fn square_of_modulus(x: i64, y: i64) -> u64 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        // Both parts fit 32 bits: the casts keep them.
+        (mul_i32_wide(x as i32, x as i32) + mul_i32_wide(y as i32, y as i32)).unsigned_abs()
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        (x * x + y * y).unsigned_abs()
+    }
 }
 
 /// How far the set is proven to be from a point whose estimate is 2^`log2_pixels` pixels

@@ -42,17 +42,53 @@ pub(crate) fn log2(value: u64, frac_bits: u32) -> Option<i32> {
         .get(k + 1)
         .copied()
         .unwrap_or(1 << LOG2_FRAC_BITS);
-    // (high − low)·between is below 2¹¹·2²⁶.
-    let step = (u64::from(high - low) * u64::from(between) + (1 << 25)) >> 26;
-    let mantissa = (low + step as u32) as i32;
+    let mantissa = (low + line_step(high - low, between)) as i32;
     // Within ±63·2¹⁶ + 2¹⁶: no overflow.
     let whole = top as i32 - frac_bits.min(63) as i32;
     Some((whole << LOG2_FRAC_BITS) + mantissa)
 }
 
+/// ⌊(`rise`·`between` + 2²⁵) / 2²⁶⌋: the line between two entries `rise` apart (below 2¹¹)
+/// at `between` (below 2²⁶) of the way, rounded.
+#[inline(always)]
+fn line_step(rise: u32, between: u32) -> u32 {
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        line_step_in_words(rise, between)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        ((u64::from(rise) * u64::from(between) + (1 << 25)) >> 26) as u32
+    }
+}
+
+/// [`line_step`] in 32-bit products, for cores without a long multiply (where the 64-bit
+/// product is a library call): `between`'s 13-bit halves times `rise` are each below
+/// 2²⁴, and the floor of the sum of the high half's product and the low half's, taken
+/// down 13 bits first, is the same.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+fn line_step_in_words(rise: u32, between: u32) -> u32 {
+    let (high, low) = (between >> 13, between & 0x1FFF);
+    (rise * high + ((rise * low + (1 << 25)) >> 13)) >> 13
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The line's step from 13-bit halves is the 64-bit one for every rise below 2¹¹ and
+    /// betweens at their ends and spread over 2²⁶.
+    #[test]
+    fn line_steps_in_words_are_the_wide_ones() {
+        for rise in 0..1u32 << 11 {
+            for k in 0..=64u32 {
+                let between = (k * 1_048_573).min((1 << 26) - 1) ^ (rise & 0x7F);
+                let wide = ((u64::from(rise) * u64::from(between) + (1 << 25)) >> 26) as u32;
+                assert_eq!(line_step_in_words(rise, between), wide, "{rise} {between}");
+            }
+        }
+    }
 
     #[test]
     fn table_and_lines_follow_the_logarithm() {
