@@ -22,8 +22,8 @@ impl Derivative {
     pub(super) const ZERO: Self = Self { x: 0, y: 0, e: -30 };
 
     /// dz ← 2·z·dz + 1, z = (x + iy)·2^−`s` with mantissas below 2⁶² (a perturbed pixel's
-    /// point, of any size): its top 31 bits are taken, so the product keeps as many bits
-    /// as [`step`](Self::step)'s.
+    /// point, of any size): its top 31 bits are taken, so that each product is of two
+    /// 32-bit factors.
     pub(super) fn step_scaled(&mut self, z: Scaled) {
         let (zx, zy) = ((z.x >> 31) as i32, (z.y >> 31) as i32);
         // z = (zx + i·zy)·2^(31 − s) and dz = (x + iy)·2^(e − 30): 2·z·dz is the
