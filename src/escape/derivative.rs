@@ -110,8 +110,10 @@ pub(super) struct LooseDerivative {
 }
 
 /// The smallest larger mantissa a [`LooseDerivative`] steps on with: 2²² keeps each step's
-/// rounding below 2⁻²² of the derivative (a thousand steps within 0.03 %), and a window
-/// of 7 bits is renormalised every few steps (a step of |z| near 1 halves the mantissas).
+/// rounding below 2⁻²² of the derivative, so that even long orbits stay well inside the
+/// margin Koebe's bounds leave the proofs, and a window of 7 bits is renormalised every
+/// few steps (a step of |z| near 1 halves the mantissas; what that costs:
+/// docs/performance.md, Fractint's modes and distance estimation).
 pub(super) const LOOSE_LOW: u32 = 1 << 22;
 
 /// The largest larger mantissa of a [`LooseDerivative`]: 2²⁹.
