@@ -31,6 +31,9 @@ const STEPS_PAST_ESCAPE: u32 = 32;
 /// The escape radius of the estimate, in Q20.
 const RADIUS_Q20: i64 = 256 << 20;
 
+/// Below this |z| (Q20) the next point of the walk past the escape is stepped in 32 bits.
+const NARROW_NEXT_Q20: i64 = 32 << 20;
+
 impl Kernel {
     /// The estimated distance of the orbit from `first` (z₁ = c for the Mandelbrot set,
     /// the pixel z₀ for a Julia set; Q60), d ≈ |z|·ln|z| / |dz| over the pixel spacing;
@@ -193,31 +196,7 @@ pub(super) fn log2_pixels_past_escape(
     let q20 = |v: i64| v >> 40;
     let (cr, ci) = (q20(c.0), q20(c.1));
     let (x, y) = (q20(x), q20(y));
-    // Parts within 2²⁸ (|v| < 256 in Q20) are stepped as 32-bit values, the next point
-    // in 64 bits; the first with a part beyond it, or |z| ≥ 256, ends the walk.
-    let narrow = |v: i64| (v + RADIUS_Q20 - 1) as u64 <= 2 * RADIUS_Q20 as u64 - 2;
-    let mut walk = || {
-        if !(narrow(x) && narrow(y)) {
-            return ((x, y), 0);
-        }
-        let (mut xs, mut ys) = (x as i32, y as i32);
-        let mut steps = 0;
-        loop {
-            let (x2, y2) = (square_i32_wide(xs), square_i32_wide(ys));
-            if steps >= STEPS_PAST_ESCAPE || x2 + y2 >= RADIUS_Q20 * RADIUS_Q20 {
-                return ((i64::from(xs), i64::from(ys)), steps);
-            }
-            let xy = mul_i32_wide(xs, ys);
-            dz.step_q20(xs, ys);
-            let next = (((x2 - y2) >> 20) + cr, (xy >> 19) + ci);
-            steps += 1;
-            if !(narrow(next.0) && narrow(next.1)) {
-                return (next, steps);
-            }
-            (xs, ys) = (next.0 as i32, next.1 as i32);
-        }
-    };
-    let ((x, y), steps) = walk();
+    let ((x, y), steps) = walk_past_escape((x, y), (cr, ci), &mut dz);
     // |z|² in Q16 from Q8 parts (|z| < 2¹⁷ after the last step).
     let (x, y) = (x >> 12, y >> 12);
     let estimate = (|| {
@@ -233,6 +212,45 @@ pub(super) fn log2_pixels_past_escape(
         })
     })();
     (estimate, steps)
+}
+
+/// The walk past the escape (z and c in Q20): z ← z² + c with dz stepped beside it
+/// ([`LooseDerivative::step_q20`]) until |z| ≥ 256 or a part of z is beyond 256, at most
+/// [`STEPS_PAST_ESCAPE`] steps; the point it ends at and the steps taken. Each step rounds
+/// z² down to Q20, its parts taken apart.
+///
+/// Parts within 2²⁸ are stepped as 32-bit values. While |z| < 32 the next point's parts
+/// are within 2³⁰ + |c| (|c| < 12 in a view), so they stay 32-bit values, and a part past
+/// 2²⁸ ends the walk at the next test; from |z| ≥ 32 the next point is beyond 32² − |c| >
+/// 256, where the walk ends: it is taken in 64 bits and returned at once.
+#[inline(always)]
+fn walk_past_escape(
+    (x, y): (i64, i64),
+    (cr, ci): (i64, i64),
+    dz: &mut LooseDerivative,
+) -> ((i64, i64), u32) {
+    let narrow = |v: i64| (v + RADIUS_Q20 - 1) as u64 <= 2 * RADIUS_Q20 as u64 - 2;
+    if !(narrow(x) && narrow(y)) {
+        return ((x, y), 0);
+    }
+    let (mut xs, mut ys) = (x as i32, y as i32);
+    let (cr, ci) = (cr as i32, ci as i32);
+    let mut steps = 0;
+    loop {
+        let (x2, y2) = (square_i32_wide(xs), square_i32_wide(ys));
+        let modulus = x2 + y2;
+        if steps >= STEPS_PAST_ESCAPE || modulus >= RADIUS_Q20 * RADIUS_Q20 {
+            return ((i64::from(xs), i64::from(ys)), steps);
+        }
+        let xy = mul_i32_wide(xs, ys);
+        dz.step_q20(xs, ys);
+        steps += 1;
+        let (re, im) = ((x2 - y2) >> 20, xy >> 19);
+        if modulus >= NARROW_NEXT_Q20 * NARROW_NEXT_Q20 {
+            return ((re + i64::from(cr), im + i64::from(ci)), steps);
+        }
+        (xs, ys) = (re as i32 + cr, im as i32 + ci);
+    }
 }
 
 /// |z|² = x² + y² of parts below 2²⁵ (|z| < 2¹⁷ in Q8): 64-bit products where there is a
@@ -279,7 +297,85 @@ fn proven_far(log2_pixels: i64, log2_green: i64) -> u8 {
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
+
     use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::{TestRng, TestRunner};
+    use std::vec;
+
+    /// The walk past the escape ends where its rule says, with the derivative stepped at
+    /// the same points: a model in 128 bits steps z ← z² + c (z² rounded down to Q20, its
+    /// parts apart) while |z| < 256, both parts are within 2²⁸ and fewer than
+    /// [`STEPS_PAST_ESCAPE`] steps are taken; from points of every size (inside 2⁻², near
+    /// 32 and 256 where the walk changes its arithmetic, and beyond 256) and c within the
+    /// Q60 range's ±8 (and near −8, where |z| = 16 steps to below 256).
+    #[test]
+    fn the_walk_past_the_escape_follows_its_rule() {
+        let model = |(x, y): (i64, i64), (cr, ci): (i64, i64), dz: &mut LooseDerivative| {
+            let narrow = |v: i128| v.unsigned_abs() < 1 << 28;
+            let mut steps = 0;
+            let (mut x, mut y) = (i128::from(x), i128::from(y));
+            while steps < STEPS_PAST_ESCAPE && x * x + y * y < 1 << 56 && narrow(x) && narrow(y) {
+                dz.step_q20(x as i32, y as i32);
+                (x, y) = (
+                    ((x * x - y * y) >> 20) + i128::from(cr),
+                    ((2 * x * y) >> 20) + i128::from(ci),
+                );
+                steps += 1;
+            }
+            (
+                (i64::try_from(x).unwrap(), i64::try_from(y).unwrap()),
+                steps,
+            )
+        };
+        let part = prop_oneof![
+            -(1i64 << 29)..1 << 29,
+            (-(1i64 << 26)..1 << 26),
+            (-(32i64 << 20) - 4096..-(32 << 20) + 4096),
+            ((32i64 << 20) - 4096..(32 << 20) + 4096),
+            ((22i64 << 20)..(23 << 20)),
+            ((16i64 << 20) - 4096..(16 << 20) + 4096),
+            (-(1i64 << 20)..1 << 20),
+            (-(1i64 << 21)..1 << 21),
+            (-(1i64 << 21)..1 << 21),
+            Just((1i64 << 28) - 1),
+            Just(-(1i64 << 28) + 1),
+        ];
+        let c = prop_oneof![
+            -(8i64 << 20)..8 << 20,
+            -(1i64 << 20)..1 << 20,
+            -(8i64 << 20)..-(7 << 20),
+        ];
+        let config = ProptestConfig {
+            cases: 4096,
+            ..ProptestConfig::default()
+        };
+        let rng = TestRng::deterministic_rng(config.rng_algorithm);
+        let mut runner = TestRunner::new_with_rng(config, rng);
+        let ends = core::cell::Cell::new([0u32; 3]);
+        runner
+            .run(
+                &((part.clone(), part), (c.clone(), c), any::<bool>()),
+                |(z, c, mandelbrot)| {
+                    let (mut walked, mut modelled) = (
+                        LooseDerivative::one(mandelbrot),
+                        LooseDerivative::one(mandelbrot),
+                    );
+                    let end = walk_past_escape(z, c, &mut walked);
+                    prop_assert_eq!(end, model(z, c, &mut modelled));
+                    prop_assert_eq!(walked, modelled);
+                    let mut seen = ends.get();
+                    seen[usize::from(end.1 > 0) + usize::from(end.1 > 2)] += 1;
+                    ends.set(seen);
+                    Ok(())
+                },
+            )
+            .unwrap();
+        // Walks of none, few and several steps were all seen.
+        let ends = ends.get();
+        assert!(ends.iter().all(|&n| n > 10), "{ends:?}");
+    }
 
     /// The distance proven is below the lower bound Koebe's theorem gives, d·(1 −
     /// e^(−2G))/(4G), in f64, over G from 2⁻²⁰ to 1.9 and estimates from 2⁻⁴ to 2⁴⁰
