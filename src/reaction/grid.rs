@@ -399,8 +399,8 @@ fn update_row_with<const UNIT_DT: bool>(
 }
 
 /// [`update_row_with`] in two passes over the row, one for each chemical, so that a
-/// cell's loop holds half as many values: the row's old values are copied to `kept`
-/// first, and each pass reads only old values. The same cells and carries, since the two
+/// cell's loop holds half as many values: A's pass keeps the row's old values in `kept`
+/// as it goes, and B's pass reads only old values. The same cells and carries, since the two
 /// chemicals' remainders are carried apart anyway.
 #[cfg_attr(tinyfractal_few_registers, allow(dead_code))]
 #[inline(never)]
@@ -420,10 +420,55 @@ fn update_row_by_chemical<const UNIT_DT: bool>(
     ) else {
         return;
     };
-    kept.copy_from_slice(row);
     let c = *coefficients;
-    carry.a = chemical_pass::<UNIT_DT, false>([above, kept, below], row, &c, carry.a);
+    carry.a = keeping_pass_a::<UNIT_DT>([above, below], row, kept, &c, carry.a);
     carry.b = chemical_pass::<UNIT_DT, true>([above, kept, below], row, &c, carry.b);
+}
+
+/// A's pass of [`update_row_by_chemical`], which also keeps the row's old values in
+/// `kept` as it reads them (a copy of the row first cost more on Cortex-M4); returns the
+/// carry.
+///
+/// A cell's A is written once its right neighbour's old value has been read, and the
+/// first column, the last cell's right neighbour, is taken first.
+#[inline(always)]
+fn keeping_pass_a<const UNIT_DT: bool>(
+    [above, below]: [&[Cell]; 2],
+    row: &mut [Cell],
+    kept: &mut [Cell],
+    c: &Coefficients,
+    mut carry: i32,
+) -> i32 {
+    let a = |cell: &Cell| i32::from(cell.a);
+    let old = |cell: Cell| (i32::from(cell.a), i32::from(cell.b));
+    let (Some(&old_first), Some(&old_last)) = (row.first(), row.last()) else {
+        return carry;
+    };
+    let column_at = |x: usize, middle: Cell| {
+        let cell = |row: &[Cell]| row.get(x).map_or(0, a);
+        cell(above) + 4 * a(&middle) + cell(below)
+    };
+    let first = column_at(0, old_first);
+    let mut left = column_at(row.len().wrapping_sub(1), old_last);
+    let mut here = first;
+    let mut centre = old_first;
+    let mut cells = row.iter_mut();
+    let (Some(mut previous), Some(kept_first)) = (cells.next(), kept.first_mut()) else {
+        return carry;
+    };
+    *kept_first = old_first;
+    let columns = above.iter().zip(below).zip(kept).skip(1);
+    for (cell, ((up, down), keep)) in cells.zip(columns) {
+        let middle = *cell;
+        *keep = middle;
+        let right = a(up) + 4 * a(&middle) + a(down);
+        previous.a = next_chemical::<UNIT_DT, false>(left, here, right, old(centre), c, &mut carry);
+        (left, here, centre) = (here, right, middle);
+        previous = cell;
+    }
+    // The last cell's right neighbour is the first column.
+    previous.a = next_chemical::<UNIT_DT, false>(left, here, first, old(centre), c, &mut carry);
+    carry
 }
 
 /// One chemical's pass of [`update_row_by_chemical`] (B's where `B`): each cell's value
