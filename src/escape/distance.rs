@@ -20,7 +20,7 @@ use super::estimate::Estimate;
 use super::kernel::{Kernel, Orbit};
 use super::view::Tier;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
-use crate::math::wide::{mul_i32_wide, square_i32_wide};
+use crate::math::wide::{mul_i32_wide, mul_u32_wide, square_i32_wide};
 
 /// log₂(ln 2 / 2) in Q16: ln|z| = log₂|z|² · ln 2 / 2.
 const LOG2_HALF_LN2: i64 = -100_189;
@@ -128,8 +128,10 @@ fn q60_orbit(
 }
 
 /// The orbit from `z` (Q28, 32×32 → 64-bit products) with the derivative `d` carried
-/// beside it, as [`q60_orbit`]. The squares are taken from the magnitudes
-/// ([`square_i32_wide`]), so that the next turn's products keep their 32-bit factors.
+/// beside it, as [`q60_orbit`]: it escapes where x² + y² > 4, each square rounded down to
+/// Q28. The squares are taken from the magnitudes, so that the next turn's products keep
+/// their 32-bit factors, and in 32 bits: a part beyond 2 (2²⁹) escapes by its square alone
+/// (at least 4 + 2⁻²⁶), and below it each square is at most 4.
 #[inline(always)]
 fn q28_orbit(
     (mut x, mut y): (i32, i32),
@@ -138,7 +140,12 @@ fn q28_orbit(
     mut d: LooseDerivative,
 ) -> Escaped<i32> {
     loop {
-        let (x2, y2) = (square_i32_wide(x) >> 28, square_i32_wide(y) >> 28);
+        let (ax, ay) = (x.unsigned_abs(), y.unsigned_abs());
+        if ax.max(ay) > 2 << 28 {
+            return (Some(((x, y), d)), k);
+        }
+        let square = |v: u32| (mul_u32_wide(v, v) >> 28) as u32;
+        let (x2, y2) = (square(ax), square(ay));
         if x2 + y2 > 4 << 28 {
             return (Some(((x, y), d)), k);
         }
@@ -148,7 +155,7 @@ fn q28_orbit(
         d.step_q28(x, y);
         // |z| ≤ 2 and |c| < 3.5: both parts stay below 8 (2³¹ in Q28).
         let xy = (mul_i32_wide(x, y) >> 27) as i32;
-        (x, y) = ((x2 - y2) as i32 + cr, xy + ci);
+        (x, y) = (x2 as i32 - y2 as i32 + cr, xy + ci);
         k += 1;
     }
 }
@@ -303,6 +310,73 @@ mod tests {
     use proptest::prelude::*;
     use proptest::test_runner::{TestRng, TestRunner};
     use std::vec;
+
+    /// The Q28 orbit escapes, stops at the cap and steps its derivative as its rule says:
+    /// a model in 128 bits escapes where x² + y² > 4, each square rounded down to Q28, and
+    /// steps z ← z² + c (2xy rounded down too); from points anywhere in 32 bits, near
+    /// parts of 2 (where one square is 4 and the sum reaches 2³¹), just beyond 2 and near
+    /// 0, c within ±3.5. It fails with the 32-bit squares taken from parts up to 2 − 2⁻²⁸
+    /// or 3.
+    #[test]
+    fn the_q28_orbit_follows_its_rule() {
+        type End = (Option<((i32, i32), LooseDerivative)>, u32);
+        let model = |(x, y): (i32, i32),
+                     (cr, ci): (i32, i32),
+                     (k, max): (u32, u32),
+                     mut d: LooseDerivative|
+         -> End {
+            let (mut x, mut y, mut k) = (i128::from(x), i128::from(y), k);
+            loop {
+                let (x2, y2) = ((x * x) >> 28, (y * y) >> 28);
+                let z = (i32::try_from(x).unwrap(), i32::try_from(y).unwrap());
+                if x2 + y2 > 1 << 30 {
+                    return (Some((z, d)), k);
+                }
+                if k >= max {
+                    return (None, k);
+                }
+                d.step_q28(z.0, z.1);
+                (x, y) = (x2 - y2 + i128::from(cr), ((x * y) >> 27) + i128::from(ci));
+                k += 1;
+            }
+        };
+        let two = 1i32 << 29;
+        let part = prop_oneof![
+            any::<i32>(),
+            two - 4..two + 4,
+            -two - 4..-two + 4,
+            -(1i32 << 28)..1 << 28,
+            -(1i32 << 14)..1 << 14,
+            two..two + (1 << 28),
+            Just(two),
+            Just(-two),
+        ];
+        let c = -(7i32 << 27)..7 << 27;
+        let mut runner = TestRunner::deterministic();
+        runner
+            .run(
+                &(
+                    (part.clone(), part),
+                    (c.clone(), c),
+                    0u32..2,
+                    0u32..40,
+                    any::<bool>(),
+                ),
+                |(z, c, k, max, mandelbrot)| {
+                    let d = LooseDerivative::one(mandelbrot);
+                    prop_assert_eq!(q28_orbit(z, c, (k, max), d), model(z, c, (k, max), d));
+                    Ok(())
+                },
+            )
+            .unwrap();
+        // Both parts at 2: the squares' sum is 2³¹, and the point escapes.
+        let d = LooseDerivative::one(true);
+        assert_eq!(q28_orbit((two, two), (0, 0), (1, 8), d).1, 1);
+        assert!(q28_orbit((two, two), (0, 0), (1, 8), d).0.is_some());
+        // Both parts at 1.45 · 2: their squares alone would pass 2³².
+        let beyond = two + two / 100 * 45;
+        assert_eq!(q28_orbit((beyond, beyond), (0, 0), (1, 8), d).1, 1);
+    }
 
     /// The walk past the escape ends where its rule says, with the derivative stepped at
     /// the same points: a model in 128 bits steps z ← z² + c (z² rounded down to Q20, its
