@@ -5,7 +5,7 @@
 
 use super::scaled::Scaled;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
-use crate::math::wide::mul_i32_wide;
+use crate::math::wide::{complex_mul_down, mul_i32_wide};
 
 /// A derivative as a mantissa pair in Q30 and a shared exponent: (x + iy)·2^e, the larger
 /// mantissa kept in [2²⁹, 2³¹) while e > −30, so each fits 32 bits and a step's products
@@ -184,8 +184,7 @@ impl LooseDerivative {
     #[inline(always)]
     pub(super) fn step_q28(&mut self, zx: i32, zy: i32) {
         // 2·z·dz = (zq·m / 2²⁹)·2^(e + 2 − 28) for zq = z·2²⁸.
-        let x = ((mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> 29) as i32;
-        let y = ((mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> 29) as i32;
+        let (x, y) = complex_mul_down::<29>((zx, zy), (self.x, self.y));
         self.e += 2;
         self.one >>= 2;
         self.settle(x + self.one, y);
@@ -204,8 +203,7 @@ impl LooseDerivative {
         let up = zeros - 3;
         let (zx, zy) = (zx << up, zy << up);
         // 2·z·dz = (zs·m / 2³⁰)·2^(e + 14 − zeros − 28) for zs = z·2^(20 + up).
-        let x = ((mul_i32_wide(zx, self.x) - mul_i32_wide(zy, self.y)) >> 30) as i32;
-        let y = ((mul_i32_wide(zx, self.y) + mul_i32_wide(zy, self.x)) >> 30) as i32;
+        let (x, y) = complex_mul_down::<30>((zx, zy), (self.x, self.y));
         let moved = 14 - zeros;
         self.e += moved as i32;
         self.one >>= moved;

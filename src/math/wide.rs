@@ -406,6 +406,75 @@ pub(crate) fn mul_i32_halves(a: i32, b: i32) -> i64 {
     }
 }
 
+/// The complex product z·m taken down `SHIFT` bits (16 to 32), each part rounded down:
+/// (⌊(z₀m₀ − z₁m₁) / 2^SHIFT⌋, ⌊(z₀m₁ + z₁m₀) / 2^SHIFT⌋), for parts within
+/// [`COMPLEX_PART`] and results within 32 bits. Where there is a long multiply, four
+/// 64-bit products; elsewhere (ARMv6-M, where each would be a signed product from halves)
+/// [`complex_mul_down_halves`].
+#[inline(always)]
+pub(crate) fn complex_mul_down<const SHIFT: u32>(z: (i32, i32), m: (i32, i32)) -> (i32, i32) {
+    debug_assert!(
+        [z.0, z.1, m.0, m.1]
+            .iter()
+            .all(|v| v.unsigned_abs() <= COMPLEX_PART as u32),
+        "a part beyond 2²⁹ + 2¹⁵: {z:?} {m:?}"
+    );
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        complex_mul_down_halves::<SHIFT>(z, m)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        let product = |a: i32, b: i32| i64::from(a) * i64::from(b);
+        (
+            ((product(z.0, m.0) - product(z.1, m.1)) >> SHIFT) as i32,
+            ((product(z.0, m.1) + product(z.1, m.0)) >> SHIFT) as i32,
+        )
+    }
+}
+
+/// The largest part [`complex_mul_down`] takes: 2²⁹ + 2¹⁵.
+pub(crate) const COMPLEX_PART: i32 = (1 << 29) + (1 << 15);
+
+/// [`complex_mul_down`] from 16-bit halves with signed low parts, v = h·2¹⁶ + l with
+/// |l| ≤ 2¹⁵ and |h| ≤ 2¹³ + 1: a sum of products a·b is H·2³² + M·2¹⁶ + L, and its
+/// value taken down `SHIFT` bits is H·2^(32 − SHIFT) + ⌊(M + ⌊L/2¹⁶⌋) / 2^(SHIFT − 16)⌋.
+/// Every part fits 32 bits: the high products' sums within 2²⁷, the middle ones' (four
+/// products below 2²⁸·1.0002) within 2³⁰, and the low ones' within ±2³¹, which a
+/// difference keeps and a sum (up to 2³¹ itself) is taken unsigned, lifted by 2³¹ − 2¹⁶.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn complex_mul_down_halves<const SHIFT: u32>(
+    z: (i32, i32),
+    m: (i32, i32),
+) -> (i32, i32) {
+    let split = |v: i32| {
+        let low = i32::from(v as i16);
+        ((v - low) >> 16, low)
+    };
+    let ((zh0, zl0), (zh1, zl1)) = (split(z.0), split(z.1));
+    let ((mh0, ml0), (mh1, ml1)) = (split(m.0), split(m.1));
+    let down = |high: i32, middle: i32, low_down: i32| {
+        (high << (32 - SHIFT)) + ((middle + low_down) >> (SHIFT - 16))
+    };
+    let real = down(
+        zh0 * mh0 - zh1 * mh1,
+        zh0 * ml0 + zl0 * mh0 - zh1 * ml1 - zl1 * mh1,
+        (zl0 * ml0 - zl1 * ml1) >> 16,
+    );
+    // The low products' sum, from −2³¹ + 2¹⁶ to 2³¹, lifted into u32.
+    const LIFT: u32 = (1 << 31) - (1 << 16);
+    let lifted = ((zl0 * ml1) as u32)
+        .wrapping_add((zl1 * ml0) as u32)
+        .wrapping_add(LIFT);
+    let imaginary = down(
+        zh0 * mh1 + zh1 * mh0,
+        zh0 * ml1 + zl0 * mh1 + zh1 * ml0 + zl1 * mh0,
+        (lifted >> 16) as i32 - (LIFT >> 16) as i32,
+    );
+    (real, imaginary)
+}
+
 /// 2ab as (a + b)² − a² − b², given the squares, with (a + b)² from 16-bit halves: where
 /// there is no long multiply (ARMv6-M) a square needs neither signs nor a fourth 16×16
 /// product, so this costs about half a signed product. `a + b` must fit in an i32.
@@ -714,6 +783,73 @@ mod tests {
             1 << 84,
         ] {
             assert_eq!(isqrt_u128(n), n.isqrt(), "{n}");
+        }
+    }
+
+    /// The complex product from halves is the one from 64-bit products, taken down 29 and
+    /// 30 bits (the loose derivative's steps), for parts of every size and sign within
+    /// [`COMPLEX_PART`], their ends and the low halves' end (−2¹⁵) included; with overflow
+    /// checks on, a partial sum past 32 bits fails it too.
+    #[test]
+    fn complex_products_from_halves_are_exact() {
+        use proptest::prelude::*;
+        let exact = |z: (i32, i32), m: (i32, i32), shift: u32| {
+            let p = |a: i32, b: i32| i128::from(a) * i128::from(b);
+            (
+                i32::try_from((p(z.0, m.0) - p(z.1, m.1)) >> shift).unwrap(),
+                i32::try_from((p(z.0, m.1) + p(z.1, m.0)) >> shift).unwrap(),
+            )
+        };
+        let check = |z: (i32, i32), m: (i32, i32)| {
+            assert_eq!(
+                complex_mul_down_halves::<29>(z, m),
+                exact(z, m, 29),
+                "{z:?} {m:?}"
+            );
+            assert_eq!(
+                complex_mul_down_halves::<30>(z, m),
+                exact(z, m, 30),
+                "{z:?} {m:?}"
+            );
+            assert_eq!(complex_mul_down::<29>(z, m), exact(z, m, 29), "{z:?} {m:?}");
+        };
+        let part = prop_oneof![
+            -COMPLEX_PART..=COMPLEX_PART,
+            (any::<i32>(), 3u32..32).prop_map(|(v, s)| v >> s),
+            // Low halves at −2¹⁵, where the low products reach 2³⁰.
+            (-(1i32 << 13)..=1 << 13).prop_map(|h| (h << 16) | 0x8000),
+        ];
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        runner
+            .run(
+                &((part.clone(), part.clone()), (part.clone(), part)),
+                |(z, m)| {
+                    check(z, m);
+                    Ok(())
+                },
+            )
+            .unwrap();
+        let ends = [
+            COMPLEX_PART,
+            -COMPLEX_PART,
+            (1 << 29) | 0x8000,
+            -(1 << 29) | 0x8000,
+            0x8000_u32 as i32 | -(1 << 16),
+            1 << 29,
+            -(1 << 29),
+            0,
+            -1,
+            0x7FFF,
+            -0x8000,
+        ];
+        for z0 in ends {
+            for z1 in ends {
+                for m0 in ends {
+                    for m1 in ends {
+                        check((z0, z1), (m0, m1));
+                    }
+                }
+            }
         }
     }
 
