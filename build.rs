@@ -7,8 +7,9 @@
 //! word in one instruction; elsewhere the same bits come from the low word's top bit. And
 //! `tinyfractal_few_registers` marks ARMv6-M and ARMv8-M Baseline, whose data-processing
 //! instructions reach only eight registers: a loop that holds many values is laid out
-//! differently there, with the same results.
-
+//! differently there, with the same results. `tinyfractal_no_hardware_divide` and
+//! `tinyfractal_no_leading_zeros` mark ARMv6-M, which divides and counts a word's leading
+//! zeros in library calls.
 //!
 //! It also finds Fractint's corpus for the tests that read it (`TINYFRACTAL_CORPUS`, or
 //! `shared/corpus` beside the repository): where it is missing they are built as ignored
@@ -21,6 +22,7 @@ use std::path::PathBuf;
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_long_multiply)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_hardware_divide)");
+    println!("cargo::rustc-check-cfg=cfg(tinyfractal_no_leading_zeros)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_corpus)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_rounding_multiply)");
     println!("cargo::rustc-check-cfg=cfg(tinyfractal_few_registers)");
@@ -54,9 +56,11 @@ fn main() {
         println!("cargo:rustc-cfg=tinyfractal_few_registers");
     }
     // ARMv6-M divides in library calls even for 32 bits: there a 64-bit division is one
-    // call where the 32-bit way is several.
+    // call where the 32-bit way is several. It also counts a word's leading zeros in a
+    // library call, which `math::bits` replaces.
     if target.starts_with("thumbv6m") {
         println!("cargo:rustc-cfg=tinyfractal_no_hardware_divide");
+        println!("cargo:rustc-cfg=tinyfractal_no_leading_zeros");
     }
     // ARMv7E-M (Cortex-M4/M7) has the DSP extension's rounding high-word multiplies.
     if target.starts_with("thumbv7em") {

@@ -4,6 +4,7 @@
 //! renormalised only when it leaves a window, for the orbits' loops.
 
 use super::scaled::Scaled;
+use crate::math::bits::leading_zeros;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
 use crate::math::wide::{complex_mul_down, mul_i32_wide};
 
@@ -196,9 +197,7 @@ impl LooseDerivative {
     #[inline(always)]
     pub(super) fn step_q20(&mut self, zx: i32, zy: i32) {
         // The larger part's leading zeros, at most 14 (a z below 2⁻² is taken as it is).
-        let zeros = (ones_magnitude(zx) | ones_magnitude(zy))
-            .leading_zeros()
-            .min(14);
+        let zeros = leading_zeros(ones_magnitude(zx) | ones_magnitude(zy)).min(14);
         // Both parts within 2²⁹ after the shift (at least 1, as the parts are below 2²⁸).
         let up = zeros - 3;
         let (zx, zy) = (zx << up, zy << up);
@@ -227,7 +226,7 @@ impl LooseDerivative {
     /// and 1 made again at the new exponent.
     #[inline(always)]
     fn renormalise(&mut self, x: i32, y: i32) {
-        let top = 31 - (ones_magnitude(x) | ones_magnitude(y) | 1).leading_zeros() as i32;
+        let top = 31 - leading_zeros(ones_magnitude(x) | ones_magnitude(y) | 1) as i32;
         let lowest = if self.plus_one { 0 } else { -30 };
         let (x, y) = if top > 28 {
             let down = (top - 28) as u32;

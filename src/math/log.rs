@@ -1,5 +1,6 @@
 //! Base-2 logarithms of fixed-point numbers from a table: what smooth escape-time colouring
 //! needs per pixel, without floats.
+use super::bits::leading_zeros;
 
 /// log₂(1 + k/64) in Q16, k = 0..=64. A `static`, not a `const`: a constant array is
 /// copied into every codegen unit that reads it, and the smallest boards' flash holds one.
@@ -29,10 +30,10 @@ pub(crate) fn log2(value: u64, frac_bits: u32) -> Option<i32> {
     // as a fraction of it in Q32: the mantissa minus 1. Each shift is below 32 bits, and
     // the leading one is shifted out of the word.
     let (top, fraction) = if high == 0 {
-        let zeros = low.leading_zeros();
+        let zeros = leading_zeros(low);
         (31 - zeros, (low << zeros) << 1)
     } else {
-        let zeros = high.leading_zeros();
+        let zeros = leading_zeros(high);
         (63 - zeros, ((high << zeros) << 1) | (low >> (31 - zeros)))
     };
     // Entry k (below 64) and the 26 bits between k and k + 1.

@@ -7,6 +7,7 @@
 pub(crate) mod affine;
 pub(crate) mod angle;
 pub(crate) mod big;
+pub(crate) mod bits;
 pub(crate) mod coord;
 pub(crate) mod decimal;
 pub(crate) mod frame3;
