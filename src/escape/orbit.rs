@@ -19,7 +19,7 @@ use super::kernel::{Kernel, Kind, Orbit, Part};
 use super::modes::Inside;
 use super::view::SMOOTH_FRACTION_BITS;
 use crate::math::log::{log2, LOG2_FRAC_BITS};
-use crate::math::wide::mul_i32_wide;
+use crate::math::wide::{mul_i32_wide, square_i32_wide};
 
 impl Kernel {
     /// The dwell of the point (`re`, `im`).
@@ -555,8 +555,10 @@ fn inside_in_tier<A: Arithmetic>(
 /// for the "not yet computed" 0 or for inside; escaping at the cap counts as inside, as its
 /// dwell does.
 ///
-/// In i64, Q20: a point is only squared while |x|, |y| < 256, so squares stay below 2⁵⁶;
-/// the next point is below 2¹⁷ (Q20: 2³⁷), and its |z|² is taken in Q16 from Q8 parts.
+/// In Q20: a point is only squared while |x|, |y| < 256 (2²⁸), so its parts are 32-bit
+/// factors (products from halves on cores without a long multiply) and its squares stay
+/// below 2⁵⁶; the next point is below 2¹⁷ (Q20: 2³⁷), and its |z|² is taken in Q16 from
+/// Q8 parts, below 2²⁵.
 #[inline(never)]
 pub(crate) fn smooth_value(n: u32, z: (i32, i32), c: (i32, i32), max: u32, inside: u32) -> u32 {
     const BAILOUT: u64 = 256 << 20;
@@ -567,16 +569,20 @@ pub(crate) fn smooth_value(n: u32, z: (i32, i32), c: (i32, i32), max: u32, insid
     let (mut x, mut y) = (i64::from(z.0) >> 8, i64::from(z.1) >> 8);
     let mut steps = 0;
     while steps < SMOOTH_STEPS && x.unsigned_abs() < BAILOUT && y.unsigned_abs() < BAILOUT {
-        let (x2, y2) = (x * x, y * y);
+        // Both below 2²⁸: the casts keep them.
+        let (xs, ys) = (x as i32, y as i32);
+        let (x2, y2) = (square_i32_wide(xs), square_i32_wide(ys));
         if (x2 + y2).unsigned_abs() >= BAILOUT * BAILOUT {
             break;
         }
-        (x, y) = (((x2 - y2) >> 20) + cr, ((2 * x * y) >> 20) + ci);
+        // 2xy / 2²⁰ = xy / 2¹⁹.
+        (x, y) = (((x2 - y2) >> 20) + cr, (mul_i32_wide(xs, ys) >> 19) + ci);
         steps += 1;
     }
-    let (x, y) = (x >> 12, y >> 12);
+    // Below 2²⁵ (a part below 2³⁷ + |c|, taken down 12 bits): the casts keep them.
+    let (x, y) = ((x >> 12) as i32, (y >> 12) as i32);
     // |z|² is above 4 (the orbit escaped), so both logarithms are positive.
-    let modulus = (x * x + y * y).unsigned_abs();
+    let modulus = (square_i32_wide(x) + square_i32_wide(y)).unsigned_abs();
     let nu = log2(modulus, 16)
         .and_then(|bits| log2(u64::try_from(bits).ok()?, LOG2_FRAC_BITS))
         .map_or(0, |log_log| {
@@ -749,5 +755,54 @@ mod tests {
             assert_eq!(julia(-0.8, 0.2, tier), 100, "{tier:?}");
             assert_eq!(julia(-0.1, 0.1, tier), FIRST_SAVE, "{tier:?}");
         }
+    }
+
+    /// The smooth value follows its rule in 32-bit factors: a model in 128 bits steps z in
+    /// Q20 (z² and 2xy rounded down) while both parts are below 256 and |z| < 256, then
+    /// takes ν from |z|² of the Q8 parts, from escaped points of every size in 32 bits
+    /// (Q28) and just beyond |z| = 2, c within ±3.5. It fails with 2xy taken down 20 bits
+    /// from xy.
+    #[test]
+    fn the_smooth_value_follows_its_rule() {
+        extern crate std;
+        use proptest::prelude::*;
+        let model = |n: u32, z: (i32, i32), c: (i32, i32), max: u32, inside: u32| -> u32 {
+            const BAILOUT: i128 = 256 << 20;
+            if n >= max {
+                return inside;
+            }
+            let (cr, ci) = (i128::from(c.0) >> 8, i128::from(c.1) >> 8);
+            let (mut x, mut y) = (i128::from(z.0) >> 8, i128::from(z.1) >> 8);
+            let mut steps = 0;
+            while steps < SMOOTH_STEPS && x.abs() < BAILOUT && y.abs() < BAILOUT {
+                if x * x + y * y >= BAILOUT * BAILOUT {
+                    break;
+                }
+                (x, y) = (((x * x - y * y) >> 20) + cr, ((2 * x * y) >> 20) + ci);
+                steps += 1;
+            }
+            let (x, y) = (x >> 12, y >> 12);
+            let modulus = u64::try_from(x * x + y * y).unwrap();
+            // A point back below |z| = 1 (c beyond 2) has no ν: the least value.
+            let Some(log_log) =
+                log2(modulus, 16).and_then(|bits| log2(u64::try_from(bits).ok()?, LOG2_FRAC_BITS))
+            else {
+                return 1;
+            };
+            let nu = ((i64::from(n) + i64::from(steps) + 2) << LOG2_FRAC_BITS) - i64::from(log_log);
+            let shift = LOG2_FRAC_BITS - SMOOTH_FRACTION_BITS;
+            let value = (nu + (1 << (shift - 1))) >> shift;
+            u32::try_from(value).unwrap_or(0).clamp(1, inside - 1)
+        };
+        let c = -(7 << 27)..=(7 << 27);
+        // Escaped points: a part beyond 2, or |z| near 2 and beyond it.
+        let near_two = (-(1i32 << 30)..(1 << 30), 0.0..std::f64::consts::TAU).prop_map(|(r, a)| {
+            let r = f64::from(r.unsigned_abs() >> 6) + 2.0 * f64::from(1 << 28);
+            ((r * a.cos()) as i32, (r * a.sin()) as i32)
+        });
+        let z = prop_oneof![(any::<i32>(), any::<i32>()), near_two];
+        proptest!(|(z in z, c in (c.clone(), c), n in 0..300u32)| {
+            prop_assert_eq!(smooth_value(n, z, c, 256, 257), model(n, z, c, 256, 257));
+        });
     }
 }
