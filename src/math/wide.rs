@@ -208,10 +208,19 @@ pub(crate) fn mul_high_near(a: i32, s: i32) -> i32 {
     // a's high half may be 2¹⁵ (a − l past 32 bits); s's is below, so s − l fits.
     let a_low = i32::from(a as i16);
     let a_high = ((i64::from(a) - i64::from(a_low)) >> 16) as i32;
-    let s_low = i32::from(s as i16);
-    let s_high = (s - s_low) >> 16;
+    let (s_high, s_low) = signed_halves(s);
     let middle = a_high * s_low + a_low * s_high + ((a_low * s_low) >> 16);
     a_high * s_high + (middle >> 16)
+}
+
+/// `v` as 16-bit halves with a signed low part, (h, l) for v = h·2¹⁶ + l with l in
+/// [−2¹⁵, 2¹⁵): both within ±2¹⁵, so that every product of two halves is within 2³⁰.
+/// `v` must be below 2³¹ − 2¹⁵ (beyond it h is 2¹⁵ and v − l passes 32 bits).
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+fn signed_halves(v: i32) -> (i32, i32) {
+    let low = i32::from(v as i16);
+    ((v - low) >> 16, low)
 }
 
 /// [`mul_high`] from 16-bit halves, v = h·2¹⁶ + l with h signed and l in [0, 2¹⁶): a·b =
@@ -448,12 +457,8 @@ pub(crate) fn complex_mul_down_halves<const SHIFT: u32>(
     z: (i32, i32),
     m: (i32, i32),
 ) -> (i32, i32) {
-    let split = |v: i32| {
-        let low = i32::from(v as i16);
-        ((v - low) >> 16, low)
-    };
-    let ((zh0, zl0), (zh1, zl1)) = (split(z.0), split(z.1));
-    let ((mh0, ml0), (mh1, ml1)) = (split(m.0), split(m.1));
+    let ((zh0, zl0), (zh1, zl1)) = (signed_halves(z.0), signed_halves(z.1));
+    let ((mh0, ml0), (mh1, ml1)) = (signed_halves(m.0), signed_halves(m.1));
     let down = |high: i32, middle: i32, low_down: i32| {
         (high << (32 - SHIFT)) + ((middle + low_down) >> (SHIFT - 16))
     };

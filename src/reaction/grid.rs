@@ -474,6 +474,10 @@ fn keeping_pass_a<const UNIT_DT: bool>(
 /// One chemical's pass of [`update_row_by_chemical`] (B's where `B`): each cell's value
 /// in `row` from the old rows `above`, `kept` (the row's own) and `below`; returns the
 /// carry.
+///
+/// Only B's instance is used (A's pass is [`keeping_pass_a`]); a pass written for B alone
+/// was laid out worse on Cortex-M3 (docs/performance.md, The textures against the loops a
+/// user writes).
 #[inline(always)]
 fn chemical_pass<const UNIT_DT: bool, const B: bool>(
     [above, kept, below]: [&[Cell]; 3],
