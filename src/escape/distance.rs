@@ -62,7 +62,8 @@ impl Kernel {
         let Some((z, dz)) = escaped else {
             return (None, k);
         };
-        let (estimate, steps) = log2_pixels_past_escape((z, k), c, dz, self.spacing_log2);
+        let n = green_steps(k, mandelbrot);
+        let (estimate, steps) = log2_pixels_past_escape((z, n), c, dz, self.spacing_log2);
         (estimate, k + steps)
     }
 
@@ -160,6 +161,16 @@ fn q28_orbit(
     }
 }
 
+/// The steps from the point whose Green's function is the pixel's to the `n`th point of an
+/// orbit counted from z₀ (0 for the Mandelbrot set, the pixel for a Julia set), so that
+/// the pixel's G is lim ln|z| / 2^steps: for a Julia set G(z₀) itself, n; for the
+/// Mandelbrot set G(c) = G_c(z₁) (the Böttcher map Φ(c) = Φ_c(c)), from z₁ = c, n − 1.
+/// Counted from z₀ the Mandelbrot set's G would be half its own, and the distance it
+/// proves (see [`proven_far`]) too far where G is large.
+pub(super) const fn green_steps(n: u32, mandelbrot: bool) -> u32 {
+    n.saturating_sub(mandelbrot as u32)
+}
+
 /// What an escaped pixel's `orbit` becomes at `distance` from the set, with `steps` more
 /// taken: its value as `estimate` has it ([`Estimate::value`]), and how far the set is
 /// proven to be.
@@ -189,11 +200,10 @@ pub(super) struct Distance {
     pub(super) far: u8,
 }
 
-/// The estimated distance (see [`Distance`]) of an orbit that escaped at z, the `n`th
-/// point of its orbit (z₀ = 0 for the Mandelbrot set, the pixel for a Julia set), with
-/// derivative `dz` (z and c in Q60), the pixel spacing 2^`spacing_log2` (Q16), taken on
-/// to |z| ≥ 256 in Q20 as the smooth value goes (`smooth_value`); also the steps that
-/// took.
+/// The estimated distance (see [`Distance`]) of an orbit that escaped at z, `n` steps from
+/// the point its Green's function is taken at (see [`green_steps`]), with derivative `dz`
+/// (z and c in Q60), the pixel spacing 2^`spacing_log2` (Q16), taken on to |z| ≥ 256 in
+/// Q20 as the smooth value goes (`smooth_value`); also the steps that took.
 pub(super) fn log2_pixels_past_escape(
     ((x, y), n): ((i64, i64), u32),
     c: (i64, i64),
@@ -211,7 +221,7 @@ pub(super) fn log2_pixels_past_escape(
         let log_log = i64::from(log2(u64::try_from(log_square).ok()?, LOG2_FRAC_BITS)?);
         let log_ln = log_log + LOG2_HALF_LN2;
         let log2_pixels = log_square / 2 + log_ln - dz.log2_magnitude()? - i64::from(spacing_log2);
-        // G = ln|z_N| / 2^N at the N-th point.
+        // G = ln|z| / 2^n, n steps from the Green's function's point.
         let log2_green = log_ln - (i64::from(n + steps) << LOG2_FRAC_BITS);
         Some(Distance {
             log2_pixels,
@@ -282,31 +292,48 @@ fn square_of_modulus(x: i64, y: i64) -> u64 {
 ///
 /// Koebe's quarter theorem on the Böttcher map bounds the distance δ to the set by
 /// d·(1 − e^(−2G))/(4G) < δ < 2d·sinh(G)/G, where d = G/|∇G| is the estimate at the
-/// limit (d/2 < δ < 2d as G → 0). The lower bound is taken as d/2^1.25 for G ≤ 0.1,
-/// d/2^2.0625 for G ≤ 0.79 and d/2^3.0625 for G ≤ 1.9 (each below the bound over its
-/// range by more than the log table's errors); every point of a view (|re|, |im| ≤ 3.5)
-/// has G below 1.8.
+/// limit (d/2 < δ < 2d as G → 0). The lower bound is taken by classes of G
+/// ([`KOEBE_CLASSES`]), each below the bound over its range by more than the log table's
+/// errors; every point of a view (|re|, |im| ≤ 3.5) has G below 1.8.
 fn proven_far(log2_pixels: i64, log2_green: i64) -> u8 {
-    const ONE: i64 = 1 << LOG2_FRAC_BITS;
-    // G against log₂ 0.1, log₂ 0.79 and log₂ 1.9, Q16, rounded down.
-    let below = if log2_green <= -217_706 {
-        ONE + ONE / 4
-    } else if log2_green <= -22_288 {
-        2 * ONE + ONE / 16
-    } else if log2_green <= 60_685 {
-        3 * ONE + ONE / 16
-    } else {
+    let Some(&(_, below)) = KOEBE_CLASSES.iter().find(|&&(most, _)| log2_green <= most) else {
         return 0;
     };
     // Quarters of log₂, rounded down.
     ((log2_pixels - below) >> (LOG2_FRAC_BITS - 2)).clamp(0, i64::from(u8::MAX)) as u8
 }
 
+/// Koebe's lower bound by classes of G, for [`proven_far`]: the largest log₂ G of each
+/// (Q16, rounded down) and the bound taken there, d/2^b with b in sixteenths. Over G up to
+/// 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.55, 0.79, 1, 1.2, 1.5 and 1.9, −log₂((1 − e^(−2G))/(4G))
+/// rises to 1.072, 1.142, 1.211, 1.279, 1.411, 1.539, 1.721, 1.993, 2.210, 2.400, 2.659 and
+/// 2.959, and each b is above it by 0.07 to 0.12.
+const KOEBE_CLASSES: [(i64, i64); 12] = {
+    const SIXTEENTH: i64 = 1 << (LOG2_FRAC_BITS - 4);
+    [
+        (-283_242, 19 * SIXTEENTH),
+        (-217_706, 20 * SIXTEENTH),
+        (-179_370, 21 * SIXTEENTH),
+        (-152_170, 22 * SIXTEENTH),
+        (-113_834, 24 * SIXTEENTH),
+        (-86_634, 26 * SIXTEENTH),
+        (-56_525, 29 * SIXTEENTH),
+        (-22_288, 33 * SIXTEENTH),
+        (0, 37 * SIXTEENTH),
+        (17_238, 40 * SIXTEENTH),
+        (38_336, 44 * SIXTEENTH),
+        (60_685, 49 * SIXTEENTH),
+    ]
+};
+
 #[cfg(test)]
 mod tests {
     extern crate std;
 
     use super::*;
+    use crate::escape::kernel::Periodicity;
+    use crate::escape::view::{Fractal, View};
+    use crate::math::Coord;
     use proptest::prelude::*;
     use proptest::test_runner::{TestRng, TestRunner};
 
@@ -481,5 +508,95 @@ mod tests {
         }
         assert!(checked > 20_000);
         assert_eq!(proven_far(q16(30.0), q16(1.95f64.log2())), 0);
+    }
+
+    /// What an estimate proves holds for the point's Green's function as the theory has
+    /// it: for the Mandelbrot set G(c) = lim ln|zₙ| / 2ⁿ⁻¹ (z₁ = c, G(c) = G_c(c)), for a
+    /// Julia set G(z₀) = lim ln|zₙ| / 2ⁿ. An f64 model runs each orbit to |z| = 10⁵⁰ with
+    /// its derivative and takes Koebe's lower bound d·(1 − e^(−2G))/(4G) on the distance;
+    /// the distance proven (2^(far/4) pixels) must be below it, on a grid over a view's
+    /// range (|re|, |im| ≤ 3.5) and for a Julia set's z₀ over the same. It fails with G
+    /// taken from 2ⁿ for the Mandelbrot set (half of it), which proves too much far out.
+    #[test]
+    fn the_distance_proven_holds_for_the_sets_green_function() {
+        let spacing_log2 = -6.0;
+        let model = |z0: (f64, f64), c: (f64, f64), mandelbrot: bool| -> Option<f64> {
+            let (mut x, mut y) = z0;
+            let (mut dx, mut dy) = (f64::from(u8::from(!mandelbrot)), 0.0);
+            let mut n = 0;
+            while x * x + y * y < 1e100 {
+                if n > 200 {
+                    return None;
+                }
+                (dx, dy) = (
+                    2.0 * (x * dx - y * dy) + f64::from(u8::from(mandelbrot)),
+                    2.0 * (x * dy + y * dx),
+                );
+                (x, y) = (x * x - y * y + c.0, 2.0 * x * y + c.1);
+                n += 1;
+            }
+            let modulus = (x * x + y * y).sqrt();
+            // zₙ, counted from z₀ = 0 for the Mandelbrot set: G(c) takes 2ⁿ⁻¹.
+            let green = modulus.ln() / 2f64.powi(n - i32::from(mandelbrot));
+            let d = modulus * modulus.ln() / (dx * dx + dy * dy).sqrt();
+            let bound = d * (1.0 - (-2.0 * green).exp()) / (4.0 * green);
+            Some(bound / 2f64.powf(spacing_log2))
+        };
+        // Views 4 wide over 256 pixels: a spacing of 2⁻⁶.
+        let julia = (-0.8, 0.156);
+        let kernel = |fractal| {
+            let size = embedded_graphics::geometry::Size::new(256, 256);
+            let view = View::new(
+                fractal,
+                (Coord::default(), Coord::default()),
+                Coord::from_f64(4.0).unwrap(),
+                size,
+                1000,
+            );
+            Kernel::new(&view.unwrap(), Periodicity::Exact)
+        };
+        let (mandelbrot_kernel, julia_kernel) = (
+            kernel(Fractal::Mandelbrot),
+            kernel(Fractal::Julia {
+                re: Coord::from_f64(julia.0).unwrap(),
+                im: Coord::from_f64(julia.1).unwrap(),
+            }),
+        );
+        assert_eq!(mandelbrot_kernel.spacing_log2, -6 << LOG2_FRAC_BITS);
+        let q60 = |(x, y): (f64, f64)| {
+            let q60 = |v: f64| Coord::from_f64(v).unwrap().to_bits();
+            (q60(x), q60(y))
+        };
+        let estimate = |first: (f64, f64), c: (f64, f64), mandelbrot: bool| {
+            let kernel = if mandelbrot {
+                &mandelbrot_kernel
+            } else {
+                &julia_kernel
+            };
+            kernel.log2_distance::<false>(q60(first), q60(c)).0
+        };
+        let mut proofs = [0; 2];
+        for i in -35..=35 {
+            for j in -35..=35 {
+                let p = (f64::from(i) / 10.0 + 0.003, f64::from(j) / 10.0 + 0.007);
+                // A Mandelbrot point's orbit is run again from z₁ = c.
+                for (mandelbrot, z0, c) in [(true, (0.0, 0.0), p), (false, p, julia)] {
+                    let (Some(distance), Some(bound)) =
+                        (estimate(p, c, mandelbrot), model(z0, c, mandelbrot))
+                    else {
+                        continue;
+                    };
+                    if distance.far > 0 {
+                        let proven = 2f64.powf(f64::from(distance.far) / 4.0);
+                        assert!(
+                            proven <= bound,
+                            "{p:?} (Mandelbrot: {mandelbrot}): {proven} > {bound}"
+                        );
+                        proofs[usize::from(mandelbrot)] += 1;
+                    }
+                }
+            }
+        }
+        assert!(proofs.iter().all(|&n| n > 1000), "{proofs:?}");
     }
 }
