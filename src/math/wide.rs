@@ -393,6 +393,32 @@ pub(crate) fn mul_i32_by_small(a: i32, small: i32) -> i64 {
     }
 }
 
+/// The exact product of an i64 from −2⁴⁷ to below 2⁴⁷ and a factor below 2¹⁶ (a multiply
+/// where there is a long one; elsewhere, ARMv6-M, where it would be a library call, three
+/// 32-bit products: `v`'s high word times the factor, below 2³¹ in magnitude, and its low
+/// word's 16-bit halves times it).
+#[inline(always)]
+pub(crate) fn mul_i64_by_small(v: i64, small: u32) -> i64 {
+    debug_assert!(matches!(v >> 47, -1 | 0) && small < 1 << 16, "{v} {small}");
+    #[cfg(tinyfractal_no_long_multiply)]
+    {
+        mul_i64_by_small_parts(v, small)
+    }
+    #[cfg(not(tinyfractal_no_long_multiply))]
+    {
+        v * i64::from(small)
+    }
+}
+
+/// [`mul_i64_by_small`] from `v`'s signed high word and its low word's halves.
+#[cfg(any(test, tinyfractal_no_long_multiply))]
+#[inline(always)]
+pub(crate) fn mul_i64_by_small_parts(v: i64, small: u32) -> i64 {
+    let (high, low) = ((v >> 32) as i32, v as u32);
+    let low_product = u64::from((low & 0xFFFF) * small) + (u64::from((low >> 16) * small) << 16);
+    (i64::from(high * small as i32) << 32) + low_product as i64
+}
+
 /// [`mul_i32_by_small`] from `a`'s halves: (aₕ·m)·2¹⁶ + aₗ·m, with |aₕ·m| ≤ 2³⁰ and
 /// |aₗ·m| < 2³¹ for |m| ≤ 2¹⁵.
 #[cfg(any(test, tinyfractal_no_long_multiply))]
@@ -901,6 +927,15 @@ mod tests {
                     let exact = i64::from(a) * i64::from(small);
                     assert_eq!(mul_i32_by_small_halves(a, small), exact, "{a} {small}");
                     assert_eq!(mul_i32_by_small(a, small), exact, "{a} {small}");
+                }
+                // An i64 from −2⁴⁷ to below 2⁴⁷ (its ends too) times a factor below 2¹⁶.
+                let wide = (i64::from(a) << 16) | i64::from(b as u32 >> 16);
+                for v in [wide, wide / 2, -(wide / 2), (1 << 47) - 1, -(1 << 47), 0] {
+                    for small in [b as u32 >> 16, (1 << 16) - 1, 0, 1, 255] {
+                        let exact = v * i64::from(small);
+                        assert_eq!(mul_i64_by_small_parts(v, small), exact, "{v} {small}");
+                        assert_eq!(mul_i64_by_small(v, small), exact, "{v} {small}");
+                    }
                 }
                 // The sum must fit in an i32: halve both.
                 let (a, b) = (a / 2, b / 2);

@@ -7,6 +7,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 
 use crate::error::{Error, FitError};
+use crate::math::wide::{mul_i32_by_small, mul_i64_by_small};
 use crate::math::Real;
 
 /// Height bands, from the lowest level (of 256) each starts at: deep water, shallow
@@ -125,8 +126,13 @@ where
 impl<C> Relief<'_, C> {
     /// The height at grid point (`x`, `y`), clamped to the grid.
     fn height(&self, x: usize, y: usize) -> i64 {
+        i64::from(self.height32(x, y))
+    }
+
+    /// [`Relief::height`] as it is stored.
+    fn height32(&self, x: usize, y: usize) -> i32 {
         let (x, y) = (x.min(self.n - 1), y.min(self.n - 1));
-        i64::from(self.heights.get(y * self.n + x).copied().unwrap_or(0))
+        self.heights.get(y * self.n + x).copied().unwrap_or(0)
     }
 }
 
@@ -315,16 +321,20 @@ impl<'r, 'a, C: From<Rgb888>> Rows<'r, 'a, C> {
     #[inline(never)]
     fn enter_cell(&mut self, x: usize) {
         let relief = self.relief;
-        let (y, fy) = (self.y, i64::from(self.fy));
+        let (y, fy) = (self.y, self.fy);
         // The column on the left is the last cell's right one where the pixels moved on
         // by one cell.
+        // A height times a weight of at most 256: 32-bit factors, from halves on ARMv6-M.
+        let blend = |above: i32, below: i32| {
+            mul_i32_by_small(above, 256 - fy) + mul_i32_by_small(below, fy)
+        };
         let left = if self.column != usize::MAX && self.column + 1 == x {
             self.right
         } else {
-            relief.height(x, y) * (256 - fy) + relief.height(x, y + 1) * fy
+            blend(relief.height32(x, y), relief.height32(x, y + 1))
         };
         let d = relief.height(x + 1, y + 1);
-        let right = relief.height(x + 1, y) * (256 - fy) + d * fy;
+        let right = blend(relief.height32(x + 1, y), d as i32);
         self.right = right;
         // The light, used above the sea: 256 − slope/8 within 128..=358, where the slope
         // is ⌊(corner above left − d)·256·last / spread⌋ towards zero; the two divisions
@@ -372,7 +382,8 @@ where
         if self.column != self.x {
             self.enter_cell(self.x);
         }
-        let numerator = self.base + i64::from(self.fx) * self.rise;
+        // The rise of two blends (each within ±2³⁹) is within ±2⁴⁰, fx below 256.
+        let numerator = self.base + mul_i64_by_small(self.rise, self.fx);
         let band = self.band_of(numerator);
         let light = if numerator < self.sea {
             256
@@ -439,7 +450,8 @@ mod tests {
     }
 
     /// Stepping draws the rule's colours, pixel by pixel, on grids of every shape of
-    /// height (flat, a ramp, a peak, noise) at sizes wider, narrower and equal to the grid.
+    /// height (flat, a ramp, a peak, noise, and noise over the whole of i32, where the
+    /// blends reach 2³⁹) at sizes wider, narrower and equal to the grid.
     #[test]
     fn rows_are_the_rules_colours() {
         let mut state = 0x1234_5678u32;
@@ -450,20 +462,21 @@ mod tests {
             state
         };
         for side in [2usize, 3, 5, 9, 17, 33] {
-            let grids: [&dyn Fn(usize, usize) -> i32; 4] = [
+            let grids: [&dyn Fn(usize, usize) -> i32; 5] = [
                 &|_, _| 7 << 16,
                 &|x, y| ((x + 2 * y) as i32) << 14,
                 &|x, y| -(((x as i32 - 4).pow(2) + (y as i32 - 4).pow(2)) << 12),
+                &|_, _| 0,
                 &|_, _| 0,
             ];
             for (g, grid) in grids.iter().enumerate() {
                 let mut heights = [0i32; 33 * 33];
                 for y in 0..side {
                     for x in 0..side {
-                        heights[y * side + x] = if g == 3 {
-                            (random() >> 4) as i32 - (1 << 27)
-                        } else {
-                            grid(x, y)
+                        heights[y * side + x] = match g {
+                            3 => (random() >> 4) as i32 - (1 << 27),
+                            4 => random() as i32,
+                            _ => grid(x, y),
                         };
                     }
                 }
