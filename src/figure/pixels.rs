@@ -13,6 +13,7 @@ use super::part::{walk_parts, Part, Pose, Shape, CIRCLE, CIRCLE_SIDES};
 use crate::error::{Error, MAX_PART_PIXELS};
 use crate::math::real::round_half_away;
 use crate::math::trig::BinaryAngle;
+use crate::math::wide::mul_i32_wide;
 use crate::math::Real;
 use crate::render::circle::drawn_as_circle;
 
@@ -75,7 +76,7 @@ pub(crate) struct PixelMap {
 /// Q2.30 × Q2.30 + Q2.30 × Q2.30, rounded to Q2.30.
 #[inline(always)]
 fn turned(p: i32, cos: i32, q: i32, sin: i32) -> i32 {
-    let sum = i64::from(p) * i64::from(cos) + i64::from(q) * i64::from(sin);
+    let sum = mul_i32_wide(p, cos) + mul_i32_wide(q, sin);
     // |p|, |q| ≤ s′ < 1 and cos² + sin² = 1: the result stays below 2 in Q2.30.
     ((sum + (1 << 29)) >> 30) as i32
 }
@@ -96,8 +97,7 @@ impl PixelMap {
     /// The map's image of a part's point.
     #[inline(always)]
     fn apply(&self, (x, y): (i32, i32)) -> Fixed {
-        let along =
-            |p: i32, q: i32| (i64::from(p) * i64::from(x) + i64::from(q) * i64::from(y)) >> 30;
+        let along = |p: i32, q: i32| (mul_i32_wide(p, x) + mul_i32_wide(q, y)) >> 30;
         (
             self.e + along(self.a, self.b),
             self.f + along(self.c, self.d),
@@ -285,7 +285,7 @@ impl PixelWalk {
                 // sin_k times its image of (0, r), in Q16.16 pixels.
                 let radius = self.read(radius);
                 let (cx, cy) = map.apply((radius, 0));
-                let scaled = ((i64::from(radius) * i64::from(self.scale_q30)) >> 30).abs();
+                let scaled = (mul_i32_wide(radius, self.scale_q30) >> 30).abs();
                 if drawn_as_circle(scaled) {
                     return Traced {
                         outline: Outline::Circle {
@@ -295,12 +295,11 @@ impl PixelWalk {
                         color: part.color,
                     };
                 }
-                let image = |p: i32| ((i64::from(p) * i64::from(radius)) >> 30) as i32;
+                let image = |p: i32| (mul_i32_wide(p, radius) >> 30) as i32;
                 let (ux, uy, vx, vy) = (image(map.a), image(map.c), image(map.b), image(map.d));
                 for (point, &(cos, sin)) in points.iter_mut().zip(CIRCLE.iter()) {
-                    let along = |u: i32, v: i32| {
-                        (i64::from(cos) * i64::from(u) + i64::from(sin) * i64::from(v)) >> 30
-                    };
+                    let along =
+                        |u: i32, v: i32| (mul_i32_wide(cos, u) + mul_i32_wide(sin, v)) >> 30;
                     *point = (cx + along(ux, vx), cy + along(uy, vy));
                 }
                 (CIRCLE_SIDES, true)
