@@ -127,6 +127,11 @@ fn ones_magnitude(v: i32) -> u32 {
 }
 
 impl LooseDerivative {
+    /// Whether 1 is added at each step: the Mandelbrot set's derivative.
+    pub(super) const fn adds_one(&self) -> bool {
+        self.plus_one
+    }
+
     /// dz = 1, with 1 added at each step if `plus_one`: a Julia set's dz₀ and the
     /// Mandelbrot set's dz₁.
     pub(super) const fn one(plus_one: bool) -> Self {

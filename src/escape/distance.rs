@@ -62,8 +62,7 @@ impl Kernel {
         let Some((z, dz)) = escaped else {
             return (None, k);
         };
-        let n = green_steps(k, mandelbrot);
-        let (estimate, steps) = log2_pixels_past_escape((z, n), c, dz, self.spacing_log2);
+        let (estimate, steps) = log2_pixels_past_escape((z, k), c, dz, self.spacing_log2);
         (estimate, k + steps)
     }
 
@@ -167,7 +166,7 @@ fn q28_orbit(
 /// Mandelbrot set G(c) = G_c(z₁) (the Böttcher map Φ(c) = Φ_c(c)), from z₁ = c, n − 1.
 /// Counted from z₀ the Mandelbrot set's G would be half its own, and the distance it
 /// proves (see [`proven_far`]) too far where G is large.
-pub(super) const fn green_steps(n: u32, mandelbrot: bool) -> u32 {
+const fn green_steps(n: u32, mandelbrot: bool) -> u32 {
     n.saturating_sub(mandelbrot as u32)
 }
 
@@ -200,16 +199,21 @@ pub(super) struct Distance {
     pub(super) far: u8,
 }
 
-/// The estimated distance (see [`Distance`]) of an orbit that escaped at z, `n` steps from
-/// the point its Green's function is taken at (see [`green_steps`]), with derivative `dz`
-/// (z and c in Q60), the pixel spacing 2^`spacing_log2` (Q16), taken on to |z| ≥ 256 in
-/// Q20 as the smooth value goes (`smooth_value`); also the steps that took.
+/// The estimated distance (see [`Distance`]) of an orbit that escaped at z, the `n`th
+/// point of its orbit (z₀ = 0 for the Mandelbrot set, whose derivative adds 1 at each
+/// step, the pixel for a Julia set), with derivative `dz` (z and c in Q60), the pixel
+/// spacing 2^`spacing_log2` (Q16), taken on to |z| ≥ 256 in Q20 as the smooth value goes
+/// (`smooth_value`); also the steps that took.
+///
+/// Which set it is comes from the derivative (see [`green_steps`]): a flag the caller
+/// kept across the orbit's loop for it cost that loop a register on Cortex-M3.
 pub(super) fn log2_pixels_past_escape(
     ((x, y), n): ((i64, i64), u32),
     c: (i64, i64),
     mut dz: LooseDerivative,
     spacing_log2: i32,
 ) -> (Option<Distance>, u32) {
+    let green_n = green_steps(n, dz.adds_one());
     let q20 = |v: i64| v >> 40;
     let (cr, ci) = (q20(c.0), q20(c.1));
     let (x, y) = (q20(x), q20(y));
@@ -222,7 +226,7 @@ pub(super) fn log2_pixels_past_escape(
         let log_ln = log_log + LOG2_HALF_LN2;
         let log2_pixels = log_square / 2 + log_ln - dz.log2_magnitude()? - i64::from(spacing_log2);
         // G = ln|z| / 2^n, n steps from the Green's function's point.
-        let log2_green = log_ln - (i64::from(n + steps) << LOG2_FRAC_BITS);
+        let log2_green = log_ln - (i64::from(green_n + steps) << LOG2_FRAC_BITS);
         Some(Distance {
             log2_pixels,
             far: proven_far(log2_pixels, log2_green),

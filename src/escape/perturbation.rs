@@ -29,7 +29,7 @@
 //! cardioid and bulb test is made at the reference's precision.
 
 use super::derivative::{Derivative, LooseDerivative};
-use super::distance::{estimated, green_steps, log2_pixels_past_escape};
+use super::distance::{estimated, log2_pixels_past_escape};
 use super::estimate::Estimate;
 use super::kernel::MAX_FAST_TOLERANCE;
 use super::kernel::{Kernel, Orbit, Periodicity};
@@ -426,7 +426,7 @@ impl<'r> Perturbation<'r> {
         };
         let q60 = |(x, y): (i32, i32)| (i64::from(x) << 32, i64::from(y) << 32);
         let (distance, steps) = log2_pixels_past_escape(
-            (q60(z), green_steps(orbit.iterations, true)),
+            (q60(z), orbit.iterations),
             q60(point),
             LooseDerivative::of(dz, true),
             self.spacing_log2,
