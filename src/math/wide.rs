@@ -41,6 +41,32 @@ pub(crate) fn div_narrow(n: i64, d: i64) -> i64 {
     }
 }
 
+/// ⌊`x` / 3⌋ and `x` mod 3: on cores without a divide instruction (ARMv6-M), where `/ 3`
+/// is a library call, by shifts and adds ([`div_rem_by_3_shifts`]); elsewhere `/` and `%`,
+/// which the compiler takes as a multiply.
+#[inline(always)]
+pub(crate) fn div_rem_by_3(x: u32) -> (u32, u32) {
+    if cfg!(tinyfractal_no_hardware_divide) {
+        div_rem_by_3_shifts(x)
+    } else {
+        (x / 3, x % 3)
+    }
+}
+
+/// [`div_rem_by_3`] by shifts and adds (Hacker's Delight's `divu3`): q, a sum of shifts of
+/// `x`, is ⌊x/3⌋ or up to one below it, so the remainder x − 3q is at most 5, and
+/// ⌊11r/32⌋ is 1 exactly where it is 3 or more.
+#[inline(always)]
+pub(crate) fn div_rem_by_3_shifts(x: u32) -> (u32, u32) {
+    let mut q = (x >> 2) + (x >> 4);
+    q += q >> 4;
+    q += q >> 8;
+    q += q >> 16;
+    let r = x - 3 * q;
+    let carry = (11 * r) >> 5;
+    (q + carry, r - 3 * carry)
+}
+
 /// ⌊`n` / `d`⌋ for a 64-bit `n` and a 32-bit `d` (not 0) from 32-bit divisions: one
 /// instruction each on Cortex-M3 and M4, where a 64-bit division is a long library call.
 pub(crate) fn div_u64_by_u32(n: u64, d: u32) -> u64 {
@@ -741,6 +767,26 @@ mod tests {
                 assert_eq!(div_u64_by_u32(n, d), n / u64::from(d), "{n} / {d}");
             }
         }
+    }
+
+    /// Division by 3 by shifts is `/` and `%`: every value below 2²⁴ (every cell
+    /// coordinate a subdivision reaches, and more), random words of every size, the top
+    /// of the range.
+    #[test]
+    fn division_by_3_by_shifts_is_the_operators() {
+        use proptest::prelude::*;
+        for x in (0..1 << 24).chain(u32::MAX - 1000..=u32::MAX) {
+            assert_eq!(div_rem_by_3_shifts(x), (x / 3, x % 3), "{x}");
+        }
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let x = (any::<u32>(), 0u32..32).prop_map(|(v, s)| v >> s);
+        runner
+            .run(&x, |x| {
+                prop_assert_eq!(div_rem_by_3_shifts(x), (x / 3, x % 3));
+                prop_assert_eq!(div_rem_by_3(x), (x / 3, x % 3));
+                Ok(())
+            })
+            .unwrap();
     }
 
     /// The root is the library's: random values of every size, squares and their

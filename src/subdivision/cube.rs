@@ -21,6 +21,7 @@ use super::order::{check_order, depth_first, power};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::affine::Affine3;
 use crate::math::trig::ONE_Q30;
+use crate::math::wide::div_rem_by_3;
 use crate::math::Real;
 use crate::render::polygon::{fill_convex, SubPixel, SUBPIXEL_BITS};
 
@@ -44,7 +45,7 @@ impl CubeVariant {
     }
 
     /// Whether the subcube at digits (x, y, z), each 0..3, is kept.
-    const fn keeps(self, x: u64, y: u64, z: u64) -> bool {
+    const fn keeps(self, x: u32, y: u32, z: u32) -> bool {
         let ones = (x == 1) as u32 + (y == 1) as u32 + (z == 1) as u32;
         match self {
             Self::Centre => ones < 3,
@@ -222,6 +223,16 @@ impl SierpinskiCube {
     }
 }
 
+/// A cell visited (coordinates in cells of its level) and the sum of its coordinates times
+/// the steps of a last-level cell: at the last level, where the cell's corner (0, 0, 0)
+/// projects from the cube's (Q16 pixels).
+type Placed = ([i64; 3], SubPixel);
+
+/// The sum of two screen points.
+fn add(a: SubPixel, b: SubPixel) -> SubPixel {
+    (a.0 + b.0, a.1 + b.1)
+}
+
 /// A face direction turned to the camera: which side of its axis, and its shaded colour.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 struct Face<C> {
@@ -250,33 +261,29 @@ impl<C: PixelColor> CubeDrawing<C> {
     /// Whether the cell at `cell` (coordinates of the last level) is kept, and `None` for
     /// a cell outside the cube.
     fn kept(&self, cell: [i64; 3]) -> Option<bool> {
-        if cell.iter().any(|&c| c < 0 || c >= self.side) {
+        // A coordinate within the side (at most 3¹²) fits 32 bits, whose division by 3
+        // needs no library call on ARMv6-M.
+        let within = |c: i64| u32::try_from(c).ok().filter(|_| c < self.side);
+        let [Some(mut x), Some(mut y), Some(mut z)] = cell.map(within) else {
             return None;
-        }
-        let [mut x, mut y, mut z] = cell.map(|c| c as u64);
+        };
         for _ in 0..self.order {
-            if !self.variant.keeps(x % 3, y % 3, z % 3) {
+            let ((qx, rx), (qy, ry), (qz, rz)) =
+                (div_rem_by_3(x), div_rem_by_3(y), div_rem_by_3(z));
+            if !self.variant.keeps(rx, ry, rz) {
                 return Some(false);
             }
-            (x, y, z) = (x / 3, y / 3, z / 3);
+            (x, y, z) = (qx, qy, qz);
         }
         Some(true)
     }
 
-    /// The screen point of lattice point `p`.
-    fn project(&self, p: [i64; 3]) -> SubPixel {
-        let mut point = self.origin;
-        for (&c, &(dx, dy)) in p.iter().zip(&self.steps) {
-            point = (point.0 + c * dx, point.1 + c * dy);
-        }
-        point
-    }
-
-    /// Paints the visible faces of the kept cell `cell`; returns how many.
+    /// Paints the visible faces of the kept cell `cell` of the last level, whose corner
+    /// (0, 0, 0) projects `from_origin` from the cube's; returns how many.
     fn paint_cell<D>(
         &self,
         target: &mut D,
-        cell: [i64; 3],
+        (cell, from_origin): Placed,
         clip: &Rectangle,
     ) -> Result<u64, D::Error>
     where
@@ -298,25 +305,20 @@ impl<C: PixelColor> CubeDrawing<C> {
             if !visible {
                 continue;
             }
-            // The face's corners: the cell's corner on the face's side, then around it.
-            let (j, k) = ((axis + 1) % 3, (axis + 2) % 3);
-            let mut corner = cell;
+            // The face's corners: the cell's corner on the face's side, then around it,
+            // a cell's step along each of the other two axes.
+            let step = |i: usize| self.steps.get(i % 3).copied().unwrap_or((0, 0));
+            let mut corner = add(self.origin, from_origin);
             if face.positive {
-                if let Some(c) = corner.get_mut(axis) {
-                    *c += 1;
-                }
+                corner = add(corner, step(axis));
             }
-            let shifted = |dj: i64, dk: i64| {
-                let mut p = corner;
-                if let Some(c) = p.get_mut(j) {
-                    *c += dj;
-                }
-                if let Some(c) = p.get_mut(k) {
-                    *c += dk;
-                }
-                self.project(p)
-            };
-            let quad = [shifted(0, 0), shifted(1, 0), shifted(1, 1), shifted(0, 1)];
+            let (j, k) = (step(axis + 1), step(axis + 2));
+            let quad = [
+                corner,
+                add(corner, j),
+                add(add(corner, j), k),
+                add(corner, k),
+            ];
             fill_convex(target, &quad, face.color, clip)?;
             painted += 1;
         }
@@ -349,7 +351,7 @@ impl<C: PixelColor> Drawable for CubeDrawing<C> {
                 .flatten()
                 .is_none_or(|face| face.positive)
         });
-        let digit = |d: u64, axis: usize| {
+        let digit = |d: u32, axis: usize| {
             if ascending.get(axis).copied().unwrap_or(true) {
                 d
             } else {
@@ -358,23 +360,39 @@ impl<C: PixelColor> Drawable for CubeDrawing<C> {
         };
         if self.order == 0 {
             stats.cubes = 1;
-            stats.faces = self.paint_cell(target, [0, 0, 0], &clip)?;
+            stats.faces = self.paint_cell(target, Placed::default(), &clip)?;
             return Ok(stats);
         }
-        depth_first(self.order, 27, |level, [px, py, pz]: [i64; 3], child| {
-            let c = u64::from(child);
-            let (dx, dy, dz) = (digit(c / 9, 0), digit(c / 3 % 3, 1), digit(c % 3, 2));
-            if !self.variant.keeps(dx, dy, dz) {
-                return Ok(None);
-            }
-            let at = [3 * px + dx as i64, 3 * py + dy as i64, 3 * pz + dz as i64];
-            if level < self.order {
-                return Ok(Some(at));
-            }
-            stats.cubes += 1;
-            stats.faces += self.paint_cell(target, at, &clip)?;
-            Ok(None)
-        })?;
+        depth_first(
+            self.order,
+            27,
+            |level, (parent, from_origin): Placed, child| {
+                let c = u32::from(child);
+                let digits = [digit(c / 9, 0), digit(c / 3 % 3, 1), digit(c % 3, 2)];
+                let [dx, dy, dz] = digits;
+                if !self.variant.keeps(dx, dy, dz) {
+                    return Ok(None);
+                }
+                // A child's corner: three times its parent's (in cells of the next level) and
+                // its digits', by additions alone (the same sums as each coordinate times its
+                // step: no 64-bit products, which are library calls on ARMv6-M).
+                let mut at = parent;
+                let mut point = add(from_origin, add(from_origin, from_origin));
+                for ((c, d), &(sx, sy)) in at.iter_mut().zip(digits).zip(&self.steps) {
+                    *c = 3 * *c + i64::from(d);
+                    for _ in 0..d {
+                        point = add(point, (sx, sy));
+                    }
+                }
+                let placed = (at, point);
+                if level < self.order {
+                    return Ok(Some(placed));
+                }
+                stats.cubes += 1;
+                stats.faces += self.paint_cell(target, placed, &clip)?;
+                Ok(None)
+            },
+        )?;
         Ok(stats)
     }
 }
