@@ -30,12 +30,13 @@ fn crossing(a: SubPixel, b: SubPixel, y: i64) -> i64 {
     } else {
         (b, a)
     };
-    let dy = bottom.1 - top.1;
-    if dy == 0 {
+    let (dx, dy) = (bottom.0 - top.0, bottom.1 - top.1);
+    // A level edge, and an upright one (a cube's vertical edges, a thick line's ends),
+    // whose crossing is its top's x without a division.
+    if dy == 0 || dx == 0 {
         return top.0;
     }
-    let numerator = (y - top.1) * (bottom.0 - top.0);
-    top.0 + divided(numerator, dy)
+    top.0 + divided((y - top.1) * dx, dy)
 }
 
 /// `n / d` as `/` has it (toward zero) for `d` > 0: by 32-bit divisions where `d` fits 32
