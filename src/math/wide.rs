@@ -67,6 +67,17 @@ pub(crate) fn div_rem_by_3_shifts(x: u32) -> (u32, u32) {
     (q + carry, r - 3 * carry)
 }
 
+/// `n / d` (`d` not 0) by a 32-bit division where both fit 32 bits: one instruction on
+/// Cortex-M3 and M4 and the library's short 32-bit routine on M0, where a 64-bit division
+/// is a long library routine on every core.
+#[inline(always)]
+pub(crate) fn div_u64_narrow(n: u64, d: u64) -> u64 {
+    match (u32::try_from(n), u32::try_from(d)) {
+        (Ok(n), Ok(d)) if d != 0 => u64::from(n / d),
+        _ => n / d,
+    }
+}
+
 /// ⌊`n` / `d`⌋ for a 64-bit `n` and a 32-bit `d` (not 0) from 32-bit divisions: one
 /// instruction each on Cortex-M3 and M4, where a 64-bit division is a long library call.
 pub(crate) fn div_u64_by_u32(n: u64, d: u32) -> u64 {
@@ -728,8 +739,8 @@ mod tests {
         }
     }
 
-    /// The narrow division is `/` on i64, for values of every size (either side of 32
-    /// bits, both signs, and the one quotient that overflows 32 bits).
+    /// The narrow divisions are `/` on i64 and u64, for values of every size (either side
+    /// of 32 bits, both signs, and the one quotient that overflows 32 bits).
     #[test]
     fn narrow_division_is_the_wide_one() {
         use proptest::prelude::*;
@@ -739,9 +750,13 @@ mod tests {
             .run(&(value.clone(), value), |(n, d)| {
                 prop_assume!(d != 0 && !(n == i64::MIN && d == -1));
                 prop_assert_eq!(div_narrow(n, d), n / d);
+                let (n, d) = (n.unsigned_abs(), d.unsigned_abs());
+                prop_assert_eq!(div_u64_narrow(n, d), n / d);
                 Ok(())
             })
             .unwrap();
+        assert_eq!(div_u64_narrow(u64::from(u32::MAX), 1), u64::from(u32::MAX));
+        assert_eq!(div_u64_narrow(1 << 32, 2), 1 << 31);
         let min = i64::from(i32::MIN);
         assert_eq!(div_narrow(min, -1), 1 << 31);
         assert_eq!(div_narrow(-7, 2), -3);

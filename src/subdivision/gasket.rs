@@ -16,6 +16,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::order::{check_order, power};
 use crate::error::{Error, FitError};
+use crate::math::wide::div_u64_narrow;
 
 /// The triangle's height over its base, as a ratio (≈ √3/2).
 const HEIGHT_PER_BASE: (u64, u64) = (887, 1024);
@@ -102,7 +103,7 @@ impl<C: PixelColor> GasketDrawing<C> {
         // The row's centre is (2y + 1)/(2·height) of the way down, in row r of triangles at
         // `within`/(2·height) of the way down that row.
         let depth = (2 * y + 1) * rows;
-        let r = depth / (2 * height);
+        let r = div_u64_narrow(depth, 2 * height);
         let within = depth - r * 2 * height;
         // In units of 1/q pixels: triangle c's apex is at base·(rows + 2c − r)/(2·rows),
         // and it is base·within/(2·height·2·rows) wide on each side at this row.
@@ -114,7 +115,7 @@ impl<C: PixelColor> GasketDrawing<C> {
             if twice <= q {
                 0
             } else {
-                (twice + q - 1) / (2 * q)
+                div_u64_narrow(twice + q - 1, 2 * q)
             }
         };
         let mut run: Option<(u64, u64)> = None;
