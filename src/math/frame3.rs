@@ -8,9 +8,9 @@
 //! their cross product. The frame then stays orthonormal to within a few 2⁻³⁰ whatever the
 //! number of turns (a test turns it 10⁶ times).
 
+use super::divide::{div_u64_by_u32, isqrt_u64};
 use super::real::Real;
 use super::trig::{binary_angle_of_radians, BinaryAngle, ONE_Q30};
-use super::wide::{div_u64_by_u32, isqrt_u64};
 
 /// A vector with Q30 components (2³⁰ = 1.0).
 pub(crate) type Unit = [i32; 3];

@@ -1,8 +1,9 @@
 //! The numbers every family shares.
 //!
-//! Fixed-point `Real` (the turtle's) and `Coord` (the complex plane's), their exact decimal parser, wide products and rounding, integer
-//! sines, and turn angles with their direction tables. This is also where affine maps,
-//! the matrix stack and the seeded generator belong.
+//! Fixed-point `Real` (the turtle's) and `Coord` (the complex plane's), their exact decimal
+//! parser, wide products and rounding, divisions and roots without the library's long
+//! routines, integer sines, and turn angles with their direction tables. This is also
+//! where affine maps, the matrix stack and the seeded generator belong.
 
 pub(crate) mod affine;
 pub(crate) mod angle;
@@ -10,6 +11,7 @@ pub(crate) mod big;
 pub(crate) mod bits;
 pub(crate) mod coord;
 pub(crate) mod decimal;
+pub(crate) mod divide;
 pub(crate) mod frame3;
 pub(crate) mod log;
 pub(crate) mod random;

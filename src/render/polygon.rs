@@ -9,7 +9,7 @@
 //! outline winds around its centre a nonzero number of times (a figure eight's two loops
 //! are both filled, whichever way each turns).
 
-use crate::math::wide::div_i64_by_u32;
+use crate::math::divide::div_i64_by_u32;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 

@@ -5,7 +5,7 @@
 //! up, z towards the viewer); a surface is lit from both sides (a leaf has two). Its
 //! brightness is 35% (ambient) plus 65% of |n · l| for its unit normal n: 255 is full.
 
-use crate::math::wide::isqrt_u128;
+use crate::math::divide::isqrt_u128;
 use embedded_graphics::pixelcolor::{
     Bgr555, Bgr565, Bgr666, Bgr888, BinaryColor, Gray2, Gray4, Gray8, GrayColor, Rgb555, Rgb565,
     Rgb666, Rgb888, RgbColor,

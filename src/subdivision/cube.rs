@@ -20,8 +20,8 @@ use embedded_graphics::primitives::Rectangle;
 use super::order::{check_order, depth_first, power};
 use crate::error::{Error, FitError, ParameterError};
 use crate::math::affine::Affine3;
+use crate::math::divide::div_rem_by_3;
 use crate::math::trig::ONE_Q30;
-use crate::math::wide::div_rem_by_3;
 use crate::math::Real;
 use crate::render::polygon::{fill_convex, SubPixel, SUBPIXEL_BITS};
 

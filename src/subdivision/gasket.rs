@@ -16,7 +16,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::order::{check_order, power};
 use crate::error::{Error, FitError};
-use crate::math::wide::div_u64_narrow;
+use crate::math::divide::div_u64_narrow;
 
 /// The triangle's height over its base, as a ratio (≈ √3/2).
 const HEIGHT_PER_BASE: (u64, u64) = (887, 1024);

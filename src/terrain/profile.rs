@@ -9,8 +9,8 @@ use super::displacement::{
     displaced, levels_of, real_of, Displacement, MAX_END, MAX_TERRAIN_LEVELS,
 };
 use crate::error::{Error, FitError, ParameterError};
+use crate::math::divide::div_narrow;
 use crate::math::random::Seeded;
-use crate::math::wide::div_narrow;
 use crate::math::Real;
 
 /// A profile of 2ᵏ + 1 heights by midpoint displacement.

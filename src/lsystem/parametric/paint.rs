@@ -7,7 +7,7 @@ use heapless::Vec;
 use super::kept::{SeenMark, SeenMarks};
 use super::surface::MAX_POLYGON_VERTICES;
 use crate::error::DrawError;
-use crate::math::wide::div_i64_by_u32;
+use crate::math::divide::div_i64_by_u32;
 use crate::math::Real;
 use crate::render::depth::Layered;
 use crate::render::palette::Palette;
