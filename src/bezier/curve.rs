@@ -3,6 +3,7 @@
 
 use embedded_graphics::prelude::*;
 
+use crate::math::wide::{mul_i64_by_small, square_i32_wide};
 use crate::render::subpixel::SUBPIXEL_BITS;
 
 /// How far a flattened piece may stray from its chord: a quarter of a pixel, in
@@ -107,19 +108,32 @@ fn flat(points: &[Sub; 4], cubic: bool) -> bool {
     if cubic {
         let axis = |i: usize| -> (i64, i64) {
             let c = |p: Sub| p.get(i).copied().unwrap_or(0);
-            (3 * c(p1) - 2 * c(p0) - c(p3), 3 * c(p2) - c(p0) - 2 * c(p3))
+            // Three times a control point (a pixel coordinate's sub-pixels, within ±2⁴⁷):
+            // on ARMv6-M three 32-bit products, where `3 *` an i64 is a library call.
+            let thrice = |p: Sub| mul_i64_by_small(c(p), 3);
+            (
+                thrice(p1) - 2 * c(p0) - c(p3),
+                thrice(p2) - c(p0) - 2 * c(p3),
+            )
         };
         let ((ux, vx), (uy, vy)) = (axis(0), axis(1));
         // Beyond 2^24 sub-pixels a term alone exceeds the limit (and its square i64).
-        small(&[ux, vx, uy, vy], 24) && (ux * ux).max(vx * vx) + (uy * uy).max(vy * vy) <= limit
+        small(&[ux, vx, uy, vy], 24)
+            && square(ux).max(square(vx)) + square(uy).max(square(vy)) <= limit
     } else {
         let d = |i: usize| {
             let c = |p: Sub| p.get(i).copied().unwrap_or(0);
             c(p0) - 2 * c(p1) + c(p2)
         };
         let (dx, dy) = (d(0), d(1));
-        small(&[dx, dy], 24) && dx * dx + dy * dy <= limit
+        small(&[dx, dy], 24) && square(dx) + square(dy) <= limit
     }
+}
+
+/// The square of a term within ±2²⁴ (so its `i32` is exact) by a 32-bit square: on
+/// ARMv6-M from 16-bit halves, where an `i64` product is a library call.
+fn square(term: i64) -> i64 {
+    square_i32_wide(term as i32)
 }
 
 /// The midpoint of two points, rounded down.
