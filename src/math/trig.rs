@@ -290,11 +290,14 @@ pub(crate) fn cos_of_binary(angle: u32) -> i32 {
 fn quarter_sine(position: u32) -> i32 {
     const FRACTION_BITS: u32 = 20; // 2^30 / QUARTER_STEPS = 2^20 positions between points
     let index = (position >> FRACTION_BITS) as usize;
-    let fraction = i64::from(position & ((1 << FRACTION_BITS) - 1));
+    let fraction = (position & ((1 << FRACTION_BITS) - 1)) as i32;
     let low = QUARTER_SINE.get(index).copied().unwrap_or(ONE_Q30);
     let high = QUARTER_SINE.get(index + 1).copied().unwrap_or(ONE_Q30);
-    let delta = i64::from(high - low) * fraction;
-    low + super::wide::shift_round(i128::from(delta), FRACTION_BITS) as i32
+    // A table step (below 2²¹) times a fraction (below 2²⁰): 64 bits hold it and its
+    // rounding, where a 128-bit shift costs a dozen instructions on a 32-bit core and the
+    // 64-bit product a library call on ARMv6-M.
+    let delta = super::wide::mul_i32_wide(high - low, fraction);
+    low + super::wide::shift_round_i64(delta, FRACTION_BITS) as i32
 }
 
 #[cfg(test)]
