@@ -4,6 +4,8 @@
 //! shifts where the core has no divide instruction, and integer square roots from a
 //! 32-bit root and a Newton step. The same quotients and roots on every target.
 
+use super::wide::mul_u32_wide;
+
 /// `n / d` as `/` has it (toward zero; `d` not 0), by a 32-bit division where both fit 32
 /// bits: one instruction on Cortex-M3 and M4 and a short call on M0, where the 64-bit
 /// division is a long library routine on every core.
@@ -152,6 +154,67 @@ pub(crate) fn isqrt_u128(n: u128) -> u128 {
     u128::from(isqrt_u64(small))
 }
 
+/// One 32-bit divisor, to divide many values by: on cores without a divide instruction
+/// (ARMv6-M), where each `/` is a library call of about a hundred instructions, by a
+/// 32-bit product's high word and two shifts (Granlund and Montgomery, *Division by
+/// invariant integers using multiplication*, 1994, figure 4.1), the multiplier found once;
+/// elsewhere `/`, one instruction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Divisor {
+    divisor: u32,
+    /// ⌊2³²·(2^ℓ − d)/d⌋ + 1 for ℓ = ⌈log₂ d⌉: below 2³².
+    multiplier: u32,
+    /// min(ℓ, 1) and max(ℓ − 1, 0).
+    shifts: (u32, u32),
+}
+
+impl Divisor {
+    /// Division by `divisor`; `None` for 0.
+    pub(crate) fn new(divisor: u32) -> Option<Self> {
+        if divisor == 0 {
+            None
+        } else if cfg!(tinyfractal_no_hardware_divide) {
+            Some(Self::with_multiplier(divisor))
+        } else {
+            Some(Self {
+                divisor,
+                multiplier: 0,
+                shifts: (0, 0),
+            })
+        }
+    }
+
+    /// Division by `divisor` (not 0) with its multiplier found.
+    fn with_multiplier(divisor: u32) -> Self {
+        let ceiling_log = 32 - (divisor - 1).leading_zeros();
+        // 2^ℓ − d < d, so the quotient is below 2³².
+        let excess = (1u64 << ceiling_log) - u64::from(divisor);
+        Self {
+            divisor,
+            multiplier: ((excess << 32) / u64::from(divisor) + 1) as u32,
+            shifts: (ceiling_log.min(1), ceiling_log.saturating_sub(1)),
+        }
+    }
+
+    /// ⌊`n` / divisor⌋.
+    #[inline(always)]
+    pub(crate) fn divide(self, n: u32) -> u32 {
+        if cfg!(tinyfractal_no_hardware_divide) {
+            self.divide_by_multiply(n)
+        } else {
+            n / self.divisor
+        }
+    }
+
+    /// [`divide`](Self::divide) by the multiplier: t = ⌊m·n / 2³²⌋, then
+    /// (t + ⌊(n − t)/2^s₁⌋) / 2^s₂, exact for every 32-bit `n` (the paper's theorem 4.2).
+    #[inline(always)]
+    fn divide_by_multiply(self, n: u32) -> u32 {
+        let high = (mul_u32_wide(self.multiplier, n) >> 32) as u32;
+        (high + ((n - high) >> self.shifts.0)) >> self.shifts.1
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -178,6 +241,45 @@ mod tests {
         assert_eq!(div_narrow(min, -1), 1 << 31);
         assert_eq!(div_narrow(-7, 2), -3);
         assert_eq!(div_narrow(7, -2), -3);
+    }
+
+    /// Division by a divisor's multiplier is `/`: random values by divisors of every size,
+    /// and the ends (1, powers of two and their neighbours, the largest).
+    #[test]
+    fn division_by_a_multiplier_is_the_operators() {
+        use proptest::prelude::*;
+        let with_multiplier = Divisor::with_multiplier;
+        let mut runner = proptest::test_runner::TestRunner::deterministic();
+        let n = (any::<u32>(), 0u32..32).prop_map(|(v, s)| v >> s);
+        let d = (1u32.., 0u32..32).prop_map(|(v, s)| (v >> s).max(1));
+        runner
+            .run(&(n, d), |(n, d)| {
+                prop_assert_eq!(with_multiplier(d).divide_by_multiply(n), n / d);
+                prop_assert_eq!(Divisor::new(d).map(|d| d.divide(n)), Some(n / d));
+                Ok(())
+            })
+            .unwrap();
+        let ends = [
+            0,
+            1,
+            2,
+            3,
+            5,
+            7,
+            (1 << 16) - 1,
+            1 << 16,
+            (1 << 31) - 1,
+            1 << 31,
+        ];
+        let ends = ends
+            .into_iter()
+            .chain([(1 << 31) + 1, u32::MAX - 1, u32::MAX]);
+        for d in ends.clone().skip(1) {
+            for n in ends.clone().chain((0..3000).map(|k| k * 1_431_655)) {
+                assert_eq!(with_multiplier(d).divide_by_multiply(n), n / d, "{n} / {d}");
+            }
+        }
+        assert_eq!(Divisor::new(0), None);
     }
 
     /// The 64-by-32 division is `/` on u64: random values of every size, divisors of

@@ -16,7 +16,7 @@ use embedded_graphics::primitives::Rectangle;
 
 use super::order::{check_order, power};
 use crate::error::{Error, FitError};
-use crate::math::divide::div_u64_narrow;
+use crate::math::divide::{div_u64_narrow, Divisor};
 
 /// The triangle's height over its base, as a ratio (≈ √3/2).
 const HEIGHT_PER_BASE: (u64, u64) = (887, 1024);
@@ -87,12 +87,21 @@ pub struct GasketDrawing<C> {
 }
 
 impl<C: PixelColor> GasketDrawing<C> {
+    /// The divisor that finds a column ([`row_runs`](Self::row_runs)'s 2q, the same at every
+    /// row), where it fits 32 bits: found once a drawing, so that on ARMv6-M each column is
+    /// a multiply rather than a library division.
+    fn column_divisor(&self) -> Option<Divisor> {
+        let q = 4 * u64::from(self.frame.size.height) * power(2, self.order);
+        u32::try_from(2 * q).ok().and_then(Divisor::new)
+    }
+
     /// The ink intervals of pixel row `y` (0 at the apex), as pixel columns from the box's
     /// left, in increasing order, merged where they touch; `emit` gets each, and its first
-    /// error ends the row.
+    /// error ends the row. `columns` is [`column_divisor`](Self::column_divisor)'s.
     fn row_runs<E>(
         &self,
         y: u64,
+        columns: Option<Divisor>,
         mut emit: impl FnMut(u64, u64) -> Result<(), E>,
     ) -> Result<(), E> {
         let (base, height) = (
@@ -112,10 +121,11 @@ impl<C: PixelColor> GasketDrawing<C> {
         // The first pixel whose centre is at or right of `edge`: ⌈edge/q − 1/2⌉, at least 0.
         let first = |edge: u64| {
             let twice = 2 * edge;
-            if twice <= q {
-                0
-            } else {
-                div_u64_narrow(twice + q - 1, 2 * q)
+            let numerator = twice + q - 1;
+            match (columns, u32::try_from(numerator)) {
+                _ if twice <= q => 0,
+                (Some(columns), Ok(numerator)) => u64::from(columns.divide(numerator)),
+                _ => div_u64_narrow(numerator, 2 * q),
             }
         };
         let mut run: Option<(u64, u64)> = None;
@@ -176,10 +186,11 @@ impl<C: PixelColor> Drawable for GasketDrawing<C> {
             );
             target.fill_solid(&run, color)
         };
+        let columns = self.column_divisor();
         for y in 0..u64::from(self.frame.size.height) {
             let row = origin.y + y as i32;
             let mut painted = 0u64;
-            self.row_runs(y, |start, end| {
+            self.row_runs(y, columns, |start, end| {
                 let end = end.min(width);
                 paint(target, row, painted, start, self.background)?;
                 paint(target, row, start, end, self.ink)?;
