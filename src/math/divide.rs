@@ -1,8 +1,9 @@
 //! Divisions and roots that no core takes from the library's long routines: 64-bit
 //! values divided in 32 bits where they fit (one `udiv` on Cortex-M3 and M4, the short
 //! 32-bit routine on M0), a 64-by-32-bit division from 32-bit ones, division by 3 by
-//! shifts where the core has no divide instruction, and integer square roots from a
-//! 32-bit root and a Newton step. The same quotients and roots on every target.
+//! shifts and by one divisor many times by a multiplier where the core has no divide
+//! instruction, and integer square roots from a 32-bit root and a Newton step. The same
+//! quotients and roots on every target.
 
 use super::wide::mul_u32_wide;
 
