@@ -156,7 +156,8 @@ pub(crate) fn isqrt_u128(n: u128) -> u128 {
 }
 
 /// One 32-bit divisor, to divide many values by: on cores without a divide instruction
-/// (ARMv6-M), where each `/` is a library call of about a hundred instructions, by a
+/// (ARMv6-M), where each `/` is a long library call (docs/performance.md, The Sierpiński
+/// shapes without library arithmetic), by a
 /// 32-bit product's high word and two shifts (Granlund and Montgomery, *Division by
 /// invariant integers using multiplication*, 1994, figure 4.1), the multiplier found once;
 /// elsewhere `/`, one instruction.

@@ -294,8 +294,8 @@ fn quarter_sine(position: u32) -> i32 {
     let low = QUARTER_SINE.get(index).copied().unwrap_or(ONE_Q30);
     let high = QUARTER_SINE.get(index + 1).copied().unwrap_or(ONE_Q30);
     // A table step (below 2²¹) times a fraction (below 2²⁰): 64 bits hold it and its
-    // rounding, where a 128-bit shift costs a dozen instructions on a 32-bit core and the
-    // 64-bit product a library call on ARMv6-M.
+    // rounding, because a 128-bit shift is several words' work on a 32-bit core and the
+    // 64-bit product a library call on ARMv6-M (docs/performance.md).
     let delta = super::wide::mul_i32_wide(high - low, fraction);
     low + super::wide::shift_round_i64(delta, FRACTION_BITS) as i32
 }
